@@ -1,0 +1,202 @@
+//! The one number trait of the crate: a commutative ring with multiplication by exact rational
+//! constants.
+//!
+//! Every algorithm of the crate is written once against [`Ring`]. Three families implement it:
+//! `f64`/`f32` (fast, rounded), [`Rational`] (exact, unbounded), and
+//! [`Poly`](crate::Poly) (symbolic: exact polynomials in named variables, used to *prove* that
+//! two algorithms agree for every input of a given degree).
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+use std::fmt::Debug;
+
+/// Exact rational numbers with unbounded numerator and denominator.
+pub type Rational = BigRational;
+
+/// A commutative ring with unit, plus multiplication by an exact rational constant.
+///
+/// The operations take their operands by reference so that big numbers and polynomials are
+/// not cloned needlessly. Implementations must satisfy the ring axioms exactly (`Rational`,
+/// `Poly`) or up to rounding (`f64`, `f32`).
+pub trait Ring: Clone + PartialEq + Debug {
+    /// The additive identity.
+    fn zero() -> Self;
+    /// The multiplicative identity.
+    fn one() -> Self;
+    /// `self + rhs`.
+    fn add(&self, rhs: &Self) -> Self;
+    /// `self - rhs`.
+    fn sub(&self, rhs: &Self) -> Self;
+    /// `self * rhs`.
+    fn mul(&self, rhs: &Self) -> Self;
+    /// `-self`.
+    fn neg(&self) -> Self;
+    /// `self * k` for an exact rational constant `k`.
+    fn scale(&self, k: &Rational) -> Self;
+    /// `self * num / den` for a small constant; `den` must be non-zero.
+    ///
+    /// Generated code calls this with literals, so for floats it folds to one multiplication.
+    fn scale_frac(&self, num: i128, den: i128) -> Self {
+        self.scale(&Rational::new(BigInt::from(num), BigInt::from(den)))
+    }
+    /// Whether `self` is exactly zero.
+    fn is_zero(&self) -> bool;
+    /// `self += rhs`.
+    fn add_assign(&mut self, rhs: &Self) {
+        *self = self.add(rhs);
+    }
+    /// The image of an exact rational number in the ring.
+    fn from_rational(k: &Rational) -> Self {
+        Self::one().scale(k)
+    }
+    /// The image of an integer in the ring.
+    fn from_int(k: i64) -> Self {
+        Self::from_rational(&Rational::from_integer(BigInt::from(k)))
+    }
+    /// `self^e` by repeated squaring (`self^0 = 1`).
+    fn pow(&self, mut e: u32) -> Self {
+        let mut base = self.clone();
+        let mut acc = Self::one();
+        while e > 0 {
+            if e & 1 == 1 {
+                acc = acc.mul(&base);
+            }
+            e >>= 1;
+            if e > 0 {
+                base = base.mul(&base);
+            }
+        }
+        acc
+    }
+}
+
+/// Converts an exact rational to the nearest `f64` (infinite when out of range).
+pub fn rational_to_f64(k: &Rational) -> f64 {
+    k.to_f64().unwrap_or_else(|| {
+        if k.is_negative() {
+            f64::NEG_INFINITY
+        } else {
+            f64::INFINITY
+        }
+    })
+}
+
+macro_rules! float_ring {
+    ($t:ty) => {
+        impl Ring for $t {
+            #[inline]
+            fn zero() -> Self {
+                0.0
+            }
+            #[inline]
+            fn one() -> Self {
+                1.0
+            }
+            #[inline]
+            fn add(&self, rhs: &Self) -> Self {
+                self + rhs
+            }
+            #[inline]
+            fn sub(&self, rhs: &Self) -> Self {
+                self - rhs
+            }
+            #[inline]
+            fn mul(&self, rhs: &Self) -> Self {
+                self * rhs
+            }
+            #[inline]
+            fn neg(&self) -> Self {
+                -self
+            }
+            #[inline]
+            fn scale(&self, k: &Rational) -> Self {
+                self * (rational_to_f64(k) as $t)
+            }
+            #[inline]
+            fn scale_frac(&self, num: i128, den: i128) -> Self {
+                self * ((num as f64 / den as f64) as $t)
+            }
+            #[inline]
+            fn is_zero(&self) -> bool {
+                *self == 0.0
+            }
+            #[inline]
+            fn add_assign(&mut self, rhs: &Self) {
+                *self += rhs;
+            }
+            #[inline]
+            fn from_int(k: i64) -> Self {
+                k as $t
+            }
+        }
+    };
+}
+
+float_ring!(f64);
+float_ring!(f32);
+
+impl Ring for Rational {
+    fn zero() -> Self {
+        Zero::zero()
+    }
+    fn one() -> Self {
+        One::one()
+    }
+    fn add(&self, rhs: &Self) -> Self {
+        self + rhs
+    }
+    fn sub(&self, rhs: &Self) -> Self {
+        self - rhs
+    }
+    fn mul(&self, rhs: &Self) -> Self {
+        self * rhs
+    }
+    fn neg(&self) -> Self {
+        -self
+    }
+    fn scale(&self, k: &Rational) -> Self {
+        self * k
+    }
+    fn is_zero(&self) -> bool {
+        Zero::is_zero(self)
+    }
+    fn add_assign(&mut self, rhs: &Self) {
+        *self += rhs;
+    }
+    fn from_rational(k: &Rational) -> Self {
+        k.clone()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(n: i64, d: i64) -> Rational {
+        Rational::new(BigInt::from(n), BigInt::from(d))
+    }
+
+    #[test]
+    fn rational_ring_is_exact() {
+        let x = q(1, 3);
+        let y = q(1, 6);
+        assert_eq!(x.add(&y), q(1, 2));
+        assert_eq!(x.sub(&y), q(1, 6));
+        assert_eq!(x.mul(&y), q(1, 18));
+        assert_eq!(x.neg(), q(-1, 3));
+        assert_eq!(x.scale_frac(3, 2), q(1, 2));
+        assert_eq!(q(2, 3).pow(3), q(8, 27));
+        assert_eq!(q(2, 3).pow(0), q(1, 1));
+        assert!(Ring::is_zero(&x.sub(&x)));
+    }
+
+    #[test]
+    fn float_ring_matches_native_arithmetic() {
+        assert_eq!(2.5f64.scale(&q(2, 5)), 1.0);
+        assert_eq!(3.0f64.scale_frac(-1, 3), -1.0);
+        assert_eq!(1.5f64.pow(2), 2.25);
+        assert_eq!(f32::from_int(-7), -7.0);
+        assert_eq!(rational_to_f64(&q(1, 4)), 0.25);
+    }
+}
