@@ -1,0 +1,154 @@
+//! Changes of polynomial basis and of variable, all division-free (ring operations and exact
+//! rational constants only), so that they run on floats, rationals and symbolic polynomials.
+//!
+//! * [`taylor_shift`]: coefficients of C(u + a) from those of C(u), O(n^2);
+//! * [`scale_argument`]: coefficients of C(h u), O(n);
+//! * [`power_to_bernstein`]: power coefficients over [0, 1] to Bézier control points, O(n^2):
+//!   u^i = sum_{v >= i} C(v, i) / C(n, i) B_v^n(u);
+//! * [`triangle_power_to_bernstein`]: power coefficients in barycentric coordinates (s, t) to
+//!   the control net of a triangular patch, O(N^3):
+//!   s^i t^j = sum_{nu >= i, mu >= j} C(nu, i) C(mu, j) / (N! / (i! j! (N-i-j)!)) B_{nu mu}^N.
+
+use crate::bezier::{triangle_index, triangle_len, TriangularPatch};
+use crate::binomial::{binomial, multinomial};
+use crate::point::Point;
+use crate::{Rational, Ring};
+
+fn scale_point<T: Ring>(p: &mut [T], k: &T) {
+    for x in p.iter_mut() {
+        *x = x.mul(k);
+    }
+}
+
+fn scale_point_rational<T: Ring>(p: &mut [T], k: &Rational) {
+    for x in p.iter_mut() {
+        *x = x.scale(k);
+    }
+}
+
+/// Replaces the coefficients of C(u) = sum c_i u^i by those of C(u + a), in place, by repeated
+/// synthetic division (n(n+1)/2 multiply-adds per coordinate).
+pub fn taylor_shift<T: Ring>(c: &mut [Point<T>], a: &T) {
+    let n = c.len().saturating_sub(1);
+    for k in 0..n {
+        for i in (k..n).rev() {
+            let (lo, hi) = c.split_at_mut(i + 1);
+            for (x, y) in lo[i].iter_mut().zip(&hi[0]) {
+                x.add_assign(&a.mul(y));
+            }
+        }
+    }
+}
+
+/// Replaces the coefficients of C(u) by those of C(h u): c_i becomes h^i c_i.
+pub fn scale_argument<T: Ring>(c: &mut [Point<T>], h: &T) {
+    let mut power = T::one();
+    for ci in c.iter_mut().skip(1) {
+        power = power.mul(h);
+        scale_point(ci, &power);
+    }
+}
+
+/// The binomial transform w_v = sum_{i <= v} C(v, i) e_i, in place, with additions only
+/// (the Newton forward-difference table read backwards).
+pub fn binomial_transform<T: Ring>(e: &mut [Point<T>]) {
+    let n = e.len().saturating_sub(1);
+    for k in (0..n).rev() {
+        for i in k..n {
+            let (lo, hi) = e.split_at_mut(i + 1);
+            crate::point::add_assign(&mut hi[0], &lo[i]);
+        }
+    }
+}
+
+/// The Bézier control points over [0, 1] of the polynomial with power coefficients `d`:
+/// w_v = sum_{i <= v} C(v, i) / C(n, i) d_i.
+pub fn power_to_bernstein<T: Ring>(d: &[Point<T>]) -> Vec<Point<T>> {
+    let n = d.len() as i64 - 1;
+    let mut e: Vec<Point<T>> = d.to_vec();
+    for (i, ei) in e.iter_mut().enumerate().skip(1).take((n - 1).max(0) as usize) {
+        scale_point_rational(ei, &Rational::new(1.into(), binomial(n, i as i64)));
+    }
+    binomial_transform(&mut e);
+    e
+}
+
+/// The control net of the triangular patch of degree `n` whose power coefficients in the
+/// barycentric coordinates (s, t) of corners a, b (the third, of c, being 1 - s - t) are
+/// `d[triangle_index(n, i, j)]` = coefficient of s^i t^j.
+///
+/// Divides by the multinomials once, then applies the binomial transform along t for every
+/// power of s and along s for every index of t: O(N^3) additions.
+pub fn triangle_power_to_bernstein<T: Ring>(n: usize, d: &[Point<T>]) -> TriangularPatch<T> {
+    assert_eq!(d.len(), triangle_len(n), "triangle coefficient count");
+    let ni = n as i64;
+    // h[i][mu] = sum_{j <= mu} C(mu, j) e_ij for mu <= n - i.
+    let mut h: Vec<Vec<Point<T>>> = (0..=n)
+        .map(|i| {
+            let mut row: Vec<Point<T>> = (0..=n - i)
+                .map(|j| {
+                    let mut e = d[triangle_index(n, i, j)].clone();
+                    let m = multinomial(ni, &[i as i64, j as i64]);
+                    if m != 1.into() {
+                        scale_point_rational(&mut e, &Rational::new(1.into(), m));
+                    }
+                    e
+                })
+                .collect();
+            binomial_transform(&mut row);
+            row
+        })
+        .collect();
+    // q[nu][mu] = sum_{i <= nu} C(nu, i) h[i][mu] for nu <= n - mu.
+    let mut out: Vec<Option<Point<T>>> = vec![None; triangle_len(n)];
+    for mu in 0..=n {
+        let mut col: Vec<Point<T>> = (0..=n - mu).map(|i| std::mem::take(&mut h[i][mu])).collect();
+        binomial_transform(&mut col);
+        for (nu, q) in col.into_iter().enumerate() {
+            out[triangle_index(n, nu, mu)] = Some(q);
+        }
+    }
+    let points = out.into_iter().map(|q| q.expect("every index is filled")).collect();
+    TriangularPatch::new(n, points).expect("a net of the right size")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_bigint::BigInt;
+
+    fn q(n: i64) -> Rational {
+        Rational::from_integer(BigInt::from(n))
+    }
+
+    #[test]
+    fn taylor_shift_matches_expansion() {
+        // 1 + 2u + 3u^2 at u + 2: 1 + 2(u+2) + 3(u+2)^2 = 17 + 14u + 3u^2
+        let mut c = vec![vec![q(1)], vec![q(2)], vec![q(3)]];
+        taylor_shift(&mut c, &q(2));
+        assert_eq!(c, vec![vec![q(17)], vec![q(14)], vec![q(3)]]);
+        scale_argument(&mut c, &q(-1));
+        assert_eq!(c, vec![vec![q(17)], vec![q(-14)], vec![q(3)]]);
+    }
+
+    #[test]
+    fn bernstein_of_monomials() {
+        // u^2 in degree 3: control points 0, 0, 1/3, 1.
+        let d = vec![vec![q(0)], vec![q(0)], vec![q(1)], vec![q(0)]];
+        let w = power_to_bernstein(&d);
+        let third = Rational::new(1.into(), 3.into());
+        assert_eq!(w, vec![vec![q(0)], vec![q(0)], vec![third], vec![q(1)]]);
+    }
+
+    #[test]
+    fn triangle_bernstein_of_s_times_t() {
+        // s t in degree 2 is B_{110}^2 / 2: only q_{110} = 1/2 is non-zero.
+        let mut d = vec![vec![q(0)]; triangle_len(2)];
+        d[triangle_index(2, 1, 1)] = vec![q(1)];
+        let patch = triangle_power_to_bernstein(2, &d);
+        for (nu, mu, _, p) in patch.entries() {
+            let want = if (nu, mu) == (1, 1) { Rational::new(1.into(), 2.into()) } else { q(0) };
+            assert_eq!(p, &vec![want], "q_{nu}{mu}");
+        }
+    }
+}

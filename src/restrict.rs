@@ -1,0 +1,200 @@
+//! Restriction of a power-basis curve or surface to an interval, a rectangle or a triangle:
+//! the Bézier object that describes the same polynomial there.
+//!
+//! The default path, [`Method::Bulk`], computes all control points together instead of one
+//! at a time, as the paper's conclusion asks:
+//!
+//! * curve on [a, b]: the coefficients of C(a + (b - a) t) by a Taylor shift and a scaling,
+//!   then the Bernstein form over [0, 1] (w_v = sum_{i <= v} C(v, i) / C(n, i) d_i):
+//!   O(n^2) ring operations per coordinate;
+//! * tensor patch on [a, b] x [c, d]: the curve algorithm along u with whole rows as points,
+//!   then along v for every row: O(nm(n + m));
+//! * triangle abc: a two-dimensional Taylor shift that moves c to the origin, then each
+//!   homogeneous part f_k(x, y) = sum_{i+j=k} c'_ij x^i y^j is composed with the linear map
+//!   x = (a1 - c1) s + (b1 - c1) t, y = (a2 - c2) s + (b2 - c2) t by the mixed Horner rule
+//!   g_0 = f_{k,0}, g_l = g_{l-1} X + f_{k-l, l} Y^l (O(k^2) per part), and the result, a
+//!   polynomial in the barycentric coordinates (s, t) of a and b, is written in the Bernstein
+//!   basis of the triangle: O(N^3) in all, against O(N^6)-O(N^8) for eq. (14) per point.
+//!
+//! Every step is division-free, so the same code runs on floats, rationals and symbolic
+//! polynomials, and the tests prove it identical to the four blossom algorithms.
+
+use crate::basis::{power_to_bernstein, scale_argument, taylor_shift, triangle_power_to_bernstein};
+use crate::bezier::{triangle_index, triangle_len, BezierCurve, TensorPatch, TriangularPatch};
+use crate::blossoms::{closed_form, definition, polarisation, pyramid};
+use crate::point::{self, Point};
+use crate::power::{PowerCurve, PowerSurface};
+use crate::Ring;
+
+/// Which algorithm computes a restriction. All give the identical exact answer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Method {
+    /// All control points at once by changes of variable and basis (the default).
+    Bulk,
+    /// The closed forms (3), (9), (14), one control point at a time.
+    ClosedForm,
+    /// The subset-sum definitions (2), (8), (13) at every control point.
+    Definition,
+    /// The pyramid (de Casteljau) on the Bernstein form over the reference domain.
+    Pyramid,
+    /// The inverse formula (19)-(21) of seed 004, sampling points of the input only.
+    Polarisation,
+}
+
+impl Method {
+    /// Every method, the default first.
+    pub const ALL: [Method; 5] = [
+        Method::Bulk,
+        Method::ClosedForm,
+        Method::Definition,
+        Method::Pyramid,
+        Method::Polarisation,
+    ];
+
+    /// The name used on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Bulk => "bulk",
+            Method::ClosedForm => "closed-form",
+            Method::Definition => "definition",
+            Method::Pyramid => "pyramid",
+            Method::Polarisation => "polarisation",
+        }
+    }
+}
+
+/// Splits each point of `rows` into concatenated coordinates: rows of a grid become long
+/// points, so that a pass along one variable treats a whole row as one point.
+fn flatten<T: Clone>(rows: &[Vec<Point<T>>]) -> Vec<Point<T>> {
+    rows.iter().map(|row| row.concat()).collect()
+}
+
+fn unflatten<T: Clone>(long: Vec<Point<T>>, dim: usize) -> Vec<Vec<Point<T>>> {
+    long.into_iter()
+        .map(|p| p.chunks(dim).map(<[T]>::to_vec).collect())
+        .collect()
+}
+
+/// Bézier control points over [0, 1] of C(a + (b - a) t), given the coefficients of C.
+fn bulk_curve_points<T: Ring>(coefficients: &[Point<T>], a: &T, b: &T) -> Vec<Point<T>> {
+    let mut d = coefficients.to_vec();
+    taylor_shift(&mut d, a);
+    scale_argument(&mut d, &b.sub(a));
+    power_to_bernstein(&d)
+}
+
+/// `curve` restricted to [a, b] by `method`.
+pub fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T, method: Method) -> BezierCurve<T> {
+    match method {
+        Method::Bulk => BezierCurve::new(bulk_curve_points(curve.coefficients(), a, b))
+            .expect("n + 1 points of one dimension"),
+        Method::ClosedForm => closed_form::restrict_curve(curve, a, b),
+        Method::Definition => definition::restrict_curve(curve, a, b),
+        Method::Pyramid => pyramid::restrict_curve(curve, a, b),
+        Method::Polarisation => polarisation::restrict_curve(curve, a, b),
+    }
+}
+
+/// `surface` restricted to `rect = [a, b, c, d]`, i.e. [a, b] x [c, d], by `method`.
+pub fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4], method: Method) -> TensorPatch<T> {
+    match method {
+        Method::Bulk => {
+            let [a, b, c, d] = rect;
+            let dim = surface.dim();
+            // Along u with whole rows as points, then along v row by row.
+            let rows = unflatten(bulk_curve_points(&flatten(surface.coefficients()), a, b), dim);
+            let net = rows.iter().map(|row| bulk_curve_points(row, c, d)).collect();
+            TensorPatch::new(net).expect("a rectangular net")
+        }
+        Method::ClosedForm => closed_form::restrict_tensor(surface, rect),
+        Method::Definition => definition::restrict_tensor(surface, rect),
+        Method::Pyramid => pyramid::restrict_tensor(surface, rect),
+        Method::Polarisation => polarisation::restrict_tensor(surface, rect),
+    }
+}
+
+/// `surface`, as a triangular patch of total degree N = n + m, restricted to the triangle with
+/// corners `tri = [a, b, c]`, by `method`.
+pub fn restrict_triangle<T: Ring>(
+    surface: &PowerSurface<T>,
+    tri: &[[T; 2]; 3],
+    method: Method,
+) -> TriangularPatch<T> {
+    match method {
+        Method::Bulk => bulk_triangle(surface, tri),
+        Method::ClosedForm => closed_form::restrict_triangle(surface, tri),
+        Method::Definition => definition::restrict_triangle(surface, tri),
+        Method::Pyramid => pyramid::restrict_triangle(surface, tri),
+        Method::Polarisation => polarisation::restrict_triangle(surface, tri),
+    }
+}
+
+/// Multiplies the binary form `form` (coefficients of s^alpha t^(l - alpha), alpha = 0..=l)
+/// by the linear form `p s + q t`.
+fn times_linear<T: Ring>(form: &[Point<T>], p: &T, q: &T) -> Vec<Point<T>> {
+    let l = form.len() - 1;
+    let dim = form[0].len();
+    let mut out = vec![point::zero::<T>(dim); l + 2];
+    for (alpha, f) in form.iter().enumerate() {
+        point::add_scaled(&mut out[alpha + 1], p, f);
+        point::add_scaled(&mut out[alpha], q, f);
+    }
+    out
+}
+
+fn bulk_triangle<T: Ring>(surface: &PowerSurface<T>, tri: &[[T; 2]; 3]) -> TriangularPatch<T> {
+    let (n, m) = surface.degree();
+    let big_n = n + m;
+    let dim = surface.dim();
+    let [[a1, a2], [b1, b2], [c1, c2]] = tri;
+    // 1. S(c1 + x, c2 + y): Taylor shift along u with rows as points, then along v.
+    let mut long = flatten(surface.coefficients());
+    taylor_shift(&mut long, c1);
+    let mut shifted = unflatten(long, dim);
+    for row in shifted.iter_mut() {
+        taylor_shift(row, c2);
+    }
+    // 2. x = p s + q t, y = r s + w t applied to every homogeneous part.
+    let (p, q) = (a1.sub(c1), b1.sub(c1));
+    let (r, w) = (a2.sub(c2), b2.sub(c2));
+    // y_powers[l] = Y^l as a binary form of degree l with scalar coefficients.
+    let mut y_powers: Vec<Vec<T>> = vec![vec![T::one()]];
+    for l in 1..=m {
+        let prev = &y_powers[l - 1];
+        let mut next = vec![T::zero(); l + 1];
+        for (alpha, f) in prev.iter().enumerate() {
+            next[alpha + 1].add_assign(&r.mul(f));
+            next[alpha].add_assign(&w.mul(f));
+        }
+        y_powers.push(next);
+    }
+    let mut d = vec![point::zero::<T>(dim); triangle_len(big_n)];
+    for k in 0..=big_n {
+        // f_k = sum_{i + j = k} c'_ij x^i y^j, i <= n, j <= m; Horner over descending i.
+        let i_top = k.min(n);
+        let j_low = k - i_top;
+        if j_low > m {
+            continue;
+        }
+        // acc = c'_{i_top, j_low} X^0 Y^{j_low}.
+        let mut acc: Vec<Point<T>> = y_powers[j_low]
+            .iter()
+            .map(|y| shifted[i_top][j_low].iter().map(|c| c.mul(y)).collect())
+            .collect();
+        for i in (0..i_top).rev() {
+            let j = k - i;
+            acc = times_linear(&acc, &p, &q);
+            if j <= m {
+                for (alpha, y) in y_powers[j].iter().enumerate() {
+                    point::add_scaled(&mut acc[alpha], y, &shifted[i][j]);
+                }
+            }
+        }
+        // acc[alpha] is the coefficient of s^alpha t^(k - alpha).
+        for (alpha, coef) in acc.into_iter().enumerate() {
+            d[triangle_index(big_n, alpha, k - alpha)] = coef;
+        }
+    }
+    // 3. Bernstein form on the triangle (s <-> a, t <-> b, 1 - s - t <-> c).
+    triangle_power_to_bernstein(big_n, &d)
+}

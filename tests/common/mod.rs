@@ -1,0 +1,42 @@
+//! Shared helpers of the integration tests: a tiny deterministic PRNG and random inputs.
+#![allow(dead_code)]
+
+use blossom::{PowerCurve, PowerSurface, Rational};
+use num_bigint::BigInt;
+
+/// SplitMix64: deterministic, dependency-free.
+pub struct Rng(pub u64);
+
+impl Rng {
+    pub fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// A rational p/q with |p| <= 20, 1 <= q <= 9.
+    pub fn rational(&mut self) -> Rational {
+        let p = (self.next() % 41) as i64 - 20;
+        let q = (self.next() % 9) as i64 + 1;
+        Rational::new(BigInt::from(p), BigInt::from(q))
+    }
+
+    pub fn point(&mut self, dim: usize) -> Vec<Rational> {
+        (0..dim).map(|_| self.rational()).collect()
+    }
+
+    pub fn curve(&mut self, n: usize, dim: usize) -> PowerCurve<Rational> {
+        PowerCurve::new((0..=n).map(|_| self.point(dim)).collect()).unwrap()
+    }
+
+    pub fn surface(&mut self, n: usize, m: usize, dim: usize) -> PowerSurface<Rational> {
+        PowerSurface::new(
+            (0..=n)
+                .map(|_| (0..=m).map(|_| self.point(dim)).collect())
+                .collect(),
+        )
+        .unwrap()
+    }
+}
