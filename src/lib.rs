@@ -33,6 +33,7 @@ pub mod error;
 pub mod point;
 pub mod poly;
 pub mod power;
+pub mod proofs;
 pub mod restrict;
 pub mod verify;
 pub mod ring;

@@ -3,14 +3,19 @@
 //!
 //! Each submodule contributes the sections of one part of the papers.
 
+pub mod formula_versions;
+pub mod paper_data;
+pub mod proof_summary;
 pub mod report;
+pub mod subdivision;
 
 pub use report::{Entry, Report, Section, Status};
 
 /// Builds the whole report.
 pub fn build_report() -> Report {
     let mut report = Report::default();
-    report.sections.extend(Vec::<Section>::new());
+    report.sections.extend(subdivision::sections());
+    report.sections.push(proof_summary::section());
     report
 }
 
