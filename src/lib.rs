@@ -25,11 +25,14 @@
 
 extern crate self as blossom;
 
+pub mod accuracy;
 pub mod basis;
 pub mod bezier;
 pub mod binomial;
 pub mod blossoms;
+pub mod cli;
 pub mod error;
+pub mod number;
 pub mod point;
 pub mod poly;
 pub mod power;
@@ -44,3 +47,8 @@ pub use poly::Poly;
 pub use power::{PowerCurve, PowerSurface};
 pub use restrict::{restrict_curve, restrict_tensor, restrict_triangle, Method};
 pub use ring::{Rational, Ring};
+
+/// The README's examples, compiled and run as doc tests.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;

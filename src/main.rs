@@ -1,1 +1,5 @@
-fn main() {}
+//! The `blossom` binary: everything is in [`blossom::cli`].
+
+fn main() {
+    std::process::exit(blossom::cli::main());
+}
