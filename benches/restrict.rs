@@ -5,7 +5,9 @@
 //! Run: `cargo bench --bench restrict`, then `cargo run --release --example bench_slopes` for
 //! the log-log slopes and ratios.
 
-use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method, PowerCurve, PowerSurface};
+use blossom::{
+    restrict_curve, restrict_tensor, restrict_triangle, Method, PowerCurve, PowerSurface,
+};
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::time::Duration;
 
@@ -15,13 +17,22 @@ fn value(k: usize) -> f64 {
 }
 
 fn curve(n: usize) -> PowerCurve<f64> {
-    PowerCurve::new((0..=n).map(|i| (0..3).map(|k| value(3 * i + k)).collect()).collect()).unwrap()
+    PowerCurve::new(
+        (0..=n)
+            .map(|i| (0..3).map(|k| value(3 * i + k)).collect())
+            .collect(),
+    )
+    .unwrap()
 }
 
 fn surface(n: usize, m: usize) -> PowerSurface<f64> {
     PowerSurface::new(
         (0..=n)
-            .map(|i| (0..=m).map(|j| (0..3).map(|k| value(97 * i + 3 * j + k)).collect()).collect())
+            .map(|i| {
+                (0..=m)
+                    .map(|j| (0..3).map(|k| value(97 * i + 3 * j + k)).collect())
+                    .collect()
+            })
             .collect(),
     )
     .unwrap()
@@ -34,9 +45,13 @@ fn curves(c: &mut Criterion) {
     for n in [4usize, 8, 16, 32, 64] {
         let input = curve(n);
         for method in METHODS {
-            group.bench_with_input(BenchmarkId::new(method.name(), n), &input, |bench, input| {
-                bench.iter(|| restrict_curve(black_box(input), &0.25, &0.75, method))
-            });
+            group.bench_with_input(
+                BenchmarkId::new(method.name(), n),
+                &input,
+                |bench, input| {
+                    bench.iter(|| restrict_curve(black_box(input), &0.25, &0.75, method))
+                },
+            );
         }
     }
     group.finish();
@@ -48,9 +63,11 @@ fn tensors(c: &mut Criterion) {
     for n in [2usize, 4, 8, 16] {
         let input = surface(n, n);
         for method in METHODS {
-            group.bench_with_input(BenchmarkId::new(method.name(), n), &input, |bench, input| {
-                bench.iter(|| restrict_tensor(black_box(input), &rect, method))
-            });
+            group.bench_with_input(
+                BenchmarkId::new(method.name(), n),
+                &input,
+                |bench, input| bench.iter(|| restrict_tensor(black_box(input), &rect, method)),
+            );
         }
     }
     group.finish();
@@ -62,9 +79,11 @@ fn triangles(c: &mut Criterion) {
     for big_n in [2usize, 4, 8, 16] {
         let input = surface(big_n / 2, big_n - big_n / 2);
         for method in METHODS {
-            group.bench_with_input(BenchmarkId::new(method.name(), big_n), &input, |bench, input| {
-                bench.iter(|| restrict_triangle(black_box(input), &tri, method))
-            });
+            group.bench_with_input(
+                BenchmarkId::new(method.name(), big_n),
+                &input,
+                |bench, input| bench.iter(|| restrict_triangle(black_box(input), &tri, method)),
+            );
         }
     }
     group.finish();

@@ -15,9 +15,14 @@ fn median_ns(path: &Path) -> Option<f64> {
 
 fn slope(points: &[(f64, f64)]) -> f64 {
     let k = points.len() as f64;
-    let (sx, sy) = points.iter().fold((0.0, 0.0), |(a, b), (x, y)| (a + x.ln(), b + y.ln()));
+    let (sx, sy) = points
+        .iter()
+        .fold((0.0, 0.0), |(a, b), (x, y)| (a + x.ln(), b + y.ln()));
     let (mx, my) = (sx / k, sy / k);
-    let num: f64 = points.iter().map(|(x, y)| (x.ln() - mx) * (y.ln() - my)).sum();
+    let num: f64 = points
+        .iter()
+        .map(|(x, y)| (x.ln() - mx) * (y.ln() - my))
+        .sum();
     let den: f64 = points.iter().map(|(x, _)| (x.ln() - mx).powi(2)).sum();
     num / den
 }
@@ -42,7 +47,9 @@ fn main() {
         println!("group {group}");
         let mut table: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
         for m in methods {
-            let Ok(sizes) = fs::read_dir(root.join(&group).join(&m)) else { continue };
+            let Ok(sizes) = fs::read_dir(root.join(&group).join(&m)) else {
+                continue;
+            };
             let mut pts: Vec<(f64, f64)> = sizes
                 .filter_map(|e| e.ok())
                 .filter_map(|e| {
@@ -56,7 +63,10 @@ fn main() {
             }
         }
         for (m, pts) in &table {
-            let medians: Vec<String> = pts.iter().map(|(n, t)| format!("{n}: {:.3} us", t / 1e3)).collect();
+            let medians: Vec<String> = pts
+                .iter()
+                .map(|(n, t)| format!("{n}: {:.3} us", t / 1e3))
+                .collect();
             println!("  {m:12} slope {:.2}   {}", slope(pts), medians.join(", "));
         }
         if let Some((base, base_pts)) = table.iter().find(|(m, _)| m == "bulk") {

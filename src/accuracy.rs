@@ -27,7 +27,12 @@ fn to_f64(p: &[Rational]) -> Vec<f64> {
 }
 
 /// Relative error of `method` in f64 on `curve` restricted to [a, b].
-pub fn curve_error(curve: &PowerCurve<Rational>, a: &Rational, b: &Rational, method: Method) -> f64 {
+pub fn curve_error(
+    curve: &PowerCurve<Rational>,
+    a: &Rational,
+    b: &Rational,
+    method: Method,
+) -> f64 {
     let exact = restrict_curve(curve, a, b, Method::Bulk);
     let fc = PowerCurve::new(curve.coefficients().iter().map(|p| to_f64(p)).collect())
         .expect("same shape as the exact curve");
@@ -51,7 +56,11 @@ fn surface_to_f64(s: &PowerSurface<Rational>) -> PowerSurface<f64> {
 /// Relative error of `method` in f64 on `surface` restricted to the rectangle `rect`.
 pub fn tensor_error(surface: &PowerSurface<Rational>, rect: &[Rational; 4], method: Method) -> f64 {
     let exact = restrict_tensor(surface, rect, Method::Bulk);
-    let float = restrict_tensor(&surface_to_f64(surface), &rect.each_ref().map(rational_to_f64), method);
+    let float = restrict_tensor(
+        &surface_to_f64(surface),
+        &rect.each_ref().map(rational_to_f64),
+        method,
+    );
     error_of(
         &exact.control_points().iter().flatten().collect::<Vec<_>>(),
         &float.control_points().iter().flatten().collect::<Vec<_>>(),
@@ -59,7 +68,11 @@ pub fn tensor_error(surface: &PowerSurface<Rational>, rect: &[Rational; 4], meth
 }
 
 /// Relative error of `method` in f64 on `surface` restricted to the triangle `tri`.
-pub fn triangle_error(surface: &PowerSurface<Rational>, tri: &[[Rational; 2]; 3], method: Method) -> f64 {
+pub fn triangle_error(
+    surface: &PowerSurface<Rational>,
+    tri: &[[Rational; 2]; 3],
+    method: Method,
+) -> f64 {
     let exact = restrict_triangle(surface, tri, Method::Bulk);
     let ftri = tri.each_ref().map(|p| p.each_ref().map(rational_to_f64));
     let float = restrict_triangle(&surface_to_f64(surface), &ftri, method);

@@ -66,7 +66,12 @@ pub fn binomial_transform<T: Ring>(e: &mut [Point<T>]) {
 pub fn power_to_bernstein<T: Ring>(d: &[Point<T>]) -> Vec<Point<T>> {
     let n = d.len() as i64 - 1;
     let mut e: Vec<Point<T>> = d.to_vec();
-    for (i, ei) in e.iter_mut().enumerate().skip(1).take((n - 1).max(0) as usize) {
+    for (i, ei) in e
+        .iter_mut()
+        .enumerate()
+        .skip(1)
+        .take((n - 1).max(0) as usize)
+    {
         scale_point_rational(ei, &Rational::new(1.into(), binomial(n, i as i64)));
     }
     binomial_transform(&mut e);
@@ -102,13 +107,18 @@ pub fn triangle_power_to_bernstein<T: Ring>(n: usize, d: &[Point<T>]) -> Triangu
     // q[nu][mu] = sum_{i <= nu} C(nu, i) h[i][mu] for nu <= n - mu.
     let mut out: Vec<Option<Point<T>>> = vec![None; triangle_len(n)];
     for mu in 0..=n {
-        let mut col: Vec<Point<T>> = (0..=n - mu).map(|i| std::mem::take(&mut h[i][mu])).collect();
+        let mut col: Vec<Point<T>> = (0..=n - mu)
+            .map(|i| std::mem::take(&mut h[i][mu]))
+            .collect();
         binomial_transform(&mut col);
         for (nu, q) in col.into_iter().enumerate() {
             out[triangle_index(n, nu, mu)] = Some(q);
         }
     }
-    let points = out.into_iter().map(|q| q.expect("every index is filled")).collect();
+    let points = out
+        .into_iter()
+        .map(|q| q.expect("every index is filled"))
+        .collect();
     TriangularPatch::new(n, points).expect("a net of the right size")
 }
 
@@ -147,7 +157,11 @@ mod tests {
         d[triangle_index(2, 1, 1)] = vec![q(1)];
         let patch = triangle_power_to_bernstein(2, &d);
         for (nu, mu, _, p) in patch.entries() {
-            let want = if (nu, mu) == (1, 1) { Rational::new(1.into(), 2.into()) } else { q(0) };
+            let want = if (nu, mu) == (1, 1) {
+                Rational::new(1.into(), 2.into())
+            } else {
+                q(0)
+            };
             assert_eq!(p, &vec![want], "q_{nu}{mu}");
         }
     }

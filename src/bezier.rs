@@ -23,7 +23,10 @@ impl<T: Ring> BezierCurve<T> {
             return Err(Error::new("control_points", "expected at least one point"));
         };
         if first.is_empty() {
-            return Err(Error::new("control_points[0]", "expected at least 1 coordinate"));
+            return Err(Error::new(
+                "control_points[0]",
+                "expected at least 1 coordinate",
+            ));
         }
         check_dims(&control_points, first.len(), "control_points")?;
         Ok(BezierCurve { control_points })
@@ -65,7 +68,10 @@ impl<T: Ring> TensorPatch<T> {
         };
         let cols = first.len();
         if cols == 0 || first[0].is_empty() {
-            return Err(Error::new("control_points[0]", "expected a non-empty row of points"));
+            return Err(Error::new(
+                "control_points[0]",
+                "expected a non-empty row of points",
+            ));
         }
         let dim = first[0].len();
         for (i, row) in control_points.iter().enumerate() {
@@ -82,7 +88,10 @@ impl<T: Ring> TensorPatch<T> {
 
     /// The bidegree `(n, m)`.
     pub fn degree(&self) -> (usize, usize) {
-        (self.control_points.len() - 1, self.control_points[0].len() - 1)
+        (
+            self.control_points.len() - 1,
+            self.control_points[0].len() - 1,
+        )
     }
 
     /// The control net, `[nu][mu]`.
@@ -98,7 +107,11 @@ impl<T: Ring> TensorPatch<T> {
     /// The point at `(s, t)` (two passes of de Casteljau).
     pub fn eval(&self, s: &T, t: &T) -> Point<T> {
         let (n, m) = self.degree();
-        pyramid::bezier_tensor_blossom(&self.control_points, &vec![s.clone(); n], &vec![t.clone(); m])
+        pyramid::bezier_tensor_blossom(
+            &self.control_points,
+            &vec![s.clone(); n],
+            &vec![t.clone(); m],
+        )
     }
 }
 
@@ -133,11 +146,17 @@ impl<T: Ring> TriangularPatch<T> {
         if control_points.len() != want {
             return Err(Error::new(
                 "control_points",
-                format!("a triangular patch of degree {degree} has {want} points, found {}", control_points.len()),
+                format!(
+                    "a triangular patch of degree {degree} has {want} points, found {}",
+                    control_points.len()
+                ),
             ));
         }
         if control_points[0].is_empty() {
-            return Err(Error::new("control_points[0]", "expected at least 1 coordinate"));
+            return Err(Error::new(
+                "control_points[0]",
+                "expected at least 1 coordinate",
+            ));
         }
         check_dims(&control_points, control_points[0].len(), "control_points")?;
         Ok(TriangularPatch {

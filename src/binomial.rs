@@ -59,7 +59,10 @@ mod tests {
             assert_eq!(binomial(n, n + 1), BigInt::zero());
         }
         assert_eq!(binomial(64, 32).to_string(), "1832624140942590534");
-        assert_eq!(binomial(100, 50).to_string(), "100891344545564193334812497256");
+        assert_eq!(
+            binomial(100, 50).to_string(),
+            "100891344545564193334812497256"
+        );
     }
 
     #[test]

@@ -38,8 +38,8 @@ pub mod poly;
 pub mod power;
 pub mod proofs;
 pub mod restrict;
-pub mod verify;
 pub mod ring;
+pub mod verify;
 
 pub use bezier::{BezierCurve, TensorPatch, TriangularPatch};
 pub use error::Error;

@@ -31,11 +31,17 @@ impl<T: Ring> PowerCurve<T> {
     /// A curve from its coefficients `c_0, ..., c_n`, all of one dimension `D >= 1`.
     pub fn new(coefficients: Vec<Point<T>>) -> Result<Self> {
         let Some(first) = coefficients.first() else {
-            return Err(Error::new("coefficients", "expected at least one coefficient"));
+            return Err(Error::new(
+                "coefficients",
+                "expected at least one coefficient",
+            ));
         };
         let dim = first.len();
         if dim == 0 {
-            return Err(Error::new("coefficients[0]", "expected at least 1 coordinate"));
+            return Err(Error::new(
+                "coefficients[0]",
+                "expected at least 1 coordinate",
+            ));
         }
         check_dims(&coefficients, dim, "coefficients")?;
         Ok(PowerCurve { coefficients })
@@ -88,13 +94,19 @@ impl<T: Ring> PowerSurface<T> {
         }
         let dim = first_row[0].len();
         if dim == 0 {
-            return Err(Error::new("coefficients[0][0]", "expected at least 1 coordinate"));
+            return Err(Error::new(
+                "coefficients[0][0]",
+                "expected at least 1 coordinate",
+            ));
         }
         for (i, row) in coefficients.iter().enumerate() {
             if row.len() != cols {
                 return Err(Error::new(
                     format!("coefficients[{i}]"),
-                    format!("expected {cols} points (the grid must be rectangular), found {}", row.len()),
+                    format!(
+                        "expected {cols} points (the grid must be rectangular), found {}",
+                        row.len()
+                    ),
                 ));
             }
             check_dims(row, dim, &format!("coefficients[{i}]"))?;
@@ -143,11 +155,8 @@ mod tests {
     fn horner_matches_monomial_sum() {
         let c = PowerCurve::new(vec![vec![1.0, 0.0], vec![2.0, 1.0], vec![3.0, -1.0]]).unwrap();
         assert_eq!(c.eval(&2.0), vec![1.0 + 4.0 + 12.0, 2.0 - 4.0]);
-        let s = PowerSurface::new(vec![
-            vec![vec![1.0], vec![2.0]],
-            vec![vec![3.0], vec![4.0]],
-        ])
-        .unwrap();
+        let s = PowerSurface::new(vec![vec![vec![1.0], vec![2.0]], vec![vec![3.0], vec![4.0]]])
+            .unwrap();
         // 1 + 2v + 3u + 4uv at (2, 5)
         assert_eq!(s.eval(&2.0, &5.0), vec![1.0 + 10.0 + 6.0 + 40.0]);
     }
@@ -159,7 +168,10 @@ mod tests {
             "coefficients"
         );
         let e = PowerCurve::new(vec![vec![1.0, 2.0], vec![1.0]]).unwrap_err();
-        assert_eq!(e.to_string(), "coefficients[1]: expected 2 coordinates, found 1");
+        assert_eq!(
+            e.to_string(),
+            "coefficients[1]: expected 2 coordinates, found 1"
+        );
         let e = PowerSurface::new(vec![vec![vec![1.0], vec![2.0]], vec![vec![3.0]]]).unwrap_err();
         assert_eq!(e.field, "coefficients[1]");
         let e = PowerSurface::new(vec![vec![vec![1.0], vec![2.0, 3.0]]]).unwrap_err();

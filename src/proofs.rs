@@ -53,7 +53,11 @@ pub fn symbolic_curve(n: usize) -> PowerCurve<Poly> {
 pub fn symbolic_surface(n: usize, m: usize) -> PowerSurface<Poly> {
     PowerSurface::new(
         (0..=n)
-            .map(|i| (0..=m).map(|j| vec![Poly::var(&format!("c_{i}_{j}"))]).collect())
+            .map(|i| {
+                (0..=m)
+                    .map(|j| vec![Poly::var(&format!("c_{i}_{j}"))])
+                    .collect()
+            })
             .collect(),
     )
     .expect("a non-empty grid")

@@ -84,7 +84,12 @@ fn bulk_curve_points<T: Ring>(coefficients: &[Point<T>], a: &T, b: &T) -> Vec<Po
 }
 
 /// `curve` restricted to [a, b] by `method`.
-pub fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T, method: Method) -> BezierCurve<T> {
+pub fn restrict_curve<T: Ring>(
+    curve: &PowerCurve<T>,
+    a: &T,
+    b: &T,
+    method: Method,
+) -> BezierCurve<T> {
     match method {
         Method::Bulk => BezierCurve::new(bulk_curve_points(curve.coefficients(), a, b))
             .expect("n + 1 points of one dimension"),
@@ -96,14 +101,24 @@ pub fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T, method: Meth
 }
 
 /// `surface` restricted to `rect = [a, b, c, d]`, i.e. [a, b] x [c, d], by `method`.
-pub fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4], method: Method) -> TensorPatch<T> {
+pub fn restrict_tensor<T: Ring>(
+    surface: &PowerSurface<T>,
+    rect: &[T; 4],
+    method: Method,
+) -> TensorPatch<T> {
     match method {
         Method::Bulk => {
             let [a, b, c, d] = rect;
             let dim = surface.dim();
             // Along u with whole rows as points, then along v row by row.
-            let rows = unflatten(bulk_curve_points(&flatten(surface.coefficients()), a, b), dim);
-            let net = rows.iter().map(|row| bulk_curve_points(row, c, d)).collect();
+            let rows = unflatten(
+                bulk_curve_points(&flatten(surface.coefficients()), a, b),
+                dim,
+            );
+            let net = rows
+                .iter()
+                .map(|row| bulk_curve_points(row, c, d))
+                .collect();
             TensorPatch::new(net).expect("a rectangular net")
         }
         Method::ClosedForm => closed_form::restrict_tensor(surface, rect),

@@ -17,7 +17,11 @@ fn curves_agree_up_to_degree_20() {
         assert_eq!(bulk.control_points()[0], curve.eval(&a));
         assert_eq!(bulk.control_points()[n], curve.eval(&b));
         for method in Method::ALL {
-            assert_eq!(restrict_curve(&curve, &a, &b, method), bulk, "{method:?} n={n}");
+            assert_eq!(
+                restrict_curve(&curve, &a, &b, method),
+                bulk,
+                "{method:?} n={n}"
+            );
         }
     }
 }
@@ -32,7 +36,11 @@ fn tensor_patches_agree_up_to_6_by_6() {
             let bulk = restrict_tensor(&s, &rect, Method::Bulk);
             assert_eq!(bulk.control_points()[n][m], s.eval(&rect[1], &rect[3]));
             for method in Method::ALL {
-                assert_eq!(restrict_tensor(&s, &rect, method), bulk, "{method:?} ({n},{m})");
+                assert_eq!(
+                    restrict_tensor(&s, &rect, method),
+                    bulk,
+                    "{method:?} ({n},{m})"
+                );
             }
         }
     }
@@ -53,10 +61,17 @@ fn triangles_agree_up_to_total_degree_10() {
             assert_eq!(bulk.get(0, 0), &s.eval(&tri[2][0], &tri[2][1]));
             for method in Method::ALL {
                 // The per-point closed form and the definition are slow at N = 10: sample.
-                if big_n > 7 && n % 3 != 0 && matches!(method, Method::ClosedForm | Method::Polarisation) {
+                if big_n > 7
+                    && n % 3 != 0
+                    && matches!(method, Method::ClosedForm | Method::Polarisation)
+                {
                     continue;
                 }
-                assert_eq!(restrict_triangle(&s, &tri, method), bulk, "{method:?} ({n},{m})");
+                assert_eq!(
+                    restrict_triangle(&s, &tri, method),
+                    bulk,
+                    "{method:?} ({n},{m})"
+                );
             }
         }
     }

@@ -9,28 +9,41 @@ use common::Rng;
 use num_bigint::BigInt;
 
 fn unit(rng: &mut Rng) -> Rational {
-    Rational::new(BigInt::from((rng.next() % 2001) as i64 - 1000), BigInt::from(1000))
+    Rational::new(
+        BigInt::from((rng.next() % 2001) as i64 - 1000),
+        BigInt::from(1000),
+    )
 }
 
 #[test]
 fn low_degree_restrictions_are_accurate_to_a_few_ulps() {
     let mut rng = Rng(11);
     for n in 1..=6 {
-        let curve = blossom::PowerCurve::new((0..=n).map(|_| vec![unit(&mut rng), unit(&mut rng)]).collect()).unwrap();
+        let curve = blossom::PowerCurve::new(
+            (0..=n)
+                .map(|_| vec![unit(&mut rng), unit(&mut rng)])
+                .collect(),
+        )
+        .unwrap();
         let (a, b) = (unit(&mut rng), unit(&mut rng));
         for method in Method::ALL {
             let e = curve_error(&curve, &a, &b, method);
             assert!(e < 1e-13, "curve n={n} {method:?}: {e:e}");
         }
         let s = blossom::PowerSurface::new(
-            (0..=n / 2).map(|_| (0..=n - n / 2).map(|_| vec![unit(&mut rng)]).collect()).collect(),
+            (0..=n / 2)
+                .map(|_| (0..=n - n / 2).map(|_| vec![unit(&mut rng)]).collect())
+                .collect(),
         )
         .unwrap();
         let rect: [Rational; 4] = std::array::from_fn(|_| unit(&mut rng));
         let tri: [[Rational; 2]; 3] = std::array::from_fn(|_| [unit(&mut rng), unit(&mut rng)]);
         for method in Method::ALL {
             assert!(tensor_error(&s, &rect, method) < 1e-13, "tensor {method:?}");
-            assert!(triangle_error(&s, &tri, method) < 1e-13, "triangle {method:?}");
+            assert!(
+                triangle_error(&s, &tri, method) < 1e-13,
+                "triangle {method:?}"
+            );
         }
     }
 }
@@ -43,7 +56,8 @@ fn high_degree_power_basis_loses_digits_in_the_bulk_path() {
     let mut rng = Rng(5);
     let (mut bulk, mut closed) = (0.0f64, 0.0f64);
     for _ in 0..5 {
-        let curve = blossom::PowerCurve::new((0..=24).map(|_| vec![unit(&mut rng)]).collect()).unwrap();
+        let curve =
+            blossom::PowerCurve::new((0..=24).map(|_| vec![unit(&mut rng)]).collect()).unwrap();
         let (a, b) = (unit(&mut rng), unit(&mut rng));
         bulk = bulk.max(curve_error(&curve, &a, &b, Method::Bulk));
         closed = closed.max(curve_error(&curve, &a, &b, Method::ClosedForm));

@@ -23,26 +23,42 @@ fn q(text: &str) -> Rational {
 fn report_explains_everything_and_finds_the_table_2_convention() {
     let report = build_report();
     assert!(report.all_explained(), "{}", report.to_text());
-    let s3 = report.sections.iter().find(|s| s.title == "Table 2, S_3").unwrap();
+    let s3 = report
+        .sections
+        .iter()
+        .find(|s| s.title == "Table 2, S_3")
+        .unwrap();
     assert_eq!(s3.status, Status::Explained);
-    assert!(s3.findings.iter().any(|f| f.contains("q_kl = b(c^k, a^l, b^(5-k-l)): 21/21")));
+    assert!(s3
+        .findings
+        .iter()
+        .any(|f| f.contains("q_kl = b(c^k, a^l, b^(5-k-l)): 21/21")));
     for title in ["Table 1, S_1", "Table 1, S_2"] {
         let s = report.sections.iter().find(|s| s.title == title).unwrap();
         assert_eq!(s.status, Status::Reproduced, "{title}");
         assert_eq!(s.entries.len(), 12);
     }
     // Wrong versions of (15), (16), (21) come with a counterexample.
-    for title in ["Formula (15) as printed in 000", "Formula (16) as printed in 001", "Formula (21) as printed (000 and 001)"] {
+    for title in [
+        "Formula (15) as printed in 000",
+        "Formula (16) as printed in 001",
+        "Formula (21) as printed (000 and 001)",
+    ] {
         let s = report.sections.iter().find(|s| s.title == title).unwrap();
         assert_eq!(s.status, Status::Explained, "{title}");
-        assert!(s.findings.iter().any(|f| f.contains("counterexample")), "{title}");
+        assert!(
+            s.findings.iter().any(|f| f.contains("counterexample")),
+            "{title}"
+        );
     }
     snapshot!("verify_report", report.to_text());
 }
 
 #[test]
 fn a_wrong_printed_value_is_unexplained() {
-    use blossom::verify::paper_data::{TABLE_1_RECTANGLES, TABLE_1_S2, TABLE_2_S4, TABLE_2_TRIANGLES};
+    use blossom::verify::paper_data::{
+        TABLE_1_RECTANGLES, TABLE_1_S2, TABLE_2_S4, TABLE_2_TRIANGLES,
+    };
     use blossom::verify::subdivision::{tensor_section, triangle_section};
     // One printed coordinate off by a little: no reading of the labels explains it.
     let mut s4 = TABLE_2_S4;
@@ -70,7 +86,10 @@ fn table(title: &str, points: Vec<(String, Vec<Rational>)>) -> String {
 #[test]
 fn computed_tables_snapshot() {
     let surface = example_1_surface();
-    for (name, rect) in [("table_1_s1", ["0", "1", "0", "1"]), ("table_1_s2", ["1/3", "2/3", "1/4", "3/4"])] {
+    for (name, rect) in [
+        ("table_1_s1", ["0", "1", "0", "1"]),
+        ("table_1_s2", ["1/3", "2/3", "1/4", "3/4"]),
+    ] {
         let rect = rect.map(q);
         let net = restrict_tensor(&surface, &rect, Method::Bulk);
         let mut rows = Vec::new();
@@ -79,7 +98,13 @@ fn computed_tables_snapshot() {
                 rows.push((format!("p_{nu}{mu}"), p.clone()));
             }
         }
-        snapshot!(name, table(&format!("{name}: p_(nu mu) = b(b^nu a^(3-nu); d^mu c^(2-mu)) on {rect:?}"), rows));
+        snapshot!(
+            name,
+            table(
+                &format!("{name}: p_(nu mu) = b(b^nu a^(3-nu); d^mu c^(2-mu)) on {rect:?}"),
+                rows
+            )
+        );
     }
     for (name, tri) in [
         ("table_2_s3", [["0", "0"], ["1", "0"], ["0", "1"]]),
@@ -91,7 +116,13 @@ fn computed_tables_snapshot() {
             .entries()
             .map(|(nu, mu, la, p)| (format!("q[a^{nu} b^{mu} c^{la}]"), p.clone()))
             .collect();
-        snapshot!(name, table(&format!("{name}: eq. (12) indexing, lexicographic in (nu, mu)"), rows));
+        snapshot!(
+            name,
+            table(
+                &format!("{name}: eq. (12) indexing, lexicographic in (nu, mu)"),
+                rows
+            )
+        );
     }
 }
 
@@ -116,7 +147,8 @@ fn symbolic_control_points_snapshot() {
     let surface = blossom::proofs::symbolic_surface(1, 1);
     let rect = ["a", "b", "c", "d"].map(Poly::var);
     let net = restrict_tensor(&surface, &rect, Method::Bulk);
-    let mut out = String::from("S(u, v) = sum c_i_j u^i v^j, (n, m) = (1, 1), on [a, b] x [c, d]\n");
+    let mut out =
+        String::from("S(u, v) = sum c_i_j u^i v^j, (n, m) = (1, 1), on [a, b] x [c, d]\n");
     for (nu, row) in net.control_points().iter().enumerate() {
         for (mu, p) in row.iter().enumerate() {
             let _ = writeln!(out, "p_{nu}{mu} = {}", p[0]);

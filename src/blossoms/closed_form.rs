@@ -30,10 +30,7 @@ fn curve_weight<T: Ring>(n: usize, v: usize, i: usize, pa: &[T], pb: &[T]) -> T 
     let (n, v, i) = (n as i64, v as i64, i as i64);
     let mut w = T::zero();
     for k in 0.max(i + v - n)..=i.min(v) {
-        let coef = Rational::new(
-            binomial(v, k) * binomial(n - v, i - k),
-            binomial(n, i),
-        );
+        let coef = Rational::new(binomial(v, k) * binomial(n - v, i - k), binomial(n, i));
         w.add_assign(&pb[k as usize].mul(&pa[(i - k) as usize]).scale(&coef));
     }
     w
@@ -52,13 +49,20 @@ pub fn curve_point<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T, v: usize) -> Po
 
 /// All control points of `curve` on [a, b] by eq. (3), one at a time.
 pub fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCurve<T> {
-    let points = (0..=curve.degree()).map(|v| curve_point(curve, a, b, v)).collect();
+    let points = (0..=curve.degree())
+        .map(|v| curve_point(curve, a, b, v))
+        .collect();
     BezierCurve::new(points).expect("n + 1 points of one dimension")
 }
 
 /// The control point p_{nu mu} of `surface` on [a, b] x [c, d], Theorem 2, eq. (9): the
 /// double sum factors into the curve weights of (3) in u and in v (eqs. (10), (11)).
-pub fn tensor_point<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4], nu: usize, mu: usize) -> Point<T> {
+pub fn tensor_point<T: Ring>(
+    surface: &PowerSurface<T>,
+    rect: &[T; 4],
+    nu: usize,
+    mu: usize,
+) -> Point<T> {
     let (n, m) = surface.degree();
     let [a, b, c, d] = rect;
     let (pa, pb) = (powers(a, n), powers(b, n));
@@ -78,7 +82,11 @@ pub fn tensor_point<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4], nu: usize
 pub fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> TensorPatch<T> {
     let (n, m) = surface.degree();
     let points = (0..=n)
-        .map(|nu| (0..=m).map(|mu| tensor_point(surface, rect, nu, mu)).collect())
+        .map(|nu| {
+            (0..=m)
+                .map(|mu| tensor_point(surface, rect, nu, mu))
+                .collect()
+        })
         .collect();
     TensorPatch::new(points).expect("a rectangular net")
 }
@@ -137,7 +145,12 @@ pub struct TriangleFormula {
 /// denominator N! / (i! j! (N - i - j)!).
 pub const THEOREM_3: TriangleFormula = TriangleFormula {
     i_alpha: |s| (0.max(s.i + s.nu - s.big_n), s.i.min(s.nu)),
-    i_beta: |s| (0.max(s.i - s.i_alpha - s.lambda), (s.i - s.i_alpha).min(s.mu)),
+    i_beta: |s| {
+        (
+            0.max(s.i - s.i_alpha - s.lambda),
+            (s.i - s.i_alpha).min(s.mu),
+        )
+    },
     j_alpha: |s| {
         (
             0.max(s.j - (s.mu - s.i_beta) - (s.lambda - s.i_gamma)),
@@ -232,12 +245,20 @@ pub fn triangle_point_with<T: Ring>(
 }
 
 /// The control point q_{nu mu lambda} by Theorem 3, eq. (14).
-pub fn triangle_point<T: Ring>(surface: &PowerSurface<T>, tri: &[[T; 2]; 3], nu: usize, mu: usize) -> Point<T> {
+pub fn triangle_point<T: Ring>(
+    surface: &PowerSurface<T>,
+    tri: &[[T; 2]; 3],
+    nu: usize,
+    mu: usize,
+) -> Point<T> {
     triangle_point_with(&THEOREM_3, surface, tri, nu, mu)
 }
 
 /// All control points of `surface` on `tri` by eq. (14), one at a time.
-pub fn restrict_triangle<T: Ring>(surface: &PowerSurface<T>, tri: &[[T; 2]; 3]) -> TriangularPatch<T> {
+pub fn restrict_triangle<T: Ring>(
+    surface: &PowerSurface<T>,
+    tri: &[[T; 2]; 3],
+) -> TriangularPatch<T> {
     restrict_triangle_with(&THEOREM_3, surface, tri)
 }
 

@@ -50,13 +50,20 @@ pub fn curve_blossom<T: Ring>(curve: &PowerCurve<T>, args: &[T]) -> Point<T> {
 /// The blossom b(u_1..u_n; v_1..v_m) of the tensor patch, eqs. (7)-(8).
 pub fn tensor_blossom<T: Ring>(surface: &PowerSurface<T>, us: &[T], vs: &[T]) -> Point<T> {
     let (n, m) = surface.degree();
-    assert_eq!((us.len(), vs.len()), (n, m), "a blossom of bidegree (n, m) takes n + m arguments");
+    assert_eq!(
+        (us.len(), vs.len()),
+        (n, m),
+        "a blossom of bidegree (n, m) takes n + m arguments"
+    );
     let eu = subset_sums(us);
     let ev = subset_sums(vs);
     let mut acc = point::zero(surface.dim());
     for (i, row) in surface.coefficients().iter().enumerate() {
         for (j, c) in row.iter().enumerate() {
-            let k = Rational::new(1.into(), binomial(n as i64, i as i64) * binomial(m as i64, j as i64));
+            let k = Rational::new(
+                1.into(),
+                binomial(n as i64, i as i64) * binomial(m as i64, j as i64),
+            );
             point::add_scaled(&mut acc, &eu[i].mul(&ev[j]).scale(&k), c);
         }
     }
@@ -99,18 +106,25 @@ pub fn triangle_blossom<T: Ring>(surface: &PowerSurface<T>, args: &[[T; 2]]) -> 
 /// Control points w_v = b(b^v, a^(n-v)) of `curve` on [a, b], eq. (1) with (2).
 pub fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCurve<T> {
     let n = curve.degree();
-    let points = (0..=n).map(|v| curve_blossom(curve, &repeated(b, v, a, n - v))).collect();
+    let points = (0..=n)
+        .map(|v| curve_blossom(curve, &repeated(b, v, a, n - v)))
+        .collect();
     BezierCurve::new(points).expect("n + 1 points of one dimension")
 }
 
 /// Control points p_{nu mu} = b(b^nu, a^(n-nu); d^mu, c^(m-mu)), eq. (6) with (7)-(8).
 pub fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> TensorPatch<T> {
-    let points = tensor_net(surface.degree(), rect, |us, vs| tensor_blossom(surface, us, vs));
+    let points = tensor_net(surface.degree(), rect, |us, vs| {
+        tensor_blossom(surface, us, vs)
+    });
     TensorPatch::new(points).expect("a rectangular net")
 }
 
 /// Control points q_{nu mu lambda} = b(a^nu, b^mu, c^lambda), eq. (12) with (13).
-pub fn restrict_triangle<T: Ring>(surface: &PowerSurface<T>, tri: &[[T; 2]; 3]) -> TriangularPatch<T> {
+pub fn restrict_triangle<T: Ring>(
+    surface: &PowerSurface<T>,
+    tri: &[[T; 2]; 3],
+) -> TriangularPatch<T> {
     let (n, m) = surface.degree();
     let big_n = n + m;
     let points = triangle_net(big_n, tri, |args| triangle_blossom(surface, args));
@@ -128,7 +142,10 @@ mod tests {
         let e = subset_sums(&args);
         let mut brute = [0.0; 6];
         for mask in 0u32..32 {
-            let prod: f64 = (0..5).filter(|k| mask >> k & 1 == 1).map(|k| args[k]).product();
+            let prod: f64 = (0..5)
+                .filter(|k| mask >> k & 1 == 1)
+                .map(|k| args[k])
+                .product();
             brute[mask.count_ones() as usize] += prod;
         }
         assert_eq!(e, brute.to_vec());

@@ -59,7 +59,12 @@ fn for_each_sub_multiset(mult: &[usize], visit: &mut dyn FnMut(&[usize])) {
 ///
 /// `q` is only ever called at averages of the arguments. For `n = 0` the form is the constant
 /// `q(x)` for any x; it is evaluated at the origin.
-pub fn polar_form<T: Ring>(n: usize, args: &[Point<T>], dim: usize, q: &dyn Fn(&[T]) -> Point<T>) -> Point<T> {
+pub fn polar_form<T: Ring>(
+    n: usize,
+    args: &[Point<T>],
+    dim: usize,
+    q: &dyn Fn(&[T]) -> Point<T>,
+) -> Point<T> {
     assert_eq!(args.len(), n, "a polar form of degree n takes n arguments");
     if n == 0 {
         return q(&vec![T::zero(); dim]);
@@ -128,18 +133,25 @@ pub fn triangle_blossom<T: Ring>(surface: &PowerSurface<T>, args: &[[T; 2]]) -> 
 /// Control points w_v = b[b^v, a^(n-v)] of `curve` on [a, b], eq. (22) of 004.
 pub fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCurve<T> {
     let n = curve.degree();
-    let points = (0..=n).map(|v| curve_blossom(curve, &repeated(b, v, a, n - v))).collect();
+    let points = (0..=n)
+        .map(|v| curve_blossom(curve, &repeated(b, v, a, n - v)))
+        .collect();
     BezierCurve::new(points).expect("n + 1 points of one dimension")
 }
 
 /// Control points of `surface` on `rect = [a, b, c, d]` by two passes of eq. (22).
 pub fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> TensorPatch<T> {
-    let points = tensor_net(surface.degree(), rect, |us, vs| tensor_blossom(surface, us, vs));
+    let points = tensor_net(surface.degree(), rect, |us, vs| {
+        tensor_blossom(surface, us, vs)
+    });
     TensorPatch::new(points).expect("a rectangular net")
 }
 
 /// Control points q_{nu mu lambda} = b[a^nu, b^mu, c^lambda] of `surface` on `tri`, eq. (23).
-pub fn restrict_triangle<T: Ring>(surface: &PowerSurface<T>, tri: &[[T; 2]; 3]) -> TriangularPatch<T> {
+pub fn restrict_triangle<T: Ring>(
+    surface: &PowerSurface<T>,
+    tri: &[[T; 2]; 3],
+) -> TriangularPatch<T> {
     let (n, m) = surface.degree();
     let big_n = n + m;
     let points = triangle_net(big_n, tri, |args| triangle_blossom(surface, args));

@@ -13,15 +13,19 @@
 
 use crate::basis::{power_to_bernstein, triangle_power_to_bernstein};
 use crate::bezier::{triangle_index, triangle_len, BezierCurve, TensorPatch, TriangularPatch};
+use crate::blossoms::{repeated, tensor_net, triangle_net};
 use crate::point::{lerp, Point};
 use crate::power::{PowerCurve, PowerSurface};
-use crate::blossoms::{repeated, tensor_net, triangle_net};
 use crate::Ring;
 
 /// The blossom b[t_1, ..., t_n] of the Bézier curve with control points `control` (degree
 /// `n = control.len() - 1 = args.len()`), eq. (2) of seed 004.
 pub fn bezier_curve_blossom<T: Ring>(control: &[Point<T>], args: &[T]) -> Point<T> {
-    assert_eq!(args.len() + 1, control.len(), "a blossom of degree n takes n arguments");
+    assert_eq!(
+        args.len() + 1,
+        control.len(),
+        "a blossom of degree n takes n arguments"
+    );
     let mut level: Vec<Point<T>> = control.to_vec();
     for t in args {
         level = level.windows(2).map(|w| lerp(&w[0], &w[1], t)).collect();
@@ -32,7 +36,10 @@ pub fn bezier_curve_blossom<T: Ring>(control: &[Point<T>], args: &[T]) -> Point<
 /// The blossom b[u_1..u_n; v_1..v_m] of the tensor patch with net `net[nu][mu]`, in two passes
 /// (eq. (9) of seed 004): along v for every row, then along u.
 pub fn bezier_tensor_blossom<T: Ring>(net: &[Vec<Point<T>>], us: &[T], vs: &[T]) -> Point<T> {
-    let column: Vec<Point<T>> = net.iter().map(|row| bezier_curve_blossom(row, vs)).collect();
+    let column: Vec<Point<T>> = net
+        .iter()
+        .map(|row| bezier_curve_blossom(row, vs))
+        .collect();
     bezier_curve_blossom(&column, us)
 }
 
@@ -81,11 +88,17 @@ pub fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCur
 pub fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> TensorPatch<T> {
     let (n, m) = surface.degree();
     // Bernstein along v for every row i, then along u for every column mu.
-    let rows: Vec<Vec<Point<T>>> = surface.coefficients().iter().map(|r| power_to_bernstein(r)).collect();
+    let rows: Vec<Vec<Point<T>>> = surface
+        .coefficients()
+        .iter()
+        .map(|r| power_to_bernstein(r))
+        .collect();
     let cols: Vec<Vec<Point<T>>> = (0..=m)
         .map(|mu| power_to_bernstein(&rows.iter().map(|r| r[mu].clone()).collect::<Vec<_>>()))
         .collect();
-    let net: Vec<Vec<Point<T>>> = (0..=n).map(|nu| cols.iter().map(|col| col[nu].clone()).collect()).collect();
+    let net: Vec<Vec<Point<T>>> = (0..=n)
+        .map(|nu| cols.iter().map(|col| col[nu].clone()).collect())
+        .collect();
     let points = tensor_net((n, m), rect, |us, vs| bezier_tensor_blossom(&net, us, vs));
     TensorPatch::new(points).expect("a rectangular net")
 }
@@ -94,7 +107,10 @@ pub fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> Ten
 /// N = n + m) on the triangle with corners `tri = [a, b, c]`, by the triangular pyramid on its
 /// Bernstein net over the reference triangle (1, 0), (0, 1), (0, 0), where a point (x, y) has
 /// barycentric coordinates (x, y, 1 - x - y).
-pub fn restrict_triangle<T: Ring>(surface: &PowerSurface<T>, tri: &[[T; 2]; 3]) -> TriangularPatch<T> {
+pub fn restrict_triangle<T: Ring>(
+    surface: &PowerSurface<T>,
+    tri: &[[T; 2]; 3],
+) -> TriangularPatch<T> {
     let (n, m) = surface.degree();
     let big_n = n + m;
     let dim = surface.dim();
@@ -107,6 +123,8 @@ pub fn restrict_triangle<T: Ring>(surface: &PowerSurface<T>, tri: &[[T; 2]; 3]) 
     let reference = triangle_power_to_bernstein(big_n, &d);
     let bary = |p: &[T; 2]| [p[0].clone(), p[1].clone(), T::one().sub(&p[0]).sub(&p[1])];
     let corners = tri.each_ref().map(bary);
-    let points = triangle_net(big_n, &corners, |args| bezier_triangle_blossom(&reference, args));
+    let points = triangle_net(big_n, &corners, |args| {
+        bezier_triangle_blossom(&reference, args)
+    });
     TriangularPatch::new(big_n, points).expect("a full triangular net")
 }

@@ -127,7 +127,13 @@ fn monomial_surface(n: usize, m: usize, i: usize, j: usize) -> PowerSurface<Rati
         (0..=n)
             .map(|a| {
                 (0..=m)
-                    .map(|b| vec![if (a, b) == (i, j) { one.clone() } else { zero.clone() }])
+                    .map(|b| {
+                        vec![if (a, b) == (i, j) {
+                            one.clone()
+                        } else {
+                            zero.clone()
+                        }]
+                    })
                     .collect()
             })
             .collect(),
@@ -174,7 +180,8 @@ pub fn judge(formula: &TriangleFormula, symbolic_max: usize) -> Verdict {
         for n in 0..=big_n {
             let s = crate::proofs::symbolic_surface(n, big_n - n);
             let want = definition::restrict_triangle(&s, &tri);
-            let got: crate::TriangularPatch<Poly> = closed_form::restrict_triangle_with(formula, &s, &tri);
+            let got: crate::TriangularPatch<Poly> =
+                closed_form::restrict_triangle_with(formula, &s, &tri);
             if want != got {
                 return Verdict {
                     proved_up_to: None,

@@ -1,9 +1,11 @@
 //! The printed data of the subdivision paper (seeds 000 and 001, identical in both
 //! transcriptions), transcribed as text exactly as printed. Nothing here is computed.
 
-/// Example 1, the coordinate functions as printed: for x, y, z the terms `(coefficient, i, j)`
-/// of `coefficient * u^i v^j`.
-pub const EXAMPLE_1_FUNCTIONS: [(&str, &[(&str, usize, usize)]); 3] = [
+/// A printed term `(coefficient, i, j)` of `coefficient * u^i v^j`.
+pub type Term = (&'static str, usize, usize);
+
+/// Example 1, the coordinate functions as printed: for x, y, z their terms.
+pub const EXAMPLE_1_FUNCTIONS: [(&str, &[Term]); 3] = [
     ("x", &[("3", 1, 0), ("1", 3, 0)]),
     (
         "y",

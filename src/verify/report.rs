@@ -89,7 +89,9 @@ pub struct Report {
 impl Report {
     /// Whether every section is reproduced or explained (the exit status of `verify`).
     pub fn all_explained(&self) -> bool {
-        self.sections.iter().all(|s| s.status != Status::Unexplained)
+        self.sections
+            .iter()
+            .all(|s| s.status != Status::Unexplained)
     }
 
     /// The human-readable rendering.

@@ -79,7 +79,8 @@ fn coefficients_section() -> Section {
 
 fn agreement_finding(all_equal: bool) -> String {
     if all_equal {
-        "all methods (bulk, closed form, definition, pyramid, polarisation) give the identical net".into()
+        "all methods (bulk, closed form, definition, pyramid, polarisation) give the identical net"
+            .into()
     } else {
         "THE METHODS DISAGREE on this net".into()
     }
@@ -90,7 +91,9 @@ pub fn tensor_section(title: &str, table: &[Labelled; 12], rect: &[&str; 4]) -> 
     let surface = example_1_surface();
     let rect: [Rational; 4] = rect.map(rational);
     let net = restrict_tensor(&surface, &rect, Method::ClosedForm);
-    let all_equal = Method::ALL.iter().all(|&m| restrict_tensor(&surface, &rect, m) == net);
+    let all_equal = Method::ALL
+        .iter()
+        .all(|&m| restrict_tensor(&surface, &rect, m) == net);
     let entries: Vec<Entry> = table
         .iter()
         .map(|(label, p)| {
@@ -137,12 +140,30 @@ pub struct Convention {
 impl Convention {
     /// All six readings; eq. (12)'s own, q_(nu mu) = b(a^nu, b^mu, c^lambda), first.
     pub const ALL: [Convention; 6] = [
-        Convention { first: 0, second: 1 },
-        Convention { first: 0, second: 2 },
-        Convention { first: 1, second: 0 },
-        Convention { first: 1, second: 2 },
-        Convention { first: 2, second: 0 },
-        Convention { first: 2, second: 1 },
+        Convention {
+            first: 0,
+            second: 1,
+        },
+        Convention {
+            first: 0,
+            second: 2,
+        },
+        Convention {
+            first: 1,
+            second: 0,
+        },
+        Convention {
+            first: 1,
+            second: 2,
+        },
+        Convention {
+            first: 2,
+            second: 0,
+        },
+        Convention {
+            first: 2,
+            second: 1,
+        },
     ];
 
     /// The multiplicities of (a, b, c) that label (k, l) denotes in a patch of degree n.
@@ -164,7 +185,11 @@ impl Convention {
     }
 }
 
-fn matches_under(patch: &TriangularPatch<Rational>, table: &[Labelled; 21], conv: Convention) -> usize {
+fn matches_under(
+    patch: &TriangularPatch<Rational>,
+    table: &[Labelled; 21],
+    conv: Convention,
+) -> usize {
     let n = patch.degree();
     table
         .iter()
@@ -182,7 +207,9 @@ pub fn triangle_section(title: &str, table: &[Labelled; 21], tri: &[[&str; 2]; 3
     let surface = example_1_surface();
     let tri: [[Rational; 2]; 3] = tri.map(|p| p.map(rational));
     let patch = restrict_triangle(&surface, &tri, Method::ClosedForm);
-    let all_equal = Method::ALL.iter().all(|&m| restrict_triangle(&surface, &tri, m) == patch);
+    let all_equal = Method::ALL
+        .iter()
+        .all(|&m| restrict_triangle(&surface, &tri, m) == patch);
     let scores: Vec<(Convention, usize)> = Convention::ALL
         .iter()
         .map(|&c| (c, matches_under(&patch, table, c)))
@@ -253,7 +280,9 @@ fn formula_sections() -> Vec<Section> {
                 Status::Reproduced
             }
             (None, Some(cx)) => {
-                findings.push(format!("does not agree with the definition (13); counterexample: {cx}"));
+                findings.push(format!(
+                    "does not agree with the definition (13); counterexample: {cx}"
+                ));
                 Status::Explained
             }
             (None, None) => Status::Unexplained,
@@ -267,7 +296,9 @@ fn formula_sections() -> Vec<Section> {
             }
         }
         if version.name == "bounds under (14), theorem statement" {
-            findings.push("max(0, i - mu - lambda) = max(0, i + nu - N) since mu + lambda = N - nu".into());
+            findings.push(
+                "max(0, i - mu - lambda) = max(0, i + nu - N) since mu + lambda = N - nu".into(),
+            );
         }
         sections.push(Section {
             title: format!("Formula {}", version.name),
