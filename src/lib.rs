@@ -31,22 +31,31 @@ pub mod bezier;
 pub mod binomial;
 pub mod blossoms;
 pub mod cli;
+pub mod degree;
 pub mod error;
+pub mod inverse;
+pub mod linalg;
 pub mod number;
+pub mod nurbs;
 pub mod point;
 pub mod poly;
 pub mod power;
 pub mod proofs;
 pub mod restrict;
 pub mod ring;
+pub mod specialised;
+pub mod spline;
 pub mod verify;
 
 pub use bezier::{BezierCurve, TensorPatch, TriangularPatch};
+pub use blossom_macros::restriction;
 pub use error::Error;
+pub use linalg::Field;
 pub use poly::Poly;
 pub use power::{PowerCurve, PowerSurface};
 pub use restrict::{restrict_curve, restrict_tensor, restrict_triangle, Method};
 pub use ring::{Rational, Ring};
+pub use spline::BSpline;
 
 /// The README's examples, compiled and run as doc tests.
 #[doc = include_str!("../README.md")]

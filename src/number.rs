@@ -39,7 +39,7 @@
 //! Error messages here name no field: the caller prefixes the path of the offending value.
 
 use crate::ring::rational_to_f64;
-use crate::{Rational, Ring};
+use crate::Rational;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
@@ -54,7 +54,7 @@ const QUOTE_LIMIT: usize = 40;
 
 /// A number type that jobs can be read into and answers written from: the arithmetic of the
 /// command line. Implemented by [`Rational`] (`exact`) and `f64`.
-pub trait JsonNumber: Ring {
+pub trait JsonNumber: crate::specialised::Carried {
     /// The name of the arithmetic on the command line (`exact`, `f64`).
     const ARITHMETIC: &'static str;
 

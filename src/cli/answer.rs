@@ -48,7 +48,7 @@ pub fn compute<T: Ring>(job: &Job<T>, method: Method) -> Answer<T> {
 }
 
 /// A point as a JSON array; `path` names it in errors.
-fn point_json<T: JsonNumber>(p: &Point<T>, path: &str) -> Result<Value, Error> {
+pub(super) fn point_json<T: JsonNumber>(p: &Point<T>, path: &str) -> Result<Value, Error> {
     p.iter()
         .enumerate()
         .map(|(k, x)| {

@@ -7,6 +7,7 @@
 //! blossom                                   same as `blossom verify`
 //! blossom verify [--json]
 //! blossom restrict [--input FILE] [--arithmetic exact|f64] [--method METHOD]
+//! blossom expand curve N | tensor N M | triangle N M
 //! blossom [SUBCOMMAND] --help | -h          help (also `blossom help`)
 //! blossom --version | -V
 //! ```
@@ -70,6 +71,8 @@ pub enum Command {
     },
     /// `blossom restrict ...`.
     Restrict(RestrictOptions),
+    /// `blossom expand SHAPE DEGREES...`: the words after `expand` (checked when run).
+    Expand(Vec<String>),
     /// `--help`: print this text and succeed.
     Help(&'static str),
     /// `--version`.
@@ -85,6 +88,8 @@ Usage:
   blossom verify [--json]      re-derive the tables and worked examples of the seed papers;
                                exit 0 when everything is reproduced or explained, 1 otherwise
   blossom restrict [OPTIONS]   restrict a curve or surface given as JSON (see `restrict --help`)
+  blossom expand SHAPE DEGREE  print the function the proc-macro generates for a fixed degree
+                               (see `expand --help`)
   blossom --help | --version
 
 Errors: one line `error: ...` on standard error, exit code 2.
@@ -121,6 +126,18 @@ string: \"-7\", \"3/4\", \"0.125\", \"-1e-3\" (JSON numbers such as 0.1 only und
 
 Output: the answer as one line of JSON on standard output, exit code 0; on bad input one line
 `error: FIELD: ...` on standard error, nothing on standard output, exit code 2.
+";
+
+/// Help for `blossom expand`.
+pub const EXPAND_HELP: &str = "\
+blossom expand: the Rust function `blossom::restriction!` generates for one fixed degree
+
+Usage: blossom expand curve N | tensor N M | triangle N M
+
+Prints the formatted source of the unrolled closed form (3), (9) or (14) for that degree, as
+`blossom::restriction!(vis = pub, name = restrict_<shape>_<degrees>, shape = .., degree = ..)`
+expands it; it compiles on its own in a crate that depends on `blossom`.
+Limits (those of the macro): curves N <= 24, tensor patches N, M <= 10, triangles N + M <= 8.
 ";
 
 /// Help for `blossom verify`.
@@ -174,16 +191,17 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
     match first.as_ref() {
         "verify" => parse_verify(rest),
         "restrict" => parse_restrict(rest),
+        "expand" => parse_expand(rest),
         "help" => Ok(Command::Help(HELP)),
         "--version" | "-V" => Ok(Command::Version),
         arg if is_help(arg) => Ok(Command::Help(HELP)),
         arg if arg.starts_with('-') => Err(Error::new(
             arg,
-            "unknown option (expected a subcommand: restrict or verify; see blossom --help)",
+            "unknown option (expected a subcommand: restrict, verify or expand; see blossom --help)",
         )),
         arg => Err(Error::new(
             arg,
-            "unknown subcommand (expected restrict or verify; see blossom --help)",
+            "unknown subcommand (expected restrict, verify or expand; see blossom --help)",
         )),
     }
 }
@@ -204,6 +222,23 @@ fn parse_verify(args: &[OsString]) -> Result<Command, Error> {
         }
     }
     Ok(Command::Verify { json })
+}
+
+fn parse_expand(args: &[OsString]) -> Result<Command, Error> {
+    let words: Vec<String> = args
+        .iter()
+        .map(|a| a.to_string_lossy().into_owned())
+        .collect();
+    if words.iter().any(|w| is_help(w)) {
+        return Ok(Command::Help(EXPAND_HELP));
+    }
+    if let Some(flag) = words.iter().find(|w| w.starts_with("--")) {
+        return Err(Error::new(
+            flag.as_str(),
+            "unknown option for expand (expected `curve N`, `tensor N M` or `triangle N M`)",
+        ));
+    }
+    Ok(Command::Expand(words))
 }
 
 /// The value of `flag`: from `--flag=value` or the next argument.
@@ -364,5 +399,18 @@ mod tests {
         );
         assert_eq!(field(&["restrict", "extra"]), "extra");
         assert_eq!(field(&["verify", "--jsn"]), "--jsn");
+        assert_eq!(field(&["expand", "curve", "--x"]), "--x");
+    }
+
+    #[test]
+    fn expand_takes_its_words() {
+        assert_eq!(
+            parse_strs(&["expand", "tensor", "3", "2"]).unwrap(),
+            Command::Expand(vec!["tensor".into(), "3".into(), "2".into()])
+        );
+        assert_eq!(
+            parse_strs(&["expand", "--help"]).unwrap(),
+            Command::Help(EXPAND_HELP)
+        );
     }
 }

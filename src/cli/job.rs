@@ -17,7 +17,8 @@ use serde_json::{Map, Value};
 /// The kinds this version computes, as listed in messages.
 pub const KINDS: [&str; 3] = ["curve", "tensor", "triangle"];
 
-/// Kinds of the contract that belong to later work: recognised, refused as unsupported.
+/// Kinds of the contract answered by [`super::spline_jobs`] (the command line dispatches them
+/// there before calling [`parse_job`], which refuses them as jobs of another module).
 pub const LATER_KINDS: [&str; 6] = [
     "bezier-curve",
     "bspline",
@@ -106,24 +107,31 @@ pub fn parse_job<T: JsonNumber>(document: &Value) -> Result<Job<T>, Error> {
         unknown => Err(Error::new(
             "kind",
             format!(
-                "unknown kind {} (expected {}, {} or {})",
+                "unknown kind {} (expected one of {})",
                 quoted(unknown),
-                KINDS[0],
-                KINDS[1],
-                KINDS[2]
+                KINDS
+                    .iter()
+                    .chain(&LATER_KINDS)
+                    .copied()
+                    .collect::<Vec<_>>()
+                    .join(", ")
             ),
         )),
     }
 }
 
 /// The value of a required field.
-fn field<'a>(job: &'a Map<String, Value>, name: &str) -> Result<&'a Value, Error> {
+pub(super) fn field<'a>(job: &'a Map<String, Value>, name: &str) -> Result<&'a Value, Error> {
     job.get(name)
         .ok_or_else(|| Error::new(name, "missing field"))
 }
 
 /// The elements of an array-valued field, or an error saying what was expected.
-fn array<'a>(value: &'a Value, path: &str, expected: &str) -> Result<&'a [Value], Error> {
+pub(super) fn array<'a>(
+    value: &'a Value,
+    path: &str,
+    expected: &str,
+) -> Result<&'a [Value], Error> {
     match value {
         Value::Array(items) => Ok(items),
         other => Err(Error::new(
@@ -134,12 +142,15 @@ fn array<'a>(value: &'a Value, path: &str, expected: &str) -> Result<&'a [Value]
 }
 
 /// One number at `path`.
-fn number<T: JsonNumber>(value: &Value, path: &str) -> Result<T, Error> {
+pub(super) fn number<T: JsonNumber>(value: &Value, path: &str) -> Result<T, Error> {
     T::from_json(value).map_err(|message| Error::new(path, message))
 }
 
 /// Exactly `N` numbers at `path` (an interval or a rectangle).
-fn numbers<T: JsonNumber, const N: usize>(value: &Value, path: &str) -> Result<[T; N], Error> {
+pub(super) fn numbers<T: JsonNumber, const N: usize>(
+    value: &Value,
+    path: &str,
+) -> Result<[T; N], Error> {
     let items = array(value, path, &format!("an array of {N} numbers"))?;
     if items.len() != N {
         return Err(Error::new(
@@ -220,7 +231,7 @@ fn point<T: JsonNumber>(value: &Value, path: &str, dim: Option<usize>) -> Result
 
 /// A non-empty list of points of one dimension at `path` (the coefficients of a curve, or a
 /// row of a grid). `dim` as for [`point`].
-fn points<T: JsonNumber>(
+pub(super) fn points<T: JsonNumber>(
     value: &Value,
     path: &str,
     dim: Option<usize>,
@@ -294,7 +305,8 @@ mod tests {
         );
         assert_eq!(
             error(json!({"kind": "foo"})),
-            "kind: unknown kind \"foo\" (expected curve, tensor or triangle)"
+            "kind: unknown kind \"foo\" (expected one of curve, tensor, triangle, bezier-curve, \
+             bspline, bspline-eval, rational-curve, elevate, reduce)"
         );
         assert_eq!(
             error(json!({"kind": "bspline"})),

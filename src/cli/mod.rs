@@ -20,6 +20,7 @@ pub mod answer;
 pub mod args;
 pub mod job;
 pub mod specialised;
+pub mod spline_jobs;
 
 use crate::number::JsonNumber;
 use crate::{Error, Rational};
@@ -103,6 +104,10 @@ pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
             Ok(text) => Outcome::success(text),
             Err(error) => Outcome::failure(&error),
         },
+        Ok(Command::Expand(words)) => match crate::specialised::expand_command(&words) {
+            Ok(text) => Outcome::success(with_newline(text)),
+            Err(error) => Outcome::failure(&error),
+        },
     }
 }
 
@@ -163,7 +168,13 @@ fn parse_json(bytes: &[u8]) -> Result<Value, Error> {
 }
 
 /// Reads, computes and writes the job in `document` in the arithmetic `T`.
-fn solve<T: JsonNumber>(document: &Value, method: MethodChoice) -> Result<Value, Error> {
+fn solve<T: JsonNumber + crate::linalg::Field>(
+    document: &Value,
+    method: MethodChoice,
+) -> Result<Value, Error> {
+    if let Some((job, kind)) = spline_jobs::recognise(document) {
+        return spline_jobs::solve::<T>(job, kind, method);
+    }
     let job = job::parse_job::<T>(document)?;
     let answer = match method {
         MethodChoice::Library(method) => answer::compute(&job, method),

@@ -1,25 +1,72 @@
-//! The hook for `--method specialised`: the evaluators that the proc-macro generates at
-//! compile time for fixed degrees (formulae (3), (9), (14) unrolled).
+//! `--method specialised`: the evaluators that the proc-macro generated at compile time for
+//! fixed degrees (formulae (3), (9), (14) unrolled), carried by the binary (see
+//! [`crate::specialised`]).
 //!
-//! This is the one place where they plug into the command line. They are not built yet, so
-//! [`BUILT_IN`] is `false` and the command line refuses `--method specialised` (exit 2, before
-//! reading any input) with [`NOT_BUILT_IN`]. The change that adds them sets [`BUILT_IN`] to
-//! `true` and makes [`specialised`] return `Some(Ok(answer))` for the degrees it carries and
-//! `Some(Err(..))`, naming the degrees it does carry, for the others.
+//! This is the one place where they plug into the command line. A binary built without the
+//! default feature `carried-grid` has none: [`BUILT_IN`] is then `false` and the command line
+//! refuses `--method specialised` (exit 2, before reading any input) with [`NOT_BUILT_IN`].
 
 use super::answer::Answer;
 use super::job::Job;
-use crate::{Error, Ring};
+use crate::Error;
 
 /// Whether this binary carries specialised evaluators at all.
-pub const BUILT_IN: bool = false;
+pub const BUILT_IN: bool = cfg!(feature = "carried-grid");
 
 /// The message (for the argument `--method`) when they are not built in.
-pub const NOT_BUILT_IN: &str = "specialised evaluators are not built into this binary yet";
+pub const NOT_BUILT_IN: &str =
+    "specialised evaluators are not built into this binary (built without the feature `carried-grid`)";
 
 /// The answer of `job` by the specialised evaluator of its degree: `None` when this binary
-/// has no specialised evaluators, `Some(Err(..))` for a degree it does not carry.
-pub fn specialised<T: Ring>(job: &Job<T>) -> Option<Result<Answer<T>, Error>> {
+/// has no specialised evaluators, `Some(Err(..))` naming the carried degrees for a degree it
+/// does not carry.
+#[cfg(feature = "carried-grid")]
+pub fn specialised<T: crate::specialised::Carried>(
+    job: &Job<T>,
+) -> Option<Result<Answer<T>, Error>> {
+    use crate::specialised::{
+        carried_degrees, restrict_curve_specialised, restrict_tensor_specialised,
+        restrict_triangle_specialised, Shape,
+    };
+    let (answer, shape) = match job {
+        Job::Curve {
+            curve,
+            interval: [a, b],
+        } => (
+            restrict_curve_specialised(curve, a, b).map(Answer::Curve),
+            Shape::Curve(curve.degree()),
+        ),
+        Job::Tensor { surface, rectangle } => {
+            let (n, m) = surface.degree();
+            (
+                restrict_tensor_specialised(surface, rectangle).map(Answer::Tensor),
+                Shape::Tensor(n, m),
+            )
+        }
+        Job::Triangle { surface, triangle } => {
+            let (n, m) = surface.degree();
+            (
+                restrict_triangle_specialised(surface, triangle).map(Answer::Triangle),
+                Shape::Triangle(n, m),
+            )
+        }
+    };
+    Some(answer.ok_or_else(|| {
+        Error::new(
+            "--method",
+            format!(
+                "no specialised evaluator for a {} of degree {}: this binary carries {}",
+                shape.keyword(),
+                shape.degree_text(),
+                carried_degrees()
+            ),
+        )
+    }))
+}
+
+/// Without the carried grid there is no specialised evaluator.
+#[cfg(not(feature = "carried-grid"))]
+pub fn specialised<T: crate::Ring>(job: &Job<T>) -> Option<Result<Answer<T>, Error>> {
     let _ = job;
     None
 }

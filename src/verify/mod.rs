@@ -4,9 +4,12 @@
 //! Each submodule contributes the sections of one part of the papers.
 
 pub mod formula_versions;
+#[cfg(feature = "carried-grid")]
+pub mod macro_proofs;
 pub mod paper_data;
 pub mod proof_summary;
 pub mod report;
+pub mod seeds_002_004;
 pub mod subdivision;
 
 pub use report::{Entry, Report, Section, Status};
@@ -16,6 +19,9 @@ pub fn build_report() -> Report {
     let mut report = Report::default();
     report.sections.extend(subdivision::sections());
     report.sections.push(proof_summary::section());
+    #[cfg(feature = "carried-grid")]
+    report.sections.push(macro_proofs::section());
+    report.sections.extend(seeds_002_004::sections());
     report
 }
 

@@ -1,0 +1,73 @@
+//! The source printed by `blossom expand` compiles on its own in a crate that depends on
+//! `blossom`: the files in `tests/macros_expanded/` are exactly what `expand_source` prints
+//! (checked below; regenerate with `BLOSSOM_UPDATE_EXPANDED=1`), and are compiled here by
+//! `include!` and run against the closed form.
+
+use blossom::specialised::{expand_source, Shape};
+use blossom::{
+    restrict_curve, restrict_tensor, restrict_triangle, Method, PowerCurve, PowerSurface, Rational,
+};
+
+mod expanded {
+    include!("macros_expanded/curve_3.rs");
+    include!("macros_expanded/tensor_3_2.rs");
+    include!("macros_expanded/triangle_3_2.rs");
+}
+
+#[test]
+fn the_files_are_what_expand_prints() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/macros_expanded");
+    for (shape, file) in [
+        (Shape::Curve(3), "curve_3.rs"),
+        (Shape::Tensor(3, 2), "tensor_3_2.rs"),
+        (Shape::Triangle(3, 2), "triangle_3_2.rs"),
+    ] {
+        let printed = expand_source(shape).unwrap();
+        let path = format!("{dir}/{file}");
+        if std::env::var_os("BLOSSOM_UPDATE_EXPANDED").is_some() {
+            std::fs::write(&path, &printed).unwrap();
+        }
+        let stored = std::fs::read_to_string(&path).unwrap();
+        assert!(
+            stored == printed,
+            "{file} differs from `blossom expand {shape}`"
+        );
+    }
+}
+
+fn q(n: i64, d: i64) -> Rational {
+    Rational::new(n.into(), d.into())
+}
+
+#[test]
+fn the_printed_functions_compute_the_closed_form() {
+    let coef: [[Rational; 2]; 4] =
+        std::array::from_fn(|i| [q(i as i64 + 1, 3), q(2 - i as i64, 5)]);
+    let curve = PowerCurve::new(coef.iter().map(|p| p.to_vec()).collect()).unwrap();
+    let (a, b) = (q(-1, 2), q(7, 3));
+    let w = expanded::restrict_curve_3(&coef, &a, &b);
+    let want = restrict_curve(&curve, &a, &b, Method::ClosedForm);
+    assert_eq!(w.map(|p| p.to_vec()).to_vec(), want.control_points());
+
+    let coef: [[[Rational; 1]; 3]; 4] =
+        std::array::from_fn(|i| std::array::from_fn(|j| [q(i as i64 * 3 - j as i64, 7)]));
+    let surface = PowerSurface::new(
+        coef.iter()
+            .map(|r| r.iter().map(|p| p.to_vec()).collect())
+            .collect(),
+    )
+    .unwrap();
+    let rect = [q(1, 3), q(2, 3), q(1, 4), q(3, 4)];
+    let p = expanded::restrict_tensor_3_2(&coef, &rect);
+    let want = restrict_tensor(&surface, &rect, Method::ClosedForm);
+    let got: Vec<Vec<Vec<Rational>>> = p
+        .iter()
+        .map(|r| r.iter().map(|x| x.to_vec()).collect())
+        .collect();
+    assert_eq!(got, want.control_points());
+
+    let tri = [[q(0, 1), q(1, 2)], [q(1, 2), q(0, 1)], [q(1, 2), q(1, 2)]];
+    let t = expanded::restrict_triangle_3_2(&coef, &tri);
+    let want = restrict_triangle(&surface, &tri, Method::ClosedForm);
+    assert_eq!(t.map(|p| p.to_vec()).to_vec(), want.control_points());
+}

@@ -1,0 +1,135 @@
+//! The carried grid and its dispatch: exactly the documented degrees are carried, and each
+//! carried evaluator agrees with the bulk restriction (f64, 3-D points, random inputs) and,
+//! exactly, with the closed form on rationals for a sample.
+#![cfg(feature = "carried-grid")]
+
+use blossom::specialised::{
+    carried_degrees, carries, restrict_curve_specialised, restrict_tensor_specialised,
+    restrict_triangle_specialised, Shape,
+};
+use blossom::{
+    restrict_curve, restrict_tensor, restrict_triangle, Method, PowerCurve, PowerSurface, Rational,
+};
+
+/// A tiny deterministic generator of small numbers.
+struct Lcg(u64);
+impl Lcg {
+    fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((self.0 >> 33) % 2001) as f64 / 1000.0 - 1.0
+    }
+    fn point(&mut self) -> Vec<f64> {
+        (0..3).map(|_| self.next()).collect()
+    }
+}
+
+fn close(x: &[Vec<f64>], y: &[Vec<f64>]) -> bool {
+    x.iter()
+        .flatten()
+        .zip(y.iter().flatten())
+        .all(|(a, b)| (a - b).abs() <= 1e-9 * (1.0 + b.abs()))
+}
+
+#[test]
+fn exactly_the_documented_curves_are_carried() {
+    let mut rng = Lcg(1);
+    for n in 0..=18 {
+        let curve = PowerCurve::new((0..=n).map(|_| rng.point()).collect()).unwrap();
+        let (a, b) = (rng.next(), rng.next() + 2.0);
+        let got = restrict_curve_specialised(&curve, &a, &b);
+        assert_eq!(got.is_some(), carries(Shape::Curve(n)), "curve {n}");
+        assert_eq!(carries(Shape::Curve(n)), (1..=16).contains(&n));
+        if let Some(w) = got {
+            let want = restrict_curve(&curve, &a, &b, Method::Bulk);
+            assert!(
+                close(w.control_points(), want.control_points()),
+                "curve {n}"
+            );
+        }
+    }
+    assert!(carried_degrees().contains("curves of degree 1..=16"));
+}
+
+#[test]
+fn exactly_the_documented_surfaces_are_carried() {
+    let mut rng = Lcg(2);
+    for n in 0..=6 {
+        for m in 0..=6 {
+            let s = PowerSurface::new(
+                (0..=n)
+                    .map(|_| (0..=m).map(|_| rng.point()).collect())
+                    .collect(),
+            )
+            .unwrap();
+            let rect = [rng.next(), rng.next() + 2.0, rng.next(), rng.next() + 2.0];
+            let got = restrict_tensor_specialised(&s, &rect);
+            assert_eq!(
+                got.is_some(),
+                n <= 5 && m <= 5 && (n, m) != (0, 0),
+                "tensor ({n}, {m})"
+            );
+            if let Some(p) = got {
+                let want = restrict_tensor(&s, &rect, Method::Bulk);
+                for (x, y) in p.control_points().iter().zip(want.control_points()) {
+                    assert!(close(x, y), "tensor ({n}, {m})");
+                }
+            }
+            let tri = [
+                [rng.next(), rng.next()],
+                [rng.next() + 2.0, rng.next()],
+                [rng.next(), rng.next() + 2.0],
+            ];
+            let got = restrict_triangle_specialised(&s, &tri);
+            assert_eq!(
+                got.is_some(),
+                n <= 4 && m <= 4 && (n, m) != (0, 0),
+                "triangle ({n}, {m})"
+            );
+            if let Some(q) = got {
+                let want = restrict_triangle(&s, &tri, Method::Bulk);
+                assert!(
+                    close(q.control_points(), want.control_points()),
+                    "triangle ({n}, {m})"
+                );
+            }
+        }
+    }
+}
+
+/// Exactness on rationals, through the generated functions of the grid directly (2-D points,
+/// one instantiation each: the dispatch above already instantiates every carried evaluator
+/// for f64, and instantiating the whole grid a second time would double this test's build).
+#[test]
+fn carried_evaluators_are_exact_on_rationals() {
+    use blossom::specialised::grid;
+    let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
+    let coef: [[[Rational; 2]; 3]; 3] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| [q(i as i64 - 2 * j as i64, 3), q((i * j) as i64 + 1, 7)])
+    });
+    let s = PowerSurface::new(
+        coef.iter()
+            .map(|r| r.iter().map(|p| p.to_vec()).collect())
+            .collect(),
+    )
+    .unwrap();
+    let tri = [[q(0, 1), q(1, 2)], [q(1, 2), q(0, 1)], [q(1, 2), q(1, 2)]];
+    let got = grid::triangle_2_2(&coef, &tri);
+    let want = restrict_triangle(&s, &tri, Method::Definition);
+    assert_eq!(got.map(|p| p.to_vec()).to_vec(), want.control_points());
+    let rect = [q(1, 3), q(2, 3), q(-1, 4), q(3, 4)];
+    let got = grid::tensor_2_2(&coef, &rect);
+    let want = restrict_tensor(&s, &rect, Method::Definition);
+    let got: Vec<Vec<Vec<Rational>>> = got
+        .iter()
+        .map(|r| r.iter().map(|p| p.to_vec()).collect())
+        .collect();
+    assert_eq!(got, want.control_points());
+    let c: [[Rational; 1]; 17] = std::array::from_fn(|i| [q((i * i) as i64 - 7, i as i64 + 1)]);
+    let curve = PowerCurve::new(c.iter().map(|p| p.to_vec()).collect()).unwrap();
+    let got = grid::curve_16(&c, &q(-2, 3), &q(5, 4));
+    let want = restrict_curve(&curve, &q(-2, 3), &q(5, 4), Method::Definition);
+    assert_eq!(got.map(|p| p.to_vec()).to_vec(), want.control_points());
+}

@@ -1,0 +1,166 @@
+//! Rational curves and surfaces through homogeneous blossoms: the rational Bézier forms agree
+//! with N/w at every parameter, elevation through the degree argument agrees with exact
+//! elevation of the homogeneous points, and the circle arc of seed 004 (with a snapshot).
+
+mod common;
+
+use blossom::degree::elevate;
+use blossom::nurbs::{RationalBSpline, RationalCurve, RationalSurface};
+use blossom::spline::BSpline;
+use blossom::{BezierCurve, Rational, Ring};
+use common::Rng;
+use serde_json::json;
+
+fn q(n: i64, d: i64) -> Rational {
+    Rational::new(n.into(), d.into())
+}
+
+/// A denominator without zeros on [-1, 1]: c_0 = 5 and small other coefficients.
+fn denominator(rng: &mut Rng, n: usize) -> Vec<Rational> {
+    (0..=n)
+        .map(|i| {
+            if i == 0 {
+                q(5, 1)
+            } else {
+                rng.rational() / q(40, 1)
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn rational_bezier_forms_reproduce_the_curve() {
+    let mut rng = Rng(60);
+    for n in 0..=5 {
+        let num: Vec<Vec<Rational>> = (0..=n).map(|_| rng.point(2)).collect();
+        let den = denominator(&mut rng, (n + 1) % 4);
+        let c = RationalCurve::new(&num, &den).unwrap();
+        let (alpha, beta) = (q(-1, 2), q(3, 4));
+        let own = c.degree();
+        for degree in own..=own + 2 {
+            let bez = c.bezier(&alpha, &beta, Some(degree)).unwrap();
+            assert_eq!(bez.degree(), degree);
+            for k in 0..=4 {
+                let s = q(k, 4);
+                let t = &alpha + (&beta - &alpha) * &s;
+                assert_eq!(
+                    bez.eval(&s).unwrap(),
+                    c.eval(&t).unwrap(),
+                    "n={n} degree={degree} s={s}"
+                );
+            }
+            // Exact elevation of the own-degree points = the formula (22) at the higher degree.
+            let by_formula = c.homogeneous_control_points(&alpha, &beta, degree).unwrap();
+            assert_eq!(by_formula, bez.homogeneous());
+            let low = c.bezier(&alpha, &beta, None).unwrap();
+            let h = elevate(&BezierCurve::new(low.homogeneous()).unwrap(), degree).unwrap();
+            assert_eq!(h.control_points(), by_formula.as_slice());
+        }
+    }
+}
+
+#[test]
+fn rational_surfaces_reproduce_the_surface() {
+    let mut rng = Rng(61);
+    for (n, m) in [(1, 1), (2, 1), (1, 2), (2, 2)] {
+        let num: Vec<Vec<Vec<Rational>>> = (0..=n)
+            .map(|_| (0..=m).map(|_| rng.point(3)).collect())
+            .collect();
+        let den: Vec<Vec<Rational>> = (0..=n)
+            .map(|i| {
+                (0..=m)
+                    .map(|j| {
+                        if i + j == 0 {
+                            q(4, 1)
+                        } else {
+                            rng.rational() / q(50, 1)
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
+        let s = RationalSurface::new(&num, &den).unwrap();
+        let rect = [q(-1, 2), q(1, 2), q(0, 1), q(2, 3)];
+        for degree in [(n, m), (n + 1, m + 1)] {
+            let patch = s.tensor(&rect, Some(degree)).unwrap();
+            assert_eq!(patch.points().len(), degree.0 + 1);
+            for (a, b) in [(q(0, 1), q(0, 1)), (q(1, 3), q(3, 4)), (q(1, 1), q(1, 2))] {
+                let u = &rect[0] + (&rect[1] - &rect[0]) * &a;
+                let v = &rect[2] + (&rect[3] - &rect[2]) * &b;
+                assert_eq!(patch.eval(&a, &b).unwrap(), s.eval(&u, &v).unwrap());
+            }
+        }
+        let tri = [[q(0, 1), q(0, 1)], [q(1, 2), q(0, 1)], [q(0, 1), q(1, 2)]];
+        for degree in [n + m, n + m + 1] {
+            let patch = s.triangle(&tri, Some(degree)).unwrap();
+            for bary in [
+                [q(1, 1), q(0, 1), q(0, 1)],
+                [q(1, 3), q(1, 3), q(1, 3)],
+                [q(1, 6), q(1, 2), q(1, 3)],
+            ] {
+                let coord = |d: usize| (0..3).map(|k| &bary[k] * &tri[k][d]).sum::<Rational>();
+                assert_eq!(
+                    patch.eval(&bary).unwrap(),
+                    s.eval(&coord(0), &coord(1)).unwrap(),
+                    "N = {degree}"
+                );
+            }
+        }
+        assert_eq!(
+            s.triangle(&tri, Some(n + m - 1)).unwrap_err().field,
+            "degree"
+        );
+    }
+}
+
+#[test]
+fn nurbs_circle_through_homogeneous_de_boor() {
+    // Two quarter circles as a quadratic NURBS on knots 0,0,0,1,2,2,2.
+    // The arc of seed 004 on [0, 1]: points (1,0), (1,1), (0,1), weights 1, 1, 2; its mirror
+    // image continues it on [1, 2].
+    let f = RationalBSpline::new(
+        2,
+        [0, 0, 0, 1, 1, 2, 2, 2].map(|k| q(k, 1)).to_vec(),
+        vec![
+            vec![q(1, 1), q(0, 1)],
+            vec![q(1, 1), q(1, 1)],
+            vec![q(0, 1), q(1, 1)],
+            vec![q(-1, 1), q(1, 1)],
+            vec![q(-1, 1), q(0, 1)],
+        ],
+        vec![q(1, 1), q(1, 1), q(2, 1), q(1, 1), q(1, 1)],
+    )
+    .unwrap();
+    for k in 0..=16 {
+        let p = f.eval(&q(k, 8)).unwrap();
+        assert_eq!(p[0].mul(&p[0]) + p[1].mul(&p[1]), q(1, 1), "t = {k}/8");
+    }
+    assert!(BSpline::new(2, vec![q(0, 1); 3], vec![vec![q(0, 1)]]).is_err());
+}
+
+#[test]
+fn circle_arc_of_seed_004() {
+    let arc = RationalCurve::new(
+        &[
+            vec![q(1, 1), q(0, 1)],
+            vec![q(0, 1), q(2, 1)],
+            vec![q(-1, 1), q(0, 1)],
+        ],
+        &[q(1, 1), q(0, 1), q(1, 1)],
+    )
+    .unwrap();
+    let quad = arc.bezier(&q(0, 1), &q(1, 1), None).unwrap();
+    let quartic = arc.bezier(&q(0, 1), &q(1, 1), Some(4)).unwrap();
+    assert_eq!(
+        quartic.weights(),
+        &[q(1, 1), q(1, 1), q(7, 6), q(3, 2), q(2, 1)]
+    );
+    assert_eq!(quartic.points()[2], vec![q(5, 7), q(6, 7)]);
+    let s = |v: &[Rational]| v.iter().map(|x| x.to_string()).collect::<Vec<_>>();
+    insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"), prepend_module_to_snapshot => false}, {
+        insta::assert_json_snapshot!("nurbs_circle_arc", json!({
+            "quadratic": {"points": quad.points().iter().map(|p| s(p)).collect::<Vec<_>>(), "weights": s(quad.weights())},
+            "quartic": {"points": quartic.points().iter().map(|p| s(p)).collect::<Vec<_>>(), "weights": s(quartic.weights())},
+        }));
+    });
+}

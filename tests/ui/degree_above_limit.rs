@@ -1,0 +1,5 @@
+blossom::restriction!(name = restrict_big, shape = curve, degree = 25);
+blossom::restriction!(name = restrict_big_patch, shape = tensor, degree = (2, 11));
+blossom::restriction!(name = restrict_big_triangle, shape = triangle, degree = (5, 4));
+
+fn main() {}

@@ -1,0 +1,3 @@
+blossom::restriction!(vis = , name = restrict_cubic, shape = curve, degree = 3);
+
+fn main() {}

@@ -1,0 +1,3 @@
+blossom::restriction!(name = restrict_patch, shape = tensor, degree = (3, -1));
+
+fn main() {}

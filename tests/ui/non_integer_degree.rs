@@ -1,0 +1,3 @@
+blossom::restriction!(name = restrict_cubic, shape = curve, degree = 2.5);
+
+fn main() {}

@@ -1,0 +1,3 @@
+blossom::restriction!(name = restrict_cubic, shape = curve, degre = 3);
+
+fn main() {}

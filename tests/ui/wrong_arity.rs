@@ -1,0 +1,4 @@
+blossom::restriction!(name = restrict_patch, shape = tensor, degree = 3);
+blossom::restriction!(name = restrict_cubic, shape = curve, degree = (3, 2));
+
+fn main() {}

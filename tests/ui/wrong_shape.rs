@@ -1,0 +1,3 @@
+blossom::restriction!(name = restrict_circle, shape = circle, degree = 3);
+
+fn main() {}
