@@ -96,21 +96,28 @@
 //! |---|---|---|---|
 //! | `curve` | n <= 24 | n = 24: 46 282 tokens / 4 807 lines | 10.7 s |
 //! | `tensor` | n, m <= 10 | (10, 10): 49 416 tokens / 4 483 lines | 24.4 s |
-//! | `triangle` | N = n + m <= 8 | (4, 4): 131 452 tokens / 13 146 lines | 32.3 s |
+//! | `triangle` | N = n + m <= 8 | (4, 4): 53 919 tokens / 5 624 lines | 32.3 s (before regrouping, 131 452 tokens) |
 //!
 //! The generated code grows like n^3 / 6 scalar terms for a curve (the weights of (3)),
-//! like n m (n + m) for a tensor patch (the factored (9)) and like N^6 for a triangle (the
-//! sextuple sum of (14), once per control point and per c_ij). The limits keep one function
-//! around 50 000 tokens (about half a minute of optimised compile time), except for triangles,
-//! where N = 8 is kept because the binary carries (4, 4); N = 10 would be 408 574 tokens
-//! for (5, 5). All folded constants fit `i128` far beyond these limits (checked at expansion).
+//! like n m (n + m) for a tensor patch (the factored (9)) and, for a triangle, like the
+//! regrouped (14): the inner sum over j of c_ij / T(N; i, j) times a corner power is shared by
+//! every control point with the same split (nu', mu', lambda'), so the code grows about like
+//! N^4 (measured: x2.8 from N = 6 to 8, x2.4 from 8 to 10) rather than the N^6 of the
+//! sextuple sum written out per control point. The limits keep one
+//! function around 50 000 tokens (about half a minute of optimised compile time); triangles
+//! stop at N = 8, the degree the binary carries, because N = 10, (5, 5), is 127 957 tokens /
+//! 13 270 lines. All folded constants fit `i128` far beyond these limits (checked at
+//! expansion).
 //!
-//! Measured on the project machine (2 shared cores, rustc 1.95) by expanding the macro in a
-//! scratch crate with a stub ring and building it with `cargo build --release` (f64, D = 3,
-//! one instantiation), timing the whole crate build; smaller degrees for comparison:
-//! curve 8: 3 538 tokens, 1.1 s; curve 16: 17 038 tokens, 4.3 s; tensor (5, 5): 8 841 tokens,
-//! 2.8 s; triangle (3, 3): 35 380 tokens, 6.8 s. Token counts are those of
-//! `blossom_codegen::expand`, lines those of the prettyplease output (`blossom expand`).
+//! Token counts are those of `blossom_codegen::expand`, lines those of the prettyplease output
+//! (`blossom expand`); both are printed by
+//! `cargo run --release -p blossom-codegen --example macro_sizes`. Build times were measured on
+//! the project machine (2 shared cores, rustc 1.95) by expanding the macro in a scratch crate
+//! with a stub ring and building it with `cargo build --release` (f64, D = 3, one
+//! instantiation), timing the whole crate build; smaller degrees for comparison: curve 8:
+//! 3 538 tokens, 1.1 s; curve 16: 17 038 tokens, 4.3 s; tensor (5, 5): 8 841 tokens, 2.8 s;
+//! triangle (3, 3): 35 380 tokens, 6.8 s before regrouping (19 508 after). The triangle build
+//! times were not re-measured after the regrouping.
 #![forbid(unsafe_code)]
 
 use proc_macro::TokenStream;
