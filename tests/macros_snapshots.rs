@@ -1,6 +1,6 @@
 //! Snapshots of the code `blossom::restriction!` generates, formatted by prettyplease, for the
 //! three shapes of the issue: curve 3 (eq. (3)), tensor (3, 2) (eq. (9)), triangle (3, 2)
-//! (eq. (14)). The expansion functions are called directly on tokens, as the macro calls them.
+//! (eq. (14)), and for the Bézier-input shapes: curve 3, tensor (2, 1), triangle 2. The expansion functions are called directly on tokens, as the macro calls them.
 
 use blossom_codegen::{expand, format_items, parse, validate, Shape, Spec};
 use quote::quote;
@@ -35,6 +35,30 @@ fn triangle_3_2() {
     snapshot(
         "macros_triangle_3_2",
         &blossom_codegen::source(&Spec::public(Shape::Triangle(3, 2))),
+    );
+}
+
+#[test]
+fn bezier_curve_3() {
+    snapshot(
+        "macros_bezier_curve_3",
+        &blossom_codegen::source(&Spec::public(Shape::BezierCurve(3))),
+    );
+}
+
+#[test]
+fn bezier_tensor_2_1() {
+    snapshot(
+        "macros_bezier_tensor_2_1",
+        &blossom_codegen::source(&Spec::public(Shape::BezierTensor(2, 1))),
+    );
+}
+
+#[test]
+fn bezier_triangle_2() {
+    snapshot(
+        "macros_bezier_triangle_2",
+        &blossom_codegen::source(&Spec::public(Shape::BezierTriangle(2))),
     );
 }
 

@@ -19,7 +19,10 @@ fn main() {
         Shape::Triangle(4, 4),
         Shape::Triangle(5, 5),
     ];
-    println!("{:<10} {:>8} {:>9} {:>7}", "shape", "degree", "tokens", "lines");
+    println!(
+        "{:<10} {:>8} {:>9} {:>7}",
+        "shape", "degree", "tokens", "lines"
+    );
     for shape in shapes {
         let tokens = expand(&Spec::public(shape)).expect("within the degree limits");
         let count = count_tokens(tokens.clone());

@@ -11,6 +11,9 @@ pub const MAX_CURVE_DEGREE: usize = 24;
 pub const MAX_TENSOR_DEGREE: usize = 10;
 /// The highest total degree `N = n + m` of a triangular patch.
 pub const MAX_TRIANGLE_DEGREE: usize = 8;
+/// The highest degree `N` of a triangular Bézier patch (its power form has (N+1)(N+2)/2
+/// coefficients, about twice as many as the (n, m) grid of the same total degree).
+pub const MAX_BEZIER_TRIANGLE_DEGREE: usize = 6;
 
 /// What to generate: the shape of the domain and the degree.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -22,6 +25,15 @@ pub enum Shape {
     /// A surface sum_{i<=n, j<=m} c_ij u^i v^j of total degree `N = n + m` restricted to a
     /// triangle (eq. (14)).
     Triangle(usize, usize),
+    /// A Bézier curve of degree `n` over [0, 1], given by its control points, restricted to an
+    /// interval (forward differences, then eq. (3) without its denominators).
+    BezierCurve(usize),
+    /// A tensor-product Bézier patch of bidegree `(n, m)` over [0, 1]^2 restricted to a
+    /// rectangle (two-way forward differences, then eq. (9) without its denominators).
+    BezierTensor(usize, usize),
+    /// A triangular Bézier patch of degree `N` restricted to a sub-triangle (two-way forward
+    /// differences, then eq. (14) over the coefficients i + j <= N without its denominators).
+    BezierTriangle(usize),
 }
 
 impl Shape {
@@ -31,14 +43,27 @@ impl Shape {
             Shape::Curve(_) => "curve",
             Shape::Tensor(..) => "tensor",
             Shape::Triangle(..) => "triangle",
+            Shape::BezierCurve(_) => "bezier_curve",
+            Shape::BezierTensor(..) => "bezier_tensor",
+            Shape::BezierTriangle(_) => "bezier_triangle",
         }
+    }
+
+    /// Whether the input is a Bézier net (control points) rather than power coefficients.
+    pub fn is_bezier(self) -> bool {
+        matches!(
+            self,
+            Shape::BezierCurve(_) | Shape::BezierTensor(..) | Shape::BezierTriangle(_)
+        )
     }
 
     /// The degree as written in the macro input: `3` for a curve, `(3, 2)` for a surface.
     pub fn degree_text(self) -> String {
         match self {
-            Shape::Curve(n) => n.to_string(),
-            Shape::Tensor(n, m) | Shape::Triangle(n, m) => format!("({n}, {m})"),
+            Shape::Curve(n) | Shape::BezierCurve(n) | Shape::BezierTriangle(n) => n.to_string(),
+            Shape::Tensor(n, m) | Shape::Triangle(n, m) | Shape::BezierTensor(n, m) => {
+                format!("({n}, {m})")
+            }
         }
     }
 
@@ -48,24 +73,36 @@ impl Shape {
             Shape::Curve(n) => format!("restrict_curve_{n}"),
             Shape::Tensor(n, m) => format!("restrict_tensor_{n}_{m}"),
             Shape::Triangle(n, m) => format!("restrict_triangle_{n}_{m}"),
+            Shape::BezierCurve(n) => format!("restrict_bezier_curve_{n}"),
+            Shape::BezierTensor(n, m) => format!("restrict_bezier_tensor_{n}_{m}"),
+            Shape::BezierTriangle(n) => format!("restrict_bezier_triangle_{n}"),
         }
     }
 
     /// `Err(message)` when the degree is above the documented limit of its shape.
     pub fn check_limit(self) -> Result<(), String> {
         match self {
-            Shape::Curve(n) if n > MAX_CURVE_DEGREE => Err(format!(
+            Shape::Curve(n) | Shape::BezierCurve(n) if n > MAX_CURVE_DEGREE => Err(format!(
                 "curve degree {n} is above the limit {MAX_CURVE_DEGREE}: the unrolled eq. (3) \
                  grows like n^3/6 terms (see the blossom-macros docs for the measured sizes)"
             )),
-            Shape::Tensor(n, m) if n > MAX_TENSOR_DEGREE || m > MAX_TENSOR_DEGREE => Err(format!(
+            Shape::Tensor(n, m) | Shape::BezierTensor(n, m)
+                if n > MAX_TENSOR_DEGREE || m > MAX_TENSOR_DEGREE =>
+            {
+                Err(format!(
                 "tensor degree ({n}, {m}) is above the limit {MAX_TENSOR_DEGREE} in each variable: \
                  the unrolled eq. (9) grows like n m (n + m) terms (see the blossom-macros docs)"
-            )),
+                ))
+            }
             Shape::Triangle(n, m) if n + m > MAX_TRIANGLE_DEGREE => Err(format!(
                 "triangle total degree N = {n} + {m} = {} is above the limit {MAX_TRIANGLE_DEGREE}: \
-                 the unrolled eq. (14) grows like N^6 terms (see the blossom-macros docs)",
+                 the unrolled eq. (14) grows like N^4 terms (see the blossom-macros docs)",
                 n + m
+            )),
+            Shape::BezierTriangle(n) if n > MAX_BEZIER_TRIANGLE_DEGREE => Err(format!(
+                "Bézier triangle degree {n} is above the limit {MAX_BEZIER_TRIANGLE_DEGREE}: its \
+                 power form has (N+1)(N+2)/2 coefficients and the unrolled eq. (14) grows like \
+                 N^4 terms (see the blossom-macros docs)"
             )),
             _ => Ok(()),
         }
@@ -79,6 +116,9 @@ impl fmt::Display for Shape {
             Shape::Curve(n) => write!(f, "curve {n}"),
             Shape::Tensor(n, m) => write!(f, "tensor {n} {m}"),
             Shape::Triangle(n, m) => write!(f, "triangle {n} {m}"),
+            Shape::BezierCurve(n) => write!(f, "bezier-curve {n}"),
+            Shape::BezierTensor(n, m) => write!(f, "bezier-tensor {n} {m}"),
+            Shape::BezierTriangle(n) => write!(f, "bezier-triangle {n}"),
         }
     }
 }

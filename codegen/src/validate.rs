@@ -7,6 +7,8 @@ use quote::ToTokens;
 use syn::{Expr, Ident, Lit, UnOp, Visibility};
 
 const KEYS: &str = "`vis`, `name`, `shape`, `degree`";
+const SHAPES: &str =
+    "`curve`, `tensor`, `triangle`, `bezier_curve`, `bezier_tensor` or `bezier_triangle`";
 
 /// Collects errors so that one expansion reports every problem at once.
 #[derive(Default)]
@@ -60,14 +62,22 @@ fn name(entry: &RawEntry) -> syn::Result<Ident> {
 /// The shape keyword, checked.
 fn shape_keyword(entry: &RawEntry) -> syn::Result<(String, Span)> {
     let value = nonempty(entry)?;
-    let ident: Ident = syn::parse2(value.clone()).map_err(|_| {
-        syn::Error::new_spanned(value, "expected a shape: `curve`, `tensor` or `triangle`")
-    })?;
+    let ident: Ident = syn::parse2(value.clone())
+        .map_err(|_| syn::Error::new_spanned(value, format!("expected a shape: {SHAPES}")))?;
     let kw = ident.to_string();
-    if !["curve", "tensor", "triangle"].contains(&kw.as_str()) {
+    if ![
+        "curve",
+        "tensor",
+        "triangle",
+        "bezier_curve",
+        "bezier_tensor",
+        "bezier_triangle",
+    ]
+    .contains(&kw.as_str())
+    {
         return Err(syn::Error::new(
             ident.span(),
-            format!("unknown shape `{kw}`: expected `curve`, `tensor` or `triangle`"),
+            format!("unknown shape `{kw}`: expected {SHAPES}"),
         ));
     }
     Ok((kw, ident.span()))
@@ -212,9 +222,15 @@ pub fn validate(raw: RawInput) -> syn::Result<Spec> {
             ("curve", &[n]) => Ok(Shape::Curve(n)),
             ("tensor", &[n, m]) => Ok(Shape::Tensor(n, m)),
             ("triangle", &[n, m]) => Ok(Shape::Triangle(n, m)),
-            ("curve", _) => Err("a curve has one degree, as in `degree = 3`"),
-            ("tensor", _) => {
+            ("bezier_curve", &[n]) => Ok(Shape::BezierCurve(n)),
+            ("bezier_tensor", &[n, m]) => Ok(Shape::BezierTensor(n, m)),
+            ("bezier_triangle", &[n]) => Ok(Shape::BezierTriangle(n)),
+            ("curve" | "bezier_curve", _) => Err("a curve has one degree, as in `degree = 3`"),
+            ("tensor" | "bezier_tensor", _) => {
                 Err("a tensor patch has a degree in u and one in v, as in `degree = (3, 2)`")
+            }
+            ("bezier_triangle", _) => {
+                Err("a triangular Bézier patch has one total degree N, as in `degree = 3`")
             }
             _ => Err(
                 "a triangular patch takes the degrees (n, m) of u and v, as in `degree = (3, 2)`",
@@ -278,7 +294,7 @@ mod tests {
             check(quote!(nme = f, shape = circle, degree = -1)).unwrap_err(),
             "unknown key `nme`: expected one of `vis`, `name`, `shape`, `degree` \
              | missing key `name`: add `name = restrict_cubic` \
-             | unknown shape `circle`: expected `curve`, `tensor` or `triangle` \
+             | unknown shape `circle`: expected `curve`, `tensor`, `triangle`, `bezier_curve`, `bezier_tensor` or `bezier_triangle` \
              | degree must be non-negative, found `- 1`"
         );
         assert_eq!(

@@ -26,6 +26,9 @@
 //! | `curve` | `n` | `fn(coef: &[[T; D]; n+1], a: &T, b: &T) -> [[T; D]; n+1]` |
 //! | `tensor` | `(n, m)` | `fn(coef: &[[[T; D]; m+1]; n+1], rect: &[T; 4]) -> [[[T; D]; m+1]; n+1]` |
 //! | `triangle` | `(n, m)` | `fn(coef: &[[[T; D]; m+1]; n+1], tri: &[[T; 2]; 3]) -> [[T; D]; (N+1)(N+2)/2]` |
+//! | `bezier_curve` | `n` | `fn(ctrl: &[[T; D]; n+1], a: &T, b: &T) -> [[T; D]; n+1]` |
+//! | `bezier_tensor` | `(n, m)` | `fn(ctrl: &[[[T; D]; m+1]; n+1], rect: &[T; 4]) -> [[[T; D]; m+1]; n+1]` |
+//! | `bezier_triangle` | `N` | `fn(ctrl: &[[T; D]; (N+1)(N+2)/2], tri: &[[T; 2]; 3]) -> [[T; D]; (N+1)(N+2)/2]` |
 //!
 //! * curve: `coef[i]` = c_i of C(u) = sum c_i u^i; returns w_v = blossom(b^v, a^(n-v)) on
 //!   [a, b], Theorem 1, eq. (3);
@@ -35,6 +38,16 @@
 //! * triangle: the same c_ij, total degree N = n + m, `tri = [[a1, a2], [b1, b2], [c1, c2]]`;
 //!   returns q_(nu mu lambda) = blossom(a^nu, b^mu, c^lambda) in lexicographic order of
 //!   (nu, mu), Theorem 3, eq. (14) with the bounds stated at the end of its proof.
+//! * the `bezier_` shapes take control points instead of power coefficients: a Bézier curve
+//!   over [0, 1] (`ctrl[i]` = b_i), a tensor patch over [0, 1]^2 (`ctrl[i][j]`), a triangular
+//!   patch of degree N (`ctrl` in lexicographic order of (nu, mu), nu the exponent of the first
+//!   barycentric coordinate), and return the same blossom values on the sub-interval,
+//!   sub-rectangle or sub-triangle. A sub-triangle corner is given by its first two barycentric
+//!   coordinates in the patch's own domain (the third is 1 minus their sum). The code first takes
+//!   forward differences (one subtraction per coordinate each). The power coefficients are those
+//!   differences times C(n, i) (C(n, i) C(m, j), N!/(i! j! (N-i-j)!)), which cancel the
+//!   denominators of (3), (9), (14), so every constant left is an integer. Limits: those of
+//!   `curve` and `tensor`, and N <= 6 for `bezier_triangle`.
 //!
 //! The body is fully unrolled: no loop over a degree index and no binomial at run time. Every
 //! combinatorial constant is folded at expansion time (exact `u128` arithmetic) into a reduced
@@ -81,6 +94,13 @@
 //! let q = restrict_tri(&c, &[[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]]);
 //! // (nu, mu) = (0,0), (0,1), (0,2), (1,0), (1,1), (2,0)
 //! assert_eq!(q, [[0.0], [0.0], [0.0], [0.5], [0.5], [1.0]]);
+//!
+//! // Bézier input: the cubic with control points (0,0), (1,2), (3,3), (4,0) on [0, 1/2] is its
+//! // left half by de Casteljau: (0,0), (1/2,1), (5/4,7/4), (2,15/8).
+//! blossom::restriction!(name = split_cubic, shape = bezier_curve, degree = 3);
+//! let ctrl = [[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 0.0]];
+//! let left = split_cubic(&ctrl, &0.0, &0.5);
+//! assert_eq!(left, [[0.0, 0.0], [0.5, 1.0], [1.25, 1.75], [2.0, 1.875]]);
 //! ```
 //!
 //! # Errors

@@ -7,7 +7,7 @@
 //! blossom                                   same as `blossom verify`
 //! blossom verify [--json]
 //! blossom restrict [--input FILE] [--arithmetic exact|f64] [--method METHOD]
-//! blossom expand curve N | tensor N M | triangle N M
+//! blossom expand curve N | tensor N M | triangle N M | bezier-curve N | bezier-tensor N M | bezier-triangle N
 //! blossom [SUBCOMMAND] --help | -h          help (also `blossom help`)
 //! blossom --version | -V
 //! ```
@@ -133,11 +133,15 @@ pub const EXPAND_HELP: &str = "\
 blossom expand: the Rust function `blossom::restriction!` generates for one fixed degree
 
 Usage: blossom expand curve N | tensor N M | triangle N M
+                      | bezier-curve N | bezier-tensor N M | bezier-triangle N
 
 Prints the formatted source of the unrolled closed form (3), (9) or (14) for that degree, as
 `blossom::restriction!(vis = pub, name = restrict_<shape>_<degrees>, shape = .., degree = ..)`
-expands it; it compiles on its own in a crate that depends on `blossom`.
-Limits (those of the macro): curves N <= 24, tensor patches N, M <= 10, triangles N + M <= 8.
+expands it; it compiles on its own in a crate that depends on `blossom`. The bezier- shapes
+take control points (a Bézier curve over [0, 1], a patch over [0, 1]^2, a triangular patch)
+instead of power coefficients.
+Limits (those of the macro): curves N <= 24, tensor patches N, M <= 10, triangles N + M <= 8,
+Bézier triangles N <= 6.
 ";
 
 /// Help for `blossom verify`.
@@ -235,7 +239,7 @@ fn parse_expand(args: &[OsString]) -> Result<Command, Error> {
     if let Some(flag) = words.iter().find(|w| w.starts_with("--")) {
         return Err(Error::new(
             flag.as_str(),
-            "unknown option for expand (expected `curve N`, `tensor N M` or `triangle N M`)",
+            "unknown option for expand (expected a shape and its degrees; see `blossom expand --help`)",
         ));
     }
     Ok(Command::Expand(words))

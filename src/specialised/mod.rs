@@ -72,6 +72,7 @@ pub fn carries(shape: Shape) -> bool {
         Shape::Curve(n) => (1..=16).contains(&n),
         Shape::Tensor(n, m) => n <= 5 && m <= 5 && (n, m) != (0, 0),
         Shape::Triangle(n, m) => n <= 4 && m <= 4 && (n, m) != (0, 0),
+        Shape::BezierCurve(_) | Shape::BezierTensor(..) | Shape::BezierTriangle(_) => false,
     }
 }
 
@@ -95,13 +96,14 @@ pub fn expand_source(shape: Shape) -> Result<String, Error> {
 /// returns [`expand_source`] of them. Errors name the offending argument.
 pub fn expand_command<S: AsRef<str>>(args: &[S]) -> Result<String, Error> {
     let args: Vec<&str> = args.iter().map(AsRef::as_ref).collect();
-    let usage = "expected `curve N`, `tensor N M` or `triangle N M`";
+    let usage = "expected `curve N`, `tensor N M`, `triangle N M`, `bezier-curve N`, \
+                 `bezier-tensor N M` or `bezier-triangle N`";
     let Some((&kw, degrees)) = args.split_first() else {
         return Err(Error::new("shape", usage));
     };
     let want = match kw {
-        "curve" => 1,
-        "tensor" | "triangle" => 2,
+        "curve" | "bezier-curve" | "bezier-triangle" => 1,
+        "tensor" | "triangle" | "bezier-tensor" => 2,
         other => {
             return Err(Error::new(
                 "shape",
@@ -131,7 +133,10 @@ pub fn expand_command<S: AsRef<str>>(args: &[S]) -> Result<String, Error> {
     let shape = match kw {
         "curve" => Shape::Curve(ds[0]),
         "tensor" => Shape::Tensor(ds[0], ds[1]),
-        _ => Shape::Triangle(ds[0], ds[1]),
+        "triangle" => Shape::Triangle(ds[0], ds[1]),
+        "bezier-curve" => Shape::BezierCurve(ds[0]),
+        "bezier-tensor" => Shape::BezierTensor(ds[0], ds[1]),
+        _ => Shape::BezierTriangle(ds[0]),
     };
     expand_source(shape)
 }
@@ -156,6 +161,18 @@ mod tests {
             "degree"
         );
         assert!(expand_command::<&str>(&[]).is_err());
+        assert_eq!(
+            expand_command(&["bezier-triangle", "3", "2"])
+                .unwrap_err()
+                .field,
+            "degree"
+        );
+        assert_eq!(
+            expand_command(&["bezier-triangle", "7"]).unwrap_err().field,
+            "degree"
+        );
+        let src = expand_command(&["bezier-curve", "3"]).unwrap();
+        assert!(src.contains("pub fn restrict_bezier_curve_3<T: ::blossom::Ring, const D: usize>("));
         let src = expand_command(&["curve", "3"]).unwrap();
         assert!(src.contains("pub fn restrict_curve_3<T: ::blossom::Ring, const D: usize>("));
     }

@@ -6,7 +6,8 @@
 //! monomials b^k a^(i-k), with the constant C(v, k) C(n-v, i-k) / C(n, i) folded and reduced.
 
 use super::{
-    array_type, coef, combination, fn_attrs, ident, reading, Monomials, Operand, Term, Weight,
+    array_type, coef, combination, differences, fn_attrs, ident, reading, Input, Monomials,
+    Operand, Term, Weight,
 };
 use crate::constants::{binomial, Frac};
 use crate::model::Spec;
@@ -15,7 +16,8 @@ use quote::quote;
 
 /// The weight of c_i in w_v (the inner sum of eq. (3)) over the parameters `hi` (b, at
 /// `offset`) and `lo` (a, at `offset + 1`) of a monomial vector of length `width`; with its
-/// unreduced reading for the comment. `None` on constant overflow.
+/// unreduced reading for the comment. For [`Input::Differences`] the weight of Δ^i b_0, i.e.
+/// C(n, i) times that of c_i: the denominator cancels. `None` on constant overflow.
 pub fn weight(
     n: usize,
     v: usize,
@@ -23,9 +25,13 @@ pub fn weight(
     offset: usize,
     width: usize,
     (hi, lo): (&str, &str),
+    input: Input,
 ) -> Option<(Weight, String)> {
     let (n64, v64, i64_) = (n as u64, v as u64, i as u64);
-    let den = binomial(n64, i64_)?;
+    let den = match input {
+        Input::Power => binomial(n64, i64_)?,
+        Input::Differences => 1,
+    };
     let mut terms = Vec::new();
     let mut reading = Vec::new();
     for k in (i + v).saturating_sub(n)..=i.min(v) {
@@ -49,7 +55,10 @@ pub fn weight(
         };
         reading.push(format!("C({v},{k}) C({},{}) {mono}", n - v, i - k));
     }
-    let reading = format!("({}) / C({n},{i})", reading.join(" + "));
+    let reading = match input {
+        Input::Power => format!("({}) / C({n},{i})", reading.join(" + ")),
+        Input::Differences => reading.join(" + "),
+    };
     Some((Weight { terms }, reading))
 }
 
@@ -61,15 +70,27 @@ fn power(x: &str, e: usize) -> String {
     }
 }
 
-/// The generated function for a curve of degree `n`.
-pub fn expand(spec: &Spec, n: usize) -> Option<TokenStream> {
+/// The generated function for a curve of degree `n`: power coefficients for
+/// [`Input::Power`], a Bézier polygon (through its forward differences) for
+/// [`Input::Differences`].
+pub fn expand(spec: &Spec, n: usize, input: Input) -> Option<TokenStream> {
     let table = (0..=n)
         .map(|v| {
             (0..=n)
-                .map(|i| weight(n, v, i, 0, 2, ("b", "a")))
+                .map(|i| weight(n, v, i, 0, 2, ("b", "a"), input))
                 .collect::<Option<Vec<_>>>()
         })
         .collect::<Option<Vec<_>>>()?;
+    // The points the weights multiply: c_i, or Δ^i b_0 bound after the differences.
+    let mut diff_stmts = Vec::new();
+    let (inputs, input_names): (Vec<TokenStream>, Vec<String>) = match input {
+        Input::Power => (0..=n).map(|i| (coef(&[i]), format!("c_{i}"))).unzip(),
+        Input::Differences => differences::curve(n, &mut diff_stmts)
+            .into_iter()
+            .enumerate()
+            .map(|(i, t)| (t, format!("Δ^{i} b_0")))
+            .unzip(),
+    };
     let mut monomials = Monomials::new(&["b", "a"]);
     monomials.bind_all(
         &table
@@ -100,14 +121,14 @@ pub fn expand(spec: &Spec, n: usize) -> Option<TokenStream> {
         let items: Vec<(TokenStream, Operand)> = row
             .iter()
             .enumerate()
-            .map(|(i, w)| (coef(&[i]), w.clone()))
+            .map(|(i, w)| (inputs[i].clone(), w.clone()))
             .collect();
         let sum = combination(&items);
         let id = ident(format!("w{v}"));
         let terms: Vec<(Operand, String)> = row
             .iter()
-            .enumerate()
-            .map(|(i, w)| (w.clone(), format!("c_{i}")))
+            .zip(&input_names)
+            .map(|(w, name)| (w.clone(), name.clone()))
             .collect();
         let doc = format!(" w_{v} = blossom(b^{v}, a^{}) = {}", n - v, reading(&terms));
         point_stmts.push(quote!(#[doc = #doc] let #id: [T; D] = #sum;));
@@ -120,6 +141,32 @@ pub fn expand(spec: &Spec, n: usize) -> Option<TokenStream> {
     let mono_doc = (!mono_stmts.is_empty()).then(|| quote!(#[doc = #mono_doc]));
     // (The doc attribute attaches to the first monomial binding.)
     let ty = array_type(&[n + 1]);
+    if input == Input::Differences {
+        let doc = [
+            format!("Restriction of the Bézier curve of degree {n} over [0, 1] with control points `ctrl` to the"),
+            format!("interval [a, b]: the control points w_v = blossom(b^v, a^({n}-v)), v = 0..={n}. The curve is"),
+            format!("C(u) = sum_i C({n}, i) Δ^i b_0 u^i (forward differences), so Theorem 1, eq. (3), becomes"),
+            String::new(),
+            format!("w_v = sum_i Δ^i b_0 sum_{{k=max(0, i+v-{n})}}^{{min(i, v)}} C(v, k) C({n}-v, i-k) b^k a^(i-k),"),
+            String::new(),
+            "with integer constants only (C(n, i) cancels the denominator of (3)); unrolled for".into(),
+            format!("degree {n}. `ctrl[i]` is b_i; points have `D` coordinates. Generated by `blossom::restriction!`."),
+        ];
+        let attrs = fn_attrs(spec, &doc);
+        let (vis, name) = (&spec.vis, &spec.name);
+        return Some(quote! {
+            #attrs
+            #vis fn #name<T: ::blossom::Ring, const D: usize>(ctrl: &#ty, a: &T, b: &T) -> #ty {
+                #unused
+                #(#diff_stmts)*
+                #mono_doc
+                #(#mono_stmts)*
+                #(#weight_stmts)*
+                #(#point_stmts)*
+                [#(#points),*]
+            }
+        });
+    }
     let doc = [
         format!("Restriction of the power-basis curve C(u) = sum_{{i=0}}^{n} c_i u^i to the interval [a, b]:"),
         format!("the Bézier control points w_v = blossom(b^v, a^({n}-v)), v = 0..={n} (eq. (1)), computed"),

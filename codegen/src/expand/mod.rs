@@ -11,6 +11,7 @@
 //! only iteration in the generated code runs over coordinates, never over degree indices.
 
 pub mod curve;
+pub mod differences;
 pub mod tensor;
 pub mod triangle;
 
@@ -25,9 +26,12 @@ use std::collections::{BTreeSet, HashSet};
 /// Fails only when a folded constant would not fit in `i128`, which the degree limits exclude.
 pub fn expand(spec: &Spec) -> syn::Result<TokenStream> {
     let body = match spec.shape {
-        Shape::Curve(n) => curve::expand(spec, n),
-        Shape::Tensor(n, m) => tensor::expand(spec, n, m),
-        Shape::Triangle(n, m) => triangle::expand(spec, n, m),
+        Shape::Curve(n) => curve::expand(spec, n, Input::Power),
+        Shape::Tensor(n, m) => tensor::expand(spec, n, m, Input::Power),
+        Shape::Triangle(n, m) => triangle::expand(spec, n, m, Input::Power),
+        Shape::BezierCurve(n) => curve::expand(spec, n, Input::Differences),
+        Shape::BezierTensor(n, m) => tensor::expand(spec, n, m, Input::Differences),
+        Shape::BezierTriangle(n) => triangle::expand(spec, n, 0, Input::Differences),
     };
     body.ok_or_else(|| {
         syn::Error::new(
@@ -35,6 +39,18 @@ pub fn expand(spec: &Spec) -> syn::Result<TokenStream> {
             format!("a constant of {} does not fit in i128", spec.shape),
         )
     })
+}
+
+/// What the unrolled formula multiplies.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Input {
+    /// Power coefficients c_i (c_ij), with the denominators C(n, i) (C(n, i) C(m, j),
+    /// N! / (i! j! (N-i-j)!)) of (3), (9), (14) folded into the weights.
+    Power,
+    /// The forward differences of a Bézier net ([`differences`]): the power coefficients are
+    /// those differences times exactly the denominators of (3), (9), (14), which cancel, so
+    /// every weight has integer constants.
+    Differences,
 }
 
 /// How generated code refers to a scalar factor.

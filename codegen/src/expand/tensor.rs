@@ -9,27 +9,48 @@
 //! every nu: (n+1)(m+1)(n+m+2) multiply-adds per coordinate instead of (n+1)^2 (m+1)^2.
 
 use super::curve::weight;
-use super::{array_type, coef, combination, fn_attrs, ident, reading, Monomials, Operand};
+use super::{
+    array_type, coef, combination, differences, fn_attrs, ident, reading, Input, Monomials, Operand,
+};
 use crate::model::Spec;
 use proc_macro2::TokenStream;
 use quote::quote;
 
-/// The generated function for a tensor-product patch of bidegree `(n, m)`.
+/// The generated function for a tensor-product patch of bidegree `(n, m)`: power
+/// coefficients for [`Input::Power`], a Bézier net (through its forward differences) for
+/// [`Input::Differences`].
 // `rows[i][mu]` is indexed by both paper indices; an iterator would hide one of them.
 #[allow(clippy::needless_range_loop)]
-pub fn expand(spec: &Spec, n: usize, m: usize) -> Option<TokenStream> {
+pub fn expand(spec: &Spec, n: usize, m: usize, input: Input) -> Option<TokenStream> {
+    let mut diff_stmts = Vec::new();
+    let (inputs, input_names): (Vec<Vec<TokenStream>>, Vec<Vec<String>>) = match input {
+        Input::Power => (
+            (0..=n)
+                .map(|i| (0..=m).map(|j| coef(&[i, j])).collect())
+                .collect(),
+            (0..=n)
+                .map(|i| (0..=m).map(|j| format!("c_{i}{j}")).collect())
+                .collect(),
+        ),
+        Input::Differences => (
+            differences::tensor(n, m, &mut diff_stmts),
+            (0..=n)
+                .map(|i| (0..=m).map(|j| format!("Δ^({i},{j}) b_00")).collect())
+                .collect(),
+        ),
+    };
     let names = ["b", "a", "d", "c"];
     let u_table = (0..=n)
         .map(|nu| {
             (0..=n)
-                .map(|i| weight(n, nu, i, 0, 4, ("b", "a")))
+                .map(|i| weight(n, nu, i, 0, 4, ("b", "a"), input))
                 .collect::<Option<Vec<_>>>()
         })
         .collect::<Option<Vec<_>>>()?;
     let v_table = (0..=m)
         .map(|mu| {
             (0..=m)
-                .map(|j| weight(m, mu, j, 2, 4, ("d", "c")))
+                .map(|j| weight(m, mu, j, 2, 4, ("d", "c"), input))
                 .collect::<Option<Vec<_>>>()
         })
         .collect::<Option<Vec<_>>>()?;
@@ -74,20 +95,20 @@ pub fn expand(spec: &Spec, n: usize, m: usize) -> Option<TokenStream> {
         let mut row = Vec::new();
         for (mu, v_mu) in v.iter().enumerate() {
             if m == 0 {
-                row.push(coef(&[i, 0]));
+                row.push(inputs[i][0].clone());
                 continue;
             }
             let items: Vec<(TokenStream, Operand)> = v_mu
                 .iter()
                 .enumerate()
-                .map(|(j, w)| (coef(&[i, j]), w.clone()))
+                .map(|(j, w)| (inputs[i][j].clone(), w.clone()))
                 .collect();
             let sum = combination(&items);
             let id = ident(format!("c{i}_v{mu}"));
             let terms: Vec<(Operand, String)> = v_mu
                 .iter()
                 .enumerate()
-                .map(|(j, w)| (w.clone(), format!("c_{i}{j}")))
+                .map(|(j, w)| (w.clone(), input_names[i][j].clone()))
                 .collect();
             let doc = format!(
                 " c{i}_v{mu} = {}: row {i} restricted in v, shared by every nu",
@@ -117,7 +138,7 @@ pub fn expand(spec: &Spec, n: usize, m: usize) -> Option<TokenStream> {
                     (
                         w.clone(),
                         if m == 0 {
-                            format!("c_{i}0")
+                            input_names[i][0].clone()
                         } else {
                             format!("c{i}_v{mu}")
                         },
@@ -142,6 +163,35 @@ pub fn expand(spec: &Spec, n: usize, m: usize) -> Option<TokenStream> {
         " Powers and products b^k a^(i-k), d^r c^(j-r) of the rectangle, each computed once.";
     let mono_doc = (!mono_stmts.is_empty()).then(|| quote!(#[doc = #mono_doc]));
     let coef_ty = array_type(&[n + 1, m + 1]);
+    let attrs_vis_name = (&spec.vis, &spec.name);
+    if input == Input::Differences {
+        let doc = [
+            format!("Restriction of the tensor-product Bézier patch of bidegree ({n}, {m}) over [0, 1]^2 with control net"),
+            "`ctrl[i][j]` to the rectangle [a, b] x [c, d] (`rect = [a, b, c, d]`): the control points".into(),
+            format!("p_(nu mu) = blossom(b^nu, a^({n}-nu); d^mu, c^({m}-mu)). The patch is sum_ij C({n}, i) C({m}, j)"),
+            "Δ_u^i Δ_v^j b_00 u^i v^j (forward differences), so Theorem 2, eq. (9), factored by (10)-(11), becomes".into(),
+            String::new(),
+            "p_(nu mu) = sum_i u_(nu i) sum_j v_(mu j) Δ_u^i Δ_v^j b_00,".into(),
+            format!("u_(nu i) = sum_k C(nu, k) C({n}-nu, i-k) b^k a^(i-k), v_(mu j) = sum_r C(mu, r) C({m}-mu, j-r) d^r c^(j-r),"),
+            String::new(),
+            "with integer constants only. Points have `D` coordinates. Generated by `blossom::restriction!`.".into(),
+        ];
+        let attrs = fn_attrs(spec, &doc);
+        let (vis, name) = attrs_vis_name;
+        return Some(quote! {
+            #attrs
+            #vis fn #name<T: ::blossom::Ring, const D: usize>(ctrl: &#coef_ty, rect: &[T; 4]) -> #coef_ty {
+                let [#pa, #pb, #pc, #pd] = rect;
+                #(#diff_stmts)*
+                #mono_doc
+                #(#mono_stmts)*
+                #(#weight_stmts)*
+                #(#row_stmts)*
+                #(#point_stmts)*
+                [#(#net),*]
+            }
+        });
+    }
     let doc = [
         format!("Restriction of the power-basis surface S(u, v) = sum_{{i<={n}, j<={m}}} c_ij u^i v^j to the rectangle"),
         "[a, b] x [c, d] (`rect = [a, b, c, d]`): the tensor-product Bézier control points".into(),
@@ -156,7 +206,7 @@ pub fn expand(spec: &Spec, n: usize, m: usize) -> Option<TokenStream> {
         "Generated by `blossom::restriction!`.".into(),
     ];
     let attrs = fn_attrs(spec, &doc);
-    let (vis, name) = (&spec.vis, &spec.name);
+    let (vis, name) = attrs_vis_name;
     Some(quote! {
         #attrs
         #vis fn #name<T: ::blossom::Ring, const D: usize>(coef: &#coef_ty, rect: &[T; 4]) -> #coef_ty {

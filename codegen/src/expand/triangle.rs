@@ -24,7 +24,8 @@
 //! gives O(N^5) scalar terms instead of the O(N^6) of the sextuple sum taken point by point.
 
 use super::{
-    array_type, coef, combination, fn_attrs, ident, reading, Monomials, Operand, Term, Weight,
+    array_type, coef, combination, differences, fn_attrs, ident, reading, Input, Monomials,
+    Operand, Term, Weight,
 };
 use crate::constants::{binomial, trinomial, Frac};
 use crate::model::Spec;
@@ -74,8 +75,12 @@ fn v_weight(
     i: usize,
     j: usize,
     tri: (usize, usize, usize),
+    input: Input,
 ) -> Option<(Weight, String)> {
-    let den = trinomial(big_n as u64, i as u64, j as u64)?;
+    let den = match input {
+        Input::Power => trinomial(big_n as u64, i as u64, j as u64)?,
+        Input::Differences => 1,
+    };
     let mut terms = Vec::new();
     let mut reading = Vec::new();
     for (ja, jb, jg) in splits(j, tri) {
@@ -100,11 +105,14 @@ fn v_weight(
             }
         ));
     }
-    let reading = format!(
-        "({}) / ({big_n}!/({i}! {j}! {}!))",
-        reading.join(" + "),
-        big_n - i - j
-    );
+    let reading = match input {
+        Input::Power => format!(
+            "({}) / ({big_n}!/({i}! {j}! {}!))",
+            reading.join(" + "),
+            big_n - i - j
+        ),
+        Input::Differences => reading.join(" + "),
+    };
     Some((Weight { terms }, reading))
 }
 
@@ -139,9 +147,26 @@ impl SharedWeights {
     }
 }
 
-/// The generated function for a triangular patch of degrees `(n, m)`, N = n + m.
-pub fn expand(spec: &Spec, n: usize, m: usize) -> Option<TokenStream> {
+/// The generated function for a triangular patch: for [`Input::Power`], power coefficients
+/// c_ij with i <= n, j <= m, N = n + m; for [`Input::Differences`], a triangular Bézier net of
+/// degree N = n (`m` = 0) through its forward differences, the power coefficients with
+/// i + j <= N.
+pub fn expand(spec: &Spec, n: usize, m: usize, input: Input) -> Option<TokenStream> {
     let big_n = n + m;
+    // The coefficients present: j <= m, or i + j <= N.
+    let j_max = |i: usize| match input {
+        Input::Power => m,
+        Input::Differences => big_n - i,
+    };
+    let mut diff_stmts = Vec::new();
+    let diffs = match input {
+        Input::Power => None,
+        Input::Differences => Some(differences::triangle(big_n, &mut diff_stmts)),
+    };
+    let input_point = |i: usize, j: usize| match &diffs {
+        None => (coef(&[i, j]), format!("c_{i}{j}")),
+        Some(d) => (d[&(i, j)].clone(), format!("Δ1^{i} Δ2^{j} b")),
+    };
     // The triples (nu', mu', lambda') of the shared points r, by i = N - nu' - mu' - lambda',
     // in lexicographic order of (nu', mu'); with the (j, weight) of each.
     let mut r_table = Vec::new();
@@ -150,8 +175,8 @@ pub fn expand(spec: &Spec, n: usize, m: usize) -> Option<TokenStream> {
         for nu in 0..=total {
             for mu in 0..=total - nu {
                 let tri = (nu, mu, total - nu - mu);
-                let ws = (0..=m)
-                    .map(|j| v_weight(big_n, i, j, tri).map(|w| (j, w)))
+                let ws = (0..=j_max(i))
+                    .map(|j| v_weight(big_n, i, j, tri, input).map(|w| (j, w)))
                     .collect::<Option<Vec<_>>>()?;
                 r_table.push((i, tri, ws));
             }
@@ -198,8 +223,9 @@ pub fn expand(spec: &Spec, n: usize, m: usize) -> Option<TokenStream> {
         for (j, (w, text)) in ws {
             let name = format!("w{nu}_{mu}_{la}_c{i}_{j}");
             let op = shared.bind(w, &name, text, &mut monomials, &mut weight_stmts);
-            items.push((coef(&[*i, *j]), op.clone()));
-            terms.push((op, format!("c_{i}{j}")));
+            let (point, point_name) = input_point(*i, *j);
+            items.push((point, op.clone()));
+            terms.push((op, point_name));
         }
         let id = ident(format!("r{nu}_{mu}_{la}"));
         let doc = format!(
@@ -245,8 +271,42 @@ pub fn expand(spec: &Spec, n: usize, m: usize) -> Option<TokenStream> {
     let mono_doc = " Powers and products a1^i_a b1^i_b c1^i_g and a2^j_a b2^j_b c2^j_g of the \
                     corners' coordinates, each computed once.";
     let mono_doc = (!mono_stmts.is_empty()).then(|| quote!(#[doc = #mono_doc]));
-    let coef_ty = array_type(&[n + 1, m + 1]);
     let out_ty = array_type(&[(big_n + 1) * (big_n + 2) / 2]);
+    let (pa1, pb1, pc1, pa2, pb2, pc2) = (&p[0], &p[1], &p[2], &p[3], &p[4], &p[5]);
+    if input == Input::Differences {
+        let doc = [
+            format!("Restriction of the triangular Bézier patch of degree N = {big_n} with control net `ctrl` (b_(nu mu lambda)"),
+            "in lexicographic order of (nu, mu), nu the exponent of the first barycentric coordinate) to the".into(),
+            "sub-triangle with corners `tri = [a, b, c]`, each given by its first two barycentric coordinates".into(),
+            "(a1, a2) with respect to the patch's own domain (the third is 1 - a1 - a2): the control points".into(),
+            "q_(nu mu lambda) = blossom(a^nu, b^mu, c^lambda), in the same order. With u, v the first two".into(),
+            format!("barycentric coordinates, the patch is sum_(i+j<={big_n}) {big_n}!/(i! j! ({big_n}-i-j)!) Δ1^i Δ2^j b_(0,0,{big_n}) u^i v^j"),
+            "(forward differences towards the first and second corners), so Theorem 3, eq. (14), becomes".into(),
+            "the regrouped sum of the power-basis evaluator with integer constants only:".into(),
+            String::new(),
+            "q_(nu mu lambda) = sum_i sum_(i_a+i_b+i_g=i) C(nu, i_a) C(mu, i_b) C(lambda, i_g) a1^i_a b1^i_b c1^i_g".into(),
+            "r_(nu-i_a, mu-i_b, lambda-i_g),".into(),
+            "r_(nu' mu' lambda') = sum_j Δ1^i Δ2^j b sum_(j_a+j_b+j_g=j) C(nu', j_a) C(mu', j_b) C(lambda', j_g)".into(),
+            format!("a2^j_a b2^j_b c2^j_g, with i = {big_n} - nu' - mu' - lambda'. Points have `D` coordinates."),
+            "Generated by `blossom::restriction!`.".into(),
+        ];
+        let attrs = fn_attrs(spec, &doc);
+        let (vis, name) = (&spec.vis, &spec.name);
+        return Some(quote! {
+            #attrs
+            #vis fn #name<T: ::blossom::Ring, const D: usize>(ctrl: &#out_ty, tri: &[[T; 2]; 3]) -> #out_ty {
+                let [[#pa1, #pa2], [#pb1, #pb2], [#pc1, #pc2]] = tri;
+                #(#diff_stmts)*
+                #mono_doc
+                #(#mono_stmts)*
+                #(#weight_stmts)*
+                #(#r_stmts)*
+                #(#point_stmts)*
+                [#(#points),*]
+            }
+        });
+    }
+    let coef_ty = array_type(&[n + 1, m + 1]);
     let doc = [
         format!("Restriction of the power-basis surface S(u, v) = sum_{{i<={n}, j<={m}}} c_ij u^i v^j, of total degree"),
         format!("N = {big_n}, to the triangle with corners `tri = [a, b, c]`, a = (a1, a2), b = (b1, b2), c = (c1, c2):"),
@@ -267,7 +327,6 @@ pub fn expand(spec: &Spec, n: usize, m: usize) -> Option<TokenStream> {
     ];
     let attrs = fn_attrs(spec, &doc);
     let (vis, name) = (&spec.vis, &spec.name);
-    let (pa1, pb1, pc1, pa2, pb2, pc2) = (&p[0], &p[1], &p[2], &p[3], &p[4], &p[5]);
     Some(quote! {
         #attrs
         #vis fn #name<T: ::blossom::Ring, const D: usize>(coef: &#coef_ty, tri: &[[T; 2]; 3]) -> #out_ty {
