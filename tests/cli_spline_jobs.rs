@@ -449,3 +449,38 @@ fn every_method_and_both_arithmetics_agree_on_every_job() {
     assert_eq!(eval["points"][2], json!(["6", "9/2"]));
     assert_eq!(answer(&jobs[4])["points"], json!([]));
 }
+
+/// `bezier-curve --method specialised` runs the carried Bézier-input evaluators (degrees
+/// 1..=16): the same exact answer as de Casteljau's pyramid at every carried degree, f64
+/// close to it, and a clear refusal above.
+#[cfg(feature = "carried-grid")]
+#[test]
+fn bezier_curve_specialised_at_every_carried_degree() {
+    let mut rng = Rng(4242);
+    for n in 1..=16 {
+        let pts: Vec<Value> = (0..=n)
+            .map(|_| json!([num_json(&rng.rational()), num_json(&rng.rational())]))
+            .collect();
+        let job = json!({"kind": "bezier-curve", "control_points": pts, "interval": [num_json(&rng.rational()), num_json(&rng.rational())]});
+        let exact = answer_with(&["--method", "pyramid"], &job);
+        assert_eq!(
+            answer_with(&["--method", "specialised"], &job),
+            exact,
+            "degree {n}"
+        );
+        let float = answer_with(&["--method", "specialised", "--arithmetic", "f64"], &job);
+        assert_eq!(float["degree"], json!(n));
+    }
+    let pts: Vec<Value> = (0..=17).map(|i| json!([i])).collect();
+    let job = json!({"kind": "bezier-curve", "control_points": pts, "interval": [0, 1]});
+    let r = run(&["--method", "specialised"], &job);
+    assert_eq!(r.code, 2);
+    assert!(r.stdout.is_empty());
+    assert!(
+        r.stderr.starts_with(
+            "error: --method: no specialised evaluator for a Bézier curve of degree 17"
+        ),
+        "{}",
+        r.stderr
+    );
+}

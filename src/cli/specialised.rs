@@ -64,6 +64,41 @@ pub fn specialised<T: crate::specialised::Carried>(
     }))
 }
 
+/// The Bézier curve `curve` restricted to [a, b] by the carried Bézier-input evaluator of its
+/// degree: `None` when this binary has no specialised evaluators, `Some(Err(..))` naming the
+/// carried degrees for a degree it does not carry.
+#[cfg(feature = "carried-grid")]
+pub fn specialised_bezier_curve<T: crate::specialised::Carried>(
+    curve: &crate::BezierCurve<T>,
+    a: &T,
+    b: &T,
+) -> Option<Result<crate::BezierCurve<T>, Error>> {
+    use crate::specialised::{carried_degrees, restrict_bezier_curve_specialised};
+    Some(
+        restrict_bezier_curve_specialised(curve, a, b).ok_or_else(|| {
+            Error::new(
+                "--method",
+                format!(
+                    "no specialised evaluator for a Bézier curve of degree {}: this binary carries {}",
+                    curve.degree(),
+                    carried_degrees()
+                ),
+            )
+        }),
+    )
+}
+
+/// Without the carried grid there is no specialised evaluator.
+#[cfg(not(feature = "carried-grid"))]
+pub fn specialised_bezier_curve<T: crate::Ring>(
+    curve: &crate::BezierCurve<T>,
+    a: &T,
+    b: &T,
+) -> Option<Result<crate::BezierCurve<T>, Error>> {
+    let _ = (curve, a, b);
+    None
+}
+
 /// Without the carried grid there is no specialised evaluator.
 #[cfg(not(feature = "carried-grid"))]
 pub fn specialised<T: crate::Ring>(job: &Job<T>) -> Option<Result<Answer<T>, Error>> {

@@ -24,9 +24,10 @@
 //! `--method` selects the algorithm of a `bezier-curve` job, the one job here that is a
 //! restriction: `pyramid` runs de Casteljau's pyramid on the blossom of the given control
 //! points (eq. (2) of seed 004), `polarisation` samples the Bézier curve and applies the
-//! inverse formula (22) of seed 004, and `closed-form`, `definition`, `bulk` and `specialised`
-//! write the curve in the power basis (exactly, the inverse of the Bernstein basis change) and
-//! restrict it like a `curve` job. The other jobs have one algorithm each and give the same
+//! inverse formula (22) of seed 004, `specialised` runs the carried Bézier-input evaluator that
+//! `blossom::restriction!(shape = bezier_curve)` generated for the degree (1..=16), and
+//! `closed-form`, `definition` and `bulk` write the curve in the power basis (exactly, the
+//! inverse of the Bernstein basis change) and restrict it like a `curve` job. The other jobs have one algorithm each and give the same
 //! answer under every method.
 //!
 //! # Exact decisions under `--arithmetic f64`
@@ -192,20 +193,19 @@ fn bezier_curve<T: JsonNumber + Field>(
         MethodChoice::Library(Method::Polarisation) => {
             curve_control_points(n, &a, &b, &|t| curve.eval(t))
         }
-        _ => {
+        MethodChoice::Specialised => {
+            match super::specialised::specialised_bezier_curve(&curve, &a, &b) {
+                Some(result) => result?.into_control_points(),
+                None => return Err(Error::new("--method", super::specialised::NOT_BUILT_IN)),
+            }
+        }
+        MethodChoice::Library(method) => {
             let power = PowerCurve::new(bernstein_to_power(curve.control_points()))?;
             let as_curve = Job::Curve {
                 curve: power,
                 interval: [a, b],
             };
-            let answer = match method {
-                MethodChoice::Library(m) => super::answer::compute(&as_curve, m),
-                MethodChoice::Specialised => match super::specialised::specialised(&as_curve) {
-                    Some(result) => result?,
-                    None => return Err(Error::new("--method", super::specialised::NOT_BUILT_IN)),
-                },
-            };
-            let Answer::Curve(restricted) = answer else {
+            let Answer::Curve(restricted) = super::answer::compute(&as_curve, method) else {
                 return Err(Error::new(
                     "internal",
                     "a curve job gave another kind of answer",

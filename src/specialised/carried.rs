@@ -2,6 +2,7 @@
 
 use super::{Carried, Scalar};
 use crate::bezier::{BezierCurve, TensorPatch, TriangularPatch};
+use crate::point::Point;
 use crate::power::{PowerCurve, PowerSurface};
 
 /// The carried evaluators, as `blossom::restriction!` generates them: `curve_N`,
@@ -17,7 +18,21 @@ pub mod grid {
                 b: &T,
             ) -> Option<crate::BezierCurve<T>> {
                 Some(match curve.degree() {
-                    $($n => super::run_curve(curve, a, b, $name::<crate::specialised::Scalar, 1>),)*
+                    $($n => super::run_curve(curve.coefficients(), a, b, $name::<crate::specialised::Scalar, 1>),)*
+                    _ => return None,
+                })
+            }
+        };
+        (bezier_curve $dispatch:ident: $($n:tt => $name:ident,)*) => {
+            $( crate::restriction!(vis = pub, name = $name, shape = bezier_curve, degree = $n); )*
+            /// The carried Bézier-curve evaluator of degree `n` among those listed, coordinate by coordinate.
+            pub(in crate::specialised) fn $dispatch<T: crate::specialised::Carried>(
+                curve: &crate::BezierCurve<T>,
+                a: &T,
+                b: &T,
+            ) -> Option<crate::BezierCurve<T>> {
+                Some(match curve.degree() {
+                    $($n => super::run_curve(curve.control_points(), a, b, $name::<crate::specialised::Scalar, 1>),)*
                     _ => return None,
                 })
             }
@@ -63,6 +78,26 @@ pub mod grid {
     8 => curve_8,
     9 => curve_9,
     10 => curve_10,
+    }
+
+    // Bézier input (forward differences, then eq. (3)): the degrees `bezier-curve` jobs use.
+    carry! { bezier_curve bezier_curve_carried:
+    1 => bezier_curve_1,
+    2 => bezier_curve_2,
+    3 => bezier_curve_3,
+    4 => bezier_curve_4,
+    5 => bezier_curve_5,
+    6 => bezier_curve_6,
+    7 => bezier_curve_7,
+    8 => bezier_curve_8,
+    9 => bezier_curve_9,
+    10 => bezier_curve_10,
+    11 => bezier_curve_11,
+    12 => bezier_curve_12,
+    13 => bezier_curve_13,
+    14 => bezier_curve_14,
+    15 => bezier_curve_15,
+    16 => bezier_curve_16,
     }
 
     carry! { curve curve_more:
@@ -157,17 +192,21 @@ type TensorFn<const R: usize, const C: usize> =
 type TriangleFn<const R: usize, const C: usize, const L: usize> =
     fn(&[[[Scalar; 1]; C]; R], &[[Scalar; 2]; 3]) -> [[Scalar; 1]; L];
 
+/// Runs a curve evaluator (power coefficients or Bézier control points, `input`) coordinate
+/// by coordinate.
+// `x` is the coordinate taken from every input point at once; no iterator says that better.
+#[allow(clippy::needless_range_loop)]
 fn run_curve<T: Carried, const L: usize>(
-    curve: &PowerCurve<T>,
+    input: &[Point<T>],
     a: &T,
     b: &T,
     f: CurveFn<L>,
 ) -> BezierCurve<T> {
-    let dim = curve.dim();
+    let dim = input[0].len();
     let (a, b) = (a.wrap(), b.wrap());
     let mut points = vec![Vec::with_capacity(dim); L];
     for x in 0..dim {
-        let coef: [[Scalar; 1]; L] = std::array::from_fn(|i| [curve.coefficients()[i][x].wrap()]);
+        let coef: [[Scalar; 1]; L] = std::array::from_fn(|i| [input[i][x].wrap()]);
         for (p, [w]) in points.iter_mut().zip(f(&coef, &a, &b)) {
             p.push(T::unwrap(w));
         }
@@ -231,6 +270,16 @@ pub fn restrict_curve_specialised<T: Carried>(
     b: &T,
 ) -> Option<BezierCurve<T>> {
     grid::curve_proved(curve, a, b).or_else(|| grid::curve_more(curve, a, b))
+}
+
+/// The Bézier curve `curve` over [0, 1] restricted to [a, b] by the generated Bézier-input
+/// evaluator of its degree (forward differences, then eq. (3)); `None` when not carried.
+pub fn restrict_bezier_curve_specialised<T: Carried>(
+    curve: &BezierCurve<T>,
+    a: &T,
+    b: &T,
+) -> Option<BezierCurve<T>> {
+    grid::bezier_curve_carried(curve, a, b)
 }
 
 /// `surface` restricted to `rect = [a, b, c, d]` by the generated evaluator of its bidegree

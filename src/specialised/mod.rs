@@ -49,7 +49,8 @@ mod scalar;
 
 #[cfg(feature = "carried-grid")]
 pub use carried::{
-    grid, restrict_curve_specialised, restrict_tensor_specialised, restrict_triangle_specialised,
+    grid, restrict_bezier_curve_specialised, restrict_curve_specialised,
+    restrict_tensor_specialised, restrict_triangle_specialised,
 };
 #[cfg(feature = "carried-grid")]
 pub use proof_grid::{
@@ -63,7 +64,7 @@ pub use blossom_codegen::{Shape, MAX_CURVE_DEGREE, MAX_TENSOR_DEGREE, MAX_TRIANG
 /// Describes the carried degrees, for the error message of a degree that is not carried.
 pub fn carried_degrees() -> &'static str {
     "curves of degree 1..=16, tensor patches (n, m) with 0 <= n, m <= 5 and triangular patches \
-     (n, m) with 0 <= n, m <= 4, (n, m) = (0, 0) excepted"
+     (n, m) with 0 <= n, m <= 4, (n, m) = (0, 0) excepted; Bézier curves of degree 1..=16"
 }
 
 /// Whether the binary carries a specialised evaluator for `shape`.
@@ -72,7 +73,8 @@ pub fn carries(shape: Shape) -> bool {
         Shape::Curve(n) => (1..=16).contains(&n),
         Shape::Tensor(n, m) => n <= 5 && m <= 5 && (n, m) != (0, 0),
         Shape::Triangle(n, m) => n <= 4 && m <= 4 && (n, m) != (0, 0),
-        Shape::BezierCurve(_) | Shape::BezierTensor(..) | Shape::BezierTriangle(_) => false,
+        Shape::BezierCurve(n) => (1..=16).contains(&n),
+        Shape::BezierTensor(..) | Shape::BezierTriangle(_) => false,
     }
 }
 
