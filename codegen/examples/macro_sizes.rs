@@ -18,9 +18,15 @@ fn main() {
         Shape::Triangle(3, 3),
         Shape::Triangle(4, 4),
         Shape::Triangle(5, 5),
+        Shape::BezierCurve(3),
+        Shape::BezierCurve(24),
+        Shape::BezierTensor(10, 10),
+        Shape::BezierTriangle(4),
+        Shape::BezierTriangle(6),
+        Shape::BezierTriangle(8),
     ];
     println!(
-        "{:<10} {:>8} {:>9} {:>7}",
+        "{:<16} {:>8} {:>9} {:>7}",
         "shape", "degree", "tokens", "lines"
     );
     for shape in shapes {
@@ -28,7 +34,7 @@ fn main() {
         let count = count_tokens(tokens.clone());
         let lines = format_items(tokens).lines().count();
         println!(
-            "{:<10} {:>8} {:>9} {:>7}",
+            "{:<16} {:>8} {:>9} {:>7}",
             shape.keyword(),
             shape.degree_text(),
             count,
