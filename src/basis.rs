@@ -7,7 +7,11 @@
 //!   u^i = sum_{v >= i} C(v, i) / C(n, i) B_v^n(u);
 //! * [`triangle_power_to_bernstein`]: power coefficients in barycentric coordinates (s, t) to
 //!   the control net of a triangular patch, O(N^3):
-//!   s^i t^j = sum_{nu >= i, mu >= j} C(nu, i) C(mu, j) / (N! / (i! j! (N-i-j)!)) B_{nu mu}^N.
+//!   s^i t^j = sum_{nu >= i, mu >= j} C(nu, i) C(mu, j) / (N! / (i! j! (N-i-j)!)) B_{nu mu}^N;
+//! * [`bernstein_to_power`]: the inverse of [`power_to_bernstein`] by forward differences,
+//!   c_k = C(n, k) Δ^k b_0, O(n^2);
+//! * [`triangle_bernstein_to_power`]: the inverse of [`triangle_power_to_bernstein`],
+//!   c_ij = N! / (i! j! (N-i-j)!) Δ_1^i Δ_2^j b_(0,0,N), O(N^3).
 
 use crate::bezier::{triangle_index, triangle_len, TriangularPatch};
 use crate::binomial::{binomial, multinomial};
@@ -120,6 +124,77 @@ pub fn triangle_power_to_bernstein<T: Ring>(n: usize, d: &[Point<T>]) -> Triangu
         .map(|q| q.expect("every index is filled"))
         .collect();
     TriangularPatch::new(n, points).expect("a net of the right size")
+}
+
+/// `out[k]` = Δ^k p_0, the forward differences of `points` (n(n+1)/2 subtractions per
+/// coordinate): Δ^k p_i = Δ^(k-1) p_(i+1) - Δ^(k-1) p_i.
+fn forward_differences<T: Ring>(points: Vec<Point<T>>) -> Vec<Point<T>> {
+    let mut level = points;
+    let mut out = Vec::with_capacity(level.len());
+    while let Some(first) = level.first() {
+        out.push(first.clone());
+        level = level
+            .windows(2)
+            .map(|w| w[1].iter().zip(&w[0]).map(|(x, y)| x.sub(y)).collect())
+            .collect();
+    }
+    out
+}
+
+/// The power coefficients of the Bézier curve over [0, 1] with control points `b` (the inverse
+/// of [`power_to_bernstein`]): c_k = C(n, k) Δ^k b_0, the k-th forward difference scaled by a
+/// binomial. O(n^2) subtractions and n scalings per coordinate.
+pub fn bernstein_to_power<T: Ring>(b: &[Point<T>]) -> Vec<Point<T>> {
+    let n = b.len() as i64 - 1;
+    let mut c = forward_differences(b.to_vec());
+    for (k, ck) in c
+        .iter_mut()
+        .enumerate()
+        .skip(1)
+        .take((n - 1).max(0) as usize)
+    {
+        scale_point_rational(ck, &Rational::from_integer(binomial(n, k as i64)));
+    }
+    c
+}
+
+/// The power coefficients in the barycentric coordinates (s, t) of corners 1 and 2 (the third
+/// being 1 - s - t) of the triangular patch `patch` (the inverse of
+/// [`triangle_power_to_bernstein`]): `out[triangle_index(N, i, j)]` = coefficient of s^i t^j =
+/// N! / (i! j! (N-i-j)!) Δ_1^i Δ_2^j b_(0,0,N), where Δ_1 b_(nu,mu) = b_(nu+1,mu) - b_(nu,mu)
+/// and Δ_2 b_(nu,mu) = b_(nu,mu+1) - b_(nu,mu). O(N^3) subtractions.
+pub fn triangle_bernstein_to_power<T: Ring>(patch: &TriangularPatch<T>) -> Vec<Point<T>> {
+    let n = patch.degree();
+    let mut out: Vec<Option<Point<T>>> = vec![None; triangle_len(n)];
+    // level[nu][mu] = Δ_2^j b_(nu, mu), nu + mu <= N - j.
+    let mut level: Vec<Vec<Point<T>>> = (0..=n)
+        .map(|nu| (0..=n - nu).map(|mu| patch.get(nu, mu).clone()).collect())
+        .collect();
+    for j in 0..=n {
+        if j > 0 {
+            level = (0..=n - j)
+                .map(|nu| {
+                    (0..=n - j - nu)
+                        .map(|mu| {
+                            let (hi, lo) = (&level[nu][mu + 1], &level[nu][mu]);
+                            hi.iter().zip(lo).map(|(x, y)| x.sub(y)).collect()
+                        })
+                        .collect()
+                })
+                .collect();
+        }
+        let column: Vec<Point<T>> = level.iter().map(|row| row[0].clone()).collect();
+        for (i, mut d) in forward_differences(column).into_iter().enumerate() {
+            let k = multinomial(n as i64, &[i as i64, j as i64]);
+            if k != 1.into() {
+                scale_point_rational(&mut d, &Rational::from_integer(k));
+            }
+            out[triangle_index(n, i, j)] = Some(d);
+        }
+    }
+    out.into_iter()
+        .map(|d| d.expect("every i + j <= N is filled"))
+        .collect()
 }
 
 #[cfg(test)]

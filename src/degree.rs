@@ -20,7 +20,7 @@ use crate::binomial::binomial;
 use crate::error::{Error, Result};
 use crate::inverse::curve_control_points;
 use crate::linalg;
-use crate::point::{self, Point};
+use crate::point::Point;
 use crate::{Rational, Ring};
 
 /// How [`reduce`] lowers the degree.
@@ -102,24 +102,7 @@ pub fn bernstein_gram(m: usize, n: usize) -> Vec<Vec<Rational>> {
         .collect()
 }
 
-/// The power coefficients of the Bézier curve over [0, 1] with control points `b` (the inverse
-/// of [`crate::basis::power_to_bernstein`]): c_k = C(n, k) sum_{i <= k} (-1)^(k-i) C(k, i) b_i,
-/// the k-th forward difference scaled by C(n, k).
-pub fn bernstein_to_power<T: Ring>(b: &[Point<T>]) -> Vec<Point<T>> {
-    let n = b.len() as i64 - 1;
-    let dim = b.first().map_or(0, Vec::len);
-    (0..=n)
-        .map(|k| {
-            let mut c = point::zero::<T>(dim);
-            for (i, bi) in b.iter().enumerate().take(k as usize + 1) {
-                let sign = if (k - i as i64) % 2 == 0 { 1 } else { -1 };
-                let w = binomial(n, k) * binomial(k, i as i64) * sign;
-                point::add_scaled_rational(&mut c, &Rational::from_integer(w), bi);
-            }
-            c
-        })
-        .collect()
-}
+pub use crate::basis::bernstein_to_power;
 
 /// `curve` (degree n) written at degree `to_degree` >= n, exactly.
 ///

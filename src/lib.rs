@@ -45,6 +45,7 @@ pub mod restrict;
 pub mod ring;
 pub mod specialised;
 pub mod spline;
+pub mod subdivide;
 pub mod verify;
 
 pub use bezier::{BezierCurve, TensorPatch, TriangularPatch};
@@ -56,6 +57,7 @@ pub use power::{PowerCurve, PowerSurface};
 pub use restrict::{restrict_curve, restrict_tensor, restrict_triangle, Method};
 pub use ring::{Rational, Ring};
 pub use spline::BSpline;
+pub use subdivide::{restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle};
 
 /// The README's examples, compiled and run as doc tests.
 #[doc = include_str!("../README.md")]

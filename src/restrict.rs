@@ -65,18 +65,18 @@ impl Method {
 
 /// Splits each point of `rows` into concatenated coordinates: rows of a grid become long
 /// points, so that a pass along one variable treats a whole row as one point.
-fn flatten<T: Clone>(rows: &[Vec<Point<T>>]) -> Vec<Point<T>> {
+pub(crate) fn flatten<T: Clone>(rows: &[Vec<Point<T>>]) -> Vec<Point<T>> {
     rows.iter().map(|row| row.concat()).collect()
 }
 
-fn unflatten<T: Clone>(long: Vec<Point<T>>, dim: usize) -> Vec<Vec<Point<T>>> {
+pub(crate) fn unflatten<T: Clone>(long: Vec<Point<T>>, dim: usize) -> Vec<Vec<Point<T>>> {
     long.into_iter()
         .map(|p| p.chunks(dim).map(<[T]>::to_vec).collect())
         .collect()
 }
 
 /// Bézier control points over [0, 1] of C(a + (b - a) t), given the coefficients of C.
-fn bulk_curve_points<T: Ring>(coefficients: &[Point<T>], a: &T, b: &T) -> Vec<Point<T>> {
+pub(crate) fn bulk_curve_points<T: Ring>(coefficients: &[Point<T>], a: &T, b: &T) -> Vec<Point<T>> {
     let mut d = coefficients.to_vec();
     taylor_shift(&mut d, a);
     scale_argument(&mut d, &b.sub(a));
@@ -159,11 +159,23 @@ fn times_linear<T: Ring>(form: &[Point<T>], p: &T, q: &T) -> Vec<Point<T>> {
 
 fn bulk_triangle<T: Ring>(surface: &PowerSurface<T>, tri: &[[T; 2]; 3]) -> TriangularPatch<T> {
     let (n, m) = surface.degree();
-    let big_n = n + m;
-    let dim = surface.dim();
+    bulk_triangle_grid(surface.coefficients(), n + m, tri)
+}
+
+/// The bulk triangle restriction of the polynomial sum c_ij u^i v^j with the coefficient grid
+/// `coefficients[i][j]` (i <= n, j <= m), as a triangular patch of total degree `big_n`: n + m
+/// for the paper's convention, or N for a grid of total degree N padded with zeros (the power
+/// form of a triangular Bézier patch).
+pub(crate) fn bulk_triangle_grid<T: Ring>(
+    coefficients: &[Vec<Point<T>>],
+    big_n: usize,
+    tri: &[[T; 2]; 3],
+) -> TriangularPatch<T> {
+    let (n, m) = (coefficients.len() - 1, coefficients[0].len() - 1);
+    let dim = coefficients[0][0].len();
     let [[a1, a2], [b1, b2], [c1, c2]] = tri;
     // 1. S(c1 + x, c2 + y): Taylor shift along u with rows as points, then along v.
-    let mut long = flatten(surface.coefficients());
+    let mut long = flatten(coefficients);
     taylor_shift(&mut long, c1);
     let mut shifted = unflatten(long, dim);
     for row in shifted.iter_mut() {

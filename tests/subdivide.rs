@@ -1,0 +1,211 @@
+//! Restriction of Bézier input (`blossom::subdivide`), through the power basis and the bulk
+//! restriction, checked against de Casteljau's pyramid on the blossom, which never leaves the
+//! Bernstein basis: exactly on random rational nets, symbolically (every control point and the
+//! domain are variables), and in f64 with a measured error. Bad corners are refused.
+
+mod common;
+
+use blossom::blossoms::pyramid::{
+    bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom,
+};
+use blossom::ring::rational_to_f64;
+use blossom::subdivide::restrict_bezier_triangle_affine;
+use blossom::{
+    restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle, BezierCurve, Poly,
+    Rational, Ring, TensorPatch, TriangularPatch,
+};
+use common::Rng;
+
+fn repeated<X: Clone>(x: &X, k: usize, y: &X, l: usize) -> Vec<X> {
+    std::iter::repeat_n(x.clone(), k)
+        .chain(std::iter::repeat_n(y.clone(), l))
+        .collect()
+}
+
+fn curve_by_pyramid<T: Ring>(curve: &BezierCurve<T>, a: &T, b: &T) -> Vec<Vec<T>> {
+    let n = curve.degree();
+    (0..=n)
+        .map(|j| bezier_curve_blossom(curve.control_points(), &repeated(a, n - j, b, j)))
+        .collect()
+}
+
+fn tensor_by_pyramid<T: Ring>(patch: &TensorPatch<T>, rect: &[T; 4]) -> Vec<Vec<Vec<T>>> {
+    let (n, m) = patch.degree();
+    let [a, b, c, d] = rect;
+    (0..=n)
+        .map(|nu| {
+            (0..=m)
+                .map(|mu| {
+                    bezier_tensor_blossom(
+                        patch.control_points(),
+                        &repeated(a, n - nu, b, nu),
+                        &repeated(c, m - mu, d, mu),
+                    )
+                })
+                .collect()
+        })
+        .collect()
+}
+
+fn triangle_by_pyramid<T: Ring>(patch: &TriangularPatch<T>, corners: &[[T; 3]; 3]) -> Vec<Vec<T>> {
+    patch
+        .entries()
+        .map(|(nu, mu, la, _)| {
+            let args: Vec<[T; 3]> = std::iter::repeat_n(corners[0].clone(), nu)
+                .chain(std::iter::repeat_n(corners[1].clone(), mu))
+                .chain(std::iter::repeat_n(corners[2].clone(), la))
+                .collect();
+            bezier_triangle_blossom(patch, &args)
+        })
+        .collect()
+}
+
+/// Random barycentric corners (s, t, 1 - s - t), exact.
+fn corners(rng: &mut Rng) -> [[Rational; 3]; 3] {
+    std::array::from_fn(|_| {
+        let (s, t) = (rng.rational(), rng.rational());
+        let r = Rational::from_integer(1.into()) - &s - &t;
+        [s, t, r]
+    })
+}
+
+#[test]
+fn curves_equal_the_pyramid_exactly() {
+    let mut rng = Rng(501);
+    for n in 0..=8 {
+        for dim in 1..=3 {
+            let curve = BezierCurve::new((0..=n).map(|_| rng.point(dim)).collect()).unwrap();
+            let (a, b) = (rng.rational(), rng.rational());
+            let fast = restrict_bezier_curve(&curve, &a, &b);
+            assert_eq!(
+                fast.control_points(),
+                curve_by_pyramid(&curve, &a, &b).as_slice()
+            );
+        }
+    }
+}
+
+#[test]
+fn tensor_patches_equal_the_pyramid_exactly() {
+    let mut rng = Rng(502);
+    for n in 0..=4 {
+        for m in 0..=4 {
+            let dim = 1 + (n + m) % 3;
+            let net = (0..=n)
+                .map(|_| (0..=m).map(|_| rng.point(dim)).collect())
+                .collect();
+            let patch = TensorPatch::new(net).unwrap();
+            let rect = std::array::from_fn(|_| rng.rational());
+            let fast = restrict_bezier_tensor(&patch, &rect);
+            assert_eq!(
+                fast.control_points(),
+                tensor_by_pyramid(&patch, &rect).as_slice()
+            );
+        }
+    }
+}
+
+#[test]
+fn triangles_equal_the_pyramid_exactly() {
+    let mut rng = Rng(503);
+    for n in 0..=6 {
+        for dim in 1..=2 {
+            let len = (n + 1) * (n + 2) / 2;
+            let patch =
+                TriangularPatch::new(n, (0..len).map(|_| rng.point(dim)).collect()).unwrap();
+            let tri = corners(&mut rng);
+            let fast = restrict_bezier_triangle(&patch, &tri).unwrap();
+            assert_eq!(
+                fast.control_points(),
+                triangle_by_pyramid(&patch, &tri).as_slice()
+            );
+        }
+    }
+}
+
+#[test]
+fn symbolic_identity_with_the_pyramid() {
+    let v = |s: String| Poly::var(&s);
+    for n in 0..=5 {
+        let curve = BezierCurve::new((0..=n).map(|i| vec![v(format!("b{i}"))]).collect()).unwrap();
+        let (a, b) = (Poly::var("a"), Poly::var("b"));
+        let fast = restrict_bezier_curve(&curve, &a, &b);
+        assert_eq!(
+            fast.control_points(),
+            curve_by_pyramid(&curve, &a, &b).as_slice()
+        );
+    }
+    for (n, m) in [(1, 1), (2, 1), (2, 2), (3, 2)] {
+        let net = (0..=n)
+            .map(|i| (0..=m).map(|j| vec![v(format!("b{i}_{j}"))]).collect())
+            .collect();
+        let patch = TensorPatch::new(net).unwrap();
+        let rect = ["a", "b", "c", "d"].map(Poly::var);
+        let fast = restrict_bezier_tensor(&patch, &rect);
+        assert_eq!(
+            fast.control_points(),
+            tensor_by_pyramid(&patch, &rect).as_slice()
+        );
+    }
+    for n in 1..=3 {
+        let len = (n + 1) * (n + 2) / 2;
+        let patch =
+            TriangularPatch::new(n, (0..len).map(|k| vec![v(format!("b{k}"))]).collect()).unwrap();
+        let affine = [["a1", "a2"], ["b1", "b2"], ["c1", "c2"]].map(|c| c.map(Poly::var));
+        let bary = affine
+            .clone()
+            .map(|[s, t]| [s.clone(), t.clone(), Poly::one().sub(&s).sub(&t)]);
+        let fast = restrict_bezier_triangle_affine(&patch, &affine);
+        assert_eq!(
+            fast.control_points(),
+            triangle_by_pyramid(&patch, &bary).as_slice()
+        );
+    }
+}
+
+/// f64 against the exact answer of the same inputs (every f64 input is exactly a rational):
+/// the largest relative error over random curves in [-1, 1] on sub-intervals of [0, 1].
+#[test]
+fn f64_error_is_small_at_moderate_degree() {
+    let mut rng = Rng(504);
+    let unit = |rng: &mut Rng| (rng.next() % 2001) as f64 / 1000.0 - 1.0;
+    let mut worst: f64 = 0.0;
+    for n in 1..=8 {
+        for _ in 0..20 {
+            let pts: Vec<Vec<f64>> = (0..=n)
+                .map(|_| vec![unit(&mut rng), unit(&mut rng)])
+                .collect();
+            let a = (rng.next() % 1000) as f64 / 2000.0;
+            let b = 0.5 + (rng.next() % 1000) as f64 / 2000.0;
+            let float = restrict_bezier_curve(&BezierCurve::new(pts.clone()).unwrap(), &a, &b);
+            let q = |x: f64| Rational::from_float(x).unwrap();
+            let exact_curve = BezierCurve::new(
+                pts.iter()
+                    .map(|p| p.iter().map(|&x| q(x)).collect())
+                    .collect(),
+            )
+            .unwrap();
+            let exact = restrict_bezier_curve(&exact_curve, &q(a), &q(b));
+            for (pf, pe) in float.control_points().iter().zip(exact.control_points()) {
+                for (x, y) in pf.iter().zip(pe) {
+                    let y = rational_to_f64(y);
+                    worst = worst.max((x - y).abs() / (1.0 + y.abs()));
+                }
+            }
+        }
+    }
+    println!("largest relative f64 error, Bézier curves of degree 1..=8 in [-1, 1]^2: {worst:e}");
+    assert!(worst < 1e-12, "{worst:e}");
+}
+
+#[test]
+fn corners_must_be_barycentric() {
+    let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
+    let patch = TriangularPatch::new(1, vec![vec![q(0, 1)], vec![q(1, 1)], vec![q(2, 1)]]).unwrap();
+    let good = [q(1, 1), q(0, 1), q(0, 1)];
+    let bad = [q(1, 2), q(1, 2), q(1, 2)];
+    let err = restrict_bezier_triangle(&patch, &[good.clone(), good.clone(), bad]).unwrap_err();
+    assert_eq!(err.field, "corners[2]");
+    assert!(err.message.contains("add up to 1"), "{}", err.message);
+    assert!(restrict_bezier_triangle(&patch, &[good.clone(), good.clone(), good]).is_ok());
+}
