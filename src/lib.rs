@@ -27,6 +27,7 @@ extern crate self as blossom;
 
 pub mod accuracy;
 pub mod basis;
+pub mod batched;
 pub mod bezier;
 pub mod binomial;
 pub mod blossoms;

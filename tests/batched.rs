@@ -1,0 +1,225 @@
+//! Batches sharing one domain (`blossom::batched`): the map's entries are the exact ones
+//! rounded once, and a batch restricted by the map equals every object restricted on its own
+//! by de Casteljau's pyramid in exact arithmetic (to rounding), across block boundaries; the
+//! parallel path equals the serial one bit for bit; shapes that do not fit are errors.
+
+mod common;
+
+use blossom::batched::{Batch, RestrictionMap, LANES};
+use blossom::blossoms::pyramid::{
+    bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom,
+};
+use blossom::ring::rational_to_f64;
+use blossom::{BezierCurve, Rational, TriangularPatch};
+use common::Rng;
+
+fn q(x: f64) -> Rational {
+    Rational::from_float(x).unwrap()
+}
+
+fn unit(rng: &mut Rng) -> f64 {
+    (rng.next() % 2_000_001) as f64 / 1_000_000.0 - 1.0
+}
+
+fn repeated(x: &Rational, k: usize, y: &Rational, l: usize) -> Vec<Rational> {
+    std::iter::repeat_n(x.clone(), k)
+        .chain(std::iter::repeat_n(y.clone(), l))
+        .collect()
+}
+
+fn close(x: f64, exact: &Rational) {
+    let y = rational_to_f64(exact);
+    assert!((x - y).abs() <= 1e-12 * (1.0 + y.abs()), "{x} vs {y}");
+}
+
+fn random_nets(rng: &mut Rng, count: usize, points: usize, dim: usize) -> Vec<Vec<Vec<f64>>> {
+    (0..count)
+        .map(|_| {
+            (0..points)
+                .map(|_| (0..dim).map(|_| unit(rng)).collect())
+                .collect()
+        })
+        .collect()
+}
+
+#[test]
+fn curve_map_entries_are_the_rounded_exact_blossoms() {
+    let (n, a, b) = (5, 0.3, 0.9);
+    let map = RestrictionMap::curve(n, a, b).unwrap();
+    for j in 0..=n {
+        for i in 0..=n {
+            // M_ji = B_i^n[a^(n-j), b^j]: the blossom of the polygon e_i, exactly.
+            let basis: Vec<Vec<Rational>> = (0..=n)
+                .map(|k| vec![if k == i { q(1.0) } else { q(0.0) }])
+                .collect();
+            let exact = bezier_curve_blossom(&basis, &repeated(&q(a), n - j, &q(b), j));
+            assert_eq!(map.entry(j, i), rational_to_f64(&exact[0]), "M_{j}{i}");
+        }
+    }
+}
+
+#[test]
+fn curve_batches_equal_each_curve_restricted_exactly() {
+    let mut rng = Rng(601);
+    for (n, dim, count) in [(3, 3, LANES + 7), (1, 2, 3), (6, 1, 2 * LANES), (0, 2, 5)] {
+        let (a, b) = (unit(&mut rng), unit(&mut rng));
+        let nets = random_nets(&mut rng, count, n + 1, dim);
+        let curves: Vec<BezierCurve<f64>> = nets
+            .iter()
+            .map(|p| BezierCurve::new(p.clone()).unwrap())
+            .collect();
+        let batch = Batch::from_curves(&curves).unwrap();
+        let map = RestrictionMap::curve(n, a, b).unwrap();
+        let mut out = Batch::zeros(n + 1, dim, count);
+        batch.restrict_into(&map, &mut out).unwrap();
+        for (k, net) in nets.iter().enumerate() {
+            let exact: Vec<Vec<Rational>> = net
+                .iter()
+                .map(|p| p.iter().map(|&x| q(x)).collect())
+                .collect();
+            for j in 0..=n {
+                let want = bezier_curve_blossom(&exact, &repeated(&q(a), n - j, &q(b), j));
+                for x in 0..dim {
+                    close(out.get(k, j, x), &want[x]);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn tensor_and_triangle_batches_equal_the_pyramid() {
+    let mut rng = Rng(602);
+    // Tensor (2, 1) patches on [a, b] x [c, d], points numbered row by row.
+    let (n, m, dim, count) = (2, 1, 2, LANES + 1);
+    let rect = [
+        unit(&mut rng),
+        unit(&mut rng),
+        unit(&mut rng),
+        unit(&mut rng),
+    ];
+    let nets = random_nets(&mut rng, count, (n + 1) * (m + 1), dim);
+    let refs: Vec<&[Vec<f64>]> = nets.iter().map(Vec::as_slice).collect();
+    let batch = Batch::from_nets((n + 1) * (m + 1), dim, &refs).unwrap();
+    let map = RestrictionMap::tensor((n, m), rect).unwrap();
+    let mut out = Batch::zeros(map.outputs(), dim, count);
+    batch.restrict_into(&map, &mut out).unwrap();
+    let [a, b, c, d] = rect.map(q);
+    for (k, net) in nets.iter().enumerate().step_by(37) {
+        let grid: Vec<Vec<Vec<Rational>>> = net
+            .chunks(m + 1)
+            .map(|row| {
+                row.iter()
+                    .map(|p| p.iter().map(|&x| q(x)).collect())
+                    .collect()
+            })
+            .collect();
+        for nu in 0..=n {
+            for mu in 0..=m {
+                let want = bezier_tensor_blossom(
+                    &grid,
+                    &repeated(&a, n - nu, &b, nu),
+                    &repeated(&c, m - mu, &d, mu),
+                );
+                for x in 0..dim {
+                    close(out.get(k, nu * (m + 1) + mu, x), &want[x]);
+                }
+            }
+        }
+    }
+    // Triangles of degree 3 on a sub-triangle given by (s, t) per corner.
+    let (big_n, dim, count) = (3, 3, 300);
+    let corners = [[0.5, 0.25], [0.125, 0.75], [0.0, 0.0]];
+    let len = (big_n + 1) * (big_n + 2) / 2;
+    let nets = random_nets(&mut rng, count, len, dim);
+    let refs: Vec<&[Vec<f64>]> = nets.iter().map(Vec::as_slice).collect();
+    let batch = Batch::from_nets(len, dim, &refs).unwrap();
+    let map = RestrictionMap::triangle(big_n, corners).unwrap();
+    let mut out = Batch::zeros(len, dim, count);
+    batch.restrict_into(&map, &mut out).unwrap();
+    let bary = corners.map(|[s, t]| [q(s), q(t), q(1.0 - s - t)]);
+    for (k, net) in nets.iter().enumerate().step_by(41) {
+        let patch = TriangularPatch::new(
+            big_n,
+            net.iter()
+                .map(|p| p.iter().map(|&x| q(x)).collect())
+                .collect(),
+        )
+        .unwrap();
+        for (idx, (nu, mu, la, _)) in patch.entries().enumerate() {
+            let args: Vec<[Rational; 3]> = std::iter::repeat_n(bary[0].clone(), nu)
+                .chain(std::iter::repeat_n(bary[1].clone(), mu))
+                .chain(std::iter::repeat_n(bary[2].clone(), la))
+                .collect();
+            let want = bezier_triangle_blossom(&patch, &args);
+            for x in 0..dim {
+                close(out.get(k, idx, x), &want[x]);
+            }
+        }
+    }
+}
+
+#[cfg(feature = "rayon")]
+#[test]
+fn parallel_equals_serial_bit_for_bit() {
+    let mut rng = Rng(603);
+    let count = 5 * LANES + 3;
+    let nets = random_nets(&mut rng, count, 4, 3);
+    let refs: Vec<&[Vec<f64>]> = nets.iter().map(Vec::as_slice).collect();
+    let batch = Batch::from_nets(4, 3, &refs).unwrap();
+    let map = RestrictionMap::curve(3, 0.125, 0.8).unwrap();
+    let mut serial = Batch::zeros(4, 3, count);
+    let mut parallel = Batch::zeros(4, 3, count);
+    batch.restrict_into(&map, &mut serial).unwrap();
+    batch.par_restrict_into(&map, &mut parallel).unwrap();
+    assert_eq!(serial, parallel);
+}
+
+#[test]
+fn shapes_that_do_not_fit_are_errors() {
+    let map = RestrictionMap::curve(3, 0.0, 0.5).unwrap();
+    let batch = Batch::zeros(3, 2, 10); // quadratics
+    let mut out = Batch::zeros(4, 2, 10);
+    assert_eq!(
+        batch.restrict_into(&map, &mut out).unwrap_err().field,
+        "map"
+    );
+    let batch = Batch::zeros(4, 2, 10);
+    let mut out = Batch::zeros(4, 3, 10);
+    assert_eq!(
+        batch.restrict_into(&map, &mut out).unwrap_err().field,
+        "out"
+    );
+    let mut out = Batch::zeros(4, 2, 11);
+    assert_eq!(
+        batch.restrict_into(&map, &mut out).unwrap_err().field,
+        "out"
+    );
+    assert_eq!(
+        RestrictionMap::curve(3, f64::NAN, 1.0).unwrap_err().field,
+        "a"
+    );
+    assert_eq!(
+        RestrictionMap::tensor((1, 1), [0.0, 1.0, f64::INFINITY, 1.0])
+            .unwrap_err()
+            .field,
+        "rect[2]"
+    );
+    assert_eq!(
+        RestrictionMap::triangle(2, [[0.0, 0.0], [1.0, f64::NAN], [0.0, 1.0]])
+            .unwrap_err()
+            .field,
+        "corners[1][1]"
+    );
+    let p = |x: f64| vec![x, 0.0];
+    let err = Batch::from_nets(2, 2, &[&[p(0.0), p(1.0)], &[p(0.0)]]).unwrap_err();
+    assert_eq!(err.field, "nets[1]");
+    let err = Batch::from_nets(2, 2, &[&[p(0.0), vec![1.0]]]).unwrap_err();
+    assert_eq!(err.field, "nets[0][1]");
+    let curves = [
+        BezierCurve::new(vec![p(0.0), p(1.0)]).unwrap(),
+        BezierCurve::new(vec![p(0.0), p(1.0), p(2.0)]).unwrap(),
+    ];
+    assert_eq!(Batch::from_curves(&curves).unwrap_err().field, "curves[1]");
+    assert_eq!(Batch::from_curves(&[]).unwrap_err().field, "curves");
+}
