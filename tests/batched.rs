@@ -79,8 +79,8 @@ fn curve_batches_equal_each_curve_restricted_exactly() {
                 .collect();
             for j in 0..=n {
                 let want = bezier_curve_blossom(&exact, &repeated(&q(a), n - j, &q(b), j));
-                for x in 0..dim {
-                    close(out.get(k, j, x), &want[x]);
+                for (x, w) in want.iter().enumerate() {
+                    close(out.get(k, j, x), w);
                 }
             }
         }
@@ -152,8 +152,8 @@ fn tensor_and_triangle_batches_equal_the_pyramid() {
                 .chain(std::iter::repeat_n(bary[2].clone(), la))
                 .collect();
             let want = bezier_triangle_blossom(&patch, &args);
-            for x in 0..dim {
-                close(out.get(k, idx, x), &want[x]);
+            for (x, w) in want.iter().enumerate() {
+                close(out.get(k, idx, x), w);
             }
         }
     }
