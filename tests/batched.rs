@@ -121,8 +121,8 @@ fn tensor_and_triangle_batches_equal_the_pyramid() {
                     &repeated(&a, n - nu, &b, nu),
                     &repeated(&c, m - mu, &d, mu),
                 );
-                for x in 0..dim {
-                    close(out.get(k, nu * (m + 1) + mu, x), &want[x]);
+                for (x, w) in want.iter().enumerate() {
+                    close(out.get(k, nu * (m + 1) + mu, x), w);
                 }
             }
         }
