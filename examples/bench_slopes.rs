@@ -1,6 +1,7 @@
 //! Reads criterion's medians under `target/criterion/<group>/<method>/<size>/new/` and prints,
-//! per group and method, the medians, the log-log slope of cost against degree (least squares)
-//! and the ratio to the first method of the group in the same run.
+//! per group and method, the medians, the log-log slope of cost against degree (least squares,
+//! over all degrees and over the three largest) and the ratio to the `bulk` method of the group
+//! in the same run.
 //!
 //! Usage: `cargo bench --bench restrict && cargo run --release --example bench_slopes [group...]`
 
@@ -67,7 +68,15 @@ fn main() {
                 .iter()
                 .map(|(n, t)| format!("{n}: {:.3} us", t / 1e3))
                 .collect();
-            println!("  {m:12} slope {:.2}   {}", slope(pts), medians.join(", "));
+            // The slope over the whole range, and over the three largest degrees, where the
+            // leading term of the cost dominates the constant and lower-order work.
+            let tail = &pts[pts.len().saturating_sub(3)..];
+            println!(
+                "  {m:12} slope {:.2} (largest three: {:.2})   {}",
+                slope(pts),
+                slope(tail),
+                medians.join(", ")
+            );
         }
         if let Some((base, base_pts)) = table.iter().find(|(m, _)| m == "bulk") {
             for (m, pts) in table.iter().filter(|(m, _)| m != base) {

@@ -14,7 +14,8 @@
 //!   c_ij = N! / (i! j! (N-i-j)!) Δ_1^i Δ_2^j b_(0,0,N), O(N^3).
 
 use crate::bezier::{triangle_index, triangle_len, TriangularPatch};
-use crate::binomial::{binomial, multinomial};
+use crate::binomial::multinomial;
+use num_traits::One;
 use crate::point::Point;
 use crate::{Rational, Ring};
 
@@ -68,18 +69,29 @@ pub fn binomial_transform<T: Ring>(e: &mut [Point<T>]) {
 /// The Bézier control points over [0, 1] of the polynomial with power coefficients `d`:
 /// w_v = sum_{i <= v} C(v, i) / C(n, i) d_i.
 pub fn power_to_bernstein<T: Ring>(d: &[Point<T>]) -> Vec<Point<T>> {
-    let n = d.len() as i64 - 1;
     let mut e: Vec<Point<T>> = d.to_vec();
-    for (i, ei) in e
-        .iter_mut()
-        .enumerate()
-        .skip(1)
-        .take((n - 1).max(0) as usize)
-    {
-        scale_point_rational(ei, &Rational::new(1.into(), binomial(n, i as i64)));
+    for (ei, c) in e.iter_mut().zip(binomials(d.len())).skip(1) {
+        if !c.is_one() {
+            scale_point_rational(ei, &Rational::new(1.into(), c));
+        }
     }
     binomial_transform(&mut e);
     e
+}
+
+/// C(n, 0), ..., C(n, n) for n = len - 1, by C(n, i) = C(n, i - 1) (n - i + 1) / i: O(n)
+/// big-integer operations instead of O(n^2) for n separate binomials.
+fn binomials(len: usize) -> Vec<num_bigint::BigInt> {
+    let n = len as i64 - 1;
+    let mut out = Vec::with_capacity(len);
+    let mut c = num_bigint::BigInt::from(1);
+    for i in 0..len as i64 {
+        if i > 0 {
+            c = c * (n - i + 1) / i;
+        }
+        out.push(c.clone());
+    }
+    out
 }
 
 /// The control net of the triangular patch of degree `n` whose power coefficients in the
@@ -145,15 +157,11 @@ fn forward_differences<T: Ring>(points: Vec<Point<T>>) -> Vec<Point<T>> {
 /// of [`power_to_bernstein`]): c_k = C(n, k) Δ^k b_0, the k-th forward difference scaled by a
 /// binomial. O(n^2) subtractions and n scalings per coordinate.
 pub fn bernstein_to_power<T: Ring>(b: &[Point<T>]) -> Vec<Point<T>> {
-    let n = b.len() as i64 - 1;
     let mut c = forward_differences(b.to_vec());
-    for (k, ck) in c
-        .iter_mut()
-        .enumerate()
-        .skip(1)
-        .take((n - 1).max(0) as usize)
-    {
-        scale_point_rational(ck, &Rational::from_integer(binomial(n, k as i64)));
+    for (ck, k) in c.iter_mut().zip(binomials(b.len())).skip(1) {
+        if !k.is_one() {
+            scale_point_rational(ck, &Rational::from_integer(k));
+        }
     }
     c
 }
