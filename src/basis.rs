@@ -25,10 +25,9 @@ fn scale_point<T: Ring>(p: &mut [T], k: &T) {
     }
 }
 
+/// Multiplies `p` by the constant `k`, converted to `T` once for all coordinates.
 fn scale_point_rational<T: Ring>(p: &mut [T], k: &Rational) {
-    for x in p.iter_mut() {
-        *x = x.scale(k);
-    }
+    scale_point(p, &T::from_rational(k));
 }
 
 /// Replaces the coefficients of C(u) = sum c_i u^i by those of C(u + a), in place, by repeated
