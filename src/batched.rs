@@ -24,8 +24,7 @@
 //! stays in the L2 cache while it is worked on. On this project's machine, 512 objects per
 //! block ran 19% faster than 256, and 1024 was no faster (`benches/peers.rs`). Blocks are
 //! independent, so with the `rayon` feature [`Batch::par_restrict_into`] spreads them over
-//! threads. The last block is
-//! padded with zeros.
+//! threads. The last block is padded with zeros.
 
 use crate::bezier::{triangle_len, BezierCurve, TensorPatch, TriangularPatch};
 use crate::error::{Error, Result};
