@@ -15,9 +15,9 @@
 
 use crate::bezier::{triangle_index, triangle_len, TriangularPatch};
 use crate::binomial::multinomial;
-use num_traits::One;
 use crate::point::Point;
 use crate::{Rational, Ring};
+use num_traits::One;
 
 fn scale_point<T: Ring>(p: &mut [T], k: &T) {
     for x in p.iter_mut() {
