@@ -54,7 +54,8 @@ pub use carried::{
 };
 #[cfg(feature = "carried-grid")]
 pub use proof_grid::{
-    proof_table, proof_table_text, prove_curve, prove_tensor, prove_triangle, ProofRow,
+    proof_table, proof_table_text, prove_bezier_curve, prove_curve, prove_tensor, prove_triangle,
+    ProofRow,
 };
 pub use scalar::{Carried, Scalar};
 

@@ -2,7 +2,7 @@
 
 use super::carried::grid;
 use super::Shape;
-use crate::blossoms::{definition, polarisation};
+use crate::blossoms::{definition, polarisation, pyramid};
 use crate::proofs::{symbolic_curve, symbolic_surface, symbolic_triangle};
 use crate::Poly;
 
@@ -15,7 +15,9 @@ pub struct ProofRow {
     pub shape: Shape,
     /// Number of terms of the symbolic control points, summed over all points.
     pub terms: usize,
-    /// Identical, as polynomials, to the subset-sum definition (eqs. (2), (8), (13)).
+    /// Identical, as polynomials, to the subset-sum definition (eqs. (2), (8), (13)); for
+    /// Bézier input, to de Casteljau's pyramid on the net, the definition of the blossom of a
+    /// Bézier curve (seed 004, eq. (2)).
     pub definition: bool,
     /// Identical, as polynomials, to the polarisation formula (inverse-relations paper).
     pub polarisation: bool,
@@ -81,9 +83,32 @@ pub fn prove_triangle(n: usize, m: usize) -> ProofRow {
     }
 }
 
+/// Proves the carried Bézier-curve evaluator of degree `n` (1..=16) symbolically: control
+/// points `b_i` and the interval [a, b] are variables; the check are the pyramid on the net
+/// and the inverse formula (22) of seed 004 applied to points of the curve.
+pub fn prove_bezier_curve(n: usize) -> ProofRow {
+    let net: Vec<Vec<Poly>> = (0..=n).map(|i| vec![Poly::var(&format!("b{i}"))]).collect();
+    let curve = crate::BezierCurve::new(net).expect("a non-empty polygon");
+    let (a, b) = (Poly::var("a"), Poly::var("b"));
+    let w = grid::bezier_curve_carried(&curve, &a, &b).expect("a carried degree");
+    let by_pyramid: Vec<Vec<Poly>> = (0..=n)
+        .map(|j| {
+            let args = crate::blossoms::repeated(&a, n - j, &b, j);
+            pyramid::bezier_curve_blossom(curve.control_points(), &args)
+        })
+        .collect();
+    let by_inverse = crate::inverse::curve_control_points(n, &a, &b, &|t| curve.eval(t));
+    ProofRow {
+        shape: Shape::BezierCurve(n),
+        terms: count_terms(w.control_points()),
+        definition: w.control_points() == by_pyramid.as_slice(),
+        polarisation: w.control_points() == by_inverse.as_slice(),
+    }
+}
+
 /// The proof grid: curves 1..=10, tensor patches (1..=4) x (1..=4), triangles with
-/// 1 <= n, m <= 3 (their evaluators are the carried ones, so this proves the code the
-/// binary runs).
+/// 1 <= n, m <= 3, Bézier curves 1..=10 (their evaluators are the carried ones, so this
+/// proves the code the binary runs).
 pub fn proof_table() -> Vec<ProofRow> {
     let mut rows: Vec<ProofRow> = (1..=10).map(prove_curve).collect();
     for n in 1..=4 {
@@ -96,19 +121,20 @@ pub fn proof_table() -> Vec<ProofRow> {
             rows.push(prove_triangle(n, m));
         }
     }
+    rows.extend((1..=10).map(prove_bezier_curve));
     rows
 }
 
 /// The proof table as aligned text, one row per evaluator.
 pub fn proof_table_text(rows: &[ProofRow]) -> String {
     let mut out = format!(
-        "{:<9} {:>7} {:>7}  {:<10} {:<12} {}\n",
+        "{:<12} {:>7} {:>7}  {:<10} {:<12} {}\n",
         "shape", "degree", "terms", "definition", "polarisation", "identical"
     );
     let yes = |b: bool| if b { "yes" } else { "NO" };
     for r in rows {
         out += &format!(
-            "{:<9} {:>7} {:>7}  {:<10} {:<12} {}\n",
+            "{:<12} {:>7} {:>7}  {:<10} {:<12} {}\n",
             r.shape_name(),
             r.degree(),
             r.terms,
