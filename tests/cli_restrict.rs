@@ -2,38 +2,10 @@
 //! (`cli.md`) describes: bad input of every class, hand-checked answers, and agreement of all
 //! methods and both arithmetics on random jobs.
 
+mod common;
+
+use common::{run_binary as run_bytes, Run};
 use serde_json::{json, Value};
-use std::io::Write;
-use std::process::{Command, Stdio};
-
-/// What one run of the binary produced.
-struct Run {
-    code: i32,
-    stdout: String,
-    stderr: String,
-}
-
-/// Runs `blossom ARGS` with `input` on standard input.
-fn run_bytes(args: &[&str], input: &[u8]) -> Run {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_blossom"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the binary starts");
-    {
-        let mut stdin = child.stdin.take().expect("stdin is piped");
-        // The binary may exit before reading (bad arguments): ignore a broken pipe.
-        let _ = stdin.write_all(input);
-    }
-    let out = child.wait_with_output().expect("the binary finishes");
-    Run {
-        code: out.status.code().expect("an exit code, not a signal"),
-        stdout: String::from_utf8(out.stdout).expect("UTF-8 stdout"),
-        stderr: String::from_utf8(out.stderr).expect("UTF-8 stderr"),
-    }
-}
 
 fn run(args: &[&str], input: &str) -> Run {
     run_bytes(args, input.as_bytes())
@@ -426,6 +398,7 @@ fn bad_arguments() {
     assert_error(&["verify", "extra"], "", "extra");
 }
 
+#[cfg(feature = "carried-grid")]
 #[test]
 fn specialised_refuses_degrees_it_does_not_carry() {
     let zero = || json!([1]);
@@ -462,6 +435,7 @@ fn specialised_refuses_degrees_it_does_not_carry() {
     }
 }
 
+#[cfg(feature = "carried-grid")]
 #[test]
 fn specialised_at_the_largest_carried_degrees() {
     let mut rng = Rng(0x5EED_0FB1_0550);
@@ -785,8 +759,12 @@ const METHODS: [&str; 6] = [
 ];
 
 /// Whether the binary carries a specialised evaluator for the degree of `job` (spec/cli.md:
-/// curves 1..=16, tensors and triangles with n, m <= 5 and 4, (0, 0) excepted).
+/// curves 1..=16, tensors and triangles with n, m <= 5 and 4, (0, 0) excepted). A binary
+/// built without the feature `carried-grid` carries none.
 fn carried(job: &Value) -> bool {
+    if !cfg!(feature = "carried-grid") {
+        return false;
+    }
     let coefficients = job["coefficients"].as_array().expect("coefficients");
     let n = coefficients.len() - 1;
     let m = || coefficients[0].as_array().expect("a grid row").len() - 1;

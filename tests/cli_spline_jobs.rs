@@ -4,36 +4,14 @@
 
 mod common;
 
-use common::Rng;
+use common::{run_binary, Rng, Run};
 use serde_json::{json, Value};
-use std::io::Write;
-use std::process::{Command, Stdio};
 
-struct Run {
-    code: i32,
-    stdout: String,
-    stderr: String,
-}
-
+/// Runs `blossom restrict ARGS` on `job`.
 fn run(args: &[&str], job: &Value) -> Run {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_blossom"))
-        .arg("restrict")
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the binary starts");
-    {
-        let mut stdin = child.stdin.take().expect("piped");
-        let _ = stdin.write_all(job.to_string().as_bytes());
-    }
-    let out = child.wait_with_output().expect("the binary finishes");
-    Run {
-        code: out.status.code().expect("an exit code"),
-        stdout: String::from_utf8(out.stdout).expect("UTF-8"),
-        stderr: String::from_utf8(out.stderr).expect("UTF-8"),
-    }
+    let mut all = vec!["restrict"];
+    all.extend_from_slice(args);
+    run_binary(&all, job.to_string().as_bytes())
 }
 
 fn answer_with(args: &[&str], job: &Value) -> Value {
