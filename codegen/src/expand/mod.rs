@@ -1,5 +1,6 @@
 //! Step 3: [`Spec`] to tokens. One module per formula ([`curve`]: eq. (3), [`tensor`]: eq. (9),
-//! [`triangle`]: eq. (14)) on top of two shared builders:
+//! [`triangle`]: eq. (14); [`halving`]: eq. (3) for a Bézier polygon, evaluated by halving the
+//! blossom) on top of two shared builders:
 //!
 //! * [`Monomials`]: products of powers of the domain parameters, each bound once by a `let`
 //!   (one `mul` per binding: `ap3 = ap2 * a`, `bp2_a = bp2 * a`, ...) and shared by every weight
@@ -12,6 +13,7 @@
 
 pub mod curve;
 pub mod differences;
+pub mod halving;
 pub mod tensor;
 pub mod triangle;
 
@@ -26,10 +28,10 @@ use std::collections::{BTreeSet, HashSet};
 /// Fails only when a folded constant would not fit in `i128`, which the degree limits exclude.
 pub fn expand(spec: &Spec) -> syn::Result<TokenStream> {
     let body = match spec.shape {
-        Shape::Curve(n) => curve::expand(spec, n, Input::Power),
+        Shape::Curve(n) => curve::expand(spec, n),
         Shape::Tensor(n, m) => tensor::expand(spec, n, m, Input::Power),
         Shape::Triangle(n, m) => triangle::expand(spec, n, m, Input::Power),
-        Shape::BezierCurve(n) => curve::expand(spec, n, Input::Differences),
+        Shape::BezierCurve(n) => halving::expand(spec, n),
         Shape::BezierTensor(n, m) => tensor::expand(spec, n, m, Input::Differences),
         Shape::BezierTriangle(n) => triangle::expand(spec, n, 0, Input::Differences),
     };
@@ -282,11 +284,17 @@ impl Weight {
             .collect();
         terms.sort_by_key(|(k, _)| k.is_one());
         let scaled = |k: Frac, op: &Operand| {
+            let recv = op.recv();
+            if (k.num, k.den) == (2, 1) {
+                // Doubling by an addition: exact in every ring, and cheaper than a scaling
+                // (no constant to convert for floats, no multiplication for big numbers).
+                let arg = op.by_ref();
+                return quote!(#recv.add(#arg));
+            }
             let (p, q) = (
                 Literal::i128_unsuffixed(k.num),
                 Literal::i128_unsuffixed(k.den),
             );
-            let recv = op.recv();
             quote!(#recv.scale_frac(#p, #q))
         };
         let first = match &terms[0] {
