@@ -10,13 +10,17 @@
 //!
 //! ```text
 //! restriction! {
-//!     /// optional outer attributes (doc comments, #[inline], ...), copied to the function
+//!     /// optional outer attributes (doc comments, #[inline(never)], ...), copied to the function
 //!     vis = pub,                 // optional: `pub`, `pub(crate)`, ...; private when absent
 //!     name = restrict_cubic,     // required: the name of the generated function
 //!     shape = curve,             // required: `curve`, `tensor` or `triangle`
 //!     degree = 3,                // required: `n` for a curve, `(n, m)` for a surface
 //! }
 //! ```
+//!
+//! The function is `#[inline]` unless an `inline` attribute of the user's is given: it is
+//! straight-line arithmetic for hot loops, and at small degrees the call costs as much as the
+//! work (the cubic Bézier of `benches/peers.rs`: 8.5 ns called, 6.6 ns inlined).
 //!
 //! Keys may come in any order; each is given once. The generated signatures (`D`, the number of
 //! coordinates of a point, is a const generic; `T` is any [`blossom::Ring`]):

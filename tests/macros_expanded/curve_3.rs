@@ -15,6 +15,7 @@
     clippy::too_many_arguments,
     clippy::unreadable_literal
 )]
+#[inline]
 pub fn restrict_curve_3<T: ::blossom::Ring, const D: usize>(
     coef: &[[T; D]; 4],
     a: &T,

@@ -19,6 +19,7 @@
     clippy::too_many_arguments,
     clippy::unreadable_literal
 )]
+#[inline]
 pub fn restrict_tensor_3_2<T: ::blossom::Ring, const D: usize>(
     coef: &[[[T; D]; 3]; 4],
     rect: &[T; 4],

@@ -24,6 +24,7 @@
     clippy::too_many_arguments,
     clippy::unreadable_literal
 )]
+#[inline]
 pub fn restrict_triangle_3_2<T: ::blossom::Ring, const D: usize>(
     coef: &[[[T; D]; 3]; 4],
     tri: &[[T; 2]; 3],
