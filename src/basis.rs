@@ -17,7 +17,6 @@ use crate::bezier::{triangle_index, triangle_len, TriangularPatch};
 use crate::binomial::multinomial;
 use crate::point::Point;
 use crate::{Rational, Ring};
-use num_traits::One;
 
 fn scale_point<T: Ring>(p: &mut [T], k: &T) {
     for x in p.iter_mut() {
@@ -69,28 +68,60 @@ pub fn binomial_transform<T: Ring>(e: &mut [Point<T>]) {
 /// w_v = sum_{i <= v} C(v, i) / C(n, i) d_i.
 pub fn power_to_bernstein<T: Ring>(d: &[Point<T>]) -> Vec<Point<T>> {
     let mut e: Vec<Point<T>> = d.to_vec();
-    for (ei, c) in e.iter_mut().zip(binomials(d.len())).skip(1) {
-        if !c.is_one() {
-            scale_point_rational(ei, &Rational::new(1.into(), c));
-        }
-    }
+    scale_by_binomials(&mut e, Binomials::Divide);
     binomial_transform(&mut e);
     e
 }
 
-/// C(n, 0), ..., C(n, n) for n = len - 1, by C(n, i) = C(n, i - 1) (n - i + 1) / i: O(n)
-/// big-integer operations instead of O(n^2) for n separate binomials.
-fn binomials(len: usize) -> Vec<num_bigint::BigInt> {
-    let n = len as i64 - 1;
-    let mut out = Vec::with_capacity(len);
-    let mut c = num_bigint::BigInt::from(1);
-    for i in 0..len as i64 {
-        if i > 0 {
-            c = c * (n - i + 1) / i;
+/// Whether [`scale_by_binomials`] multiplies or divides.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Binomials {
+    Multiply,
+    Divide,
+}
+
+/// Multiplies (or divides) each point `c[i]` by C(n, i), n = `c.len() - 1`.
+///
+/// The row is built by C(n, i) = C(n, i - 1) (n - i + 1) / i: in `i128` while the product
+/// fits (each constant then reaches the ring once, through [`Ring::scale_frac`]), and past that
+/// (n above about 125) in the ring itself, one `scale_frac` per step. Exact for rationals and
+/// polynomials; for floats each constant is rounded once while it fits in `i128`, and after
+/// that carries the rounding of its steps (a relative error below n times the unit roundoff).
+/// No big-number arithmetic: it cost more than the restriction itself at small degrees.
+fn scale_by_binomials<T: Ring>(c: &mut [Point<T>], how: Binomials) {
+    let n = c.len().saturating_sub(1) as i128;
+    // The factor of c[i]: C(n, i) or its inverse, as a ring constant.
+    let factor = |k: i128| match how {
+        Binomials::Multiply => T::one().scale_frac(k, 1),
+        Binomials::Divide => T::one().scale_frac(1, k),
+    };
+    let mut row: Binomial<T> = Binomial::Small(1);
+    for (i, ci) in c.iter_mut().enumerate().skip(1) {
+        let i = i as i128;
+        // The step factor (n - i + 1) / i, or its inverse.
+        let (num, den) = match how {
+            Binomials::Multiply => (n - i + 1, i),
+            Binomials::Divide => (i, n - i + 1),
+        };
+        row = match row {
+            Binomial::Small(k) => match k.checked_mul(n - i + 1) {
+                Some(m) => Binomial::Small(m / i),
+                None => Binomial::Ring(factor(k).scale_frac(num, den)),
+            },
+            Binomial::Ring(k) => Binomial::Ring(k.scale_frac(num, den)),
+        };
+        match &row {
+            Binomial::Small(1) => {}
+            Binomial::Small(k) => scale_point(ci, &factor(*k)),
+            Binomial::Ring(k) => scale_point(ci, k),
         }
-        out.push(c.clone());
     }
-    out
+}
+
+/// The running entry of a row of binomials: an integer while it fits, then a ring constant.
+enum Binomial<T> {
+    Small(i128),
+    Ring(T),
 }
 
 /// The control net of the triangular patch of degree `n` whose power coefficients in the
@@ -138,18 +169,18 @@ pub fn triangle_power_to_bernstein<T: Ring>(n: usize, d: &[Point<T>]) -> Triangu
 }
 
 /// `out[k]` = Δ^k p_0, the forward differences of `points` (n(n+1)/2 subtractions per
-/// coordinate): Δ^k p_i = Δ^(k-1) p_(i+1) - Δ^(k-1) p_i.
-fn forward_differences<T: Ring>(points: Vec<Point<T>>) -> Vec<Point<T>> {
-    let mut level = points;
-    let mut out = Vec::with_capacity(level.len());
-    while let Some(first) = level.first() {
-        out.push(first.clone());
-        level = level
-            .windows(2)
-            .map(|w| w[1].iter().zip(&w[0]).map(|(x, y)| x.sub(y)).collect())
-            .collect();
+/// coordinate), in place: after pass k, entry i >= k holds Δ^k p_(i-k), since
+/// Δ^k p_(i-k) = Δ^(k-1) p_(i-k+1) - Δ^(k-1) p_(i-k).
+fn forward_differences<T: Ring>(mut points: Vec<Point<T>>) -> Vec<Point<T>> {
+    for k in 1..points.len() {
+        for i in (k..points.len()).rev() {
+            let (lo, hi) = points.split_at_mut(i);
+            for (x, y) in hi[0].iter_mut().zip(&lo[i - 1]) {
+                *x = x.sub(y);
+            }
+        }
     }
-    out
+    points
 }
 
 /// The power coefficients of the Bézier curve over [0, 1] with control points `b` (the inverse
@@ -157,11 +188,7 @@ fn forward_differences<T: Ring>(points: Vec<Point<T>>) -> Vec<Point<T>> {
 /// binomial. O(n^2) subtractions and n scalings per coordinate.
 pub fn bernstein_to_power<T: Ring>(b: &[Point<T>]) -> Vec<Point<T>> {
     let mut c = forward_differences(b.to_vec());
-    for (ck, k) in c.iter_mut().zip(binomials(b.len())).skip(1) {
-        if !k.is_one() {
-            scale_point_rational(ck, &Rational::from_integer(k));
-        }
-    }
+    scale_by_binomials(&mut c, Binomials::Multiply);
     c
 }
 

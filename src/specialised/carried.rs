@@ -8,9 +8,11 @@ use crate::power::{PowerCurve, PowerSurface};
 /// The carried evaluators, as `blossom::restriction!` generates them: `curve_N`,
 /// `tensor_N_M`, `triangle_N_M`, generic over the ring `T` and the point dimension `D`.
 pub mod grid {
+    // `#[inline(never)]`: the grid is instantiated once, behind the `Scalar` dispatch, where
+    // inlining the large evaluators gains nothing and cost a third more release build time.
     macro_rules! carry {
         (curve $dispatch:ident: $($n:tt => $name:ident,)*) => {
-            $( crate::restriction!(vis = pub, name = $name, shape = curve, degree = $n); )*
+            $( crate::restriction!(#[inline(never)] vis = pub, name = $name, shape = curve, degree = $n); )*
             /// The carried curve evaluator of degree `n` among those listed, coordinate by coordinate.
             pub(in crate::specialised) fn $dispatch<T: crate::specialised::Carried>(
                 curve: &crate::PowerCurve<T>,
@@ -24,7 +26,7 @@ pub mod grid {
             }
         };
         (bezier_curve $dispatch:ident: $($n:tt => $name:ident,)*) => {
-            $( crate::restriction!(vis = pub, name = $name, shape = bezier_curve, degree = $n); )*
+            $( crate::restriction!(#[inline(never)] vis = pub, name = $name, shape = bezier_curve, degree = $n); )*
             /// The carried Bézier-curve evaluator of degree `n` among those listed, coordinate by coordinate.
             pub(in crate::specialised) fn $dispatch<T: crate::specialised::Carried>(
                 curve: &crate::BezierCurve<T>,
@@ -38,7 +40,7 @@ pub mod grid {
             }
         };
         (tensor $dispatch:ident: $(($n:tt, $m:tt) => $name:ident,)*) => {
-            $( crate::restriction!(vis = pub, name = $name, shape = tensor, degree = ($n, $m)); )*
+            $( crate::restriction!(#[inline(never)] vis = pub, name = $name, shape = tensor, degree = ($n, $m)); )*
             /// The carried tensor evaluator of bidegree `(n, m)` among those listed, coordinate by coordinate.
             pub(in crate::specialised) fn $dispatch<T: crate::specialised::Carried>(
                 surface: &crate::PowerSurface<T>,
@@ -51,7 +53,7 @@ pub mod grid {
             }
         };
         (triangle $dispatch:ident: $(($n:tt, $m:tt) => $name:ident,)*) => {
-            $( crate::restriction!(vis = pub, name = $name, shape = triangle, degree = ($n, $m)); )*
+            $( crate::restriction!(#[inline(never)] vis = pub, name = $name, shape = triangle, degree = ($n, $m)); )*
             /// The carried triangle evaluator of degrees `(n, m)` among those listed, coordinate by coordinate.
             pub(in crate::specialised) fn $dispatch<T: crate::specialised::Carried>(
                 surface: &crate::PowerSurface<T>,
