@@ -8,7 +8,9 @@
 //! | [`pyramid`] (de Casteljau) | eq. (2) of 004 | eq. (9) of 004 | barycentric steps |
 //! | [`polarisation`] (inverse formula) | eqs. (20), (22) of 004 | two passes | eqs. (21), (23) of 004 |
 //!
-//! None is derived from another; the tests prove them identical as polynomials.
+//! Their blossom evaluations are independent; the pyramid takes its Bernstein form over its
+//! reference domain from the bulk change of basis ([`crate::restrict`]). The tests prove all of
+//! them identical to the definition as polynomials.
 
 pub mod closed_form;
 pub mod definition;
