@@ -17,7 +17,8 @@
 //!
 //! Under exact arithmetic every such number is read exactly as a [`Rational`]; the decimal
 //! exponent is capped at [`MAX_EXPONENT`] in absolute value so that `"1e999999999"` is a clear
-//! error instead of an attempt to build a number with a billion digits. `"inf"`, `"NaN"` and
+//! error instead of an attempt to build a number with a billion digits (digits that are all
+//! zero are zero whatever the exponent: `"0e999999999"` is 0). `"inf"`, `"NaN"` and
 //! friends are rejected as non-finite; anything else is rejected as unparsable.
 //!
 //! A JSON number with a fraction part or an exponent (`0.1`, `1.0`, `1e3`) has already been
@@ -259,6 +260,10 @@ pub fn parse_rational(text: &str) -> Result<Rational, String> {
             exponent_negative,
             exponent,
         } => {
+            if int.bytes().chain(frac.bytes()).all(|d| d == b'0') {
+                // Zero times any power of ten, however large the exponent.
+                return Ok(Rational::zero());
+            }
             let Some(e) = small_exponent(exponent) else {
                 return Err(format!(
                     "the exponent of {} is too large (at most {MAX_EXPONENT} in absolute value)",
@@ -519,6 +524,8 @@ mod tests {
         assert!(parse_rational("1e-999999999999999999999999").is_err());
         assert!(parse_rational("1e100000").is_ok());
         assert!(parse_rational("1e100001").is_err());
+        assert!(parse_rational("0.000e999999999").unwrap().is_zero());
+        assert!(parse_rational("-0e-999999999").unwrap().is_zero());
         // Under f64 the standard parser copes: overflow is an error, underflow rounds to 0.
         assert!(parse_f64("1e999999999")
             .unwrap_err()

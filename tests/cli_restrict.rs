@@ -301,6 +301,21 @@ fn non_finite_or_unparsable_numbers() {
         "interval[1]",
     );
     assert!(msg.contains("exponent"), "{msg}");
+    // ... unless the digits are all zero: zero with any exponent is zero.
+    let r = run_bytes(
+        &["restrict"],
+        curve_job(
+            json!([["0e999999999"], ["-0.00E-999999999"]]),
+            json!([0, 1]),
+        )
+        .to_string()
+        .as_bytes(),
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(
+        r.stdout.trim_end(),
+        r#"{"kind":"curve","degree":1,"control_points":[["0"],["0"]]}"#
+    );
     assert_error(
         &["restrict", "--arithmetic", "f64"],
         &curve_job(json!([[1]]), json!([0, "1e400"])).to_string(),

@@ -290,6 +290,21 @@ fn f64_decisions_are_exact() {
             r.stderr
         );
     }
+    // A weight that is not zero exactly but underflows in f64 is refused there (its rounded
+    // control point would be meaningless), and answered exactly.
+    let tiny = json!({"kind": "rational-curve", "numerator": [["1e-300"]],
+        "denominator": ["1e-330"], "interval": [0, 1]});
+    let r = run(&["--arithmetic", "f64"], &tiny);
+    assert_eq!(r.code, 2, "{}", r.stdout);
+    assert!(r.stdout.is_empty());
+    assert!(
+        r.stderr
+            .starts_with("error: weights[0]: the weight is not zero but rounds to zero"),
+        "{}",
+        r.stderr
+    );
+    let weight = format!("1/1{}", "0".repeat(330));
+    assert_eq!(answer(&tiny)["weights"], json!([weight]));
     // Out-of-range doubles are refused as in every other f64 job.
     let big = json!({"kind": "bspline", "degree": 0, "pieces": [
         {"interval": [0, "1e400"], "coefficients": [[0]]}]});

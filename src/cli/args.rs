@@ -121,8 +121,24 @@ Jobs (JSON objects; fields not listed are ignored):
   {\"kind\": \"tensor\", \"coefficients\": [[c00, ..., c0m], ...], \"rectangle\": [a, b, c, d]}
   {\"kind\": \"triangle\", \"coefficients\": [[c00, ..., c0m], ...],
    \"triangle\": [[a1, a2], [b1, b2], [c1, c2]]}
+  {\"kind\": \"bezier-curve\", \"control_points\": [b0, ..., bn], \"interval\": [a, b]}
+  {\"kind\": \"bspline\", \"degree\": p,
+   \"pieces\": [{\"interval\": [e0, e1], \"coefficients\": [c0, ..., cp]}, ...]}
+  {\"kind\": \"bspline-eval\", \"degree\": p, \"knots\": [...], \"control_points\": [...],
+   \"at\": [t, ...]}
+  {\"kind\": \"rational-curve\", \"numerator\": [c0, ...], \"denominator\": [w0, ...],
+   \"interval\": [alpha, beta], \"degree\": n (optional)}
+  {\"kind\": \"elevate\", \"control_points\": [...], \"to_degree\": m}
+  {\"kind\": \"reduce\", \"control_points\": [...], \"to_degree\": m,
+   \"method\": \"interpolating\" | \"least-squares\" | \"least-squares-endpoints\"}
 Points are arrays of numbers, all of one length D >= 1. A number is a JSON integer or a
 string: \"-7\", \"3/4\", \"0.125\", \"-1e-3\" (JSON numbers such as 0.1 only under f64).
+Under exact arithmetic a decimal exponent is at most 100000 in absolute value (unless the
+digits are all zero). The degree of a list of coefficients is its length minus one, zero
+coefficients included (so a rational curve's default degree is that of its longer list).
+Degrees of the spline, rational and degree-change jobs are at most 200. The methods apply to
+curve, tensor, triangle and bezier-curve; the other jobs have one algorithm each and
+answer the same under every method.
 
 Output: the answer as one line of JSON on standard output, exit code 0; on bad input one line
 `error: FIELD: ...` on standard error, nothing on standard output, exit code 2.

@@ -27,8 +27,8 @@
 //! inverse formula (22) of seed 004, `specialised` runs the carried Bézier-input evaluator that
 //! `blossom::restriction!(shape = bezier_curve)` generated for the degree (1..=16), and
 //! `closed-form`, `definition` and `bulk` write the curve in the power basis (exactly, the
-//! inverse of the Bernstein basis change) and restrict it like a `curve` job. The other jobs have one algorithm each and give the same
-//! answer under every method.
+//! inverse of the Bernstein basis change) and restrict it like a `curve` job. The other jobs
+//! have one algorithm each and give the same answer under every method.
 //!
 //! # Exact decisions under `--arithmetic f64`
 //!
@@ -399,10 +399,16 @@ fn rational_answer<T: JsonNumber>(
         "control_points".into(),
         points_json(&points, "control_points")?,
     );
-    out.insert(
-        "weights".into(),
-        numbers_json(&rounded::<T>(bez.weights()), "weights")?,
-    );
+    let weights = rounded::<T>(bez.weights());
+    // The weights are non-zero exactly (checked before); one that rounds to zero would make
+    // its rounded control point meaningless.
+    if let Some(k) = weights.iter().position(crate::Ring::is_zero) {
+        return Err(Error::new(
+            format!("weights[{k}]"),
+            "the weight is not zero but rounds to zero in f64 (underflow)",
+        ));
+    }
+    out.insert("weights".into(), numbers_json(&weights, "weights")?);
     Ok(())
 }
 
