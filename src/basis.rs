@@ -68,9 +68,14 @@ pub fn binomial_transform<T: Ring>(e: &mut [Point<T>]) {
 /// w_v = sum_{i <= v} C(v, i) / C(n, i) d_i.
 pub fn power_to_bernstein<T: Ring>(d: &[Point<T>]) -> Vec<Point<T>> {
     let mut e: Vec<Point<T>> = d.to_vec();
-    scale_by_binomials(&mut e, Binomials::Divide);
-    binomial_transform(&mut e);
+    power_to_bernstein_in_place(&mut e);
     e
+}
+
+/// [`power_to_bernstein`] in place: the coefficients `d` become the control points.
+pub fn power_to_bernstein_in_place<T: Ring>(d: &mut [Point<T>]) {
+    scale_by_binomials(d, Binomials::Divide);
+    binomial_transform(d);
 }
 
 /// Whether [`scale_by_binomials`] multiplies or divides.

@@ -19,7 +19,9 @@
 //! Every step is division-free, so the same code runs on floats, rationals and symbolic
 //! polynomials, and the tests prove it identical to the four blossom algorithms.
 
-use crate::basis::{power_to_bernstein, scale_argument, taylor_shift, triangle_power_to_bernstein};
+use crate::basis::{
+    power_to_bernstein_in_place, scale_argument, taylor_shift, triangle_power_to_bernstein,
+};
 use crate::bezier::{triangle_index, triangle_len, BezierCurve, TensorPatch, TriangularPatch};
 use crate::blossoms::{closed_form, definition, polarisation, pyramid};
 use crate::point::{self, Point};
@@ -76,11 +78,12 @@ pub(crate) fn unflatten<T: Clone>(long: Vec<Point<T>>, dim: usize) -> Vec<Vec<Po
 }
 
 /// Bézier control points over [0, 1] of C(a + (b - a) t), given the coefficients of C.
-pub(crate) fn bulk_curve_points<T: Ring>(coefficients: &[Point<T>], a: &T, b: &T) -> Vec<Point<T>> {
-    let mut d = coefficients.to_vec();
+/// The coefficients are taken by value and transformed in place.
+pub(crate) fn bulk_curve_points<T: Ring>(mut d: Vec<Point<T>>, a: &T, b: &T) -> Vec<Point<T>> {
     taylor_shift(&mut d, a);
     scale_argument(&mut d, &b.sub(a));
-    power_to_bernstein(&d)
+    power_to_bernstein_in_place(&mut d);
+    d
 }
 
 /// `curve` restricted to [a, b] by `method`.
@@ -91,7 +94,7 @@ pub fn restrict_curve<T: Ring>(
     method: Method,
 ) -> BezierCurve<T> {
     match method {
-        Method::Bulk => BezierCurve::new(bulk_curve_points(curve.coefficients(), a, b))
+        Method::Bulk => BezierCurve::new(bulk_curve_points(curve.coefficients().to_vec(), a, b))
             .expect("n + 1 points of one dimension"),
         Method::ClosedForm => closed_form::restrict_curve(curve, a, b),
         Method::Definition => definition::restrict_curve(curve, a, b),
@@ -112,11 +115,11 @@ pub fn restrict_tensor<T: Ring>(
             let dim = surface.dim();
             // Along u with whole rows as points, then along v row by row.
             let rows = unflatten(
-                bulk_curve_points(&flatten(surface.coefficients()), a, b),
+                bulk_curve_points(flatten(surface.coefficients()), a, b),
                 dim,
             );
             let net = rows
-                .iter()
+                .into_iter()
                 .map(|row| bulk_curve_points(row, c, d))
                 .collect();
             TensorPatch::new(net).expect("a rectangular net")

@@ -44,7 +44,7 @@ use crate::Ring;
 /// ```
 pub fn restrict_bezier_curve<T: Ring>(curve: &BezierCurve<T>, a: &T, b: &T) -> BezierCurve<T> {
     let power = bernstein_to_power(curve.control_points());
-    BezierCurve::new(bulk_curve_points(&power, a, b)).expect("n + 1 points of one dimension")
+    BezierCurve::new(bulk_curve_points(power, a, b)).expect("n + 1 points of one dimension")
 }
 
 /// The tensor-product patch `patch` over [0, 1]^2 restricted to `rect = [a, b, c, d]`, i.e.
@@ -55,10 +55,10 @@ pub fn restrict_bezier_tensor<T: Ring>(patch: &TensorPatch<T>, rect: &[T; 4]) ->
     let [a, b, c, d] = rect;
     let dim = patch.control_points()[0][0].len();
     let rows = flatten(patch.control_points());
-    let rows = unflatten(bulk_curve_points(&bernstein_to_power(&rows), a, b), dim);
+    let rows = unflatten(bulk_curve_points(bernstein_to_power(&rows), a, b), dim);
     let net = rows
         .iter()
-        .map(|row| bulk_curve_points(&bernstein_to_power(row), c, d))
+        .map(|row| bulk_curve_points(bernstein_to_power(row), c, d))
         .collect();
     TensorPatch::new(net).expect("a rectangular net")
 }

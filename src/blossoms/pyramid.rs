@@ -100,7 +100,7 @@ fn local_ends<T: Ring>() -> [T; 2] {
 pub fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCurve<T> {
     let n = curve.degree();
     let [ra, rb] = reference_interval(a, b);
-    let control = bulk_curve_points(curve.coefficients(), &ra, &rb);
+    let control = bulk_curve_points(curve.coefficients().to_vec(), &ra, &rb);
     let [ta, tb] = local_ends::<T>();
     let points = (0..=n)
         .map(|v| bezier_curve_blossom(&control, &repeated(&tb, v, &ta, n - v)))
