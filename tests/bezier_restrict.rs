@@ -10,9 +10,6 @@
 //!
 //! `tests/subdivide.rs` has one random input per degree; this file widens the sample.
 
-use blossom::blossoms::pyramid::{
-    bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom,
-};
 use blossom::ring::rational_to_f64;
 use blossom::subdivide::restrict_bezier_triangle_affine;
 use blossom::{
@@ -23,7 +20,7 @@ use num_bigint::BigInt;
 
 mod common;
 
-use common::Rng;
+use common::{curve_by_pyramid, tensor_by_pyramid, triangle_by_pyramid, Rng};
 
 /// The samplers this file needs on top of the shared generator.
 trait Samplers {
@@ -167,53 +164,6 @@ fn triangle(rng: &mut Rng, kind: Triangle) -> [[Rational; 3]; 3] {
             [p.clone(), p.clone(), p]
         }
     }
-}
-
-fn repeated<X: Clone>(x: &X, k: usize, y: &X, l: usize) -> Vec<X> {
-    std::iter::repeat_n(x.clone(), k)
-        .chain(std::iter::repeat_n(y.clone(), l))
-        .collect()
-}
-
-/// q_j = b[a^(n-j), b^j], each point on its own.
-fn curve_by_pyramid<T: Ring>(curve: &BezierCurve<T>, a: &T, b: &T) -> Vec<Vec<T>> {
-    let n = curve.degree();
-    (0..=n)
-        .map(|j| bezier_curve_blossom(curve.control_points(), &repeated(a, n - j, b, j)))
-        .collect()
-}
-
-/// p_(nu mu) = b[a^(n-nu), b^nu; c^(m-mu), d^mu], each point on its own.
-fn tensor_by_pyramid<T: Ring>(patch: &TensorPatch<T>, rect: &[T; 4]) -> Vec<Vec<Vec<T>>> {
-    let (n, m) = patch.degree();
-    let [a, b, c, d] = rect;
-    (0..=n)
-        .map(|nu| {
-            (0..=m)
-                .map(|mu| {
-                    bezier_tensor_blossom(
-                        patch.control_points(),
-                        &repeated(a, n - nu, b, nu),
-                        &repeated(c, m - mu, d, mu),
-                    )
-                })
-                .collect()
-        })
-        .collect()
-}
-
-/// q_(nu mu lambda) = b[A^nu, B^mu, C^lambda], each point on its own, in the net's order.
-fn triangle_by_pyramid<T: Ring>(patch: &TriangularPatch<T>, corners: &[[T; 3]; 3]) -> Vec<Vec<T>> {
-    patch
-        .entries()
-        .map(|(nu, mu, la, _)| {
-            let args: Vec<[T; 3]> = std::iter::repeat_n(corners[0].clone(), nu)
-                .chain(std::iter::repeat_n(corners[1].clone(), mu))
-                .chain(std::iter::repeat_n(corners[2].clone(), la))
-                .collect();
-            bezier_triangle_blossom(patch, &args)
-        })
-        .collect()
 }
 
 fn random_curve(rng: &mut Rng, n: usize, dim: usize) -> BezierCurve<Rational> {

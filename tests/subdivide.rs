@@ -5,60 +5,13 @@
 
 mod common;
 
-use blossom::blossoms::pyramid::{
-    bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom,
-};
 use blossom::ring::rational_to_f64;
 use blossom::subdivide::restrict_bezier_triangle_affine;
 use blossom::{
     restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle, BezierCurve, Poly,
     Rational, Ring, TensorPatch, TriangularPatch,
 };
-use common::Rng;
-
-fn repeated<X: Clone>(x: &X, k: usize, y: &X, l: usize) -> Vec<X> {
-    std::iter::repeat_n(x.clone(), k)
-        .chain(std::iter::repeat_n(y.clone(), l))
-        .collect()
-}
-
-fn curve_by_pyramid<T: Ring>(curve: &BezierCurve<T>, a: &T, b: &T) -> Vec<Vec<T>> {
-    let n = curve.degree();
-    (0..=n)
-        .map(|j| bezier_curve_blossom(curve.control_points(), &repeated(a, n - j, b, j)))
-        .collect()
-}
-
-fn tensor_by_pyramid<T: Ring>(patch: &TensorPatch<T>, rect: &[T; 4]) -> Vec<Vec<Vec<T>>> {
-    let (n, m) = patch.degree();
-    let [a, b, c, d] = rect;
-    (0..=n)
-        .map(|nu| {
-            (0..=m)
-                .map(|mu| {
-                    bezier_tensor_blossom(
-                        patch.control_points(),
-                        &repeated(a, n - nu, b, nu),
-                        &repeated(c, m - mu, d, mu),
-                    )
-                })
-                .collect()
-        })
-        .collect()
-}
-
-fn triangle_by_pyramid<T: Ring>(patch: &TriangularPatch<T>, corners: &[[T; 3]; 3]) -> Vec<Vec<T>> {
-    patch
-        .entries()
-        .map(|(nu, mu, la, _)| {
-            let args: Vec<[T; 3]> = std::iter::repeat_n(corners[0].clone(), nu)
-                .chain(std::iter::repeat_n(corners[1].clone(), mu))
-                .chain(std::iter::repeat_n(corners[2].clone(), la))
-                .collect();
-            bezier_triangle_blossom(patch, &args)
-        })
-        .collect()
-}
+use common::{curve_by_pyramid, tensor_by_pyramid, triangle_by_pyramid, Rng};
 
 /// Random barycentric corners (s, t, 1 - s - t), exact.
 fn corners(rng: &mut Rng) -> [[Rational; 3]; 3] {
