@@ -9,17 +9,18 @@
 //!
 //! Restriction by the pyramid first writes the power-basis input in Bernstein form over a
 //! reference domain, then evaluates the blossom at the new domain's corners: O(n^2) per control
-//! point of a curve. The reference domain is the new one enlarged twice about its centre:
-//! [(3a - b)/2, (3b - a)/2] for [a, b] (so a and b sit at the local parameters 1/4 and 3/4),
-//! the product of two such intervals for a rectangle, and for the triangle a, b, c the triangle
-//! 2a - g, 2b - g, 2c - g about the centroid g (so a, b, c have the barycentric coordinates
-//! (2/3, 1/6, 1/6) and its permutations). Every de Casteljau step is then a convex combination,
+//! point of a curve. The reference domain is the new one enlarged about its centre by the factor
+//! k = (n + 1) / n for degree n: [a - h, b + h] with h = (b - a) / (2n) for [a, b] (a and b sit
+//! at the local parameters 1 / (2(n + 1)) and (2n + 1) / (2(n + 1))), the product of two such
+//! intervals for a rectangle, and for a triangle of degree N its image under the homothety of
+//! ratio (N + 1) / N about the centroid. Every de Casteljau step is then a convex combination,
 //! which is what keeps the pyramid stable in floating point: over a fixed reference domain
 //! ([0, 1], the unit triangle) corners far outside it make every step an extrapolation, and
 //! the error grew like the corners' barycentric coordinates to the power n (relative error
-//! 2e-2 measured on a sextic triangle with a corner at y = 737). A larger enlargement costs
-//! accuracy the other way: the Bernstein coefficients over the reference domain grow like the
-//! enlargement to the power n relative to the answer (a factor 4 cost two digits at degree 5).
+//! 2e-2 measured on a sextic triangle with a corner at y = 737). The enlargement costs accuracy
+//! the other way: the Bernstein coefficients over the reference domain are larger than the
+//! answer by up to k^n, which is at most e for k = (n + 1) / n (a fixed factor 2 cost 3e-1
+//! against 3e-8 at curve degree 24, `cargo run --release --example float_error`).
 //! The choice uses ring operations only, so the symbolic proofs cover it. The Bernstein form over the reference domain comes
 //! from the bulk change of basis ([`crate::restrict`], `Method::Bulk`); the pyramid's own part
 //! is the blossom evaluation.
@@ -84,24 +85,36 @@ pub fn bezier_triangle_blossom<T: Ring>(patch: &TriangularPatch<T>, args: &[[T; 
     level.pop().expect("one point remains")
 }
 
-/// The reference interval [(3a - b)/2, (3b - a)/2] of [a, b] (module docs).
-fn reference_interval<T: Ring>(a: &T, b: &T) -> [T; 2] {
-    let half_width = b.sub(a).scale_frac(1, 2);
-    [a.sub(&half_width), b.add(&half_width)]
+/// The enlargement k = (n + 1) / n of the reference domain for degree n (module docs), as the
+/// integer n (at least 1, a degree of 0 being served by any k).
+fn enlargement(degree: usize) -> i128 {
+    degree.max(1) as i128
 }
 
-/// The local parameters 1/4 and 3/4 of a and b in their reference interval.
-fn local_ends<T: Ring>() -> [T; 2] {
-    [T::one().scale_frac(1, 4), T::one().scale_frac(3, 4)]
+/// The reference interval [a - h, b + h], h = (b - a) / (2n), of [a, b] for degree n: [a, b]
+/// enlarged by k = (n + 1) / n about its centre.
+fn reference_interval<T: Ring>(a: &T, b: &T, degree: usize) -> [T; 2] {
+    let h = b.sub(a).scale_frac(1, 2 * enlargement(degree));
+    [a.sub(&h), b.add(&h)]
+}
+
+/// The local parameters 1 / (2(n + 1)) and (2n + 1) / (2(n + 1)) of a and b in their
+/// reference interval.
+fn local_ends<T: Ring>(degree: usize) -> [T; 2] {
+    let n = enlargement(degree);
+    [
+        T::one().scale_frac(1, 2 * (n + 1)),
+        T::one().scale_frac(2 * n + 1, 2 * (n + 1)),
+    ]
 }
 
 /// Control points w_v = b[b^v, a^(n-v)] of `curve` on [a, b], by the pyramid on its Bernstein
-/// form over the reference interval [(3a - b)/2, (3b - a)/2], where a and b are 1/4 and 3/4.
+/// form over the reference interval [a - h, b + h], h = (b - a) / (2n).
 pub fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCurve<T> {
     let n = curve.degree();
-    let [ra, rb] = reference_interval(a, b);
+    let [ra, rb] = reference_interval(a, b, n);
     let control = bulk_curve_points(curve.coefficients().to_vec(), &ra, &rb);
-    let [ta, tb] = local_ends::<T>();
+    let [ta, tb] = local_ends::<T>(n);
     let points = (0..=n)
         .map(|v| bezier_curve_blossom(&control, &repeated(&tb, v, &ta, n - v)))
         .collect();
@@ -110,16 +123,17 @@ pub fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCur
 
 /// Control points p_{nu mu} = b[b^nu, a^(n-nu); d^mu, c^(m-mu)] of `surface` on
 /// [a, b] x [c, d] (`rect = [a, b, c, d]`), by the two-pass pyramid on its Bernstein net over
-/// the reference rectangle [(3a - b)/2, (3b - a)/2] x [(3c - d)/2, (3d - c)/2].
+/// the product of the reference intervals of [a, b] (degree n) and [c, d] (degree m).
 pub fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> TensorPatch<T> {
+    let (n, m) = surface.degree();
     let [a, b, c, d] = rect;
-    let [ra, rb] = reference_interval(a, b);
-    let [rc, rd] = reference_interval(c, d);
+    let [ra, rb] = reference_interval(a, b, n);
+    let [rc, rd] = reference_interval(c, d, m);
     let reference = crate::restrict::restrict_tensor(surface, &[ra, rb, rc, rd], Method::Bulk);
-    let [ta, tb] = local_ends::<T>();
-    let local = [ta.clone(), tb.clone(), ta, tb];
+    let [ta, tb] = local_ends::<T>(n);
+    let [tc, td] = local_ends::<T>(m);
     let net = reference.control_points();
-    let points = tensor_net(surface.degree(), &local, |us, vs| {
+    let points = tensor_net((n, m), &[ta, tb, tc, td], |us, vs| {
         bezier_tensor_blossom(net, us, vs)
     });
     TensorPatch::new(points).expect("a rectangular net")
@@ -127,21 +141,29 @@ pub fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> Ten
 
 /// Control points q_{nu mu lambda} = b[a^nu, b^mu, c^lambda] of `surface` (total degree
 /// N = n + m) on the triangle with corners `tri = [a, b, c]`, by the triangular pyramid on its
-/// Bernstein net over the reference triangle 2a - g, 2b - g, 2c - g (g the centroid), in which
-/// a, b and c have the barycentric coordinates (2/3, 1/6, 1/6), (1/6, 2/3, 1/6), (1/6, 1/6, 2/3).
+/// Bernstein net over the reference triangle g + k(p - g), p = a, b, c (g the centroid,
+/// k = (N + 1) / N), in which each corner p has the barycentric coordinate (3N + 1) / (3(N + 1))
+/// on its own enlarged corner and 1 / (3(N + 1)) on the two others.
 pub fn restrict_triangle<T: Ring>(
     surface: &PowerSurface<T>,
     tri: &[[T; 2]; 3],
 ) -> TriangularPatch<T> {
     let (n, m) = surface.degree();
+    let k = enlargement(n + m);
     let [a, b, c] = tri;
-    // 2p - g = (5p - q - r) / 3.
+    // g + k (p - g) = ((3N + 2) p - q - r) / (3N).
     let enlarged = |p: &[T; 2], q: &[T; 2], r: &[T; 2]| -> [T; 2] {
-        std::array::from_fn(|x| p[x].scale_frac(5, 3).sub(&q[x].add(&r[x]).scale_frac(1, 3)))
+        std::array::from_fn(|x| {
+            p[x].scale_frac(3 * k + 2, 3 * k)
+                .sub(&q[x].add(&r[x]).scale_frac(1, 3 * k))
+        })
     };
     let reference_corners = [enlarged(a, b, c), enlarged(b, a, c), enlarged(c, a, b)];
     let reference = crate::restrict::restrict_triangle(surface, &reference_corners, Method::Bulk);
-    let (major, minor) = (T::one().scale_frac(2, 3), T::one().scale_frac(1, 6));
+    let (major, minor) = (
+        T::one().scale_frac(3 * k + 1, 3 * (k + 1)),
+        T::one().scale_frac(1, 3 * (k + 1)),
+    );
     let local = [
         [major.clone(), minor.clone(), minor.clone()],
         [minor.clone(), major.clone(), minor.clone()],
