@@ -21,10 +21,9 @@
 //! the other way: the Bernstein coefficients over the reference domain are larger than the
 //! answer by up to k^n, which is at most e for k = (n + 1) / n (a fixed factor 2 cost 3e-1
 //! at curve degree 24 where this choice gives 1e-6, as the bulk path: `cargo run --release
-//! --example float_error`).
-//! The choice uses ring operations only, so the symbolic proofs cover it. The Bernstein form
-//! over the reference domain comes from the bulk change of basis ([`crate::restrict`], `Method::Bulk`); the pyramid's own part
-//! is the blossom evaluation.
+//! --example float_error`). The choice uses ring operations only, so the symbolic proofs
+//! cover it. The Bernstein form over the reference domain comes from the bulk change of basis
+//! ([`crate::restrict`], `Method::Bulk`); the pyramid's own part is the blossom evaluation.
 
 use crate::bezier::{triangle_index, triangle_len, BezierCurve, TensorPatch, TriangularPatch};
 use crate::blossoms::{repeated, tensor_net, triangle_net};
