@@ -23,7 +23,7 @@
 //! compiler vectorises. A block of a cubic 3-D curve batch (12 runs in, 12 out, 48 KiB each)
 //! stays in the L2 cache while it is worked on. On this project's machine, 512 objects per
 //! block ran 19% faster than 256, and 1024 was no faster (`benches/peers.rs`). Blocks are
-//! independent, so with the `rayon` feature [`Batch::par_restrict_into`] spreads them over
+//! independent, so with the `rayon` feature `Batch::par_restrict_into` spreads them over
 //! threads. The last block is padded with zeros.
 
 use crate::bezier::{triangle_len, BezierCurve, TensorPatch, TriangularPatch};

@@ -3,7 +3,7 @@
 //! The closed forms (3), (9), (14) sum products of binomials over index ranges; with the
 //! convention `C(n, k) = 0` for `k < 0` or `k > n` a sum may run over a wider range than the
 //! paper's bounds without changing its value, which is how the printed bound variants are
-//! compared in [`crate::paper`].
+//! compared in `src/verify/formula_versions.rs`.
 
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
