@@ -171,7 +171,7 @@ pub fn reduce<T: Ring>(
 /// reductions from degree n to m: R = G_mm^-1 G_mn for [`Reduction::LeastSquares`] (the normal
 /// equations G_mm x = G_mn b), and for [`Reduction::LeastSquaresEndpoints`] the rows e_0 and
 /// e_n (x_0 = b_0, x_m = b_n) around the solution of the interior normal equations
-/// sum_{j=1..m-1} G[i][j] x_j = (G_mn b)_i - G[i][0] b_0 - G[i][m] b_n, i = 1..m-1.
+/// `sum_{j=1..m-1} G[i][j] x_j = (G_mn b)_i - G[i][0] b_0 - G[i][m] b_n`, i = 1..m-1.
 ///
 /// The matrix is formed exactly before it meets the points, so that floats are rounded only in
 /// the final combination instead of passing through the ill-conditioned normal equations.

@@ -6,7 +6,7 @@
 //! f(x_1..x_n) = 1/n! sum_{N=1..n} (-1)^(n-N) N^n sum_{i_1 < ... < i_N} q((x_i1 + ... + x_iN) / N).
 //!
 //! * curve blossom, Corollary 1, eq. (20), and tensor patches in two passes
-//!   (b[u_1..u_m; v_1..v_n] = b[u_1..u_m][v_1..v_n]);
+//!   (`b[u_1..u_m; v_1..v_n] = b[u_1..u_m][v_1..v_n]`);
 //! * triangle blossom at points of the parametric plane, eq. (21);
 //! * control points of a curve on [alpha, beta], Corollary 2, eq. (22):
 //!   b_i = b[alpha^(n-i), beta^i];

@@ -6,7 +6,7 @@
 //! f(x_1..x_n) = 1/n! sum_{N=1..n} (-1)^(n-N) N^n sum_{i_1 < ... < i_N} q((x_i1 + ... + x_iN) / N)
 //!
 //! where q(x) = f(x, ..., x) is the curve or surface itself. Tensor patches are done in two
-//! passes (b[u; v] = b[u][v]): the inner pass polarises v for a fixed u, which is again a
+//! passes (`b[u; v] = b[u][v]`): the inner pass polarises v for a fixed u, which is again a
 //! polynomial of degree n in u, and the outer pass polarises that.
 //!
 //! When arguments repeat, as they do at every control point (a^nu b^mu c^lambda), the subsets

@@ -2,7 +2,7 @@
 //!
 //! * curve, eq. (2) of 004: b^r_i[t_1..t_r] = (1 - t_r) b^{r-1}_i + t_r b^{r-1}_{i+1}, and the
 //!   blossom is b^n_0[t_1..t_n];
-//! * tensor patch, eq. (9) of 004: b[u_1..u_n; v_1..v_m] = b[u_1..u_n][v_1..v_m], the curve
+//! * tensor patch, eq. (9) of 004: `b[u_1..u_n; v_1..v_m] = b[u_1..u_n][v_1..v_m]`, the curve
 //!   pyramid along v for every row, then along u;
 //! * triangle: b^r_{ijk} = u_r b^{r-1}_{i+1,j,k} + v_r b^{r-1}_{i,j+1,k} + w_r b^{r-1}_{i,j,k+1}
 //!   for barycentric arguments (u_r, v_r, w_r).

@@ -136,7 +136,7 @@ impl<T: Field> BSpline<T> {
     }
 
     /// The blossom f_s(args) of the polynomial piece on the non-empty domain span `s`
-    /// (0-based: [knots[s], knots[s+1])), by de Boor's algorithm with one argument per level.
+    /// (0-based: `[knots[s], knots[s+1])`), by de Boor's algorithm with one argument per level.
     pub fn blossom(&self, s: usize, args: &[T]) -> Result<Point<T>> {
         if !self.knots.is_span(s) {
             return Err(Error::new(
@@ -170,7 +170,7 @@ impl<T: Field> BSpline<T> {
     }
 
     /// De Boor's full table at parameter t: the span k (0-based) with t_k <= t < t_{k+1} and
-    /// `table[r][j]` = d_i^r(t) for i = k - p + r + j; F(t) = table[p][0].
+    /// `table[r][j]` = d_i^r(t) for i = k - p + r + j; F(t) = `table[p][0]`.
     pub fn de_boor(&self, t: &T) -> Result<(usize, Vec<Vec<Point<T>>>)> {
         let k = self.knots.span(t)?;
         Ok((k, self.de_boor_table(k, &vec![t.clone(); self.degree()])))

@@ -28,7 +28,7 @@ fn times_linear<T: Field>(f: &[T], a: &T, b: &T, len: usize) -> Coeffs<T> {
     out
 }
 
-/// The polynomials N_i^p restricted to the span [knots[s], knots[s+1]), for i = s - p..=s
+/// The polynomials N_i^p restricted to the span `[knots[s], knots[s+1])`, for i = s - p..=s
 /// (0-based), in the power basis of u. Requires s >= p and s + p + 1 < knots.len().
 pub fn basis_on_span<T: Field>(knots: &[T], p: usize, s: usize) -> Vec<Coeffs<T>> {
     let len = p + 1;

@@ -100,7 +100,7 @@ impl<T: Field> KnotVector<T> {
         (&self.knots[self.degree], &self.knots[self.control_count()])
     }
 
-    /// The 0-based indices s of the non-empty spans [knots[s], knots[s+1]) in the domain.
+    /// The 0-based indices s of the non-empty spans `[knots[s], knots[s+1])` in the domain.
     pub fn spans(&self) -> Vec<usize> {
         (self.degree..self.control_count())
             .filter(|&s| self.knots[s] < self.knots[s + 1])
@@ -112,7 +112,7 @@ impl<T: Field> KnotVector<T> {
         s >= self.degree && s < self.control_count() && self.knots[s] < self.knots[s + 1]
     }
 
-    /// The span s with knots[s] <= t < knots[s+1] (the last non-empty span at the right end of
+    /// The span s with `knots[s] <= t < knots[s+1]` (the last non-empty span at the right end of
     /// the domain), or an error naming `t` when t is outside the domain.
     pub fn span(&self, t: &T) -> Result<usize> {
         let (a, b) = self.domain();
