@@ -20,7 +20,7 @@ use num_bigint::BigInt;
 
 mod common;
 
-use common::{curve_by_pyramid, tensor_by_pyramid, triangle_by_pyramid, Rng};
+use common::{curve_by_pyramid, exact, tensor_by_pyramid, triangle_by_pyramid, Rng};
 
 /// The samplers this file needs on top of the shared generator.
 trait Samplers {
@@ -377,10 +377,6 @@ fn symbolic_curves_and_reversal() {
         backward.reverse();
         assert_eq!(forward.control_points(), backward.as_slice(), "degree {n}");
     }
-}
-
-fn exact(x: f64) -> Rational {
-    Rational::from_float(x).expect("finite")
 }
 
 /// The largest |float - exact| over all coordinates, relative to the largest |coordinate| of

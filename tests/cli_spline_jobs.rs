@@ -26,14 +26,19 @@ fn answer(job: &Value) -> Value {
     answer_with(&[], job)
 }
 
-/// The error line of a refused job, checking the contract: exit 2, empty stdout, one line.
-fn error(job: &Value) -> String {
-    let r = run(&[], job);
-    assert_eq!(r.code, 2, "job {job} was accepted: {}", r.stdout);
+/// The error line of a job refused under `args`, checking the contract: exit 2, empty stdout,
+/// one line.
+fn error_with(args: &[&str], job: &Value) -> String {
+    let r = run(args, job);
+    assert_eq!(r.code, 2, "job {job} ({args:?}) was accepted: {}", r.stdout);
     assert!(r.stdout.is_empty(), "{}", r.stdout);
     assert_eq!(r.stderr.lines().count(), 1, "{}", r.stderr);
     assert!(r.stderr.starts_with("error: "), "{}", r.stderr);
     r.stderr.trim_end().to_string()
+}
+
+fn error(job: &Value) -> String {
+    error_with(&[], job)
 }
 
 #[test]
@@ -280,41 +285,28 @@ fn f64_decisions_are_exact() {
     let zero = json!({"kind": "rational-curve", "numerator": [[1]], "denominator": [1, 0, 1],
         "interval": ["-1/3", 3]});
     for arithmetic in ["exact", "f64"] {
-        let r = run(&["--arithmetic", arithmetic], &zero);
-        assert_eq!(r.code, 2, "{arithmetic}: {}", r.stdout);
-        assert!(r.stdout.is_empty());
+        let e = error_with(&["--arithmetic", arithmetic], &zero);
         assert!(
-            r.stderr
-                .starts_with("error: denominator: weight w_1 is zero"),
-            "{arithmetic}: {}",
-            r.stderr
+            e.starts_with("error: denominator: weight w_1 is zero"),
+            "{arithmetic}: {e}"
         );
     }
     // A weight that is not zero exactly but underflows in f64 is refused there (its rounded
     // control point would be meaningless), and answered exactly.
     let tiny = json!({"kind": "rational-curve", "numerator": [["1e-300"]],
         "denominator": ["1e-330"], "interval": [0, 1]});
-    let r = run(&["--arithmetic", "f64"], &tiny);
-    assert_eq!(r.code, 2, "{}", r.stdout);
-    assert!(r.stdout.is_empty());
+    let e = error_with(&["--arithmetic", "f64"], &tiny);
     assert!(
-        r.stderr
-            .starts_with("error: weights[0]: the weight is not zero but rounds to zero"),
-        "{}",
-        r.stderr
+        e.starts_with("error: weights[0]: the weight is not zero but rounds to zero"),
+        "{e}"
     );
     let weight = format!("1/1{}", "0".repeat(330));
     assert_eq!(answer(&tiny)["weights"], json!([weight]));
     // Out-of-range doubles are refused as in every other f64 job.
     let big = json!({"kind": "bspline", "degree": 0, "pieces": [
         {"interval": [0, "1e400"], "coefficients": [[0]]}]});
-    let r = run(&["--arithmetic", "f64"], &big);
-    assert_eq!(r.code, 2);
-    assert!(
-        r.stderr.starts_with("error: pieces[0].interval[1]: "),
-        "{}",
-        r.stderr
-    );
+    let e = error_with(&["--arithmetic", "f64"], &big);
+    assert!(e.starts_with("error: pieces[0].interval[1]: "), "{e}");
 }
 
 #[test]
@@ -383,14 +375,10 @@ fn more_bad_input() {
     ];
     for (job, want) in cases {
         for arithmetic in ["exact", "f64"] {
-            let r = run(&["--arithmetic", arithmetic], &job);
-            assert_eq!(r.code, 2, "{job} was accepted: {}", r.stdout);
-            assert!(r.stdout.is_empty());
-            assert_eq!(r.stderr.lines().count(), 1, "{}", r.stderr);
+            let e = error_with(&["--arithmetic", arithmetic], &job);
             assert!(
-                r.stderr.starts_with(want),
-                "job {job} ({arithmetic})\n  got  {}\n  want {want}",
-                r.stderr
+                e.starts_with(want),
+                "job {job} ({arithmetic})\n  got  {e}\n  want {want}"
             );
         }
     }
@@ -466,14 +454,9 @@ fn bezier_curve_specialised_at_every_carried_degree() {
     }
     let pts: Vec<Value> = (0..=17).map(|i| json!([i])).collect();
     let job = json!({"kind": "bezier-curve", "control_points": pts, "interval": [0, 1]});
-    let r = run(&["--method", "specialised"], &job);
-    assert_eq!(r.code, 2);
-    assert!(r.stdout.is_empty());
+    let e = error_with(&["--method", "specialised"], &job);
     assert!(
-        r.stderr.starts_with(
-            "error: --method: no specialised evaluator for a Bézier curve of degree 17"
-        ),
-        "{}",
-        r.stderr
+        e.starts_with("error: --method: no specialised evaluator for a Bézier curve of degree 17"),
+        "{e}"
     );
 }

@@ -11,7 +11,7 @@ use blossom::{
     restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle, BezierCurve, Poly,
     Rational, Ring, TensorPatch, TriangularPatch,
 };
-use common::{curve_by_pyramid, tensor_by_pyramid, triangle_by_pyramid, Rng};
+use common::{curve_by_pyramid, exact, tensor_by_pyramid, triangle_by_pyramid, Rng};
 
 /// Random barycentric corners (s, t, 1 - s - t), exact.
 fn corners(rng: &mut Rng) -> [[Rational; 3]; 3] {
@@ -131,15 +131,14 @@ fn f64_error_is_small_at_moderate_degree() {
             let a = (rng.next() % 1000) as f64 / 2000.0;
             let b = 0.5 + (rng.next() % 1000) as f64 / 2000.0;
             let float = restrict_bezier_curve(&BezierCurve::new(pts.clone()).unwrap(), &a, &b);
-            let q = |x: f64| Rational::from_float(x).unwrap();
             let exact_curve = BezierCurve::new(
                 pts.iter()
-                    .map(|p| p.iter().map(|&x| q(x)).collect())
+                    .map(|p| p.iter().map(|&x| exact(x)).collect())
                     .collect(),
             )
             .unwrap();
-            let exact = restrict_bezier_curve(&exact_curve, &q(a), &q(b));
-            for (pf, pe) in float.control_points().iter().zip(exact.control_points()) {
+            let want = restrict_bezier_curve(&exact_curve, &exact(a), &exact(b));
+            for (pf, pe) in float.control_points().iter().zip(want.control_points()) {
                 for (x, y) in pf.iter().zip(pe) {
                     let y = rational_to_f64(y);
                     worst = worst.max((x - y).abs() / (1.0 + y.abs()));

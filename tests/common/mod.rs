@@ -127,3 +127,8 @@ pub fn triangle_by_pyramid<T: Ring>(
         })
         .collect()
 }
+
+/// The exact value of a double (finite by construction in the tests).
+pub fn exact(x: f64) -> Rational {
+    Rational::from_float(x).expect("a finite double")
+}
