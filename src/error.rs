@@ -1,24 +1,75 @@
-//! The error type of the library: every message names the offending argument or field.
+//! The error type of the library: where the problem is (a path naming the argument or field)
+//! and what kind of problem it is (an enum a caller can match on), with a message in words.
 
 use std::fmt;
 
-/// An input that the library refuses, with the path of the offending field
-/// (for example `coefficients[2]`) and what is wrong with it.
+/// What kind of input the library refused. New kinds may be added.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum ErrorKind {
+    /// A list that must not be empty is empty (no coefficients, no points, no pieces).
+    Empty,
+    /// Points of one object have different numbers of coordinates, or none.
+    Dimension,
+    /// A count or arrangement is wrong: a grid that is not rectangular, a net with the wrong
+    /// number of points, a knot vector of the wrong length, sizes of two operands that differ.
+    Shape,
+    /// A blossom got a number of arguments different from its degree.
+    Arity,
+    /// A degree outside what the operation accepts (elevation to a lower degree, say).
+    Degree,
+    /// A parameter or domain that is not allowed: outside the knot range, an empty interval,
+    /// knots out of order, barycentric coordinates that do not add up to 1.
+    Domain,
+    /// A weight or denominator that is zero where it must not be.
+    ZeroWeight,
+    /// A number that is not finite (NaN or an infinity) where a finite one is needed.
+    NotFinite,
+    /// A linear system without a unique solution.
+    Singular,
+    /// A name that is not one of the known ones (a method, a reduction).
+    UnknownName,
+    /// Anything else, described by the message (used by the application's input layer).
+    Invalid,
+}
+
+/// An input that the library refuses, with the path of the offending field (for example
+/// `coefficients[2]`), the kind of problem and what is wrong in words.
+///
+/// `Display` writes `path: message` (or the message alone when the path is empty).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Error {
     /// Where the problem is: an argument name or a JSON-like path such as `interval[1]`.
     pub field: String,
+    /// What kind of problem it is.
+    pub kind: ErrorKind,
     /// What is wrong, in words.
     pub message: String,
 }
 
 impl Error {
-    /// A new error about `field`.
-    pub fn new(field: impl Into<String>, message: impl Into<String>) -> Self {
+    /// A new error of `kind` about `field`.
+    pub fn of(kind: ErrorKind, field: impl Into<String>, message: impl Into<String>) -> Self {
         Error {
             field: field.into(),
+            kind,
             message: message.into(),
         }
+    }
+
+    /// A new error about `field` of kind [`ErrorKind::Invalid`].
+    pub fn new(field: impl Into<String>, message: impl Into<String>) -> Self {
+        Self::of(ErrorKind::Invalid, field, message)
+    }
+
+    /// The path of the offending field or argument.
+    pub fn path(&self) -> &str {
+        &self.field
+    }
+
+    /// The kind of problem.
+    pub fn kind(&self) -> ErrorKind {
+        self.kind
     }
 }
 
@@ -35,4 +86,4 @@ impl fmt::Display for Error {
 impl std::error::Error for Error {}
 
 /// Shorthand for results of this crate.
-pub type Result<T> = std::result::Result<T, Error>;
+pub(crate) type Result<T> = std::result::Result<T, Error>;

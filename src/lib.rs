@@ -5,8 +5,8 @@
 //! A polynomial curve C(u) = sum c_i u^i or surface S(u, v) = sum c_ij u^i v^j, restricted to
 //! an interval, a rectangle or a triangle, is a Bézier curve or patch whose control points are
 //! values of the blossom of C or S (equations (1), (6), (12) of the subdivision paper). This
-//! crate computes them exactly or in floating point, by four independent algorithms and by a
-//! fast bulk path, all generic over one small number trait, [`Ring`].
+//! crate computes them exactly or in floating point, by independent algorithms that never
+//! compute through one another, all generic over one small number trait, [`Ring`].
 //!
 //! ```
 //! use blossom::{restrict_curve, Method, PowerCurve, Rational};
@@ -21,44 +21,99 @@
 //! assert_eq!(bezier, restrict_curve(&cubic, &q(1, 1), &q(2, 1), Method::ClosedForm));
 //! # Ok::<(), blossom::Error>(())
 //! ```
+//!
+//! # Layers
+//!
+//! The modules are private; everything public is re-exported below, one path per item. Each
+//! layer imports only the layers above it in this list:
+//!
+//! 1. **numbers** (`num/`): [`Ring`], [`Field`], [`Rational`], [`Poly`], [`binomial`];
+//! 2. **shapes** (`shape/`): [`PowerCurve`], [`PowerSurface`], [`BezierCurve`], [`TensorPatch`],
+//!    [`TriangularPatch`], their evaluation (Horner, de Casteljau) and the changes of basis;
+//! 3. **restriction** (`restrict/`): one file per algorithm, the dispatch on [`Method`];
+//! 4. **applications** (`applications/`): Bézier input, batches, B-splines, rational forms,
+//!    degree change.
+//!
+//! The `blossom` binary (the papers' report, the JSON jobs, the carried grid of generated
+//! evaluators and their proofs) is the separate crate `blossom-cli`.
+//!
+//! # References
+//!
+//! * K. Vlachkova, *Efficient subdivision of Bézier curves/surfaces via blossoms*: the closed
+//!   forms (3), (9), (14) and the subset-sum definitions (2), (8), (13).
+//! * L. Fernández-Jambrina, *Inverse relations for blossoms and parametrisations of rational
+//!   curves and surfaces*: the pyramid algorithm, the inverse (polarisation) formula (19)-(23),
+//!   rational curves, degree elevation and reduction.
+//! * J. Dueñas Béjar, *Los puntos de de Boor de una curva seccionalmente polinómica*: de Boor
+//!   points as blossoms, de Boor's algorithm, piecewise polynomials as B-splines
+//!   (Curry-Schoenberg).
 #![forbid(unsafe_code)]
 
 extern crate self as blossom;
 
-pub mod accuracy;
-pub mod basis;
-pub mod batched;
-pub mod bezier;
-pub mod binomial;
-pub mod blossoms;
-pub mod cli;
-pub mod degree;
-pub mod error;
-pub mod inverse;
-pub mod linalg;
-pub mod number;
-pub mod nurbs;
-pub mod point;
-pub mod poly;
-pub mod power;
-pub mod proofs;
-pub mod restrict;
-pub mod ring;
-pub mod specialised;
-pub mod spline;
-pub mod subdivide;
-pub mod verify;
+mod applications;
+mod error;
+mod num;
+mod restrict;
+mod shape;
 
-pub use bezier::{BezierCurve, TensorPatch, TriangularPatch};
-pub use blossom_macros::restriction;
-pub use error::Error;
-pub use linalg::Field;
-pub use poly::Poly;
-pub use power::{PowerCurve, PowerSurface};
+// Numbers.
+pub use num::binomial::{binomial, multinomial};
+pub use num::linalg::{solve as solve_rational_system, Field};
+pub use num::poly::Poly;
+pub use num::ring::{rational_to_f64, Rational, Ring};
+
+// Errors.
+pub use error::{Error, ErrorKind};
+
+// Shapes.
+pub use shape::basis::{
+    bernstein_by_horner, bernstein_to_power, power_to_bernstein, scale_argument, taylor_shift,
+    triangle_bernstein_by_horner, triangle_bernstein_to_power, triangle_power_to_bernstein,
+};
+pub use shape::bezier::{
+    bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom, BezierCurve,
+    TensorPatch, TriangularPatch,
+};
+pub use shape::point::Point;
+pub use shape::power::{PowerCurve, PowerSurface};
+pub use shape::simplex::{triangle_index, triangle_len};
+
+// Restriction.
+pub use restrict::closed_form::{
+    restrict_triangle_with as restrict_triangle_with_formula, Split as TriangleSplit,
+    TriangleFormula, THEOREM_3,
+};
+pub use restrict::definition::{curve_blossom, tensor_blossom, triangle_blossom};
+pub use restrict::polarisation::{
+    curve_blossom_from_samples, curve_control_points_from_samples, polar_form,
+    tensor_blossom_from_samples, tensor_control_points_from_samples, triangle_blossom_from_samples,
+    triangle_control_points_from_samples,
+};
 pub use restrict::{restrict_curve, restrict_tensor, restrict_triangle, Method};
-pub use ring::{Rational, Ring};
-pub use spline::BSpline;
-pub use subdivide::{restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle};
+
+// Applications.
+pub use applications::batch::{Batch, RestrictionMap, LANES as BATCH_LANES};
+pub use applications::bezier_input::{
+    restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle,
+    restrict_bezier_triangle_affine,
+};
+pub use applications::degree::{
+    bernstein_gram, elevate, elevation_matrix, least_squares_matrix, reduce, squared_l2_distance,
+    Reduction,
+};
+pub use applications::rational::{
+    RationalBSpline, RationalBezierCurve, RationalCurve, RationalSurface, RationalTensorPatch,
+    RationalTriangularPatch,
+};
+pub use applications::spline::{
+    basis_on_span as bspline_basis_on_span, continuity as continuity_at,
+    from_pieces as bspline_from_pieces, from_pieces_with_knots as bspline_from_pieces_with_knots,
+    BSpline, BezierPiece, KnotVector, Piece, PowerPiece,
+};
+
+// The compile-time expansion of formulae (3), (9), (14).
+pub use blossom_macros::restriction;
 
 /// The README's examples, compiled and run as doc tests.
 #[doc = include_str!("../README.md")]

@@ -3,8 +3,10 @@
 //!
 //! A proc-macro crate cannot export ordinary functions, so the pipeline lives here and is used
 //! twice: by `blossom-macros` (a thin `#[proc_macro]` wrapper) at compile time, and by the
-//! `blossom` runtime crate (`blossom expand curve 3`) at run time, so the code printed by the
-//! binary is exactly the code the macro generates.
+//! `blossom` binary (`blossom expand curve 3`, crate `blossom-cli`) at run time, so the code
+//! printed by the binary is exactly the code the macro generates. The formatting to text
+//! ([`format_items`], [`source`]) needs prettyplease and is behind the feature `pretty`, which
+//! the macro does not use.
 //!
 //! The pipeline, one module per step:
 //!
@@ -13,12 +15,14 @@
 //! 3. [`expand`]: to a `proc_macro2::TokenStream`, by one module per formula.
 //!
 //! ```
+//! # #[cfg(feature = "pretty")] {
 //! use blossom_codegen::{source, Shape, Spec};
 //!
 //! let code = source(&Spec::public(Shape::Curve(2)));
 //! assert!(code.contains("pub fn restrict_curve_2<T: ::blossom::Ring, const D: usize>("));
 //! // w_1 = blossom(b, a): the weight of c_2 is a b, no constant; that of c_1 is (a + b) / 2.
 //! assert!(code.contains("let w1_c1 = a.scale_frac(1, 2).add(&b.scale_frac(1, 2));"));
+//! # }
 //! ```
 #![forbid(unsafe_code)]
 
@@ -49,10 +53,11 @@ pub fn restriction(input: TokenStream) -> TokenStream {
     }
 }
 
-/// Formats generated tokens as Rust source with prettyplease.
+/// Formats generated tokens as Rust source with prettyplease (feature `pretty`).
 ///
 /// # Panics
 /// If `tokens` is not a sequence of items (never for the output of [`expand`]).
+#[cfg(feature = "pretty")]
 pub fn format_items(tokens: TokenStream) -> String {
     let file: syn::File = syn::parse2(tokens).expect("the expansion is a list of items");
     prettyplease::unparse(&file)
@@ -63,6 +68,7 @@ pub fn format_items(tokens: TokenStream) -> String {
 /// # Panics
 /// If a constant of the expansion overflows `i128`: excluded by the degree limits, so check
 /// [`Shape::check_limit`] first for degrees that come from users.
+#[cfg(feature = "pretty")]
 pub fn source(spec: &Spec) -> String {
     format_items(expand(spec).expect("constants fit within the degree limits"))
 }

@@ -1,0 +1,114 @@
+//! Computing and writing the answer of a job: the Bézier object by the chosen method, then the
+//! JSON shape of the contract.
+//!
+//! ```text
+//! {"kind": "curve", "degree": n, "control_points": [w_0, ..., w_n]}
+//! {"kind": "tensor", "degree": [n, m], "control_points": [[p_00, ..., p_0m], ...]}
+//! {"kind": "triangle", "degree": N, "control_points": [{"a": nu, "b": mu, "c": lambda, "point": q}, ...]}
+//! ```
+//!
+//! Keys appear in this order. Every number goes through [`JsonNumber::to_json`], so an `f64`
+//! answer with an infinity or NaN anywhere is an error naming the first such coordinate
+//! (for example `control_points[2][0]`), never a partial or `null`-filled answer.
+
+use super::job::Job;
+use crate::number::JsonNumber;
+use blossom::Point;
+use blossom::{
+    restrict_curve, restrict_tensor, restrict_triangle, BezierCurve, Error, Method, Ring,
+    TensorPatch, TriangularPatch,
+};
+use serde_json::{Map, Value};
+
+/// The Bézier object that answers a [`Job`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum Answer<T> {
+    /// The answer of a `curve` job.
+    Curve(BezierCurve<T>),
+    /// The answer of a `tensor` job.
+    Tensor(TensorPatch<T>),
+    /// The answer of a `triangle` job.
+    Triangle(TriangularPatch<T>),
+}
+
+/// Restricts the job's curve or surface to its domain by `method`.
+pub fn compute<T: Ring>(job: &Job<T>, method: Method) -> Answer<T> {
+    match job {
+        Job::Curve {
+            curve,
+            interval: [a, b],
+        } => Answer::Curve(restrict_curve(curve, a, b, method)),
+        Job::Tensor { surface, rectangle } => {
+            Answer::Tensor(restrict_tensor(surface, rectangle, method))
+        }
+        Job::Triangle { surface, triangle } => {
+            Answer::Triangle(restrict_triangle(surface, triangle, method))
+        }
+    }
+}
+
+/// A point as a JSON array; `path` names it in errors.
+pub(super) fn point_json<T: JsonNumber>(p: &Point<T>, path: &str) -> Result<Value, Error> {
+    p.iter()
+        .enumerate()
+        .map(|(k, x)| {
+            x.to_json()
+                .map_err(|message| Error::new(format!("{path}[{k}]"), message))
+        })
+        .collect::<Result<Vec<Value>, Error>>()
+        .map(Value::Array)
+}
+
+/// The answer as the JSON object of the contract.
+pub fn to_json<T: JsonNumber>(answer: &Answer<T>) -> Result<Value, Error> {
+    let (kind, degree, control_points) = match answer {
+        Answer::Curve(curve) => {
+            let points = curve
+                .control_points()
+                .iter()
+                .enumerate()
+                .map(|(v, p)| point_json(p, &format!("control_points[{v}]")))
+                .collect::<Result<Vec<Value>, Error>>()?;
+            ("curve", Value::from(curve.degree()), points)
+        }
+        Answer::Tensor(patch) => {
+            let (n, m) = patch.degree();
+            let rows = patch
+                .control_points()
+                .iter()
+                .enumerate()
+                .map(|(nu, row)| {
+                    row.iter()
+                        .enumerate()
+                        .map(|(mu, p)| point_json(p, &format!("control_points[{nu}][{mu}]")))
+                        .collect::<Result<Vec<Value>, Error>>()
+                        .map(Value::Array)
+                })
+                .collect::<Result<Vec<Value>, Error>>()?;
+            ("tensor", Value::from(vec![n, m]), rows)
+        }
+        Answer::Triangle(patch) => {
+            let entries = patch
+                .entries()
+                .enumerate()
+                .map(|(k, (nu, mu, lambda, q))| {
+                    let mut entry = Map::new();
+                    entry.insert("a".into(), Value::from(nu));
+                    entry.insert("b".into(), Value::from(mu));
+                    entry.insert("c".into(), Value::from(lambda));
+                    entry.insert(
+                        "point".into(),
+                        point_json(q, &format!("control_points[{k}].point"))?,
+                    );
+                    Ok(Value::Object(entry))
+                })
+                .collect::<Result<Vec<Value>, Error>>()?;
+            ("triangle", Value::from(patch.degree()), entries)
+        }
+    };
+    let mut object = Map::new();
+    object.insert("kind".into(), Value::from(kind));
+    object.insert("degree".into(), degree);
+    object.insert("control_points".into(), Value::Array(control_points));
+    Ok(Value::Object(object))
+}

@@ -1,0 +1,436 @@
+//! Hand-written parsing of the command line into a [`Command`].
+//!
+//! Grammar (flags of a subcommand come after it, in any order, each at most once; a value may
+//! be given as `--flag VALUE` or `--flag=VALUE`):
+//!
+//! ```text
+//! blossom                                   same as `blossom verify`
+//! blossom verify [--json]
+//! blossom restrict [--input FILE] [--arithmetic exact|f64] [--method METHOD]
+//! blossom expand curve N | tensor N M | triangle N M | bezier-curve N | bezier-tensor N M | bezier-triangle N
+//! blossom [SUBCOMMAND] --help | -h          help (also `blossom help`)
+//! blossom --version | -V
+//! ```
+//!
+//! `--input -` reads standard input, as does leaving `--input` out. A value that starts with
+//! `--` is taken for a forgotten value (`--input --method pyramid`); write `--input=--odd-name`
+//! for a file whose name starts with `--`.
+
+use blossom::Method;
+use blossom::Error;
+use std::ffi::{OsStr, OsString};
+use std::path::PathBuf;
+
+/// The arithmetic of `restrict`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Arithmetic {
+    /// Rational numbers with unbounded integers (the default).
+    Exact,
+    /// IEEE double precision.
+    F64,
+}
+
+/// The algorithm of `restrict`: one of the library's [`Method`]s or the compile-time
+/// specialised evaluators (see [`super::specialised`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MethodChoice {
+    /// A method of [`blossom`].
+    Library(Method),
+    /// The proc-macro generated evaluator for the job's degree.
+    Specialised,
+}
+
+/// The names `--method` accepts, in the order the help and error messages list them.
+pub const METHOD_NAMES: [(&str, MethodChoice); 6] = [
+    ("closed-form", MethodChoice::Library(Method::ClosedForm)),
+    ("definition", MethodChoice::Library(Method::Definition)),
+    ("pyramid", MethodChoice::Library(Method::Pyramid)),
+    ("polarisation", MethodChoice::Library(Method::Polarisation)),
+    ("specialised", MethodChoice::Specialised),
+    ("bulk", MethodChoice::Library(Method::Bulk)),
+];
+
+/// Options of `blossom restrict`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RestrictOptions {
+    /// The job file; `None` for standard input.
+    pub input: Option<PathBuf>,
+    /// `--arithmetic`, default exact.
+    pub arithmetic: Arithmetic,
+    /// `--method`, default closed-form.
+    pub method: MethodChoice,
+}
+
+/// What the command line asks for.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Command {
+    /// `blossom` or `blossom verify [--json]`.
+    Verify {
+        /// `--json`: the report as JSON.
+        json: bool,
+    },
+    /// `blossom restrict ...`.
+    Restrict(RestrictOptions),
+    /// `blossom expand SHAPE DEGREES...`: the words after `expand` (checked when run).
+    Expand(Vec<String>),
+    /// `--help`: print this text and succeed.
+    Help(&'static str),
+    /// `--version`.
+    Version,
+}
+
+/// Help for the whole program.
+pub const HELP: &str = "\
+blossom: exact Bezier subdivision through blossoms
+
+Usage:
+  blossom                      same as `blossom verify`
+  blossom verify [--json]      re-derive the tables and worked examples of the seed papers;
+                               exit 0 when everything is reproduced or explained, 1 otherwise
+  blossom restrict [OPTIONS]   restrict a curve or surface given as JSON (see `restrict --help`)
+  blossom expand SHAPE DEGREE  print the function the proc-macro generates for a fixed degree
+                               (see `expand --help`)
+  blossom --help | --version
+
+Errors: one line `error: ...` on standard error, exit code 2.
+";
+
+/// Help for `blossom restrict`.
+pub const RESTRICT_HELP: &str = "\
+blossom restrict: the Bezier form of a polynomial curve or surface on a new domain
+
+Usage: blossom restrict [--input FILE] [--arithmetic exact|f64] [--method METHOD]
+
+Options:
+  --input FILE         read the job from FILE (default, or `-`: standard input)
+  --arithmetic exact   rational numbers, no rounding anywhere (default); numbers in the
+                       answer are strings \"p/q\" or \"p\" in lowest terms
+  --arithmetic f64     IEEE double precision; numbers in the answer are JSON numbers
+  --method METHOD      the algorithm; every method gives the identical exact answer:
+      closed-form      the closed forms (3), (9), (14) (default)
+      definition       the subset-sum definitions (2), (8), (13)
+      pyramid          de Casteljau's pyramid on the blossom
+      polarisation     the inverse (polarisation) formula, sampling points only
+      specialised      the compile-time evaluator generated for the job's degree
+      bulk             all control points at once by changes of variable and basis
+                       (an extension of the contract: the fast path of the library)
+  -h, --help           print this help
+
+Jobs (JSON objects; fields not listed are ignored):
+  {\"kind\": \"curve\", \"coefficients\": [c0, ..., cn], \"interval\": [a, b]}
+  {\"kind\": \"tensor\", \"coefficients\": [[c00, ..., c0m], ...], \"rectangle\": [a, b, c, d]}
+  {\"kind\": \"triangle\", \"coefficients\": [[c00, ..., c0m], ...],
+   \"triangle\": [[a1, a2], [b1, b2], [c1, c2]]}
+  {\"kind\": \"bezier-curve\", \"control_points\": [b0, ..., bn], \"interval\": [a, b]}
+  {\"kind\": \"bspline\", \"degree\": p,
+   \"pieces\": [{\"interval\": [e0, e1], \"coefficients\": [c0, ..., cp]}, ...]}
+  {\"kind\": \"bspline-eval\", \"degree\": p, \"knots\": [...], \"control_points\": [...],
+   \"at\": [t, ...]}
+  {\"kind\": \"rational-curve\", \"numerator\": [c0, ...], \"denominator\": [w0, ...],
+   \"interval\": [alpha, beta], \"degree\": n (optional)}
+  {\"kind\": \"elevate\", \"control_points\": [...], \"to_degree\": m}
+  {\"kind\": \"reduce\", \"control_points\": [...], \"to_degree\": m,
+   \"method\": \"interpolating\" | \"least-squares\" | \"least-squares-endpoints\"}
+Points are arrays of numbers, all of one length D >= 1. A number is a JSON integer or a
+string: \"-7\", \"3/4\", \"0.125\", \"-1e-3\" (JSON numbers such as 0.1 only under f64).
+Under exact arithmetic a decimal exponent is at most 100000 in absolute value (unless the
+digits are all zero). The degree of a list of coefficients is its length minus one, zero
+coefficients included (so a rational curve's default degree is that of its longer list).
+Degrees of the spline, rational and degree-change jobs are at most 200. The methods apply to
+curve, tensor, triangle and bezier-curve; the other jobs have one algorithm each and
+answer the same under every method.
+
+Output: the answer as one line of JSON on standard output, exit code 0; on bad input one line
+`error: FIELD: ...` on standard error, nothing on standard output, exit code 2.
+";
+
+/// Help for `blossom expand`.
+pub const EXPAND_HELP: &str = "\
+blossom expand: the Rust function `blossom::restriction!` generates for one fixed degree
+
+Usage: blossom expand curve N | tensor N M | triangle N M
+                      | bezier-curve N | bezier-tensor N M | bezier-triangle N
+
+Prints the formatted source of the unrolled closed form (3), (9) or (14) for that degree, as
+`blossom::restriction!(vis = pub, name = restrict_<shape>_<degrees>, shape = .., degree = ..)`
+expands it; it compiles on its own in a crate that depends on `blossom`. The bezier- shapes
+take control points (a Bézier curve over [0, 1], a patch over [0, 1]^2, a triangular patch)
+instead of power coefficients.
+Limits (those of the macro): curves N <= 24, tensor patches N, M <= 10, triangles N + M <= 8,
+Bézier triangles N <= 6.
+";
+
+/// Help for `blossom verify`.
+pub const VERIFY_HELP: &str = "\
+blossom verify: re-derive every table and worked example of the seed papers exactly
+
+Usage: blossom verify [--json]
+
+Options:
+  --json      print the report as JSON
+  -h, --help  print this help
+
+Exit code 0 when every printed value was reproduced or explained, 1 otherwise.
+";
+
+fn is_help(arg: &str) -> bool {
+    arg == "--help" || arg == "-h"
+}
+
+/// Splits `--flag=value` into its flag and value.
+fn split_flag(arg: &OsStr) -> (String, Option<OsString>) {
+    let text = arg.to_string_lossy();
+    match text.split_once('=') {
+        Some((flag, _)) if flag.starts_with("--") => {
+            // Recover the value as an OsString so that non-UTF-8 file names survive.
+            let value = os_suffix(arg, flag.len() + 1);
+            (flag.to_string(), Some(value))
+        }
+        _ => (text.into_owned(), None),
+    }
+}
+
+/// `arg` without its first `skip` bytes (the `--flag=` prefix, which is ASCII-compatible).
+fn os_suffix(arg: &OsStr, skip: usize) -> OsString {
+    let bytes = arg.as_encoded_bytes();
+    let tail = bytes.get(skip..).unwrap_or_default();
+    match std::str::from_utf8(tail) {
+        Ok(s) => OsString::from(s),
+        // Only reachable for non-UTF-8 arguments: fall back to the lossy text.
+        Err(_) => OsString::from(String::from_utf8_lossy(tail).into_owned()),
+    }
+}
+
+/// Parses the arguments after the program name.
+pub fn parse(args: &[OsString]) -> Result<Command, Error> {
+    let Some(first) = args.first() else {
+        return Ok(Command::Verify { json: false });
+    };
+    let first = first.to_string_lossy();
+    let rest = &args[1..];
+    match first.as_ref() {
+        "verify" => parse_verify(rest),
+        "restrict" => parse_restrict(rest),
+        "expand" => parse_expand(rest),
+        "help" => Ok(Command::Help(HELP)),
+        "--version" | "-V" => Ok(Command::Version),
+        arg if is_help(arg) => Ok(Command::Help(HELP)),
+        arg if arg.starts_with('-') => Err(Error::new(
+            arg,
+            "unknown option (expected a subcommand: restrict, verify or expand; see blossom --help)",
+        )),
+        arg => Err(Error::new(
+            arg,
+            "unknown subcommand (expected restrict, verify or expand; see blossom --help)",
+        )),
+    }
+}
+
+fn parse_verify(args: &[OsString]) -> Result<Command, Error> {
+    let mut json = false;
+    for arg in args {
+        let (flag, value) = split_flag(arg);
+        match (flag.as_str(), value) {
+            (f, None) if is_help(f) => return Ok(Command::Help(VERIFY_HELP)),
+            ("--json", None) if json => return Err(Error::new("--json", "given more than once")),
+            ("--json", None) => json = true,
+            ("--json", Some(_)) => return Err(Error::new("--json", "takes no value")),
+            (f, _) if f.starts_with('-') => {
+                return Err(Error::new(f, "unknown option for verify (expected --json)"))
+            }
+            (f, _) => return Err(Error::new(f, "unexpected argument for verify")),
+        }
+    }
+    Ok(Command::Verify { json })
+}
+
+fn parse_expand(args: &[OsString]) -> Result<Command, Error> {
+    let words: Vec<String> = args
+        .iter()
+        .map(|a| a.to_string_lossy().into_owned())
+        .collect();
+    if words.iter().any(|w| is_help(w)) {
+        return Ok(Command::Help(EXPAND_HELP));
+    }
+    if let Some(flag) = words.iter().find(|w| w.starts_with("--")) {
+        return Err(Error::new(
+            flag.as_str(),
+            "unknown option for expand (expected a shape and its degrees; see `blossom expand --help`)",
+        ));
+    }
+    Ok(Command::Expand(words))
+}
+
+/// The value of `flag`: from `--flag=value` or the next argument.
+fn take_value(
+    flag: &str,
+    inline: Option<OsString>,
+    rest: &mut std::slice::Iter<'_, OsString>,
+) -> Result<OsString, Error> {
+    if let Some(value) = inline {
+        return Ok(value);
+    }
+    match rest.next() {
+        Some(value) if !value.to_string_lossy().starts_with("--") => Ok(value.clone()),
+        _ => Err(Error::new(flag, "missing value")),
+    }
+}
+
+fn parse_restrict(args: &[OsString]) -> Result<Command, Error> {
+    let mut input: Option<Option<PathBuf>> = None;
+    let mut arithmetic: Option<Arithmetic> = None;
+    let mut method: Option<MethodChoice> = None;
+    let mut rest = args.iter();
+    while let Some(arg) = rest.next() {
+        let (flag, inline) = split_flag(arg);
+        match flag.as_str() {
+            f if is_help(f) && inline.is_none() => return Ok(Command::Help(RESTRICT_HELP)),
+            "--input" => {
+                once(input.is_some(), "--input")?;
+                let value = take_value("--input", inline, &mut rest)?;
+                input = Some(match value.to_str() {
+                    Some("-") => None,
+                    Some("") => return Err(Error::new("--input", "empty file name")),
+                    _ => Some(PathBuf::from(value)),
+                });
+            }
+            "--arithmetic" => {
+                once(arithmetic.is_some(), "--arithmetic")?;
+                let value = take_value("--arithmetic", inline, &mut rest)?;
+                arithmetic = Some(match value.to_string_lossy().as_ref() {
+                    "exact" => Arithmetic::Exact,
+                    "f64" => Arithmetic::F64,
+                    other => {
+                        return Err(Error::new(
+                            "--arithmetic",
+                            format!(
+                                "unknown arithmetic {} (expected exact or f64)",
+                                quoted(other)
+                            ),
+                        ))
+                    }
+                });
+            }
+            "--method" => {
+                once(method.is_some(), "--method")?;
+                let value = take_value("--method", inline, &mut rest)?;
+                let name = value.to_string_lossy();
+                let Some((_, choice)) = METHOD_NAMES.iter().find(|(n, _)| *n == name) else {
+                    let names: Vec<&str> = METHOD_NAMES.iter().map(|(n, _)| *n).collect();
+                    return Err(Error::new(
+                        "--method",
+                        format!(
+                            "unknown method {} (expected {} or {})",
+                            quoted(&name),
+                            names[..names.len() - 1].join(", "),
+                            names[names.len() - 1]
+                        ),
+                    ));
+                };
+                method = Some(*choice);
+            }
+            f if f.starts_with('-') && f.len() > 1 => {
+                return Err(Error::new(
+                    f,
+                    "unknown option for restrict (expected --input, --arithmetic or --method)",
+                ))
+            }
+            f => {
+                return Err(Error::new(
+                    f,
+                    "unexpected argument for restrict (give the job file as --input FILE)",
+                ))
+            }
+        }
+    }
+    Ok(Command::Restrict(RestrictOptions {
+        input: input.unwrap_or(None),
+        arithmetic: arithmetic.unwrap_or(Arithmetic::Exact),
+        method: method.unwrap_or(MethodChoice::Library(Method::ClosedForm)),
+    }))
+}
+
+fn once(seen: bool, flag: &str) -> Result<(), Error> {
+    if seen {
+        Err(Error::new(flag, "given more than once"))
+    } else {
+        Ok(())
+    }
+}
+
+/// `text` as a JSON string literal, for messages.
+fn quoted(text: &str) -> String {
+    serde_json::to_string(text).unwrap_or_else(|_| String::from("\"?\""))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse_strs(args: &[&str]) -> Result<Command, Error> {
+        let args: Vec<OsString> = args.iter().map(OsString::from).collect();
+        parse(&args)
+    }
+
+    #[test]
+    fn defaults_and_values() {
+        assert_eq!(parse_strs(&[]).unwrap(), Command::Verify { json: false });
+        assert_eq!(
+            parse_strs(&["verify", "--json"]).unwrap(),
+            Command::Verify { json: true }
+        );
+        let Command::Restrict(o) = parse_strs(&["restrict"]).unwrap() else {
+            panic!("restrict")
+        };
+        assert_eq!(o.input, None);
+        assert_eq!(o.arithmetic, Arithmetic::Exact);
+        assert_eq!(o.method, MethodChoice::Library(Method::ClosedForm));
+        let Command::Restrict(o) = parse_strs(&[
+            "restrict",
+            "--method=bulk",
+            "--arithmetic",
+            "f64",
+            "--input",
+            "x.json",
+        ])
+        .unwrap() else {
+            panic!("restrict")
+        };
+        assert_eq!(o.input, Some(PathBuf::from("x.json")));
+        assert_eq!(o.arithmetic, Arithmetic::F64);
+        assert_eq!(o.method, MethodChoice::Library(Method::Bulk));
+    }
+
+    #[test]
+    fn errors_name_the_argument() {
+        let field = |args: &[&str]| parse_strs(args).unwrap_err().field;
+        assert_eq!(field(&["frob"]), "frob");
+        assert_eq!(field(&["restrict", "--frob"]), "--frob");
+        assert_eq!(field(&["restrict", "--input"]), "--input");
+        assert_eq!(
+            field(&["restrict", "--input", "--method", "bulk"]),
+            "--input"
+        );
+        assert_eq!(field(&["restrict", "--method", "x"]), "--method");
+        assert_eq!(field(&["restrict", "--arithmetic", "f32"]), "--arithmetic");
+        assert_eq!(
+            field(&["restrict", "--method", "bulk", "--method", "bulk"]),
+            "--method"
+        );
+        assert_eq!(field(&["restrict", "extra"]), "extra");
+        assert_eq!(field(&["verify", "--jsn"]), "--jsn");
+        assert_eq!(field(&["expand", "curve", "--x"]), "--x");
+    }
+
+    #[test]
+    fn expand_takes_its_words() {
+        assert_eq!(
+            parse_strs(&["expand", "tensor", "3", "2"]).unwrap(),
+            Command::Expand(vec!["tensor".into(), "3".into(), "2".into()])
+        );
+        assert_eq!(
+            parse_strs(&["expand", "--help"]).unwrap(),
+            Command::Help(EXPAND_HELP)
+        );
+    }
+}

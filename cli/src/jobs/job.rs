@@ -1,0 +1,359 @@
+//! Reading a job: from a parsed JSON document to a [`Job`] of the library's types, with the path
+//! of the offending field in every error (`coefficients[2]`, `interval`, `triangle[1][0]`).
+//!
+//! Fields are checked in this order: the top level is an object, `kind`, `coefficients`, then
+//! the domain (`interval`, `rectangle` or `triangle`); within an array, element by element.
+//! Fields that a kind does not use are ignored, so that newer jobs with extra fields still run
+//! on this version.
+//!
+//! To support a new kind, add an arm to [`parse_job`] (and remove the name from
+//! [`LATER_KINDS`]), a variant to [`Job`], and its computation in [`super::answer`].
+
+use crate::number::{json_type, JsonNumber};
+use blossom::Point;
+use blossom::{Error, PowerCurve, PowerSurface};
+use serde_json::{Map, Value};
+
+/// The kinds this version computes, as listed in messages.
+pub const KINDS: [&str; 3] = ["curve", "tensor", "triangle"];
+
+/// Kinds of the contract answered by [`super::spline_jobs`] (the command line dispatches them
+/// there before calling [`parse_job`], which refuses them as jobs of another module).
+pub const LATER_KINDS: [&str; 6] = [
+    "bezier-curve",
+    "bspline",
+    "bspline-eval",
+    "rational-curve",
+    "elevate",
+    "reduce",
+];
+
+/// A restriction job, read and checked.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Job<T> {
+    /// `"kind": "curve"`: C(u) on `interval = [a, b]`.
+    Curve {
+        /// C(u) = sum c_i u^i.
+        curve: PowerCurve<T>,
+        /// `[a, b]`.
+        interval: [T; 2],
+    },
+    /// `"kind": "tensor"`: S(u, v) on `rectangle = [a, b, c, d]`, i.e. [a, b] x [c, d].
+    Tensor {
+        /// S(u, v) = sum c_ij u^i v^j.
+        surface: PowerSurface<T>,
+        /// `[a, b, c, d]`.
+        rectangle: [T; 4],
+    },
+    /// `"kind": "triangle"`: S(u, v) of total degree n + m on the triangle with these corners.
+    Triangle {
+        /// S(u, v) = sum c_ij u^i v^j.
+        surface: PowerSurface<T>,
+        /// `[[a1, a2], [b1, b2], [c1, c2]]`.
+        triangle: [[T; 2]; 3],
+    },
+}
+
+/// `text` as a JSON string literal, for messages.
+fn quoted(text: &str) -> String {
+    serde_json::to_string(text).unwrap_or_else(|_| String::from("\"?\""))
+}
+
+/// Reads the job in `document`, the whole parsed input.
+pub fn parse_job<T: JsonNumber>(document: &Value) -> Result<Job<T>, Error> {
+    let Value::Object(job) = document else {
+        return Err(Error::new(
+            "input",
+            format!(
+                "expected a JSON object (a job), found {}",
+                json_type(document)
+            ),
+        ));
+    };
+    let kind = match field(job, "kind")? {
+        Value::String(kind) => kind.as_str(),
+        other => {
+            return Err(Error::new(
+                "kind",
+                format!("expected a string, found {}", json_type(other)),
+            ))
+        }
+    };
+    match kind {
+        "curve" => {
+            let coefficients = points(field(job, "coefficients")?, "coefficients", None)?;
+            let [a, b] = numbers::<T, 2>(field(job, "interval")?, "interval")?;
+            Ok(Job::Curve {
+                curve: PowerCurve::new(coefficients)?,
+                interval: [a, b],
+            })
+        }
+        "tensor" => Ok(Job::Tensor {
+            surface: grid(field(job, "coefficients")?)?,
+            rectangle: numbers::<T, 4>(field(job, "rectangle")?, "rectangle")?,
+        }),
+        "triangle" => {
+            let surface = grid(field(job, "coefficients")?)?;
+            let [a, b, c] = corners::<T, 3>(field(job, "triangle")?, "triangle")?;
+            Ok(Job::Triangle {
+                surface,
+                triangle: [a, b, c],
+            })
+        }
+        later if LATER_KINDS.contains(&later) => Err(Error::new(
+            "kind",
+            format!("{} is not supported by this version", quoted(later)),
+        )),
+        unknown => Err(Error::new(
+            "kind",
+            format!(
+                "unknown kind {} (expected one of {})",
+                quoted(unknown),
+                KINDS
+                    .iter()
+                    .chain(&LATER_KINDS)
+                    .copied()
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        )),
+    }
+}
+
+/// The value of a required field.
+pub(super) fn field<'a>(job: &'a Map<String, Value>, name: &str) -> Result<&'a Value, Error> {
+    job.get(name)
+        .ok_or_else(|| Error::new(name, "missing field"))
+}
+
+/// The elements of an array-valued field, or an error saying what was expected.
+pub(super) fn array<'a>(
+    value: &'a Value,
+    path: &str,
+    expected: &str,
+) -> Result<&'a [Value], Error> {
+    match value {
+        Value::Array(items) => Ok(items),
+        other => Err(Error::new(
+            path,
+            format!("expected {expected}, found {}", json_type(other)),
+        )),
+    }
+}
+
+/// One number at `path`.
+pub(super) fn number<T: JsonNumber>(value: &Value, path: &str) -> Result<T, Error> {
+    T::from_json(value).map_err(|message| Error::new(path, message))
+}
+
+/// Exactly `N` numbers at `path` (an interval or a rectangle).
+pub(super) fn numbers<T: JsonNumber, const N: usize>(
+    value: &Value,
+    path: &str,
+) -> Result<[T; N], Error> {
+    let items = array(value, path, &format!("an array of {N} numbers"))?;
+    if items.len() != N {
+        return Err(Error::new(
+            path,
+            format!("expected {N} numbers, found {}", items.len()),
+        ));
+    }
+    let parsed = items
+        .iter()
+        .enumerate()
+        .map(|(k, x)| number(x, &format!("{path}[{k}]")))
+        .collect::<Result<Vec<T>, Error>>()?;
+    parsed
+        .try_into()
+        .map_err(|_| Error::new(path, format!("expected {N} numbers")))
+}
+
+/// Exactly `N` corners of two coordinates each at `path` (a triangle).
+fn corners<T: JsonNumber, const N: usize>(value: &Value, path: &str) -> Result<[[T; 2]; N], Error> {
+    let items = array(value, path, &format!("an array of {N} corners"))?;
+    if items.len() != N {
+        return Err(Error::new(
+            path,
+            format!("expected {N} corners, found {}", items.len()),
+        ));
+    }
+    let mut out = Vec::with_capacity(N);
+    for (k, item) in items.iter().enumerate() {
+        let corner_path = format!("{path}[{k}]");
+        let coordinates = array(item, &corner_path, "a corner (an array of 2 numbers)")?;
+        if coordinates.len() != 2 {
+            return Err(Error::new(
+                &corner_path,
+                format!("expected 2 coordinates, found {}", coordinates.len()),
+            ));
+        }
+        out.push(numbers::<T, 2>(item, &corner_path)?);
+    }
+    out.try_into()
+        .map_err(|_| Error::new(path, format!("expected {N} corners")))
+}
+
+/// "1 coordinate", "3 coordinates".
+fn coordinates_count(d: usize) -> String {
+    if d == 1 {
+        String::from("1 coordinate")
+    } else {
+        format!("{d} coordinates")
+    }
+}
+
+/// A point (an array of numbers) at `path`; `dim` is the dimension of the job's points when
+/// known (the first point fixes it).
+fn point<T: JsonNumber>(value: &Value, path: &str, dim: Option<usize>) -> Result<Point<T>, Error> {
+    let coordinates = array(value, path, "a point (an array of numbers)")?;
+    match dim {
+        Some(d) if coordinates.len() != d => {
+            return Err(Error::new(
+                path,
+                format!(
+                    "expected {}, found {}",
+                    coordinates_count(d),
+                    coordinates.len()
+                ),
+            ))
+        }
+        None if coordinates.is_empty() => {
+            return Err(Error::new(path, "expected at least 1 coordinate, found 0"))
+        }
+        _ => {}
+    }
+    coordinates
+        .iter()
+        .enumerate()
+        .map(|(k, x)| number(x, &format!("{path}[{k}]")))
+        .collect()
+}
+
+/// A non-empty list of points of one dimension at `path` (the coefficients of a curve, or a
+/// row of a grid). `dim` as for [`point`].
+pub(super) fn points<T: JsonNumber>(
+    value: &Value,
+    path: &str,
+    dim: Option<usize>,
+) -> Result<Vec<Point<T>>, Error> {
+    let items = array(value, path, "an array of points")?;
+    if items.is_empty() {
+        return Err(Error::new(path, "expected at least one point, found none"));
+    }
+    let mut out: Vec<Point<T>> = Vec::with_capacity(items.len());
+    let mut dim = dim;
+    for (k, item) in items.iter().enumerate() {
+        let p = point(item, &format!("{path}[{k}]"), dim)?;
+        dim = Some(p.len());
+        out.push(p);
+    }
+    Ok(out)
+}
+
+/// The rectangular coefficient grid of a surface: `coefficients[i][j]` = c_ij.
+fn grid<T: JsonNumber>(value: &Value) -> Result<PowerSurface<T>, Error> {
+    let path = "coefficients";
+    let rows = array(value, path, "an array of rows of points")?;
+    if rows.is_empty() {
+        return Err(Error::new(path, "expected at least one row, found none"));
+    }
+    let mut out: Vec<Vec<Point<T>>> = Vec::with_capacity(rows.len());
+    let mut dim: Option<usize> = None;
+    for (i, row) in rows.iter().enumerate() {
+        let row_path = format!("{path}[{i}]");
+        let items = array(row, &row_path, "a row of points (an array)")?;
+        if let Some(first) = out.first() {
+            if items.len() != first.len() {
+                return Err(Error::new(
+                    &row_path,
+                    format!(
+                        "expected {} points (the grid must be rectangular), found {}",
+                        first.len(),
+                        items.len()
+                    ),
+                ));
+            }
+        }
+        let parsed = points(row, &row_path, dim)?;
+        dim = parsed.first().map(Vec::len);
+        out.push(parsed);
+    }
+    PowerSurface::new(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use blossom::Rational;
+    use serde_json::json;
+
+    fn error(job: Value) -> String {
+        parse_job::<Rational>(&job).unwrap_err().to_string()
+    }
+
+    #[test]
+    fn messages_name_the_field() {
+        assert_eq!(
+            error(
+                json!({"kind": "curve", "coefficients": [[1, 2, 3], [1, 2, 3], [1, 2]], "interval": [0, 1]})
+            ),
+            "coefficients[2]: expected 3 coordinates, found 2"
+        );
+        assert_eq!(
+            error(json!({"kind": "curve", "coefficients": [[1]], "interval": [0, 1, 2]})),
+            "interval: expected 2 numbers, found 3"
+        );
+        assert_eq!(
+            error(json!({"kind": "foo"})),
+            "kind: unknown kind \"foo\" (expected one of curve, tensor, triangle, bezier-curve, \
+             bspline, bspline-eval, rational-curve, elevate, reduce)"
+        );
+        assert_eq!(
+            error(json!({"kind": "bspline"})),
+            "kind: \"bspline\" is not supported by this version"
+        );
+        assert_eq!(
+            error(json!({"kind": "curve", "coefficients": [[1]]})),
+            "interval: missing field"
+        );
+        assert_eq!(
+            error(json!({"kind": "tensor", "coefficients": [[[1]]], "rectangle": [0, 1, 2, "x"]})),
+            "rectangle[3]: cannot read \"x\" as a number (expected an integer such as \"-7\", a \
+             fraction such as \"3/4\" or a decimal such as \"0.125\")"
+        );
+        assert_eq!(
+            error(
+                json!({"kind": "triangle", "coefficients": [[[1]]], "triangle": [[0, 0], [1, 0, 0], [0, 1]]})
+            ),
+            "triangle[1]: expected 2 coordinates, found 3"
+        );
+        assert_eq!(
+            error(
+                json!({"kind": "tensor", "coefficients": [[[1], [2]], [[3]]], "rectangle": [0, 1, 0, 1]})
+            ),
+            "coefficients[1]: expected 2 points (the grid must be rectangular), found 1"
+        );
+        assert_eq!(
+            error(
+                json!({"kind": "tensor", "coefficients": [[[1], [2]], [[3], [4, 5]]], "rectangle": [0, 1, 0, 1]})
+            ),
+            "coefficients[1][1]: expected 1 coordinate, found 2"
+        );
+        assert_eq!(
+            error(json!([1])),
+            "input: expected a JSON object (a job), found an array"
+        );
+    }
+
+    #[test]
+    fn extra_fields_are_ignored() {
+        let job = parse_job::<Rational>(&json!({
+            "kind": "curve", "coefficients": [["1/2"]], "interval": [0, 1], "comment": "x"
+        }))
+        .unwrap();
+        let Job::Curve { curve, .. } = job else {
+            panic!("curve")
+        };
+        assert_eq!(curve.degree(), 0);
+    }
+}

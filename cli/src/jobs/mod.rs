@@ -1,0 +1,267 @@
+//! The command-line front end of the `blossom` binary, per the contract in `cli.md`.
+//!
+//! * `blossom` and `blossom verify [--json]` print [`crate::verify::run_report`] and exit 0
+//!   when it is all reproduced or explained, 1 otherwise;
+//! * `blossom restrict [--input FILE] [--arithmetic exact|f64] [--method METHOD]` reads one job
+//!   ([`job`]), computes it ([`answer`]) and prints the answer as **one line** of compact JSON
+//!   followed by a newline, exit 0.
+//!
+//! Every failure is one line `error: FIELD: message` on standard error, where FIELD is the
+//! offending argument (`--method`) or the path of the offending JSON field (`coefficients[2]`,
+//! `interval`, `input` for the document as a whole), with exit code 2 and nothing on standard
+//! output: the whole answer is built in memory before anything is printed. Control characters
+//! in messages are escaped so that the error stays on one line.
+//!
+//! Nothing in the command line is meant to panic on any input. As a last-resort guard only,
+//! [`main`] runs everything under [`std::panic::catch_unwind`] with a silent panic hook and
+//! turns a panic into `error: internal: ...` with exit code 2.
+
+pub mod answer;
+pub mod args;
+pub mod job;
+pub mod specialised;
+pub mod spline_jobs;
+
+use crate::number::JsonNumber;
+use blossom::{Error, Rational};
+use args::{Arithmetic, Command, MethodChoice, RestrictOptions};
+use serde_json::Value;
+use std::ffi::OsString;
+use std::io::{Read, Write};
+use std::sync::Mutex;
+
+/// The exit code of bad input or bad arguments.
+pub const EXIT_BAD_INPUT: i32 = 2;
+
+/// What a run prints and returns.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Outcome {
+    /// The exit code.
+    pub code: i32,
+    /// Everything for standard output.
+    pub stdout: String,
+    /// Everything for standard error.
+    pub stderr: String,
+}
+
+impl Outcome {
+    fn success(stdout: String) -> Self {
+        Outcome {
+            code: 0,
+            stdout,
+            stderr: String::new(),
+        }
+    }
+
+    fn failure(error: &Error) -> Self {
+        Outcome {
+            code: EXIT_BAD_INPUT,
+            stdout: String::new(),
+            stderr: format!("error: {}\n", one_line(&error.to_string())),
+        }
+    }
+}
+
+/// `text` with control characters escaped (`\n`, `\u{1b}`), so that it prints as one line.
+fn one_line(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if c.is_control() {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// `text`, ending with exactly one newline when it is not empty.
+fn with_newline(mut text: String) -> String {
+    if !text.is_empty() && !text.ends_with('\n') {
+        text.push('\n');
+    }
+    text
+}
+
+/// Runs the command line `args` (without the program name), reading a job from `stdin` when
+/// needed. Prints nothing itself.
+pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
+    match args::parse(args) {
+        Err(error) => Outcome::failure(&error),
+        Ok(Command::Help(text)) => Outcome::success(text.to_string()),
+        Ok(Command::Version) => {
+            Outcome::success(format!("blossom {}\n", env!("CARGO_PKG_VERSION")))
+        }
+        Ok(Command::Verify { json }) => {
+            let (report, ok) = crate::verify::run_report(json);
+            Outcome {
+                code: if ok { 0 } else { 1 },
+                stdout: with_newline(report),
+                stderr: String::new(),
+            }
+        }
+        Ok(Command::Restrict(options)) => match restrict(&options, stdin) {
+            Ok(text) => Outcome::success(text),
+            Err(error) => Outcome::failure(&error),
+        },
+        Ok(Command::Expand(words)) => match crate::specialised::expand_command(&words) {
+            Ok(text) => Outcome::success(with_newline(text)),
+            Err(error) => Outcome::failure(&error),
+        },
+    }
+}
+
+/// `blossom restrict`: the answer's text, one line of JSON and a newline.
+fn restrict(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<String, Error> {
+    if options.method == MethodChoice::Specialised && !specialised::BUILT_IN {
+        return Err(Error::new("--method", specialised::NOT_BUILT_IN));
+    }
+    let bytes = read_input(options, stdin)?;
+    let document = parse_json(&bytes)?;
+    let answer = match options.arithmetic {
+        Arithmetic::Exact => solve::<Rational>(&document, options.method)?,
+        Arithmetic::F64 => solve::<f64>(&document, options.method)?,
+    };
+    let mut text = serde_json::to_string(&answer)
+        .map_err(|e| Error::new("internal", format!("cannot write the answer: {e}")))?;
+    text.push('\n');
+    Ok(text)
+}
+
+/// The bytes of the job: the `--input` file, or standard input.
+fn read_input(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<Vec<u8>, Error> {
+    let mut bytes = Vec::new();
+    match &options.input {
+        Some(path) => {
+            bytes = std::fs::read(path).map_err(|e| {
+                Error::new(
+                    "--input",
+                    format!("cannot read {:?}: {e}", path.display().to_string()),
+                )
+            })?;
+        }
+        None => {
+            stdin
+                .read_to_end(&mut bytes)
+                .map_err(|e| Error::new("input", format!("cannot read standard input: {e}")))?;
+        }
+    }
+    Ok(bytes)
+}
+
+/// Parses the input as one JSON document (a leading UTF-8 byte-order mark is skipped).
+fn parse_json(bytes: &[u8]) -> Result<Value, Error> {
+    let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
+    serde_json::from_slice(bytes).map_err(|e| {
+        let full = e.to_string();
+        let location = format!(" at line {} column {}", e.line(), e.column());
+        let message = full.strip_suffix(&location).unwrap_or(&full);
+        Error::new(
+            "input",
+            format!(
+                "invalid JSON at line {} column {}: {message}",
+                e.line(),
+                e.column()
+            ),
+        )
+    })
+}
+
+/// Reads, computes and writes the job in `document` in the arithmetic `T`.
+fn solve<T: JsonNumber + blossom::Field>(
+    document: &Value,
+    method: MethodChoice,
+) -> Result<Value, Error> {
+    if let Some((job, kind)) = spline_jobs::recognise(document) {
+        return spline_jobs::solve::<T>(job, kind, method);
+    }
+    let job = job::parse_job::<T>(document)?;
+    let answer = match method {
+        MethodChoice::Library(method) => answer::compute(&job, method),
+        MethodChoice::Specialised => match specialised::specialised(&job) {
+            Some(result) => result?,
+            None => return Err(Error::new("--method", specialised::NOT_BUILT_IN)),
+        },
+    };
+    answer::to_json(&answer)
+}
+
+/// Where the panic hook leaves the message of a panic for [`main`].
+static LAST_PANIC: Mutex<Option<String>> = Mutex::new(None);
+
+/// The binary's entry point: runs the process's command line, prints the outcome and returns
+/// the exit code. A panic (a bug, never expected) becomes `error: internal: ...`, exit 2.
+pub fn main() -> i32 {
+    let args: Vec<OsString> = std::env::args_os().skip(1).collect();
+    std::panic::set_hook(Box::new(|info| {
+        if let Ok(mut slot) = LAST_PANIC.lock() {
+            *slot = Some(info.to_string());
+        }
+    }));
+    let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        run(&args, &mut std::io::stdin().lock())
+    }))
+    .unwrap_or_else(|payload| {
+        let message = LAST_PANIC
+            .lock()
+            .ok()
+            .and_then(|mut slot| slot.take())
+            .or_else(|| payload.downcast_ref::<&str>().map(|s| s.to_string()))
+            .or_else(|| payload.downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| String::from("unknown panic"));
+        Outcome::failure(&Error::new("internal", message))
+    });
+    // Write errors (a closed pipe) are ignored: the exit code still tells the story.
+    let _ = std::io::stdout()
+        .lock()
+        .write_all(outcome.stdout.as_bytes());
+    let _ = std::io::stdout().flush();
+    let _ = std::io::stderr()
+        .lock()
+        .write_all(outcome.stderr.as_bytes());
+    outcome.code
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn run_with(args: &[&str], input: &str) -> Outcome {
+        let args: Vec<OsString> = args.iter().map(OsString::from).collect();
+        run(&args, &mut input.as_bytes())
+    }
+
+    #[test]
+    fn curve_answer_is_one_line() {
+        let out = run_with(
+            &["restrict"],
+            r#"{"kind": "curve", "coefficients": [[0], [0], [1]], "interval": [0, 1]}"#,
+        );
+        assert_eq!(out.code, 0, "{}", out.stderr);
+        assert_eq!(
+            out.stdout,
+            "{\"kind\":\"curve\",\"degree\":2,\"control_points\":[[\"0\"],[\"0\"],[\"1\"]]}\n"
+        );
+    }
+
+    #[test]
+    fn errors_are_one_line() {
+        let out = run_with(&["restrict"], "{\"kind\": \"a\\nb\"}");
+        assert_eq!(out.code, 2);
+        assert!(out.stdout.is_empty());
+        assert_eq!(out.stderr.lines().count(), 1, "{}", out.stderr);
+        assert_eq!(one_line("a\nb\u{1b}"), "a\\nb\\u{1b}");
+    }
+
+    #[test]
+    fn invalid_json_names_line_and_column() {
+        let out = run_with(&["restrict"], "{\n  \"kind\": }");
+        assert_eq!(out.code, 2);
+        assert!(
+            out.stderr
+                .starts_with("error: input: invalid JSON at line 2 column 11: "),
+            "{}",
+            out.stderr
+        );
+    }
+}

@@ -1,0 +1,603 @@
+//! Numbers at the edge of the crate: exact reading of the numbers of a JSON job and writing of
+//! the numbers of an answer, as the command-line contract (`cli.md`, section "Numbers") asks.
+//!
+//! # Input
+//!
+//! A number is a JSON integer of any size, or a JSON string in this grammar (no white space,
+//! no underscores, ASCII only):
+//!
+//! ```text
+//! number   = [sign] ( fraction | decimal )
+//! sign     = "+" | "-"
+//! fraction = digits "/" digits                      "3/4", "-22/7" (denominator unsigned, non-zero)
+//! decimal  = ( digits [ "." [digits] ] | "." digits ) [ ("e" | "E") [sign] digits ]
+//!                                                   "-7", "0.125", "-1e-3", "2.5E+3", ".5", "5."
+//! digits   = one or more of 0-9 (leading zeros allowed)
+//! ```
+//!
+//! Under exact arithmetic every such number is read exactly as a [`Rational`]; the decimal
+//! exponent is capped at [`MAX_EXPONENT`] in absolute value so that `"1e999999999"` is a clear
+//! error instead of an attempt to build a number with a billion digits (digits that are all
+//! zero are zero whatever the exponent: `"0e999999999"` is 0). `"inf"`, `"NaN"` and
+//! friends are rejected as non-finite; anything else is rejected as unparsable.
+//!
+//! A JSON number with a fraction part or an exponent (`0.1`, `1.0`, `1e3`) has already been
+//! rounded by whoever wrote it as a binary float, so exact arithmetic rejects it (write it as a
+//! string instead). Under `f64` it is accepted.
+//!
+//! Under `f64`, every input converts to the nearest double: decimals (and JSON numbers) by the
+//! correctly rounded standard parser, fractions by exact division rounded once. A value out of
+//! the range of `f64` (`"1e400"`) is an error, never an infinity; one too small to represent
+//! rounds to zero, as the nearest double does.
+//!
+//! # Output
+//!
+//! Exact numbers are JSON strings in lowest terms: `"p/q"` with `q > 1`, or `"p"` when the
+//! denominator is 1, the sign on the numerator, zero as `"0"`. Doubles are JSON numbers; a
+//! non-finite result is an error (JSON has no infinities, and `null` would be a lie), and
+//! `-0.0` is written as `0.0`.
+//!
+//! Error messages here name no field: the caller prefixes the path of the offending value.
+
+use blossom::rational_to_f64;
+use blossom::Rational;
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{One, Signed, Zero};
+use serde_json::Value;
+
+/// The largest decimal exponent (in absolute value) that exact reading accepts: `1e100000` has
+/// 100001 digits, about 41 KB as a big integer.
+pub const MAX_EXPONENT: u64 = 100_000;
+
+/// How many characters of an offending text an error message quotes.
+const QUOTE_LIMIT: usize = 40;
+
+/// A number type that jobs can be read into and answers written from: the arithmetic of the
+/// command line. Implemented by [`Rational`] (`exact`) and `f64`.
+pub trait JsonNumber: crate::specialised::Carried {
+    /// The name of the arithmetic on the command line (`exact`, `f64`).
+    const ARITHMETIC: &'static str;
+
+    /// Reads a number from a JSON value (see the module documentation for the rules).
+    fn from_json(value: &Value) -> Result<Self, String>;
+
+    /// Writes a number of an answer as a JSON value.
+    fn to_json(&self) -> Result<Value, String>;
+}
+
+impl JsonNumber for Rational {
+    const ARITHMETIC: &'static str = "exact";
+
+    fn from_json(value: &Value) -> Result<Self, String> {
+        rational_from_json(value)
+    }
+
+    fn to_json(&self) -> Result<Value, String> {
+        format_rational(self).map(Value::String)
+    }
+}
+
+impl JsonNumber for f64 {
+    const ARITHMETIC: &'static str = "f64";
+
+    fn from_json(value: &Value) -> Result<Self, String> {
+        f64_from_json(value)
+    }
+
+    fn to_json(&self) -> Result<Value, String> {
+        f64_to_json(*self)
+    }
+}
+
+/// The shape of a number written as text, after checking the grammar, with its pieces.
+#[derive(Debug, PartialEq, Eq)]
+enum Syntax<'a> {
+    /// `[sign] digits "/" digits`.
+    Fraction {
+        negative: bool,
+        numerator: &'a str,
+        denominator: &'a str,
+    },
+    /// `[sign] int [. frac] [e exp]`: the value is `int.frac * 10^exp` (either digit string
+    /// may be empty, not both).
+    Decimal {
+        negative: bool,
+        int: &'a str,
+        frac: &'a str,
+        exponent_negative: bool,
+        exponent: &'a str,
+    },
+}
+
+/// The JSON type of a value, for messages.
+pub fn json_type(value: &Value) -> &'static str {
+    match value {
+        Value::Null => "null",
+        Value::Bool(_) => "a boolean",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "an array",
+        Value::Object(_) => "an object",
+    }
+}
+
+/// `text` as a JSON string literal for a message, shortened when long.
+fn quote(text: &str) -> String {
+    let mut chars = text.chars();
+    let head: String = chars.by_ref().take(QUOTE_LIMIT).collect();
+    let shown = if chars.next().is_some() {
+        format!("{head}...")
+    } else {
+        head
+    };
+    serde_json::to_string(&shown).unwrap_or_else(|_| String::from("\"?\""))
+}
+
+/// Splits off a leading `+` or `-`.
+fn split_sign(text: &str) -> (bool, &str) {
+    match text.as_bytes().first() {
+        Some(b'-') => (true, &text[1..]),
+        Some(b'+') => (false, &text[1..]),
+        _ => (false, text),
+    }
+}
+
+fn all_digits(s: &str) -> bool {
+    s.bytes().all(|b| b.is_ascii_digit())
+}
+
+/// The message for a text that is not a number of the grammar.
+fn unparsable(text: &str) -> String {
+    if text.is_empty() {
+        return String::from("expected a number, found an empty string");
+    }
+    let (_, body) = split_sign(text);
+    let lower = body.to_ascii_lowercase();
+    if ["inf", "infinity", "nan"].contains(&lower.as_str()) {
+        return format!("{} is not a finite number", quote(text));
+    }
+    format!(
+        "cannot read {} as a number (expected an integer such as \"-7\", a fraction such as \
+         \"3/4\" or a decimal such as \"0.125\")",
+        quote(text)
+    )
+}
+
+/// Checks `text` against the grammar of the module documentation.
+fn scan(text: &str) -> Result<Syntax<'_>, String> {
+    let (negative, body) = split_sign(text);
+    if let Some((numerator, denominator)) = body.split_once('/') {
+        let ok = !numerator.is_empty()
+            && !denominator.is_empty()
+            && all_digits(numerator)
+            && all_digits(denominator);
+        return if ok {
+            Ok(Syntax::Fraction {
+                negative,
+                numerator,
+                denominator,
+            })
+        } else {
+            Err(unparsable(text))
+        };
+    }
+    let (mantissa, exponent_part) = match body.find(['e', 'E']) {
+        Some(k) => (&body[..k], Some(&body[k + 1..])),
+        None => (body, None),
+    };
+    let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let mantissa_ok = all_digits(int) && all_digits(frac) && !(int.is_empty() && frac.is_empty());
+    let (exponent_negative, exponent) = match exponent_part {
+        Some(e) => split_sign(e),
+        None => (false, ""),
+    };
+    let exponent_ok = match exponent_part {
+        Some(_) => !exponent.is_empty() && all_digits(exponent),
+        None => true,
+    };
+    if mantissa_ok && exponent_ok {
+        Ok(Syntax::Decimal {
+            negative,
+            int,
+            frac,
+            exponent_negative,
+            exponent,
+        })
+    } else {
+        Err(unparsable(text))
+    }
+}
+
+/// A non-empty string of ASCII digits as a big integer.
+fn digits_to_bigint(digits: &str) -> BigInt {
+    if digits.is_empty() {
+        return BigInt::zero();
+    }
+    // The digits were checked by `scan`, so parsing cannot fail; zero is a safe fallback.
+    digits.parse::<BigInt>().unwrap_or_default()
+}
+
+/// The value of an exponent's digits, or `None` when it exceeds [`MAX_EXPONENT`].
+fn small_exponent(digits: &str) -> Option<u64> {
+    let mut value: u64 = 0;
+    for b in digits.bytes() {
+        value = value.checked_mul(10)?.checked_add(u64::from(b - b'0'))?;
+        if value > MAX_EXPONENT {
+            return None;
+        }
+    }
+    Some(value)
+}
+
+/// Reads a number written as text (see the module documentation) exactly.
+///
+/// ```
+/// use blossom::number::{format_rational, parse_rational};
+/// let q = parse_rational("-2.5e-1").unwrap();
+/// assert_eq!(format_rational(&q).unwrap(), "-1/4");
+/// assert!(parse_rational("1/0").is_err());
+/// ```
+pub fn parse_rational(text: &str) -> Result<Rational, String> {
+    match scan(text)? {
+        Syntax::Fraction {
+            negative,
+            numerator,
+            denominator,
+        } => {
+            let den = digits_to_bigint(denominator);
+            if den.is_zero() {
+                return Err(format!("zero denominator in {}", quote(text)));
+            }
+            let num = digits_to_bigint(numerator);
+            let q = Rational::new(num, den);
+            Ok(if negative { -q } else { q })
+        }
+        Syntax::Decimal {
+            negative,
+            int,
+            frac,
+            exponent_negative,
+            exponent,
+        } => {
+            if int.bytes().chain(frac.bytes()).all(|d| d == b'0') {
+                // Zero times any power of ten, however large the exponent.
+                return Ok(Rational::zero());
+            }
+            let Some(e) = small_exponent(exponent) else {
+                return Err(format!(
+                    "the exponent of {} is too large (at most {MAX_EXPONENT} in absolute value)",
+                    quote(text)
+                ));
+            };
+            // value = (int frac) * 10^(±e - frac.len())
+            let mut digits = String::with_capacity(int.len() + frac.len());
+            digits.push_str(int);
+            digits.push_str(frac);
+            let mantissa = digits_to_bigint(&digits);
+            let frac_len = frac.len() as u64;
+            let (scale_up, power) = if exponent_negative {
+                (false, e + frac_len)
+            } else if e >= frac_len {
+                (true, e - frac_len)
+            } else {
+                (false, frac_len - e)
+            };
+            let ten_power = power_of_ten(power);
+            let q = if scale_up {
+                Rational::from_integer(mantissa * ten_power)
+            } else {
+                Rational::new(mantissa, ten_power)
+            };
+            Ok(if negative { -q } else { q })
+        }
+    }
+}
+
+/// `10^k` as a big integer.
+fn power_of_ten(k: u64) -> BigInt {
+    let mut result = BigInt::one();
+    let mut base = BigInt::from(10u32);
+    let mut k = k;
+    while k > 0 {
+        if k & 1 == 1 {
+            result *= &base;
+        }
+        k >>= 1;
+        if k > 0 {
+            base = &base * &base;
+        }
+    }
+    result
+}
+
+/// Reads a number written as text (see the module documentation) as the nearest `f64`.
+///
+/// ```
+/// use blossom::number::parse_f64;
+/// assert_eq!(parse_f64("1/3").unwrap(), 1.0 / 3.0);
+/// assert_eq!(parse_f64("0.1").unwrap(), 0.1);
+/// assert!(parse_f64("1e400").is_err());
+/// ```
+pub fn parse_f64(text: &str) -> Result<f64, String> {
+    let value = match scan(text)? {
+        Syntax::Fraction { .. } => rational_to_f64(&parse_rational(text)?),
+        // The grammar is a subset of the standard parser's, which rounds correctly and copes
+        // with any exponent (huge ones overflow to infinity, caught below).
+        Syntax::Decimal { .. } => text.parse::<f64>().map_err(|_| unparsable(text))?,
+    };
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(format!("{} is out of the range of f64", quote(text)))
+    }
+}
+
+/// The text of a JSON number (its exact spelling, kept by `arbitrary_precision`).
+fn number_text(n: &serde_json::Number) -> String {
+    n.to_string()
+}
+
+/// Whether the text of a JSON number has a fraction part or an exponent.
+fn is_json_integer(text: &str) -> bool {
+    !text.contains(['.', 'e', 'E'])
+}
+
+/// Reads a number of a JSON job exactly: a JSON integer, or a string of the grammar.
+pub fn rational_from_json(value: &Value) -> Result<Rational, String> {
+    match value {
+        Value::Number(n) => {
+            let text = number_text(n);
+            if !is_json_integer(&text) {
+                return Err(format!(
+                    "the JSON number {} has a fraction part or exponent, so it is already \
+                     rounded; write it as a string (\"{}\") to read it exactly, or use \
+                     --arithmetic f64",
+                    shorten(&text),
+                    shorten(&text)
+                ));
+            }
+            parse_rational(&text)
+        }
+        Value::String(s) => parse_rational(s),
+        other => Err(not_a_number(other)),
+    }
+}
+
+/// Reads a number of a JSON job as the nearest `f64`: any JSON number, or a string of the
+/// grammar.
+pub fn f64_from_json(value: &Value) -> Result<f64, String> {
+    match value {
+        Value::Number(n) => parse_f64(&number_text(n)),
+        Value::String(s) => parse_f64(s),
+        other => Err(not_a_number(other)),
+    }
+}
+
+/// A JSON number's text, shortened for a message.
+fn shorten(text: &str) -> String {
+    let q = quote(text);
+    q[1..q.len() - 1].to_string()
+}
+
+fn not_a_number(value: &Value) -> String {
+    format!(
+        "expected a number (a JSON integer or a string such as \"3/4\"), found {}",
+        json_type(value)
+    )
+}
+
+/// Writes an exact number in lowest terms: `"p/q"` with `q > 1`, `"p"` when `q = 1`, the sign
+/// on the numerator, zero as `"0"`. Fails only on a zero denominator, which arithmetic never
+/// produces.
+pub fn format_rational(q: &Rational) -> Result<String, String> {
+    let (numer, denom) = (q.numer(), q.denom());
+    if denom.is_zero() {
+        return Err(String::from("not a number (zero denominator)"));
+    }
+    if numer.is_zero() {
+        return Ok(String::from("0"));
+    }
+    let g = numer.gcd(denom);
+    let (mut p, mut d) = (numer / &g, denom / &g);
+    if d.is_negative() {
+        p = -p;
+        d = -d;
+    }
+    Ok(if d.is_one() {
+        p.to_string()
+    } else {
+        format!("{p}/{d}")
+    })
+}
+
+/// Writes a double as a JSON number; a non-finite value is an error, `-0.0` becomes `0.0`.
+pub fn f64_to_json(x: f64) -> Result<Value, String> {
+    let x = if x == 0.0 { 0.0 } else { x };
+    serde_json::Number::from_f64(x)
+        .map(Value::Number)
+        .ok_or_else(|| {
+            format!(
+                "the result {x} is not finite in f64 arithmetic (overflow or an invalid \
+                 operation); try --arithmetic exact"
+            )
+        })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::json;
+
+    fn q(n: i64, d: i64) -> Rational {
+        Rational::new(BigInt::from(n), BigInt::from(d))
+    }
+
+    fn exact(text: &str) -> String {
+        format_rational(&parse_rational(text).unwrap()).unwrap()
+    }
+
+    #[test]
+    fn integers_of_any_size() {
+        assert_eq!(exact("-7"), "-7");
+        assert_eq!(exact("+7"), "7");
+        assert_eq!(exact("007"), "7");
+        assert_eq!(exact("-0"), "0");
+        let big = "123456789012345678901234567890123456789012345678901234567890";
+        assert_eq!(exact(big), big);
+        let v: Value = serde_json::from_str(&format!("[{big}, -{big}]")).unwrap();
+        assert_eq!(
+            format_rational(&rational_from_json(&v[0]).unwrap()).unwrap(),
+            big
+        );
+        assert_eq!(
+            format_rational(&rational_from_json(&v[1]).unwrap()).unwrap(),
+            format!("-{big}")
+        );
+    }
+
+    #[test]
+    fn fractions_in_lowest_terms() {
+        assert_eq!(exact("3/4"), "3/4");
+        assert_eq!(exact("-22/7"), "-22/7");
+        assert_eq!(exact("6/8"), "3/4");
+        assert_eq!(exact("-6/3"), "-2");
+        assert_eq!(exact("0/5"), "0");
+        assert_eq!(parse_rational("-10/4").unwrap(), q(-5, 2));
+    }
+
+    #[test]
+    fn decimals_read_exactly() {
+        assert_eq!(exact("0.125"), "1/8");
+        assert_eq!(exact("-1e-3"), "-1/1000");
+        assert_eq!(exact("2.5E+3"), "2500");
+        assert_eq!(exact(".5"), "1/2");
+        assert_eq!(exact("5."), "5");
+        assert_eq!(exact("0.1"), "1/10");
+        assert_eq!(exact("1.50e1"), "15");
+        assert_eq!(exact("12.345e-2"), "2469/20000");
+        assert_eq!(exact("0e100000"), "0");
+        assert_eq!(exact("1e-100000").len(), 2 + 100_001);
+    }
+
+    #[test]
+    fn bad_text_is_an_error() {
+        for bad in [
+            "", "inf", "-inf", "Infinity", "NaN", "nan", "1/", "/2", "abc", "1/2/3", "1.2.3", "e5",
+            "1e", "1e+", ".", "-", "+", " 1", "1 ", "0x10", "1_000", "1/-2", "--1", "1.5/2", "١",
+        ] {
+            assert!(parse_rational(bad).is_err(), "{bad:?} should be rejected");
+            assert!(
+                parse_f64(bad).is_err(),
+                "{bad:?} should be rejected under f64"
+            );
+        }
+        assert!(parse_rational("inf")
+            .unwrap_err()
+            .contains("not a finite number"));
+        assert!(parse_rational("abc")
+            .unwrap_err()
+            .contains("cannot read \"abc\""));
+        assert!(parse_rational("").unwrap_err().contains("empty string"));
+    }
+
+    #[test]
+    fn zero_denominator_is_an_error() {
+        for bad in ["1/0", "0/0", "-3/000"] {
+            assert!(
+                parse_rational(bad)
+                    .unwrap_err()
+                    .contains("zero denominator"),
+                "{bad}"
+            );
+            assert!(
+                parse_f64(bad).unwrap_err().contains("zero denominator"),
+                "{bad}"
+            );
+        }
+    }
+
+    #[test]
+    fn huge_exponents_are_capped_under_exact() {
+        let e = parse_rational("1e999999999").unwrap_err();
+        assert!(e.contains("exponent") && e.contains("100000"), "{e}");
+        assert!(parse_rational("1e-999999999999999999999999").is_err());
+        assert!(parse_rational("1e100000").is_ok());
+        assert!(parse_rational("1e100001").is_err());
+        assert!(parse_rational("0.000e999999999").unwrap().is_zero());
+        assert!(parse_rational("-0e-999999999").unwrap().is_zero());
+        // Under f64 the standard parser copes: overflow is an error, underflow rounds to 0.
+        assert!(parse_f64("1e999999999")
+            .unwrap_err()
+            .contains("out of the range"));
+        assert_eq!(parse_f64("1e-999999999").unwrap(), 0.0);
+    }
+
+    #[test]
+    fn json_values() {
+        let v = json!([3, "3/4", 0.5, true, null, [1], {"a": 1}]);
+        assert_eq!(rational_from_json(&v[0]).unwrap(), q(3, 1));
+        assert_eq!(rational_from_json(&v[1]).unwrap(), q(3, 4));
+        let e = rational_from_json(&v[2]).unwrap_err();
+        assert!(
+            e.contains("already rounded") && e.contains("\"0.5\""),
+            "{e}"
+        );
+        assert_eq!(f64_from_json(&v[2]).unwrap(), 0.5);
+        for k in 3..7 {
+            assert!(rational_from_json(&v[k])
+                .unwrap_err()
+                .starts_with("expected a number"));
+            assert!(f64_from_json(&v[k]).is_err());
+        }
+        let parsed: Value = serde_json::from_str("[1.0, 1e3, 1E-2, 1e400]").unwrap();
+        for k in 0..3 {
+            assert!(rational_from_json(&parsed[k]).is_err());
+        }
+        assert_eq!(f64_from_json(&parsed[1]).unwrap(), 1000.0);
+        assert_eq!(f64_from_json(&parsed[2]).unwrap(), 0.01);
+        assert!(f64_from_json(&parsed[3]).is_err());
+    }
+
+    #[test]
+    fn f64_reading_is_nearest() {
+        assert_eq!(parse_f64("1/3").unwrap(), 1.0 / 3.0);
+        assert_eq!(parse_f64("-22/7").unwrap(), -22.0 / 7.0);
+        assert_eq!(parse_f64("0.1").unwrap(), 0.1);
+        assert_eq!(parse_f64("-7").unwrap(), -7.0);
+        assert_eq!(parse_f64(".5").unwrap(), 0.5);
+        // 2^53 + 1 rounds to even.
+        assert_eq!(parse_f64("9007199254740993").unwrap(), 9007199254740992.0);
+        // A fraction of huge integers is rounded once.
+        let big = format!("1{}/1{}", "0".repeat(400), "0".repeat(399));
+        assert_eq!(parse_f64(&big).unwrap(), 10.0);
+        assert!(parse_f64(&format!("1{}/3", "0".repeat(400))).is_err());
+    }
+
+    #[test]
+    fn formatting() {
+        assert_eq!(format_rational(&q(0, 7)).unwrap(), "0");
+        assert_eq!(format_rational(&q(4, -6)).unwrap(), "-2/3");
+        assert_eq!(format_rational(&q(9, 3)).unwrap(), "3");
+        // A non-normalised value (as from `new_raw`) is still written in lowest terms.
+        let raw = Rational::new_raw(BigInt::from(6), BigInt::from(-4));
+        assert_eq!(format_rational(&raw).unwrap(), "-3/2");
+        let zero_den = Rational::new_raw(BigInt::from(1), BigInt::from(0));
+        assert!(format_rational(&zero_den).is_err());
+        assert_eq!(f64_to_json(0.5).unwrap().to_string(), "0.5");
+        assert_eq!(f64_to_json(-0.0).unwrap().to_string(), "0.0");
+        assert!(f64_to_json(f64::INFINITY).is_err());
+        assert!(f64_to_json(f64::NAN).is_err());
+        assert_eq!(
+            Rational::from_json(&json!("-22/7"))
+                .unwrap()
+                .to_json()
+                .unwrap(),
+            json!("-22/7")
+        );
+        assert_eq!(
+            f64::from_json(&json!("1/4")).unwrap().to_json().unwrap(),
+            json!(0.25)
+        );
+    }
+}

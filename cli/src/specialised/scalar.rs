@@ -1,0 +1,195 @@
+//! [`Scalar`]: the one ring the carried grid is instantiated with.
+//!
+//! The generated evaluators are generic over [`Ring`]; instantiating the whole grid once per
+//! number type (f64, exact rationals, symbolic polynomials) would compile it three times. The
+//! dispatch instead wraps every number type in `Scalar` and instantiates each evaluator once.
+//! The price is a `match` and a call per ring operation, which only the command line and the
+//! proofs pay: code that knows its number type and dimension at compile time calls the
+//! generated functions directly (see [`super::grid`]) or generates its own with the macro.
+//!
+//! The operations are kept out of line (`#[inline(never)]`): a generated evaluator is one long
+//! straight-line function, and inlining arithmetic into each of its thousands of call sites
+//! makes its build superlinear.
+//!
+//! Constants: generated code builds constants from [`Ring::one`] (e.g. `T::one().scale_frac(1,
+//! 2)`), which cannot know the caller's number type, so they are [`Scalar::Exact`]. An operation
+//! on two variants promotes the exact operand to the other's type (exact < f64, exact <
+//! symbolic), the way an untyped literal takes the type of the expression it appears in; every
+//! combination is defined, none panics.
+
+use blossom::rational_to_f64;
+use blossom::{Poly, Rational, Ring};
+use num_traits::FromPrimitive;
+
+/// A number of one of the crate's number types.
+#[derive(Clone, PartialEq, Debug)]
+pub enum Scalar {
+    /// An exact rational: an input in exact arithmetic, or a constant of the generated code.
+    Exact(Rational),
+    /// A double.
+    F64(f64),
+    /// A symbolic polynomial.
+    Symbolic(Poly),
+}
+
+/// A number type that the carried grid runs on: wrapped in and unwrapped from [`Scalar`].
+pub trait Carried: Ring {
+    /// `self` as a scalar.
+    fn wrap(&self) -> Scalar;
+    /// The value of `s` in this type (exact constants are converted).
+    fn unwrap(s: Scalar) -> Self;
+}
+
+impl Carried for f64 {
+    fn wrap(&self) -> Scalar {
+        Scalar::F64(*self)
+    }
+    fn unwrap(s: Scalar) -> f64 {
+        match s {
+            Scalar::F64(x) => x,
+            Scalar::Exact(k) => rational_to_f64(&k),
+            // Never produced from f64 inputs; the constant term is the only value it can have.
+            Scalar::Symbolic(p) => rational_to_f64(&p.constant_term()),
+        }
+    }
+}
+
+impl Carried for Rational {
+    fn wrap(&self) -> Scalar {
+        Scalar::Exact(self.clone())
+    }
+    fn unwrap(s: Scalar) -> Rational {
+        match s {
+            Scalar::Exact(k) => k,
+            // Never produced from exact inputs; converted exactly when they are.
+            Scalar::F64(x) => exact(x),
+            Scalar::Symbolic(p) => p.constant_term(),
+        }
+    }
+}
+
+impl Carried for Poly {
+    fn wrap(&self) -> Scalar {
+        Scalar::Symbolic(self.clone())
+    }
+    fn unwrap(s: Scalar) -> Poly {
+        match s {
+            Scalar::Symbolic(p) => p,
+            Scalar::Exact(k) => Poly::constant(k),
+            Scalar::F64(x) => Poly::constant(exact(x)),
+        }
+    }
+}
+
+/// The exact value of a finite double (zero for a non-finite one, which has no exact value).
+fn exact(x: f64) -> Rational {
+    Rational::from_f64(x).unwrap_or_default()
+}
+
+/// Applies `op` after promoting both operands to a common type.
+fn promote(
+    lhs: &Scalar,
+    rhs: &Scalar,
+    exact_op: fn(&Rational, &Rational) -> Rational,
+    f64_op: fn(&f64, &f64) -> f64,
+    poly_op: fn(&Poly, &Poly) -> Poly,
+) -> Scalar {
+    use Scalar::{Exact, Symbolic, F64};
+    match (lhs, rhs) {
+        (Exact(x), Exact(y)) => Exact(exact_op(x, y)),
+        (F64(x), F64(y)) => F64(f64_op(x, y)),
+        (Symbolic(x), Symbolic(y)) => Symbolic(poly_op(x, y)),
+        (F64(x), Exact(y)) => F64(f64_op(x, &rational_to_f64(y))),
+        (Exact(x), F64(y)) => F64(f64_op(&rational_to_f64(x), y)),
+        (Symbolic(_), _) | (_, Symbolic(_)) => Symbolic(poly_op(
+            &Poly::unwrap(lhs.clone()),
+            &Poly::unwrap(rhs.clone()),
+        )),
+    }
+}
+
+impl Ring for Scalar {
+    fn zero() -> Self {
+        Scalar::Exact(<Rational as Ring>::zero())
+    }
+    fn one() -> Self {
+        Scalar::Exact(<Rational as Ring>::one())
+    }
+    #[inline(never)]
+    fn add(&self, rhs: &Self) -> Self {
+        promote(self, rhs, Ring::add, Ring::add, Ring::add)
+    }
+    #[inline(never)]
+    fn sub(&self, rhs: &Self) -> Self {
+        promote(self, rhs, Ring::sub, Ring::sub, Ring::sub)
+    }
+    #[inline(never)]
+    fn mul(&self, rhs: &Self) -> Self {
+        promote(self, rhs, Ring::mul, Ring::mul, Ring::mul)
+    }
+    #[inline(never)]
+    fn neg(&self) -> Self {
+        match self {
+            Scalar::Exact(x) => Scalar::Exact(x.neg()),
+            Scalar::F64(x) => Scalar::F64(-x),
+            Scalar::Symbolic(x) => Scalar::Symbolic(x.neg()),
+        }
+    }
+    #[inline(never)]
+    fn scale(&self, k: &Rational) -> Self {
+        match self {
+            Scalar::Exact(x) => Scalar::Exact(x.scale(k)),
+            Scalar::F64(x) => Scalar::F64(x.scale(k)),
+            Scalar::Symbolic(x) => Scalar::Symbolic(x.scale(k)),
+        }
+    }
+    #[inline(never)]
+    fn scale_frac(&self, num: i128, den: i128) -> Self {
+        match self {
+            Scalar::Exact(x) => Scalar::Exact(x.scale_frac(num, den)),
+            Scalar::F64(x) => Scalar::F64(x.scale_frac(num, den)),
+            Scalar::Symbolic(x) => Scalar::Symbolic(x.scale_frac(num, den)),
+        }
+    }
+    #[inline(never)]
+    fn is_zero(&self) -> bool {
+        match self {
+            Scalar::Exact(x) => Ring::is_zero(x),
+            Scalar::F64(x) => Ring::is_zero(x),
+            Scalar::Symbolic(x) => Ring::is_zero(x),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(n: i64, d: i64) -> Rational {
+        Rational::new(n.into(), d.into())
+    }
+
+    #[test]
+    fn constants_take_the_type_of_the_other_operand() {
+        let half = Scalar::one().scale_frac(1, 2);
+        assert_eq!(half, Scalar::Exact(q(1, 2)));
+        assert_eq!(half.mul(&3.0.wrap()), Scalar::F64(1.5));
+        assert_eq!(q(3, 1).wrap().mul(&half), Scalar::Exact(q(3, 2)));
+        let x = Poly::var("x");
+        let got = Poly::unwrap(half.mul(&x.wrap()).add(&Scalar::one()));
+        assert_eq!(got, x.scale(&q(1, 2)).add(&Poly::one()));
+        assert_eq!(f64::unwrap(Scalar::Exact(q(1, 4))), 0.25);
+        assert_eq!(Rational::unwrap(Scalar::F64(0.375)), q(3, 8));
+    }
+
+    #[test]
+    fn each_type_keeps_its_arithmetic() {
+        // 0.1 + 0.2 rounds in f64 and is exact in rationals.
+        let f = f64::unwrap(0.1.wrap().add(&0.2.wrap()));
+        assert_eq!(f, 0.1 + 0.2);
+        let r = Rational::unwrap(q(1, 10).wrap().add(&q(2, 10).wrap()));
+        assert_eq!(r, q(3, 10));
+        assert!(Scalar::F64(1.0).sub(&Scalar::F64(1.0)).is_zero());
+        assert_eq!(Scalar::F64(2.0).neg(), Scalar::F64(-2.0));
+    }
+}

@@ -1,0 +1,18 @@
+//! B-spline curves through blossoms (seed 002): validated knot vectors, de Boor points as
+//! blossom values of the polynomial pieces (Theorem 2.2), de Boor's algorithm as blossom
+//! evaluation (Theorem 2.3), piecewise polynomials as B-splines (Curry-Schoenberg, Theorem 2.4),
+//! knot insertion and the split into Bézier pieces; and, independently of blossoms, the
+//! normalised B-splines by their recursive definition (Definition 1.1) as a cross-check.
+//!
+//! Knots and points share one number type, a [`Field`](crate::num::linalg::Field): exact
+//! [`Rational`](crate::Rational) or `f64`.
+
+pub(crate) mod bspline;
+pub(crate) mod cox_de_boor;
+pub(crate) mod curry_schoenberg;
+pub(crate) mod knots;
+
+pub use bspline::{BSpline, BezierPiece};
+pub use cox_de_boor::{basis_on_span, PowerPiece};
+pub use curry_schoenberg::{continuity, from_pieces, from_pieces_with_knots, Piece};
+pub use knots::KnotVector;

@@ -1,0 +1,8 @@
+//! Numbers: the [`Ring`](crate::Ring) trait every algorithm is written against, its
+//! [`Field`](crate::Field) refinement, exact binomials, symbolic polynomials and exact linear
+//! algebra. This layer imports nothing else of the crate but the error type.
+
+pub(crate) mod binomial;
+pub(crate) mod linalg;
+pub(crate) mod poly;
+pub(crate) mod ring;

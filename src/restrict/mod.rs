@@ -1,0 +1,110 @@
+//! Restriction of a power-basis curve or surface to an interval, a rectangle or a triangle:
+//! the Bézier object that describes the same polynomial there, by one of several algorithms
+//! that never compute through one another.
+//!
+//! | module | curves | tensor patches | triangles |
+//! |---|---|---|---|
+//! | [`definition`] (subset sums) | eq. (2) | eqs. (7)-(8) | eq. (13) |
+//! | [`closed_form`] (per control point) | Theorem 1, eq. (3) | Theorem 2, eq. (9) | Theorem 3, eq. (14) |
+//! | [`pyramid`] (de Casteljau) | eq. (2) of 004 | eq. (9) of 004 | barycentric steps |
+//! | [`polarisation`] (inverse formula) | eqs. (20), (22) of 004 | two passes | eqs. (21), (23) of 004 |
+//! | [`bulk`] (Taylor shift) | shift + Bernstein | along u, then v | 2-D shift, Horner, Bernstein |
+//!
+//! The dispatch on [`Method`] is this module's one job; each algorithm is a file of its own and
+//! none calls another.
+
+pub(crate) mod bulk;
+pub(crate) mod closed_form;
+pub(crate) mod definition;
+pub(crate) mod nets;
+pub(crate) mod polarisation;
+pub(crate) mod pyramid;
+
+use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
+use crate::shape::power::{PowerCurve, PowerSurface};
+use crate::Ring;
+
+/// Which algorithm computes a restriction. All give the identical exact answer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Method {
+    /// All control points at once by changes of variable and basis (the default).
+    Bulk,
+    /// The closed forms (3), (9), (14), one control point at a time.
+    ClosedForm,
+    /// The subset-sum definitions (2), (8), (13) at every control point.
+    Definition,
+    /// The pyramid (de Casteljau) on the Bernstein form over the reference domain.
+    Pyramid,
+    /// The inverse formula (19)-(21) of seed 004, sampling points of the input only.
+    Polarisation,
+}
+
+impl Method {
+    /// Every method, the default first.
+    pub const ALL: [Method; 5] = [
+        Method::Bulk,
+        Method::ClosedForm,
+        Method::Definition,
+        Method::Pyramid,
+        Method::Polarisation,
+    ];
+
+    /// The name used on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Bulk => "bulk",
+            Method::ClosedForm => "closed-form",
+            Method::Definition => "definition",
+            Method::Pyramid => "pyramid",
+            Method::Polarisation => "polarisation",
+        }
+    }
+}
+
+/// `curve` restricted to [a, b] by `method`.
+pub fn restrict_curve<T: Ring>(
+    curve: &PowerCurve<T>,
+    a: &T,
+    b: &T,
+    method: Method,
+) -> BezierCurve<T> {
+    match method {
+        Method::Bulk => bulk::restrict_curve(curve, a, b),
+        Method::ClosedForm => closed_form::restrict_curve(curve, a, b),
+        Method::Definition => definition::restrict_curve(curve, a, b),
+        Method::Pyramid => pyramid::restrict_curve(curve, a, b),
+        Method::Polarisation => polarisation::restrict_curve(curve, a, b),
+    }
+}
+
+/// `surface` restricted to `rect = [a, b, c, d]`, i.e. [a, b] x [c, d], by `method`.
+pub fn restrict_tensor<T: Ring>(
+    surface: &PowerSurface<T>,
+    rect: &[T; 4],
+    method: Method,
+) -> TensorPatch<T> {
+    match method {
+        Method::Bulk => bulk::restrict_tensor(surface, rect),
+        Method::ClosedForm => closed_form::restrict_tensor(surface, rect),
+        Method::Definition => definition::restrict_tensor(surface, rect),
+        Method::Pyramid => pyramid::restrict_tensor(surface, rect),
+        Method::Polarisation => polarisation::restrict_tensor(surface, rect),
+    }
+}
+
+/// `surface`, as a triangular patch of total degree N = n + m, restricted to the triangle with
+/// corners `tri = [a, b, c]`, by `method`.
+pub fn restrict_triangle<T: Ring>(
+    surface: &PowerSurface<T>,
+    tri: &[[T; 2]; 3],
+    method: Method,
+) -> TriangularPatch<T> {
+    match method {
+        Method::Bulk => bulk::restrict_triangle(surface, tri),
+        Method::ClosedForm => closed_form::restrict_triangle(surface, tri),
+        Method::Definition => definition::restrict_triangle(surface, tri),
+        Method::Pyramid => pyramid::restrict_triangle(surface, tri),
+        Method::Polarisation => polarisation::restrict_triangle(surface, tri),
+    }
+}
+

@@ -1,0 +1,10 @@
+//! Shapes: points, the simplex index of triangular nets, polynomial curves and surfaces in the
+//! power basis and in the Bernstein basis, each with its own evaluation (Horner's rule,
+//! de Casteljau's algorithm on the blossom), and the changes of basis between them. This layer
+//! imports only the numbers.
+
+pub(crate) mod basis;
+pub(crate) mod bezier;
+pub(crate) mod point;
+pub(crate) mod power;
+pub(crate) mod simplex;

@@ -1,0 +1,180 @@
+//! Polynomial curves and surfaces in the power (monomial) basis, the input of the subdivision
+//! paper: C(u) = sum_i c_i u^i and S(u, v) = sum_ij c_ij u^i v^j, with points of any dimension.
+
+use crate::error::{Error, ErrorKind, Result};
+use crate::shape::point::{self, Point};
+use crate::Ring;
+
+/// Checks that every point of `points` has `dim` coordinates, naming the first that does not.
+pub(crate) fn check_dims<T>(points: &[Point<T>], dim: usize, field: &str) -> Result<()> {
+    for (i, p) in points.iter().enumerate() {
+        if p.len() != dim {
+            return Err(Error::of(ErrorKind::Dimension, 
+                format!("{field}[{i}]"),
+                format!("expected {dim} coordinates, found {}", p.len()),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// A polynomial curve C(u) = sum_{i=0..n} c_i u^i of degree `n` (the paper's problem (1)).
+///
+/// The degree is the number of coefficients minus one, even when the leading ones are zero:
+/// the paper's convention, under which the Bézier form of degree `n` is asked for.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PowerCurve<T> {
+    coefficients: Vec<Point<T>>,
+}
+
+impl<T: Ring> PowerCurve<T> {
+    /// A curve from its coefficients `c_0, ..., c_n`, all of one dimension `D >= 1`.
+    pub fn new(coefficients: Vec<Point<T>>) -> Result<Self> {
+        let Some(first) = coefficients.first() else {
+            return Err(Error::of(ErrorKind::Empty, 
+                "coefficients",
+                "expected at least one coefficient",
+            ));
+        };
+        let dim = first.len();
+        if dim == 0 {
+            return Err(Error::of(ErrorKind::Dimension, 
+                "coefficients[0]",
+                "expected at least 1 coordinate",
+            ));
+        }
+        check_dims(&coefficients, dim, "coefficients")?;
+        Ok(PowerCurve { coefficients })
+    }
+
+    /// The degree `n`.
+    pub fn degree(&self) -> usize {
+        self.coefficients.len() - 1
+    }
+
+    /// The dimension `D` of the points.
+    pub fn dim(&self) -> usize {
+        self.coefficients[0].len()
+    }
+
+    /// The coefficients `c_0, ..., c_n`.
+    pub fn coefficients(&self) -> &[Point<T>] {
+        &self.coefficients
+    }
+
+    /// C(u) by Horner's rule.
+    pub fn eval(&self, u: &T) -> Point<T> {
+        let mut acc = self.coefficients[self.degree()].clone();
+        for c in self.coefficients.iter().rev().skip(1) {
+            for (x, ci) in acc.iter_mut().zip(c) {
+                *x = x.mul(u).add(ci);
+            }
+        }
+        acc
+    }
+}
+
+/// A polynomial surface S(u, v) = sum_{i=0..n} sum_{j=0..m} c_ij u^i v^j of bidegree (n, m)
+/// (the paper's problems (2) and (3); as a triangular patch its total degree is N = n + m).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PowerSurface<T> {
+    coefficients: Vec<Vec<Point<T>>>,
+}
+
+impl<T: Ring> PowerSurface<T> {
+    /// A surface from its coefficient grid: `coefficients[i][j]` is `c_ij`, `n + 1` rows of
+    /// `m + 1` points each, all of one dimension `D >= 1`.
+    pub fn new(coefficients: Vec<Vec<Point<T>>>) -> Result<Self> {
+        let Some(first_row) = coefficients.first() else {
+            return Err(Error::of(ErrorKind::Empty, "coefficients", "expected at least one row"));
+        };
+        let cols = first_row.len();
+        if cols == 0 {
+            return Err(Error::of(ErrorKind::Empty, "coefficients[0]", "expected at least one point"));
+        }
+        let dim = first_row[0].len();
+        if dim == 0 {
+            return Err(Error::of(ErrorKind::Dimension, 
+                "coefficients[0][0]",
+                "expected at least 1 coordinate",
+            ));
+        }
+        for (i, row) in coefficients.iter().enumerate() {
+            if row.len() != cols {
+                return Err(Error::of(ErrorKind::Shape, 
+                    format!("coefficients[{i}]"),
+                    format!(
+                        "expected {cols} points (the grid must be rectangular), found {}",
+                        row.len()
+                    ),
+                ));
+            }
+            check_dims(row, dim, &format!("coefficients[{i}]"))?;
+        }
+        Ok(PowerSurface { coefficients })
+    }
+
+    /// The bidegree `(n, m)`.
+    pub fn degree(&self) -> (usize, usize) {
+        (self.coefficients.len() - 1, self.coefficients[0].len() - 1)
+    }
+
+    /// The dimension `D` of the points.
+    pub fn dim(&self) -> usize {
+        self.coefficients[0][0].len()
+    }
+
+    /// The coefficient grid, `[i][j]` = `c_ij`.
+    pub fn coefficients(&self) -> &[Vec<Point<T>>] {
+        &self.coefficients
+    }
+
+    /// S(u, v) by nested Horner's rule.
+    pub fn eval(&self, u: &T, v: &T) -> Point<T> {
+        let mut acc: Point<T> = point::zero(self.dim());
+        for row in self.coefficients.iter().rev() {
+            let mut inner: Point<T> = point::zero(self.dim());
+            for c in row.iter().rev() {
+                for (x, cj) in inner.iter_mut().zip(c) {
+                    *x = x.mul(v).add(cj);
+                }
+            }
+            for (x, y) in acc.iter_mut().zip(&inner) {
+                *x = x.mul(u).add(y);
+            }
+        }
+        acc
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn horner_matches_monomial_sum() {
+        let c = PowerCurve::new(vec![vec![1.0, 0.0], vec![2.0, 1.0], vec![3.0, -1.0]]).unwrap();
+        assert_eq!(c.eval(&2.0), vec![1.0 + 4.0 + 12.0, 2.0 - 4.0]);
+        let s = PowerSurface::new(vec![vec![vec![1.0], vec![2.0]], vec![vec![3.0], vec![4.0]]])
+            .unwrap();
+        // 1 + 2v + 3u + 4uv at (2, 5)
+        assert_eq!(s.eval(&2.0, &5.0), vec![1.0 + 10.0 + 6.0 + 40.0]);
+    }
+
+    #[test]
+    fn bad_shapes_name_the_field() {
+        assert_eq!(
+            PowerCurve::<f64>::new(vec![]).unwrap_err().field,
+            "coefficients"
+        );
+        let e = PowerCurve::new(vec![vec![1.0, 2.0], vec![1.0]]).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "coefficients[1]: expected 2 coordinates, found 1"
+        );
+        let e = PowerSurface::new(vec![vec![vec![1.0], vec![2.0]], vec![vec![3.0]]]).unwrap_err();
+        assert_eq!(e.field, "coefficients[1]");
+        let e = PowerSurface::new(vec![vec![vec![1.0], vec![2.0, 3.0]]]).unwrap_err();
+        assert_eq!(e.field, "coefficients[0][1]");
+    }
+}
