@@ -14,12 +14,13 @@
 //! `cargo run --release --example bench_slopes bezier_curve bezier_tensor bezier_triangle`
 //! for the medians, the log-log slopes and the ratios.
 
-use blossom::basis::bernstein_to_power;
-use blossom::blossoms::{closed_form, pyramid};
-use blossom::subdivide::restrict_bezier_triangle_affine;
 use blossom::{
-    restrict_bezier_curve, restrict_bezier_tensor, BezierCurve, PowerCurve, PowerSurface,
-    TensorPatch, TriangularPatch,
+    bernstein_to_power, bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom,
+    restrict_bezier_triangle_affine,
+};
+use blossom::{
+    restrict_bezier_curve, restrict_bezier_tensor, restrict_curve, restrict_tensor, BezierCurve,
+    Method, PowerCurve, PowerSurface, TensorPatch, TriangularPatch,
 };
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::time::Duration;
@@ -58,7 +59,7 @@ fn curves(c: &mut Criterion) {
             bench.iter(|| {
                 (0..=n)
                     .map(|j| {
-                        pyramid::bezier_curve_blossom(
+                        bezier_curve_blossom(
                             black_box(curve).control_points(),
                             &repeated(A, n - j, B, j),
                         )
@@ -77,7 +78,7 @@ fn curves(c: &mut Criterion) {
                     let power =
                         PowerCurve::new(bernstein_to_power(black_box(curve).control_points()))
                             .unwrap();
-                    closed_form::restrict_curve(&power, &A, &B)
+                    restrict_curve(&power, &A, &B, Method::ClosedForm)
                 })
             },
         );
@@ -104,7 +105,7 @@ fn tensors(c: &mut Criterion) {
                 let mut out = Vec::new();
                 for nu in 0..=n {
                     for mu in 0..=n {
-                        out.push(pyramid::bezier_tensor_blossom(
+                        out.push(bezier_tensor_blossom(
                             black_box(patch).control_points(),
                             &repeated(a, n - nu, b, nu),
                             &repeated(cc, n - mu, d, mu),
@@ -135,7 +136,11 @@ fn tensors(c: &mut Criterion) {
                             bernstein_to_power(&row)
                         })
                         .collect();
-                    closed_form::restrict_tensor(&PowerSurface::new(coefficients).unwrap(), &RECT)
+                    restrict_tensor(
+                        &PowerSurface::new(coefficients).unwrap(),
+                        &RECT,
+                        Method::ClosedForm,
+                    )
                 })
             },
         );
@@ -167,7 +172,7 @@ fn triangles(c: &mut Criterion) {
                                 .chain(std::iter::repeat_n(bary[1], mu))
                                 .chain(std::iter::repeat_n(bary[2], la))
                                 .collect();
-                            pyramid::bezier_triangle_blossom(patch, &args)
+                            bezier_triangle_blossom(patch, &args)
                         })
                         .collect::<Vec<_>>()
                 })

@@ -12,8 +12,8 @@
 //!
 //! Run: `cargo bench --bench peers --features rayon` (BENCHMARKS.md has the figures).
 
-use blossom::batched::{Batch, RestrictionMap};
 use blossom::{restrict_bezier_curve, BezierCurve};
+use blossom::{Batch, RestrictionMap};
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 use kurbo::ParamCurve;
 use std::time::Duration;

@@ -72,8 +72,8 @@ pub use shape::basis::{
     triangle_bernstein_by_horner, triangle_bernstein_to_power, triangle_power_to_bernstein,
 };
 pub use shape::bezier::{
-    bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom, BezierCurve,
-    TensorPatch, TriangularPatch,
+    bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom, BezierCurve, TensorPatch,
+    TriangularPatch,
 };
 pub use shape::point::Point;
 pub use shape::power::{PowerCurve, PowerSurface};

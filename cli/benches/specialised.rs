@@ -10,8 +10,8 @@
 //! * `curve3/closed_form`: `restrict_curve(.., Method::ClosedForm)` (eq. (3) per point);
 //! * the same for the (3, 3) tensor patch.
 
-use blossom::specialised::{restrict_curve_specialised, restrict_tensor_specialised};
 use blossom::{restrict_curve, restrict_tensor, Method, PowerCurve, PowerSurface};
+use blossom_cli::specialised::{restrict_curve_specialised, restrict_tensor_specialised};
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
 use std::time::Duration;

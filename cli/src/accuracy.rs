@@ -4,8 +4,8 @@
 //! coordinate of the result is compared with the exact restriction of the exact input. The
 //! error is relative to the size of the answer: |float - exact| / max(1, max |exact|).
 
-use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method};
 use blossom::rational_to_f64;
+use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method};
 use blossom::{PowerCurve, PowerSurface, Rational};
 
 fn error_of(exact: &[&Vec<Rational>], float: &[&Vec<f64>]) -> f64 {

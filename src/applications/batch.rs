@@ -26,12 +26,12 @@
 //! independent, so with the `rayon` feature `Batch::par_restrict_into` spreads them over
 //! threads. The last block is padded with zeros.
 
-use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
-use crate::shape::simplex::triangle_len;
-use crate::error::{Error, ErrorKind, Result};
 use crate::applications::bezier_input::{
     restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle_affine,
 };
+use crate::error::{Error, ErrorKind, Result};
+use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
+use crate::shape::simplex::triangle_len;
 use crate::Rational;
 use num_traits::{One, Zero};
 
@@ -40,8 +40,13 @@ pub const LANES: usize = 512;
 
 /// The f64 value `x` as an exact rational, or an error naming `field` when it is not finite.
 fn exact(x: f64, field: &str) -> Result<Rational> {
-    Rational::from_float(x)
-        .ok_or_else(|| Error::of(ErrorKind::NotFinite, field, format!("expected a finite number, found {x}")))
+    Rational::from_float(x).ok_or_else(|| {
+        Error::of(
+            ErrorKind::NotFinite,
+            field,
+            format!("expected a finite number, found {x}"),
+        )
+    })
 }
 
 /// The unit vector e_i of dimension `len`, exactly.
@@ -241,14 +246,16 @@ impl Batch {
         let mut batch = Batch::zeros(points, dim, nets.len());
         for (k, net) in nets.iter().enumerate() {
             if net.len() != points {
-                return Err(Error::of(ErrorKind::Shape, 
+                return Err(Error::of(
+                    ErrorKind::Shape,
                     format!("nets[{k}]"),
                     format!("expected {points} control points, found {}", net.len()),
                 ));
             }
             for (p, point) in net.iter().enumerate() {
                 if point.len() != dim {
-                    return Err(Error::of(ErrorKind::Dimension, 
+                    return Err(Error::of(
+                        ErrorKind::Dimension,
                         format!("nets[{k}][{p}]"),
                         format!("expected {dim} coordinates, found {}", point.len()),
                     ));
@@ -343,7 +350,8 @@ impl Batch {
 
     fn check(&self, map: &RestrictionMap, out: &Batch) -> Result<()> {
         if map.inputs != self.points {
-            return Err(Error::of(ErrorKind::Shape, 
+            return Err(Error::of(
+                ErrorKind::Shape,
                 "map",
                 format!(
                     "takes objects of {} control points, the batch has {}",
@@ -352,7 +360,7 @@ impl Batch {
             ));
         }
         if out.points != map.outputs || out.dim != self.dim || out.len != self.len {
-            return Err(Error::of(ErrorKind::Dimension, 
+            return Err(Error::of(ErrorKind::Dimension,
                 "out",
                 format!(
                     "expected {} objects of {} points of dimension {}, found {} of {} of dimension {}",

@@ -24,12 +24,12 @@
 //! the pyramid for every control point. In f64 the power basis costs accuracy at high degree
 //! (`examples/float_error.rs` measures it).
 
-use crate::shape::basis::{bernstein_to_power, triangle_bernstein_to_power};
-use crate::shape::simplex::triangle_index;
-use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
 use crate::error::{Error, ErrorKind, Result};
-use crate::shape::point::{self, flatten, unflatten, Point};
 use crate::restrict::bulk::{bulk_curve_points, bulk_triangle_grid};
+use crate::shape::basis::{bernstein_to_power, triangle_bernstein_to_power};
+use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
+use crate::shape::point::{self, flatten, unflatten, Point};
+use crate::shape::simplex::triangle_index;
 use crate::Ring;
 
 /// The Bézier curve `curve` over [0, 1] restricted to [a, b] (any a, b, also outside [0, 1]
@@ -81,7 +81,8 @@ pub fn restrict_bezier_triangle<T: Ring>(
 ) -> Result<TriangularPatch<T>> {
     for (k, [s, t, r]) in corners.iter().enumerate() {
         if !s.add(t).add(r).sub(&T::one()).is_zero() {
-            return Err(Error::of(ErrorKind::Dimension, 
+            return Err(Error::of(
+                ErrorKind::Dimension,
                 format!("corners[{k}]"),
                 "barycentric coordinates must add up to 1",
             ));

@@ -15,11 +15,11 @@
 //!   from the closed-form Gram matrix
 //!   int_0^1 B_i^m B_j^n dt = C(m, i) C(n, j) / ((m + n + 1) C(m + n, i + j)).
 
-use crate::shape::bezier::BezierCurve;
-use crate::num::binomial::binomial;
 use crate::error::{Error, ErrorKind, Result};
-use crate::restrict::polarisation::curve_control_points_from_samples;
+use crate::num::binomial::binomial;
 use crate::num::linalg;
+use crate::restrict::polarisation::curve_control_points_from_samples;
+use crate::shape::bezier::BezierCurve;
 use crate::shape::point::Point;
 use crate::{Rational, Ring};
 
@@ -58,7 +58,8 @@ impl Reduction {
             .into_iter()
             .find(|r| r.name() == name)
             .ok_or_else(|| {
-                Error::of(ErrorKind::UnknownName, 
+                Error::of(
+                    ErrorKind::UnknownName,
                     "method",
                     format!(
                         "unknown method {name:?}; expected one of {}",
@@ -115,7 +116,8 @@ pub fn bernstein_gram(m: usize, n: usize) -> Vec<Vec<Rational>> {
 pub fn elevate<T: Ring>(curve: &BezierCurve<T>, to_degree: usize) -> Result<BezierCurve<T>> {
     let n = curve.degree();
     if to_degree < n {
-        return Err(Error::of(ErrorKind::Degree, 
+        return Err(Error::of(
+            ErrorKind::Degree,
             "to_degree",
             format!(
                 "elevation needs to_degree >= {n} (the degree of the curve), found {to_degree}"
@@ -139,13 +141,15 @@ pub fn reduce<T: Ring>(
     let n = curve.degree();
     let m = to_degree;
     if m >= n {
-        return Err(Error::of(ErrorKind::Degree, 
+        return Err(Error::of(
+            ErrorKind::Degree,
             "to_degree",
             format!("reduction needs to_degree < {n} (the degree of the curve), found {m}"),
         ));
     }
     if m == 0 && method != Reduction::LeastSquares {
-        return Err(Error::of(ErrorKind::Degree, 
+        return Err(Error::of(
+            ErrorKind::Degree,
             "to_degree",
             format!("the {} reduction needs to_degree >= 1", method.name()),
         ));
@@ -207,7 +211,8 @@ pub fn least_squares_matrix(n: usize, m: usize, method: Reduction) -> Result<Vec
             rows.push(unit(n));
             Ok(rows)
         }
-        Reduction::Interpolating => Err(Error::of(ErrorKind::Invalid, 
+        Reduction::Interpolating => Err(Error::of(
+            ErrorKind::Invalid,
             "method",
             "the interpolating reduction is the inverse formula, not a least-squares matrix",
         )),
@@ -232,7 +237,8 @@ fn product(a: &[Vec<Rational>], b: &[Vec<Rational>]) -> Vec<Vec<Rational>> {
 pub fn squared_l2_distance<T: Ring>(a: &BezierCurve<T>, b: &BezierCurve<T>) -> Result<T> {
     let dim = a.control_points()[0].len();
     if b.control_points()[0].len() != dim {
-        return Err(Error::of(ErrorKind::Dimension, 
+        return Err(Error::of(
+            ErrorKind::Dimension,
             "control_points",
             format!(
                 "curves of dimensions {dim} and {} cannot be compared",
@@ -265,6 +271,7 @@ pub fn squared_l2_distance<T: Ring>(a: &BezierCurve<T>, b: &BezierCurve<T>) -> R
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::shape::basis::bernstein_to_power;
     use num_bigint::BigInt;
 
     fn q(n: i64, d: i64) -> Rational {

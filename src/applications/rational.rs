@@ -12,18 +12,18 @@
 //! Rational B-splines (NURBS) are B-splines of homogeneous control points (w_i d_i, w_i);
 //! [`RationalBSpline`] evaluates them by de Boor's algorithm and projects.
 
-use crate::shape::simplex::triangle_len;
-use crate::shape::bezier::{bezier_curve_blossom, bezier_tensor_blossom};
 use crate::applications::degree::elevate;
+use crate::applications::spline::BSpline;
 use crate::error::{Error, ErrorKind, Result};
+use crate::num::linalg::Field;
 use crate::restrict::polarisation::{
     curve_blossom_from_samples, curve_control_points_from_samples,
     tensor_control_points_from_samples, triangle_control_points_from_samples,
 };
-use crate::num::linalg::Field;
+use crate::shape::bezier::{bezier_curve_blossom, bezier_tensor_blossom};
 use crate::shape::point::Point;
 use crate::shape::power::{PowerCurve, PowerSurface};
-use crate::applications::spline::BSpline;
+use crate::shape::simplex::triangle_len;
 use crate::{Ring, TriangularPatch};
 
 /// A rational curve N(t) / w(t) in the power basis of t.
@@ -39,13 +39,15 @@ impl<T: Ring> RationalCurve<T> {
         let num = PowerCurve::new(numerator.to_vec())
             .map_err(|e| rename(e, "coefficients", "numerator"))?;
         if denominator.is_empty() {
-            return Err(Error::of(ErrorKind::Empty, 
+            return Err(Error::of(
+                ErrorKind::Empty,
                 "denominator",
                 "expected at least one coefficient",
             ));
         }
         if denominator.iter().all(Ring::is_zero) {
-            return Err(Error::of(ErrorKind::ZeroWeight, 
+            return Err(Error::of(
+                ErrorKind::ZeroWeight,
                 "denominator",
                 "the denominator is the zero polynomial",
             ));
@@ -106,9 +108,12 @@ impl<T: Ring> RationalCurve<T> {
         degree: usize,
     ) -> Result<Vec<Point<T>>> {
         check_degree("degree", degree, self.degree())?;
-        Ok(curve_control_points_from_samples(degree, alpha, beta, &|t| {
-            self.homogeneous.eval(t)
-        }))
+        Ok(curve_control_points_from_samples(
+            degree,
+            alpha,
+            beta,
+            &|t| self.homogeneous.eval(t),
+        ))
     }
 }
 
@@ -150,7 +155,8 @@ impl<T: Field> RationalCurve<T> {
     pub fn eval(&self, t: &T) -> Result<Point<T>> {
         let mut h = self.homogeneous.eval(t);
         let w = h.pop().expect("D + 1 >= 2 coordinates");
-        divide_point(h, &w).ok_or_else(|| Error::of(ErrorKind::ZeroWeight, "t", "the denominator vanishes there"))
+        divide_point(h, &w)
+            .ok_or_else(|| Error::of(ErrorKind::ZeroWeight, "t", "the denominator vanishes there"))
     }
 }
 
@@ -163,7 +169,8 @@ fn rename(mut e: Error, from: &str, to: &str) -> Error {
 
 fn check_degree(field: &str, degree: usize, own: usize) -> Result<()> {
     if degree < own {
-        Err(Error::of(ErrorKind::Degree, 
+        Err(Error::of(
+            ErrorKind::Degree,
             field,
             format!("expected a degree >= {own} (the curve's own degree), found {degree}"),
         ))
@@ -191,7 +198,8 @@ fn project<T: Field>(
     for (i, mut p) in h.into_iter().enumerate() {
         let w = p.pop().expect("D + 1 >= 2 coordinates");
         let b = divide_point(p, &w).ok_or_else(|| {
-            Error::of(ErrorKind::ZeroWeight, 
+            Error::of(
+                ErrorKind::ZeroWeight,
                 field,
                 format!(
                     "{} is zero: no rational Bézier form with finite control points",
@@ -223,7 +231,8 @@ impl<T: Field> RationalBezierCurve<T> {
     pub fn new(points: Vec<Point<T>>, weights: Vec<T>) -> Result<Self> {
         crate::BezierCurve::new(points.clone())?;
         if weights.len() != points.len() {
-            return Err(Error::of(ErrorKind::Shape, 
+            return Err(Error::of(
+                ErrorKind::Shape,
                 "weights",
                 format!("expected {} weights, found {}", points.len(), weights.len()),
             ));
@@ -279,19 +288,22 @@ impl<T: Ring> RationalSurface<T> {
             .map_err(|e| rename(e, "coefficients", "numerator"))?;
         let (n, m) = num.degree();
         if denominator.len() != n + 1 {
-            return Err(Error::of(ErrorKind::Shape, 
+            return Err(Error::of(
+                ErrorKind::Shape,
                 "denominator",
                 format!("expected {} rows, found {}", n + 1, denominator.len()),
             ));
         }
         if let Some(i) = denominator.iter().position(|r| r.len() != m + 1) {
-            return Err(Error::of(ErrorKind::Shape, 
+            return Err(Error::of(
+                ErrorKind::Shape,
                 format!("denominator[{i}]"),
                 format!("expected {} entries", m + 1),
             ));
         }
         if denominator.iter().flatten().all(Ring::is_zero) {
-            return Err(Error::of(ErrorKind::ZeroWeight, 
+            return Err(Error::of(
+                ErrorKind::ZeroWeight,
                 "denominator",
                 "the denominator is the zero polynomial",
             ));
@@ -341,7 +353,8 @@ impl<T: Field> RationalSurface<T> {
         let (n, m) = degree.unwrap_or(own);
         check_degree("degree[0]", n, own.0)?;
         check_degree("degree[1]", m, own.1)?;
-        let net = tensor_control_points_from_samples((n, m), rect, &|u, v| self.homogeneous.eval(u, v));
+        let net =
+            tensor_control_points_from_samples((n, m), rect, &|u, v| self.homogeneous.eval(u, v));
         let mut points = Vec::with_capacity(n + 1);
         let mut weights = Vec::with_capacity(n + 1);
         for (nu, row) in net.into_iter().enumerate() {
@@ -362,7 +375,8 @@ impl<T: Field> RationalSurface<T> {
         let (n, m) = self.degree();
         let big_n = degree.unwrap_or(n + m);
         check_degree("degree", big_n, n + m)?;
-        let h = triangle_control_points_from_samples(big_n, tri, &|u, v| self.homogeneous.eval(u, v));
+        let h =
+            triangle_control_points_from_samples(big_n, tri, &|u, v| self.homogeneous.eval(u, v));
         let index: Vec<(usize, usize)> = (0..=big_n)
             .flat_map(|i| (0..=big_n - i).map(move |j| (i, j)))
             .collect();
@@ -468,13 +482,15 @@ impl<T: Field> RationalBSpline<T> {
         weights: Vec<T>,
     ) -> Result<Self> {
         if weights.len() != points.len() {
-            return Err(Error::of(ErrorKind::Shape, 
+            return Err(Error::of(
+                ErrorKind::Shape,
                 "weights",
                 format!("expected {} weights, found {}", points.len(), weights.len()),
             ));
         }
         if let Some(i) = weights.iter().position(Ring::is_zero) {
-            return Err(Error::of(ErrorKind::ZeroWeight, 
+            return Err(Error::of(
+                ErrorKind::ZeroWeight,
                 format!("weights[{i}]"),
                 "a weight must be non-zero",
             ));
@@ -500,7 +516,8 @@ impl<T: Field> RationalBSpline<T> {
     pub fn eval(&self, t: &T) -> Result<Point<T>> {
         let mut h = self.homogeneous.eval(t)?;
         let w = h.pop().expect("D + 1 >= 2 coordinates");
-        divide_point(h, &w).ok_or_else(|| Error::of(ErrorKind::ZeroWeight, "t", "the denominator vanishes there"))
+        divide_point(h, &w)
+            .ok_or_else(|| Error::of(ErrorKind::ZeroWeight, "t", "the denominator vanishes there"))
     }
 }
 

@@ -45,7 +45,8 @@ impl Field for f32 {
 pub fn inverse(matrix: &[Vec<Rational>], field: &str) -> Result<Vec<Vec<Rational>>> {
     let n = matrix.len();
     if let Some(i) = matrix.iter().position(|row| row.len() != n) {
-        return Err(Error::of(ErrorKind::Shape, 
+        return Err(Error::of(
+            ErrorKind::Shape,
             format!("{field}[{i}]"),
             format!("expected {n} entries (a square matrix)"),
         ));
@@ -61,7 +62,11 @@ pub fn inverse(matrix: &[Vec<Rational>], field: &str) -> Result<Vec<Vec<Rational
         .collect();
     for col in 0..n {
         let Some(pivot) = (col..n).find(|&r| !Ring::is_zero(&a[r][col])) else {
-            return Err(Error::of(ErrorKind::Singular, field, "the matrix is singular"));
+            return Err(Error::of(
+                ErrorKind::Singular,
+                field,
+                "the matrix is singular",
+            ));
         };
         a.swap(col, pivot);
         inv.swap(col, pivot);
@@ -107,7 +112,8 @@ pub fn solve<T: Ring>(
     field: &str,
 ) -> Result<Vec<Point<T>>> {
     if rhs.len() != matrix.len() {
-        return Err(Error::of(ErrorKind::Shape, 
+        return Err(Error::of(
+            ErrorKind::Shape,
             field,
             format!(
                 "expected {} right-hand sides, found {}",

@@ -70,7 +70,10 @@ fn times_linear<T: Ring>(form: &[Point<T>], p: &T, q: &T) -> Vec<Point<T>> {
     out
 }
 
-pub(crate) fn restrict_triangle<T: Ring>(surface: &PowerSurface<T>, tri: &[[T; 2]; 3]) -> TriangularPatch<T> {
+pub(crate) fn restrict_triangle<T: Ring>(
+    surface: &PowerSurface<T>,
+    tri: &[[T; 2]; 3],
+) -> TriangularPatch<T> {
     let (n, m) = surface.degree();
     bulk_triangle_grid(surface.coefficients(), n + m, tri)
 }

@@ -6,8 +6,8 @@
 //! (N+1)(N+2)/2 control points) and are kept as an independent algorithm and as the source
 //! that the proc-macro unrolls.
 
-use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
 use crate::num::binomial::{binomial, multinomial};
+use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
 use crate::shape::point::{self, Point};
 use crate::shape::power::{PowerCurve, PowerSurface};
 use crate::{Rational, Ring};

@@ -14,9 +14,9 @@
 //! Every subset is counted exactly once, with no closed-form counting of the kind used by
 //! Theorems 1-3, at O(n^2) (curve) and O(N n m) (triangle) ring operations per blossom value.
 
-use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
 use crate::num::binomial::{binomial, multinomial};
 use crate::restrict::nets::{repeated, tensor_net, triangle_net};
+use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
 use crate::shape::point::{self, Point};
 use crate::shape::power::{PowerCurve, PowerSurface};
 use crate::{Rational, Ring};

@@ -107,4 +107,3 @@ pub fn restrict_triangle<T: Ring>(
         Method::Polarisation => polarisation::restrict_triangle(surface, tri),
     }
 }
-

@@ -125,7 +125,8 @@ fn check_count(field: &str, found: usize, degree: usize) -> Result<()> {
     if found == degree {
         Ok(())
     } else {
-        Err(Error::of(ErrorKind::Arity, 
+        Err(Error::of(
+            ErrorKind::Arity,
             field,
             format!("a blossom of degree {degree} takes {degree} arguments, found {found}"),
         ))
@@ -310,8 +311,12 @@ mod tests {
             vec![q(15, 1)]
         );
         let x = [[q(1, 1), q(2, 1)], [q(3, 1), q(4, 1)]];
-        assert_eq!(triangle_blossom_from_samples(2, &x, &s).unwrap(), vec![q(5, 1)]);
-        let net = tensor_control_points_from_samples((1, 1), &[q(0, 1), q(1, 1), q(0, 1), q(2, 1)], &s);
+        assert_eq!(
+            triangle_blossom_from_samples(2, &x, &s).unwrap(),
+            vec![q(5, 1)]
+        );
+        let net =
+            tensor_control_points_from_samples((1, 1), &[q(0, 1), q(1, 1), q(0, 1), q(2, 1)], &s);
         assert_eq!(net[1][1], vec![q(2, 1)]);
         let tri = [[q(1, 1), q(0, 1)], [q(0, 1), q(1, 1)], [q(0, 1), q(0, 1)]];
         let pts = triangle_control_points_from_samples(2, &tri, &s);

@@ -30,8 +30,8 @@
 use crate::restrict::nets::{repeated, tensor_net, triangle_net};
 use crate::shape::basis::{bernstein_by_horner, triangle_bernstein_by_horner};
 use crate::shape::bezier::{
-    bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom, BezierCurve,
-    TensorPatch, TriangularPatch,
+    bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom, BezierCurve, TensorPatch,
+    TriangularPatch,
 };
 use crate::shape::point::{flatten, unflatten};
 use crate::shape::power::{PowerCurve, PowerSurface};
@@ -119,8 +119,7 @@ pub fn restrict_triangle<T: Ring>(
         })
     };
     let reference_corners = [enlarged(a, b, c), enlarged(b, a, c), enlarged(c, a, b)];
-    let reference =
-        triangle_bernstein_by_horner(surface.coefficients(), n + m, &reference_corners);
+    let reference = triangle_bernstein_by_horner(surface.coefficients(), n + m, &reference_corners);
     let (major, minor) = (
         T::one().scale_frac(3 * k + 1, 3 * (k + 1)),
         T::one().scale_frac(1, 3 * (k + 1)),

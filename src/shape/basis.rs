@@ -16,10 +16,10 @@
 //! * [`triangle_bernstein_to_power`]: the inverse of [`triangle_power_to_bernstein`],
 //!   c_ij = N! / (i! j! (N-i-j)!) Δ_1^i Δ_2^j b_(0,0,N), O(N^3).
 
-use crate::shape::bezier::TriangularPatch;
-use crate::shape::simplex::{triangle_index, triangle_len};
 use crate::num::binomial::multinomial;
+use crate::shape::bezier::TriangularPatch;
 use crate::shape::point::Point;
+use crate::shape::simplex::{triangle_index, triangle_len};
 use crate::{Rational, Ring};
 
 fn scale_point<T: Ring>(p: &mut [T], k: &T) {
@@ -368,6 +368,63 @@ mod tests {
 
     fn q(n: i64) -> Rational {
         Rational::from_integer(BigInt::from(n))
+    }
+
+    fn frac(n: i64, d: i64) -> Rational {
+        Rational::new(BigInt::from(n), BigInt::from(d))
+    }
+
+    #[test]
+    fn horner_bernstein_form_evaluates_to_the_power_form() {
+        use crate::shape::bezier::BezierCurve;
+        use crate::shape::power::PowerCurve;
+        // C(u) = (3 - u + 2u^2 - 5u^4, u^3) on [r, s] = [-2/3, 5/2]: the Bézier form at t is C
+        // at (1 - t) r + t s, for t inside and outside [0, 1].
+        let c = vec![
+            vec![q(3), q(0)],
+            vec![q(-1), q(0)],
+            vec![q(2), q(0)],
+            vec![q(0), q(1)],
+            vec![q(-5), q(0)],
+        ];
+        let (r, s) = (frac(-2, 3), frac(5, 2));
+        let bez = BezierCurve::new(bernstein_by_horner(&c, &r, &s)).unwrap();
+        let power = PowerCurve::new(c).unwrap();
+        for t in [frac(0, 1), frac(1, 1), frac(1, 3), frac(-7, 4), frac(9, 5)] {
+            let u = r.add(&t.mul(&s.sub(&r)));
+            assert_eq!(bez.eval(&t), power.eval(&u), "t = {t}");
+        }
+    }
+
+    #[test]
+    fn horner_triangle_form_evaluates_to_the_power_form() {
+        use crate::shape::power::PowerSurface;
+        // S(u, v) = 1 - 2u + 3uv^2 - u^2 v + 4v^3 (n = m = 2, padded to N = 5) on a triangle.
+        let mut grid = vec![vec![vec![q(0)]; 4]; 3];
+        grid[0][0] = vec![q(1)];
+        grid[1][0] = vec![q(-2)];
+        grid[1][2] = vec![q(3)];
+        grid[2][1] = vec![q(-1)];
+        grid[0][3] = vec![q(4)];
+        let tri = [[frac(1, 2), q(-1)], [q(3), frac(2, 7)], [q(-2), q(2)]];
+        for big_n in [5, 7] {
+            let patch = triangle_bernstein_by_horner(&grid, big_n, &tri);
+            let power = PowerSurface::new(grid.clone()).unwrap();
+            for bary in [
+                [frac(1, 3), frac(1, 3), frac(1, 3)],
+                [q(2), frac(-1, 2), frac(-1, 2)],
+            ] {
+                let u = bary[0]
+                    .mul(&tri[0][0])
+                    .add(&bary[1].mul(&tri[1][0]))
+                    .add(&bary[2].mul(&tri[2][0]));
+                let v = bary[0]
+                    .mul(&tri[0][1])
+                    .add(&bary[1].mul(&tri[1][1]))
+                    .add(&bary[2].mul(&tri[2][1]));
+                assert_eq!(patch.eval(&bary), power.eval(&u, &v), "N = {big_n}");
+            }
+        }
     }
 
     #[test]

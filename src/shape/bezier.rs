@@ -12,10 +12,10 @@
 //!   for barycentric arguments (u_r, v_r, w_r).
 
 use crate::error::{Error, ErrorKind, Result};
+use crate::shape::point::lerp;
 use crate::shape::point::Point;
 use crate::shape::power::check_dims;
 use crate::shape::simplex::{triangle_index, triangle_len};
-use crate::shape::point::lerp;
 use crate::Ring;
 
 /// A Bézier curve sum_v w_v B_v^n(t) over t in [0, 1].
@@ -28,10 +28,15 @@ impl<T: Ring> BezierCurve<T> {
     /// A curve from its control points `w_0, ..., w_n`, all of one dimension `D >= 1`.
     pub fn new(control_points: Vec<Point<T>>) -> Result<Self> {
         let Some(first) = control_points.first() else {
-            return Err(Error::of(ErrorKind::Empty, "control_points", "expected at least one point"));
+            return Err(Error::of(
+                ErrorKind::Empty,
+                "control_points",
+                "expected at least one point",
+            ));
         };
         if first.is_empty() {
-            return Err(Error::of(ErrorKind::Dimension, 
+            return Err(Error::of(
+                ErrorKind::Dimension,
                 "control_points[0]",
                 "expected at least 1 coordinate",
             ));
@@ -72,11 +77,16 @@ impl<T: Ring> TensorPatch<T> {
     /// points, all of one dimension.
     pub fn new(control_points: Vec<Vec<Point<T>>>) -> Result<Self> {
         let Some(first) = control_points.first() else {
-            return Err(Error::of(ErrorKind::Empty, "control_points", "expected at least one row"));
+            return Err(Error::of(
+                ErrorKind::Empty,
+                "control_points",
+                "expected at least one row",
+            ));
         };
         let cols = first.len();
         if cols == 0 || first[0].is_empty() {
-            return Err(Error::of(ErrorKind::Empty, 
+            return Err(Error::of(
+                ErrorKind::Empty,
                 "control_points[0]",
                 "expected a non-empty row of points",
             ));
@@ -84,7 +94,8 @@ impl<T: Ring> TensorPatch<T> {
         let dim = first[0].len();
         for (i, row) in control_points.iter().enumerate() {
             if row.len() != cols {
-                return Err(Error::of(ErrorKind::Shape, 
+                return Err(Error::of(
+                    ErrorKind::Shape,
                     format!("control_points[{i}]"),
                     format!("expected {cols} points, found {}", row.len()),
                 ));
@@ -141,7 +152,8 @@ impl<T: Ring> TriangularPatch<T> {
     pub fn new(degree: usize, control_points: Vec<Point<T>>) -> Result<Self> {
         let want = triangle_len(degree);
         if control_points.len() != want {
-            return Err(Error::of(ErrorKind::Shape, 
+            return Err(Error::of(
+                ErrorKind::Shape,
                 "control_points",
                 format!(
                     "a triangular patch of degree {degree} has {want} points, found {}",
@@ -150,7 +162,8 @@ impl<T: Ring> TriangularPatch<T> {
             ));
         }
         if control_points[0].is_empty() {
-            return Err(Error::of(ErrorKind::Dimension, 
+            return Err(Error::of(
+                ErrorKind::Dimension,
                 "control_points[0]",
                 "expected at least 1 coordinate",
             ));

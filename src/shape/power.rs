@@ -9,7 +9,8 @@ use crate::Ring;
 pub(crate) fn check_dims<T>(points: &[Point<T>], dim: usize, field: &str) -> Result<()> {
     for (i, p) in points.iter().enumerate() {
         if p.len() != dim {
-            return Err(Error::of(ErrorKind::Dimension, 
+            return Err(Error::of(
+                ErrorKind::Dimension,
                 format!("{field}[{i}]"),
                 format!("expected {dim} coordinates, found {}", p.len()),
             ));
@@ -31,14 +32,16 @@ impl<T: Ring> PowerCurve<T> {
     /// A curve from its coefficients `c_0, ..., c_n`, all of one dimension `D >= 1`.
     pub fn new(coefficients: Vec<Point<T>>) -> Result<Self> {
         let Some(first) = coefficients.first() else {
-            return Err(Error::of(ErrorKind::Empty, 
+            return Err(Error::of(
+                ErrorKind::Empty,
                 "coefficients",
                 "expected at least one coefficient",
             ));
         };
         let dim = first.len();
         if dim == 0 {
-            return Err(Error::of(ErrorKind::Dimension, 
+            return Err(Error::of(
+                ErrorKind::Dimension,
                 "coefficients[0]",
                 "expected at least 1 coordinate",
             ));
@@ -86,22 +89,32 @@ impl<T: Ring> PowerSurface<T> {
     /// `m + 1` points each, all of one dimension `D >= 1`.
     pub fn new(coefficients: Vec<Vec<Point<T>>>) -> Result<Self> {
         let Some(first_row) = coefficients.first() else {
-            return Err(Error::of(ErrorKind::Empty, "coefficients", "expected at least one row"));
+            return Err(Error::of(
+                ErrorKind::Empty,
+                "coefficients",
+                "expected at least one row",
+            ));
         };
         let cols = first_row.len();
         if cols == 0 {
-            return Err(Error::of(ErrorKind::Empty, "coefficients[0]", "expected at least one point"));
+            return Err(Error::of(
+                ErrorKind::Empty,
+                "coefficients[0]",
+                "expected at least one point",
+            ));
         }
         let dim = first_row[0].len();
         if dim == 0 {
-            return Err(Error::of(ErrorKind::Dimension, 
+            return Err(Error::of(
+                ErrorKind::Dimension,
                 "coefficients[0][0]",
                 "expected at least 1 coordinate",
             ));
         }
         for (i, row) in coefficients.iter().enumerate() {
             if row.len() != cols {
-                return Err(Error::of(ErrorKind::Shape, 
+                return Err(Error::of(
+                    ErrorKind::Shape,
                     format!("coefficients[{i}]"),
                     format!(
                         "expected {cols} points (the grid must be rectangular), found {}",

@@ -16,8 +16,8 @@
 //! `--` is taken for a forgotten value (`--input --method pyramid`); write `--input=--odd-name`
 //! for a file whose name starts with `--`.
 
-use blossom::Method;
 use blossom::Error;
+use blossom::Method;
 use std::ffi::{OsStr, OsString};
 use std::path::PathBuf;
 

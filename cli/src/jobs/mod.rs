@@ -23,8 +23,8 @@ pub mod specialised;
 pub mod spline_jobs;
 
 use crate::number::JsonNumber;
-use blossom::{Error, Rational};
 use args::{Arithmetic, Command, MethodChoice, RestrictOptions};
+use blossom::{Error, Rational};
 use serde_json::Value;
 use std::ffi::OsString;
 use std::io::{Read, Write};

@@ -43,16 +43,16 @@
 use super::answer::{point_json, Answer};
 use super::args::MethodChoice;
 use super::job::{array, field, number, numbers, points, Job};
-use blossom::bezier_curve_blossom;
+use crate::number::{json_type, JsonNumber};
 use crate::repeated;
-use blossom::{bernstein_to_power, elevate, reduce, squared_l2_distance, Reduction};
+use blossom::bezier_curve_blossom;
 use blossom::curve_control_points_from_samples;
 use blossom::Field;
-use crate::number::{json_type, JsonNumber};
-use blossom::{RationalBezierCurve, RationalCurve};
 use blossom::Point;
+use blossom::{bernstein_to_power, elevate, reduce, squared_l2_distance, Reduction};
 use blossom::{bspline_from_pieces as from_pieces, BSpline, Piece};
 use blossom::{BezierCurve, Error, Method, PowerCurve, Rational};
+use blossom::{RationalBezierCurve, RationalCurve};
 use serde_json::{Map, Value};
 
 /// The kinds answered here.

@@ -1,8 +1,8 @@
 //! The carried grid of generated evaluators and its dispatch from the library types.
 
 use super::{Carried, Scalar};
-use blossom::{BezierCurve, TensorPatch, TriangularPatch};
 use blossom::Point;
+use blossom::{BezierCurve, TensorPatch, TriangularPatch};
 use blossom::{PowerCurve, PowerSurface};
 
 /// The carried evaluators, as `blossom::restriction!` generates them: `curve_N`,

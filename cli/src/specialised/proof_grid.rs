@@ -2,9 +2,9 @@
 
 use super::carried::grid;
 use super::Shape;
-use blossom::{bezier_curve_blossom, restrict_curve, restrict_tensor, restrict_triangle, Method};
 use crate::proofs::{symbolic_curve, symbolic_surface, symbolic_triangle};
 use blossom::Poly;
+use blossom::{bezier_curve_blossom, restrict_curve, restrict_tensor, restrict_triangle, Method};
 
 /// One symbolic proof: the carried evaluator of `shape`, run on polynomials (coefficients
 /// `c_i` / `c_i_j` and domain corners as variables, one coordinate), against the definition

@@ -16,9 +16,9 @@
 //! Knot insertion and the split into Bézier pieces are further blossom values of the spans.
 
 use super::knots::KnotVector;
-use crate::shape::bezier::BezierCurve;
 use crate::error::{Error, ErrorKind, Result};
 use crate::num::linalg::Field;
+use crate::shape::bezier::BezierCurve;
 use crate::shape::point::Point;
 
 /// A B-spline curve of degree p: a validated knot vector and m de Boor points.
@@ -59,7 +59,7 @@ impl<T: Field> BSpline<T> {
         let control_points = BezierCurve::new(control_points)?.into_control_points();
         let m = control_points.len();
         if m < degree + 1 {
-            return Err(Error::of(ErrorKind::Shape, 
+            return Err(Error::of(ErrorKind::Shape,
                 "control_points",
                 format!(
                     "a B-spline of degree {degree} needs at least p + 1 = {} de Boor points (Theorem 2.3, ii), found {m}",
@@ -68,7 +68,8 @@ impl<T: Field> BSpline<T> {
             ));
         }
         if knots.len() != m + degree + 1 {
-            return Err(Error::of(ErrorKind::Shape, 
+            return Err(Error::of(
+                ErrorKind::Shape,
                 "knots",
                 format!(
                     "{m} de Boor points of degree {degree} need m + p + 1 = {} knots, found {}",
@@ -139,7 +140,8 @@ impl<T: Field> BSpline<T> {
     /// (0-based: `[knots[s], knots[s+1])`), by de Boor's algorithm with one argument per level.
     pub fn blossom(&self, s: usize, args: &[T]) -> Result<Point<T>> {
         if !self.knots.is_span(s) {
-            return Err(Error::of(ErrorKind::Domain, 
+            return Err(Error::of(
+                ErrorKind::Domain,
                 "span",
                 format!(
                     "{s} is not a non-empty span of the domain (spans: {:?})",
@@ -148,7 +150,8 @@ impl<T: Field> BSpline<T> {
             ));
         }
         if args.len() != self.degree() {
-            return Err(Error::of(ErrorKind::Arity, 
+            return Err(Error::of(
+                ErrorKind::Arity,
                 "args",
                 format!(
                     "a blossom of degree {} takes {} arguments, found {}",
@@ -193,7 +196,9 @@ impl<T: Field> BSpline<T> {
             .map(|s| {
                 let (a, b) = (&t[s], &t[s + 1]);
                 let points = (0..=p)
-                    .map(|i| self.blossom_unchecked(s, &crate::restrict::nets::repeated(a, p - i, b, i)))
+                    .map(|i| {
+                        self.blossom_unchecked(s, &crate::restrict::nets::repeated(a, p - i, b, i))
+                    })
                     .collect();
                 BezierPiece {
                     interval: [a.clone(), b.clone()],
@@ -211,7 +216,10 @@ impl<T: Field> BSpline<T> {
     /// domain, or `knots` when x would exceed multiplicity p + 1.
     pub fn insert_knot(&self, x: &T) -> Result<BSpline<T>> {
         let p = self.degree();
-        let s = self.knots.span(x).map_err(|e| Error::of(e.kind, "x", e.message))?;
+        let s = self
+            .knots
+            .span(x)
+            .map_err(|e| Error::of(e.kind, "x", e.message))?;
         let mut knots = self.knots().to_vec();
         knots.insert(s + 1, x.clone());
         let knots = KnotVector::new(p, knots)?;

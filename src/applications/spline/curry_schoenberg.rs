@@ -12,10 +12,10 @@
 
 use super::bspline::BSpline;
 use super::knots::KnotVector;
-use crate::shape::basis::taylor_shift;
-use crate::restrict::definition::curve_blossom;
 use crate::error::{Error, ErrorKind, Result};
 use crate::num::linalg::Field;
+use crate::restrict::definition::curve_blossom;
+use crate::shape::basis::taylor_shift;
 use crate::shape::point::Point;
 use crate::shape::power::PowerCurve;
 
@@ -32,14 +32,19 @@ pub struct Piece<T> {
 /// The pieces checked against degree `p` and written with exactly p + 1 coefficients each.
 fn normalise<T: Field>(p: usize, pieces: &[Piece<T>]) -> Result<Vec<PowerCurve<T>>> {
     let Some(first) = pieces.first() else {
-        return Err(Error::of(ErrorKind::Empty, "pieces", "expected at least one piece"));
+        return Err(Error::of(
+            ErrorKind::Empty,
+            "pieces",
+            "expected at least one piece",
+        ));
     };
     let dim = first.curve.dim();
     let mut out = Vec::with_capacity(pieces.len());
     for (i, piece) in pieces.iter().enumerate() {
         let [a, b] = &piece.interval;
         if a >= b {
-            return Err(Error::of(ErrorKind::Domain, 
+            return Err(Error::of(
+                ErrorKind::Domain,
                 format!("pieces[{i}].interval"),
                 format!("expected e_0 < e_1, found [{a}, {b}]"),
             ));
@@ -52,7 +57,8 @@ fn normalise<T: Field>(p: usize, pieces: &[Piece<T>]) -> Result<Vec<PowerCurve<T
                 } else {
                     "overlaps"
                 };
-                return Err(Error::of(ErrorKind::Domain, 
+                return Err(Error::of(
+                    ErrorKind::Domain,
                     format!("pieces[{i}].interval"),
                     format!("starts at {a}, which {what} the previous piece ending at {prev}"),
                 ));
@@ -60,13 +66,15 @@ fn normalise<T: Field>(p: usize, pieces: &[Piece<T>]) -> Result<Vec<PowerCurve<T
         }
         let c = piece.curve.coefficients();
         if piece.curve.dim() != dim {
-            return Err(Error::of(ErrorKind::Dimension, 
+            return Err(Error::of(
+                ErrorKind::Dimension,
                 format!("pieces[{i}].coefficients[0]"),
                 format!("expected {dim} coordinates, found {}", piece.curve.dim()),
             ));
         }
         if let Some(k) = (p + 1..c.len()).find(|&k| c[k].iter().any(|x| !x.is_zero())) {
-            return Err(Error::of(ErrorKind::Degree, 
+            return Err(Error::of(
+                ErrorKind::Degree,
                 format!("pieces[{i}].coefficients[{k}]"),
                 format!("the piece has degree above p = {p}"),
             ));
@@ -87,8 +95,11 @@ pub fn continuity<T: Field>(left: &PowerCurve<T>, right: &PowerCurve<T>, e: &T) 
     taylor_shift(&mut r, e);
     let n = l.len().max(r.len());
     let dim = left.dim();
-    let coef =
-        |c: &[Point<T>], k: usize| c.get(k).cloned().unwrap_or_else(|| crate::shape::point::zero(dim));
+    let coef = |c: &[Point<T>], k: usize| {
+        c.get(k)
+            .cloned()
+            .unwrap_or_else(|| crate::shape::point::zero(dim))
+    };
     (0..n).take_while(|&k| coef(&l, k) == coef(&r, k)).count() as isize - 1
 }
 
@@ -163,7 +174,8 @@ fn de_boor_points<T: Field>(
         &pieces[pieces.len() - 1].interval[1],
     );
     if lo != e0 || hi != e1 {
-        return Err(Error::of(ErrorKind::Domain, 
+        return Err(Error::of(
+            ErrorKind::Domain,
             "knots",
             format!("the domain [{lo}, {hi}] differs from the pieces' interval [{e0}, {e1}]"),
         ));
@@ -180,7 +192,7 @@ fn de_boor_points<T: Field>(
             .next()
             .expect("the domain is covered by the pieces");
         if let Some(other) = overlapping.find(|&i| curves[i] != curves[piece]) {
-            return Err(Error::of(ErrorKind::Domain, 
+            return Err(Error::of(ErrorKind::Domain,
                 "knots",
                 format!(
                     "the span [{}, {}] contains the breakpoint {} (between different polynomials) but it is not a knot",
@@ -195,7 +207,7 @@ fn de_boor_points<T: Field>(
             match &points[k] {
                 None => points[k] = Some((piece, value)),
                 Some((other, v)) if check_agreement && *v != value => {
-                    return Err(Error::of(ErrorKind::Invalid, 
+                    return Err(Error::of(ErrorKind::Invalid,
                         "knots",
                         format!(
                             "the de Boor point d_{} is {} from pieces[{other}] but {} from pieces[{piece}]: \

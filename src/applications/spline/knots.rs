@@ -31,7 +31,7 @@ impl<T: Field> KnotVector<T> {
     pub fn new(degree: usize, knots: Vec<T>) -> Result<Self> {
         let p = degree;
         if knots.len() < 2 * p + 2 {
-            return Err(Error::of(ErrorKind::Shape, 
+            return Err(Error::of(ErrorKind::Shape,
                 "knots",
                 format!(
                     "a B-spline of degree {p} needs at least {} knots (p + 1 <= m de Boor points), found {}",
@@ -42,7 +42,8 @@ impl<T: Field> KnotVector<T> {
         }
         for i in 1..knots.len() {
             if knots[i] < knots[i - 1] {
-                return Err(Error::of(ErrorKind::Domain, 
+                return Err(Error::of(
+                    ErrorKind::Domain,
                     format!("knots[{i}]"),
                     format!(
                         "knots must be non-decreasing, found {} after {}",
@@ -54,7 +55,8 @@ impl<T: Field> KnotVector<T> {
         }
         for i in 0..knots.len() - p - 1 {
             if knots[i] == knots[i + p + 1] {
-                return Err(Error::of(ErrorKind::Domain, 
+                return Err(Error::of(
+                    ErrorKind::Domain,
                     format!("knots[{}]", i + p + 1),
                     format!(
                         "the knot {} has multiplicity above p + 1 = {} (t_i < t_(i+p+1) fails)",
@@ -66,7 +68,8 @@ impl<T: Field> KnotVector<T> {
         }
         let m = knots.len() - p - 1;
         if knots[p] == knots[m] {
-            return Err(Error::of(ErrorKind::Domain, 
+            return Err(Error::of(
+                ErrorKind::Domain,
                 "knots",
                 format!(
                     "the domain [t_{}, t_{}] = [{}, {}] is empty",
@@ -117,7 +120,8 @@ impl<T: Field> KnotVector<T> {
     pub fn span(&self, t: &T) -> Result<usize> {
         let (a, b) = self.domain();
         if t < a || t > b {
-            return Err(Error::of(ErrorKind::Domain, 
+            return Err(Error::of(
+                ErrorKind::Domain,
                 "t",
                 format!("the parameter {t} is outside the domain [{a}, {b}] of the knot vector"),
             ));

@@ -4,8 +4,8 @@
 
 use super::expr::parse;
 use super::{entry, point, show};
-use blossom::RationalCurve;
 use crate::verify::report::{Section, Status};
+use blossom::RationalCurve;
 use blossom::{Poly, Rational, Ring};
 
 /// Printed control points as ((x numerator, x denominator), (y numerator, y denominator)) and

@@ -8,13 +8,14 @@
 
 use super::entry;
 use super::expr::{parse, sample_name};
-use blossom::binomial;
+use crate::verify::report::{Section, Status};
 use blossom::bezier_curve_blossom;
+use blossom::binomial;
 use blossom::{
-    curve_blossom_from_samples as curve_blossom, curve_control_points_from_samples as curve_control_points,
+    curve_blossom_from_samples as curve_blossom,
+    curve_control_points_from_samples as curve_control_points,
     triangle_control_points_from_samples as triangle_control_points,
 };
-use crate::verify::report::{Section, Status};
 use blossom::{Poly, Rational, Ring};
 use num_bigint::BigInt;
 use std::cell::Cell;

@@ -8,10 +8,10 @@
 
 use super::expr::parse;
 use super::{entry, sci};
-use blossom::binomial;
-use blossom::{bernstein_gram, elevate, squared_l2_distance};
-use blossom::curve_control_points_from_samples;
 use crate::verify::report::{Section, Status};
+use blossom::binomial;
+use blossom::curve_control_points_from_samples;
+use blossom::{bernstein_gram, elevate, squared_l2_distance};
 use blossom::{BezierCurve, Poly, Rational, Ring};
 use num_bigint::BigInt;
 use num_integer::Integer;

@@ -4,9 +4,9 @@
 
 use super::expr::parse;
 use super::{entry, point, sci, show};
+use crate::verify::report::{Section, Status};
 use blossom::power_to_bernstein;
 use blossom::{reduce, squared_l2_distance, Reduction};
-use crate::verify::report::{Section, Status};
 use blossom::{BezierCurve, Poly, Rational};
 
 /// The printed parametrisation, coordinate by coordinate.

@@ -4,9 +4,11 @@
 
 use super::expr::parse;
 use super::{entry, num, point, show};
-use blossom::curve_blossom;
-use blossom::{bspline_from_pieces as from_pieces, continuity_at as continuity, BSpline, KnotVector, Piece};
 use crate::verify::report::{Section, Status};
+use blossom::curve_blossom;
+use blossom::{
+    bspline_from_pieces as from_pieces, continuity_at as continuity, BSpline, KnotVector, Piece,
+};
 use blossom::{Poly, PowerCurve, Rational, Ring};
 
 const SOURCE: &str = "seed 002";

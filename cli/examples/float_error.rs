@@ -2,8 +2,8 @@
 //! random inputs with coefficients in [-1, 1] and domains inside [-1, 1]:
 //! `cargo run --release --example float_error`.
 
-use blossom::accuracy::{curve_error, tensor_error, triangle_error};
 use blossom::{Method, PowerCurve, PowerSurface, Rational};
+use blossom_cli::accuracy::{curve_error, tensor_error, triangle_error};
 use num_bigint::BigInt;
 
 struct Rng(u64);
