@@ -59,7 +59,7 @@ mod shape;
 
 // Numbers.
 pub use num::binomial::{binomial, multinomial};
-pub use num::linalg::{solve as solve_rational_system, Field};
+pub use num::linalg::{solve_rational_system, Field};
 pub use num::poly::Poly;
 pub use num::ring::{rational_to_f64, Rational, Ring};
 
@@ -81,8 +81,7 @@ pub use shape::simplex::{triangle_index, triangle_len};
 
 // Restriction.
 pub use restrict::closed_form::{
-    restrict_triangle_with as restrict_triangle_with_formula, Split as TriangleSplit,
-    TriangleFormula, THEOREM_3,
+    restrict_triangle_with_formula, TriangleFormula, TriangleSplit, THEOREM_3,
 };
 pub use restrict::definition::{curve_blossom, tensor_blossom, triangle_blossom};
 pub use restrict::polarisation::{
@@ -93,7 +92,7 @@ pub use restrict::polarisation::{
 pub use restrict::{restrict_curve, restrict_tensor, restrict_triangle, Method};
 
 // Applications.
-pub use applications::batch::{Batch, RestrictionMap, LANES as BATCH_LANES};
+pub use applications::batch::{Batch, RestrictionMap, BATCH_LANES};
 pub use applications::bezier_input::{
     restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle,
     restrict_bezier_triangle_affine,
@@ -107,8 +106,7 @@ pub use applications::rational::{
     RationalTriangularPatch,
 };
 pub use applications::spline::{
-    basis_on_span as bspline_basis_on_span, continuity as continuity_at,
-    from_pieces as bspline_from_pieces, from_pieces_with_knots as bspline_from_pieces_with_knots,
+    bspline_basis_on_span, bspline_from_pieces, bspline_from_pieces_with_knots, continuity_at,
     BSpline, BezierPiece, KnotVector, Piece, PowerPiece,
 };
 

@@ -16,9 +16,9 @@
 //!
 //! # Layout
 //!
-//! A [`Batch`] stores its objects as a structure of arrays in blocks of [`LANES`] objects
+//! A [`Batch`] stores its objects as a structure of arrays in blocks of [`BATCH_LANES`] objects
 //! ("AoSoA"). Within a block, coordinate x of control point p of the objects in the block is
-//! one contiguous run of `LANES` numbers, at `block * block_len + (p * dim + x) * LANES`.
+//! one contiguous run of `BATCH_LANES` numbers, at `block * block_len + (p * dim + x) * BATCH_LANES`.
 //! Applying M to a block is a sequence of multiply-adds over contiguous runs, which the
 //! compiler vectorises. A block of a cubic 3-D curve batch (12 runs in, 12 out, 48 KiB each)
 //! stays in the L2 cache while it is worked on. On this project's machine, 512 objects per
@@ -36,7 +36,7 @@ use crate::Rational;
 use num_traits::{One, Zero};
 
 /// Objects per block of a [`Batch`] (measured: see the module docs).
-pub const LANES: usize = 512;
+pub const BATCH_LANES: usize = 512;
 
 /// The f64 value `x` as an exact rational, or an error naming `field` when it is not finite.
 fn exact(x: f64, field: &str) -> Result<Rational> {
@@ -154,20 +154,21 @@ impl RestrictionMap {
     /// up to four inputs (o = w0 i0 + w1 i1 + w2 i2 + w3 i3, then o += ... for the next
     /// group), so a cubic's output run is loaded and stored once.
     fn apply_block(&self, dim: usize, input: &[f64], output: &mut [f64]) {
-        let run = |i: usize, x: usize| -> &[f64; LANES] {
-            input[(i * dim + x) * LANES..][..LANES]
+        let run = |i: usize, x: usize| -> &[f64; BATCH_LANES] {
+            input[(i * dim + x) * BATCH_LANES..][..BATCH_LANES]
                 .try_into()
-                .expect("a run of LANES numbers")
+                .expect("a run of BATCH_LANES numbers")
         };
         for j in 0..self.outputs {
             let row = &self.entries[j * self.inputs..][..self.inputs];
             for x in 0..dim {
-                let out: &mut [f64; LANES] = (&mut output[(j * dim + x) * LANES..][..LANES])
+                let out: &mut [f64; BATCH_LANES] = (&mut output[(j * dim + x) * BATCH_LANES..]
+                    [..BATCH_LANES])
                     .try_into()
-                    .expect("a run of LANES numbers");
+                    .expect("a run of BATCH_LANES numbers");
                 for (g, weights) in row.chunks(4).enumerate() {
                     let last = weights.len() - 1;
-                    let runs: [&[f64; LANES]; 4] =
+                    let runs: [&[f64; BATCH_LANES]; 4] =
                         std::array::from_fn(|k| run(4 * g + k.min(last), x));
                     let runs = &runs[..weights.len()];
                     if g == 0 {
@@ -184,9 +185,9 @@ impl RestrictionMap {
 /// `out = sum_k weights[k] runs[k]` (or `out +=` when `ACCUMULATE`), for 1 to 4 runs, lane
 /// by lane in straight loops that the compiler vectorises.
 fn combine<const ACCUMULATE: bool>(
-    out: &mut [f64; LANES],
+    out: &mut [f64; BATCH_LANES],
     weights: &[f64],
-    runs: &[&[f64; LANES]],
+    runs: &[&[f64; BATCH_LANES]],
 ) {
     let put = |o: &mut f64, v: f64| *o = if ACCUMULATE { *o + v } else { v };
     match (weights, runs) {
@@ -227,12 +228,12 @@ pub struct Batch {
 impl Batch {
     /// `len` objects with every coordinate zero.
     pub fn zeros(points: usize, dim: usize, len: usize) -> Self {
-        let blocks = len.div_ceil(LANES);
+        let blocks = len.div_ceil(BATCH_LANES);
         Batch {
             points,
             dim,
             len,
-            data: vec![0.0; blocks * points * dim * LANES],
+            data: vec![0.0; blocks * points * dim * BATCH_LANES],
         }
     }
 
@@ -282,8 +283,8 @@ impl Batch {
     }
 
     fn index(&self, k: usize, p: usize, x: usize) -> usize {
-        let block = self.points * self.dim * LANES;
-        (k / LANES) * block + (p * self.dim + x) * LANES + k % LANES
+        let block = self.points * self.dim * BATCH_LANES;
+        (k / BATCH_LANES) * block + (p * self.dim + x) * BATCH_LANES + k % BATCH_LANES
     }
 
     /// Coordinate `x` of control point `p` of object `k`.
@@ -338,7 +339,7 @@ impl Batch {
         self.dim
     }
 
-    /// The storage, blocks of [`LANES`] objects (for copying or I/O).
+    /// The storage, blocks of [`BATCH_LANES`] objects (for copying or I/O).
     pub fn as_slice(&self) -> &[f64] {
         &self.data
     }
@@ -372,7 +373,10 @@ impl Batch {
     }
 
     fn block_lens(&self, out: &Batch) -> (usize, usize) {
-        (self.points * self.dim * LANES, out.points * out.dim * LANES)
+        (
+            self.points * self.dim * BATCH_LANES,
+            out.points * out.dim * BATCH_LANES,
+        )
     }
 
     /// Writes the restriction of every object by `map` into `out`, which must hold as many

@@ -36,7 +36,7 @@ use crate::Ring;
 /// or with a > b): control points q_j = b[a^(n-j), b^j]. O(n^2) per coordinate.
 ///
 /// ```
-/// use blossom::{subdivide::restrict_bezier_curve, BezierCurve};
+/// use blossom::{restrict_bezier_curve, BezierCurve};
 /// // The left half of the cubic (0,0), (1,2), (3,3), (4,0), as de Casteljau splits it.
 /// let c = BezierCurve::new(vec![vec![0.0, 0.0], vec![1.0, 2.0], vec![3.0, 3.0], vec![4.0, 0.0]])?;
 /// let left = restrict_bezier_curve(&c, &0.0, &0.5);

@@ -106,7 +106,7 @@ pub fn bernstein_gram(m: usize, n: usize) -> Vec<Vec<Rational>> {
 /// `curve` (degree n) written at degree `to_degree` >= n, exactly.
 ///
 /// ```
-/// use blossom::degree::elevate;
+/// use blossom::elevate;
 /// use blossom::BezierCurve;
 /// // The line from 0 to 3 as a cubic: 0, 1, 2, 3.
 /// let line = BezierCurve::new(vec![vec![0.0], vec![3.0]])?;

@@ -86,7 +86,7 @@ impl<T: Ring> RationalCurve<T> {
     /// (the first D coordinates divided by the last), where that is non-zero.
     ///
     /// ```
-    /// use blossom::nurbs::RationalCurve;
+    /// use blossom::RationalCurve;
     /// use blossom::Rational;
     /// let q = |n: i64| Rational::from_integer(n.into());
     /// // The circle arc (1 - t^2, 2t) / (1 + t^2): H[a, b] = (1 - ab, a + b, 1 + ab).
@@ -123,7 +123,7 @@ impl<T: Field> RationalCurve<T> {
     /// below the curve's own.
     ///
     /// ```
-    /// use blossom::nurbs::RationalCurve;
+    /// use blossom::RationalCurve;
     /// use blossom::Rational;
     /// let q = |n: i64| Rational::from_integer(n.into());
     /// // The quarter circle ((1 - t^2), 2t) / (1 + t^2) on [0, 1] (seed 004, Example 1).

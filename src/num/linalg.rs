@@ -105,7 +105,7 @@ pub fn apply<T: Ring>(matrix: &[Vec<Rational>], rhs: &[Point<T>], dim: usize) ->
 
 /// Solves `matrix * x = rhs` for a column `x` of points of dimension `dim`, exactly: the
 /// matrix is rational, the points may be of any [`Ring`] (rationals, floats, symbolic).
-pub fn solve<T: Ring>(
+pub fn solve_rational_system<T: Ring>(
     matrix: &[Vec<Rational>],
     rhs: &[Point<T>],
     dim: usize,
@@ -165,9 +165,9 @@ mod tests {
     fn solve_with_pivoting() {
         // [[0, 1], [1, 1]] x = [(2), (3)] -> x = [(1), (2)]
         let m = vec![vec![q(0, 1), q(1, 1)], vec![q(1, 1), q(1, 1)]];
-        let x = solve(&m, &[vec![q(2, 1)], vec![q(3, 1)]], 1, "m").unwrap();
+        let x = solve_rational_system(&m, &[vec![q(2, 1)], vec![q(3, 1)]], 1, "m").unwrap();
         assert_eq!(x, vec![vec![q(1, 1)], vec![q(2, 1)]]);
-        let xf = solve(&m, &[vec![2.0f64], vec![3.0]], 1, "m").unwrap();
+        let xf = solve_rational_system(&m, &[vec![2.0f64], vec![3.0]], 1, "m").unwrap();
         assert_eq!(xf, vec![vec![1.0], vec![2.0]]);
     }
 }

@@ -94,7 +94,7 @@ pub fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> Ten
 /// The indices of one term of eq. (14): how many of the `i` u-factors and `j` v-factors fall
 /// on the nu copies of a, the mu copies of b and the lambda copies of c.
 #[derive(Clone, Copy, Debug)]
-pub struct Split {
+pub struct TriangleSplit {
     /// Total degree N = n + m.
     pub big_n: i64,
     /// Copies of a, b, c among the arguments (nu + mu + lambda = N).
@@ -127,17 +127,17 @@ pub struct Split {
 #[derive(Clone, Copy)]
 pub struct TriangleFormula {
     /// Range of i_alpha given (nu, mu, lambda, i, j); the other indices of the split are 0.
-    pub i_alpha: fn(&Split) -> (i64, i64),
+    pub i_alpha: fn(&TriangleSplit) -> (i64, i64),
     /// Range of i_beta given i_alpha.
-    pub i_beta: fn(&Split) -> (i64, i64),
+    pub i_beta: fn(&TriangleSplit) -> (i64, i64),
     /// Range of j_alpha given i_alpha, i_beta (and i_gamma).
-    pub j_alpha: fn(&Split) -> (i64, i64),
+    pub j_alpha: fn(&TriangleSplit) -> (i64, i64),
     /// Range of j_beta given the above.
-    pub j_beta: fn(&Split) -> (i64, i64),
+    pub j_beta: fn(&TriangleSplit) -> (i64, i64),
     /// |I(i_alpha, i_beta, j_alpha, j_beta)|, eq. (15).
-    pub count: fn(&Split) -> BigInt,
+    pub count: fn(&TriangleSplit) -> BigInt,
     /// The denominator of eq. (16).
-    pub denominator: fn(&Split) -> BigInt,
+    pub denominator: fn(&TriangleSplit) -> BigInt,
 }
 
 /// Theorem 3 as proved: bounds at the end of the proof, count (15) as
@@ -191,7 +191,7 @@ pub fn triangle_point_with<T: Ring>(
     let mut acc = point::zero(surface.dim());
     for (i, row) in surface.coefficients().iter().enumerate() {
         for (j, cij) in row.iter().enumerate() {
-            let mut s = Split {
+            let mut s = TriangleSplit {
                 big_n: big_n as i64,
                 nu: nu as i64,
                 mu: mu as i64,
@@ -249,11 +249,11 @@ pub fn restrict_triangle<T: Ring>(
     surface: &PowerSurface<T>,
     tri: &[[T; 2]; 3],
 ) -> TriangularPatch<T> {
-    restrict_triangle_with(&THEOREM_3, surface, tri)
+    restrict_triangle_with_formula(&THEOREM_3, surface, tri)
 }
 
 /// All control points of `surface` on `tri` by eq. (14) read through `formula`.
-pub fn restrict_triangle_with<T: Ring>(
+pub fn restrict_triangle_with_formula<T: Ring>(
     formula: &TriangleFormula,
     surface: &PowerSurface<T>,
     tri: &[[T; 2]; 3],

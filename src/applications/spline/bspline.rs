@@ -43,7 +43,7 @@ impl<T: Field> BSpline<T> {
     /// `control_points` (m of them, all of one dimension D >= 1).
     ///
     /// ```
-    /// use blossom::spline::BSpline;
+    /// use blossom::BSpline;
     /// // The de Boor algorithm example of seed 002: F(0.8) = (2.6, 2.92).
     /// let f = BSpline::new(
     ///     2,

@@ -30,7 +30,7 @@ fn times_linear<T: Field>(f: &[T], a: &T, b: &T, len: usize) -> Coeffs<T> {
 
 /// The polynomials N_i^p restricted to the span `[knots[s], knots[s+1])`, for i = s - p..=s
 /// (0-based), in the power basis of u. Requires s >= p and s + p + 1 < knots.len().
-pub fn basis_on_span<T: Field>(knots: &[T], p: usize, s: usize) -> Vec<Coeffs<T>> {
+pub fn bspline_basis_on_span<T: Field>(knots: &[T], p: usize, s: usize) -> Vec<Coeffs<T>> {
     let len = p + 1;
     // level[i - (s - r)] = N_i^r on the span, for i = s - r..=s.
     let mut level: Vec<Coeffs<T>> = vec![{
@@ -97,7 +97,7 @@ impl<T: Field> BSpline<T> {
             .spans()
             .into_iter()
             .map(|s| {
-                let basis = basis_on_span(t, p, s);
+                let basis = bspline_basis_on_span(t, p, s);
                 let coefficients: Vec<Point<T>> = (0..=p)
                     .map(|e| {
                         let mut c = point::zero::<T>(self.dim());
@@ -130,7 +130,7 @@ mod tests {
     fn bernstein_basis_on_a_clamped_span() {
         // Knots 0,0,0,1,1,1: N_0^2 = (1-u)^2, N_1^2 = 2u(1-u), N_2^2 = u^2.
         let knots = [0, 0, 0, 1, 1, 1].map(q);
-        let b = basis_on_span(&knots, 2, 2);
+        let b = bspline_basis_on_span(&knots, 2, 2);
         assert_eq!(
             b,
             vec![
@@ -145,7 +145,7 @@ mod tests {
     fn partition_of_unity_on_uniform_knots() {
         let knots: Vec<Rational> = (0..10).map(q).collect();
         for s in 3..6 {
-            let b = basis_on_span(&knots, 3, s);
+            let b = bspline_basis_on_span(&knots, 3, s);
             let mut sum = vec![q(0); 4];
             for f in &b {
                 add_into(&mut sum, f);

@@ -88,7 +88,7 @@ fn normalise<T: Field>(p: usize, pieces: &[Piece<T>]) -> Result<Vec<PowerCurve<T
 
 /// The highest order r in -1..=p of continuity of `left` and `right` (each with p + 1
 /// coefficients) at `e`: the number of equal leading Taylor coefficients at e, minus one.
-pub fn continuity<T: Field>(left: &PowerCurve<T>, right: &PowerCurve<T>, e: &T) -> isize {
+pub fn continuity_at<T: Field>(left: &PowerCurve<T>, right: &PowerCurve<T>, e: &T) -> isize {
     let mut l = left.coefficients().to_vec();
     let mut r = right.coefficients().to_vec();
     taylor_shift(&mut l, e);
@@ -111,7 +111,7 @@ pub fn continuity<T: Field>(left: &PowerCurve<T>, right: &PowerCurve<T>, e: &T) 
 /// [`crate::cli::spline_jobs`]).
 ///
 /// ```
-/// use blossom::spline::{from_pieces, Piece};
+/// use blossom::{bspline_from_pieces, Piece};
 /// use blossom::{PowerCurve, Rational};
 /// let q = |n: i64| Rational::from_integer(n.into());
 /// // u^2 on [0, 1] and 2u - 1 on [1, 2] meet with C^1: the knot 1 has multiplicity 2 - 1 = 1.
@@ -119,18 +119,18 @@ pub fn continuity<T: Field>(left: &PowerCurve<T>, right: &PowerCurve<T>, e: &T) 
 ///     Piece { interval: [q(0), q(1)], curve: PowerCurve::new(vec![vec![q(0)], vec![q(0)], vec![q(1)]])? },
 ///     Piece { interval: [q(1), q(2)], curve: PowerCurve::new(vec![vec![q(-1)], vec![q(2)]])? },
 /// ];
-/// let f = from_pieces(2, &pieces)?;
+/// let f = bspline_from_pieces(2, &pieces)?;
 /// assert_eq!(f.knots(), &[0, 0, 0, 1, 2, 2, 2].map(q));
 /// assert_eq!(f.control_points(), &[vec![q(0)], vec![q(0)], vec![q(2)], vec![q(3)]]);
 /// # Ok::<(), blossom::Error>(())
 /// ```
-pub fn from_pieces<T: Field>(degree: usize, pieces: &[Piece<T>]) -> Result<BSpline<T>> {
+pub fn bspline_from_pieces<T: Field>(degree: usize, pieces: &[Piece<T>]) -> Result<BSpline<T>> {
     let curves = normalise(degree, pieces)?;
     let p = degree;
     let mut knots = vec![pieces[0].interval[0].clone(); p + 1];
     for i in 1..pieces.len() {
         let e = &pieces[i].interval[0];
-        let r = continuity(&curves[i - 1], &curves[i], e);
+        let r = continuity_at(&curves[i - 1], &curves[i], e);
         let mult = (p as isize - r) as usize;
         knots.extend(std::iter::repeat_n(e.clone(), mult));
     }
@@ -150,7 +150,7 @@ pub fn from_pieces<T: Field>(degree: usize, pieces: &[Piece<T>]) -> Result<BSpli
 /// leaves the pieces C^(p-u) there); otherwise an error says which point disagrees. In float
 /// arithmetic agreement means bitwise equality of rounded values, so exact numbers are the
 /// ones to use here.
-pub fn from_pieces_with_knots<T: Field>(
+pub fn bspline_from_pieces_with_knots<T: Field>(
     degree: usize,
     pieces: &[Piece<T>],
     knots: Vec<T>,
@@ -263,34 +263,37 @@ mod tests {
     fn continuity_orders() {
         let p = |c: &[i64]| PowerCurve::new(c.iter().map(|&x| vec![q(x)]).collect()).unwrap();
         // u^2 vs 2u - 1 at 1: C^1; u^2 vs u at 1: C^0; u^2 vs 0: C^-1; equal: p.
-        assert_eq!(continuity(&p(&[0, 0, 1]), &p(&[-1, 2, 0]), &q(1)), 1);
-        assert_eq!(continuity(&p(&[0, 0, 1]), &p(&[0, 1, 0]), &q(1)), 0);
-        assert_eq!(continuity(&p(&[0, 0, 1]), &p(&[0, 0, 0]), &q(1)), -1);
-        assert_eq!(continuity(&p(&[0, 0, 1]), &p(&[0, 0, 1]), &q(1)), 2);
+        assert_eq!(continuity_at(&p(&[0, 0, 1]), &p(&[-1, 2, 0]), &q(1)), 1);
+        assert_eq!(continuity_at(&p(&[0, 0, 1]), &p(&[0, 1, 0]), &q(1)), 0);
+        assert_eq!(continuity_at(&p(&[0, 0, 1]), &p(&[0, 0, 0]), &q(1)), -1);
+        assert_eq!(continuity_at(&p(&[0, 0, 1]), &p(&[0, 0, 1]), &q(1)), 2);
     }
 
     #[test]
     fn bad_pieces_name_the_field() {
         let gap = [piece(0, 1, &[0]), piece(2, 3, &[0])];
-        let e = from_pieces(1, &gap).unwrap_err();
+        let e = bspline_from_pieces(1, &gap).unwrap_err();
         assert_eq!(e.field, "pieces[1].interval");
         assert!(e.message.contains("gap"), "{e}");
         let overlap = [piece(0, 2, &[0]), piece(1, 3, &[0])];
-        assert!(from_pieces(1, &overlap)
+        assert!(bspline_from_pieces(1, &overlap)
             .unwrap_err()
             .message
             .contains("overlaps"));
         let high = [piece(0, 1, &[0, 0, 1])];
         assert_eq!(
-            from_pieces(1, &high).unwrap_err().field,
+            bspline_from_pieces(1, &high).unwrap_err().field,
             "pieces[0].coefficients[2]"
         );
         let empty = [piece(1, 1, &[0])];
         assert_eq!(
-            from_pieces(1, &empty).unwrap_err().field,
+            bspline_from_pieces(1, &empty).unwrap_err().field,
             "pieces[0].interval"
         );
-        assert_eq!(from_pieces::<Rational>(1, &[]).unwrap_err().field, "pieces");
+        assert_eq!(
+            bspline_from_pieces::<Rational>(1, &[]).unwrap_err().field,
+            "pieces"
+        );
     }
 
     #[test]
@@ -298,12 +301,12 @@ mod tests {
         // u on [0, 1], 1 on [1, 2]: C^0 at 1, so the knot 1 must have multiplicity 2 at p = 2;
         // with multiplicity 1 the de Boor points disagree.
         let pieces = [piece(0, 1, &[0, 1]), piece(1, 2, &[1])];
-        assert!(from_pieces(2, &pieces).is_ok());
+        assert!(bspline_from_pieces(2, &pieces).is_ok());
         let knots = [0, 0, 0, 1, 2, 2, 2].map(q).to_vec();
-        let e = from_pieces_with_knots(2, &pieces, knots).unwrap_err();
+        let e = bspline_from_pieces_with_knots(2, &pieces, knots).unwrap_err();
         assert!(e.message.contains("de Boor point"), "{e}");
         // Equal pieces: the breakpoint disappears.
         let same = [piece(0, 1, &[0, 1]), piece(1, 2, &[0, 1])];
-        assert_eq!(from_pieces(2, &same).unwrap().knots().len(), 6);
+        assert_eq!(bspline_from_pieces(2, &same).unwrap().knots().len(), 6);
     }
 }

@@ -23,7 +23,7 @@ impl<T: Field> KnotVector<T> {
     /// non-decreasing, every multiplicity at most p + 1, and a non-empty domain.
     ///
     /// ```
-    /// use blossom::spline::KnotVector;
+    /// use blossom::KnotVector;
     /// assert!(KnotVector::new(2, vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0]).is_ok());
     /// let e = KnotVector::new(1, vec![0.0, 2.0, 1.0, 3.0]).unwrap_err();
     /// assert_eq!(e.to_string(), "knots[2]: knots must be non-decreasing, found 1 after 2");

@@ -13,6 +13,8 @@ pub(crate) mod curry_schoenberg;
 pub(crate) mod knots;
 
 pub use bspline::{BSpline, BezierPiece};
-pub use cox_de_boor::{basis_on_span, PowerPiece};
-pub use curry_schoenberg::{continuity, from_pieces, from_pieces_with_knots, Piece};
+pub use cox_de_boor::{bspline_basis_on_span, PowerPiece};
+pub use curry_schoenberg::{
+    bspline_from_pieces, bspline_from_pieces_with_knots, continuity_at, Piece,
+};
 pub use knots::KnotVector;
