@@ -42,22 +42,19 @@
 //! ```
 
 #[cfg(feature = "carried-grid")]
-mod carried;
-#[cfg(feature = "carried-grid")]
 mod proof_grid;
-mod scalar;
 
 #[cfg(feature = "carried-grid")]
-pub use carried::{
+pub use blossom_grid::{
     grid, restrict_bezier_curve_specialised, restrict_curve_specialised,
     restrict_tensor_specialised, restrict_triangle_specialised,
 };
+pub use blossom_grid::{Carried, Scalar};
 #[cfg(feature = "carried-grid")]
 pub use proof_grid::{
     proof_table, proof_table_text, prove_bezier_curve, prove_curve, prove_tensor, prove_triangle,
     ProofRow,
 };
-pub use scalar::{Carried, Scalar};
 
 use blossom::Error;
 pub use blossom_codegen::{Shape, MAX_CURVE_DEGREE, MAX_TENSOR_DEGREE, MAX_TRIANGLE_DEGREE};
@@ -178,5 +175,36 @@ mod tests {
         assert!(src.contains("pub fn restrict_bezier_curve_3<T: ::blossom::Ring, const D: usize>("));
         let src = expand_command(&["curve", "3"]).unwrap();
         assert!(src.contains("pub fn restrict_curve_3<T: ::blossom::Ring, const D: usize>("));
+    }
+
+    // The scalar ring of the grid (crate `blossom-grid`, which has no tests of its own).
+    use blossom::{Poly, Rational, Ring};
+
+    fn q(n: i64, d: i64) -> Rational {
+        Rational::new(n.into(), d.into())
+    }
+
+    #[test]
+    fn constants_take_the_type_of_the_other_operand() {
+        let half = Scalar::one().scale_frac(1, 2);
+        assert_eq!(half, Scalar::Exact(q(1, 2)));
+        assert_eq!(half.mul(&3.0.wrap()), Scalar::F64(1.5));
+        assert_eq!(q(3, 1).wrap().mul(&half), Scalar::Exact(q(3, 2)));
+        let x = Poly::var("x");
+        let got = Poly::unwrap(half.mul(&x.wrap()).add(&Scalar::one()));
+        assert_eq!(got, x.scale(&q(1, 2)).add(&Poly::one()));
+        assert_eq!(f64::unwrap(Scalar::Exact(q(1, 4))), 0.25);
+        assert_eq!(Rational::unwrap(Scalar::F64(0.375)), q(3, 8));
+    }
+
+    #[test]
+    fn each_type_keeps_its_arithmetic() {
+        // 0.1 + 0.2 rounds in f64 and is exact in rationals.
+        let f = f64::unwrap(0.1.wrap().add(&0.2.wrap()));
+        assert_eq!(f, 0.1 + 0.2);
+        let r = Rational::unwrap(q(1, 10).wrap().add(&q(2, 10).wrap()));
+        assert_eq!(r, q(3, 10));
+        assert!(Scalar::F64(1.0).sub(&Scalar::F64(1.0)).is_zero());
+        assert_eq!(Scalar::F64(2.0).neg(), Scalar::F64(-2.0));
     }
 }

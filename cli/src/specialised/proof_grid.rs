@@ -1,10 +1,13 @@
 //! The symbolic proofs of the carried evaluators (the proof grid of `blossom verify`).
 
-use super::carried::grid;
 use super::Shape;
 use crate::proofs::{symbolic_curve, symbolic_surface, symbolic_triangle};
 use blossom::Poly;
 use blossom::{bezier_curve_blossom, restrict_curve, restrict_tensor, restrict_triangle, Method};
+use blossom_grid::{
+    restrict_bezier_curve_specialised, restrict_curve_specialised, restrict_tensor_specialised,
+    restrict_triangle_specialised,
+};
 
 /// One symbolic proof: the carried evaluator of `shape`, run on polynomials (coefficients
 /// `c_i` / `c_i_j` and domain corners as variables, one coordinate), against the definition
@@ -48,7 +51,7 @@ fn count_terms<'a>(points: impl IntoIterator<Item = &'a Vec<Poly>>) -> usize {
 pub fn prove_curve(n: usize) -> ProofRow {
     let curve = symbolic_curve(n);
     let (a, b) = (Poly::var("a"), Poly::var("b"));
-    let w = grid::curve_proved(&curve, &a, &b).expect("a degree of the proof grid");
+    let w = restrict_curve_specialised(&curve, &a, &b).expect("a degree of the proof grid");
     ProofRow {
         shape: Shape::Curve(n),
         terms: count_terms(w.control_points()),
@@ -61,7 +64,7 @@ pub fn prove_curve(n: usize) -> ProofRow {
 pub fn prove_tensor(n: usize, m: usize) -> ProofRow {
     let s = symbolic_surface(n, m);
     let rect = ["a", "b", "c", "d"].map(Poly::var);
-    let p = grid::tensor_proved(&s, &rect).expect("a bidegree of the proof grid");
+    let p = restrict_tensor_specialised(&s, &rect).expect("a bidegree of the proof grid");
     ProofRow {
         shape: Shape::Tensor(n, m),
         terms: count_terms(p.control_points().iter().flatten()),
@@ -74,7 +77,7 @@ pub fn prove_tensor(n: usize, m: usize) -> ProofRow {
 pub fn prove_triangle(n: usize, m: usize) -> ProofRow {
     let s = symbolic_surface(n, m);
     let tri = symbolic_triangle();
-    let q = grid::triangle_proved(&s, &tri).expect("degrees of the proof grid");
+    let q = restrict_triangle_specialised(&s, &tri).expect("degrees of the proof grid");
     ProofRow {
         shape: Shape::Triangle(n, m),
         terms: count_terms(q.control_points()),
@@ -90,7 +93,7 @@ pub fn prove_bezier_curve(n: usize) -> ProofRow {
     let net: Vec<Vec<Poly>> = (0..=n).map(|i| vec![Poly::var(&format!("b{i}"))]).collect();
     let curve = blossom::BezierCurve::new(net).expect("a non-empty polygon");
     let (a, b) = (Poly::var("a"), Poly::var("b"));
-    let w = grid::bezier_curve_carried(&curve, &a, &b).expect("a carried degree");
+    let w = restrict_bezier_curve_specialised(&curve, &a, &b).expect("a carried degree");
     let by_pyramid: Vec<Vec<Poly>> = (0..=n)
         .map(|j| {
             let args = crate::repeated(&a, n - j, &b, j);

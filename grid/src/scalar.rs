@@ -5,7 +5,7 @@
 //! dispatch instead wraps every number type in `Scalar` and instantiates each evaluator once.
 //! The price is a `match` and a call per ring operation, which only the command line and the
 //! proofs pay: code that knows its number type and dimension at compile time calls the
-//! generated functions directly (see [`super::grid`]) or generates its own with the macro.
+//! generated functions directly (see [`crate::grid`]) or generates its own with the macro.
 //!
 //! The operations are kept out of line (`#[inline(never)]`): a generated evaluator is one long
 //! straight-line function, and inlining arithmetic into each of its thousands of call sites
@@ -158,38 +158,5 @@ impl Ring for Scalar {
             Scalar::F64(x) => Ring::is_zero(x),
             Scalar::Symbolic(x) => Ring::is_zero(x),
         }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn q(n: i64, d: i64) -> Rational {
-        Rational::new(n.into(), d.into())
-    }
-
-    #[test]
-    fn constants_take_the_type_of_the_other_operand() {
-        let half = Scalar::one().scale_frac(1, 2);
-        assert_eq!(half, Scalar::Exact(q(1, 2)));
-        assert_eq!(half.mul(&3.0.wrap()), Scalar::F64(1.5));
-        assert_eq!(q(3, 1).wrap().mul(&half), Scalar::Exact(q(3, 2)));
-        let x = Poly::var("x");
-        let got = Poly::unwrap(half.mul(&x.wrap()).add(&Scalar::one()));
-        assert_eq!(got, x.scale(&q(1, 2)).add(&Poly::one()));
-        assert_eq!(f64::unwrap(Scalar::Exact(q(1, 4))), 0.25);
-        assert_eq!(Rational::unwrap(Scalar::F64(0.375)), q(3, 8));
-    }
-
-    #[test]
-    fn each_type_keeps_its_arithmetic() {
-        // 0.1 + 0.2 rounds in f64 and is exact in rationals.
-        let f = f64::unwrap(0.1.wrap().add(&0.2.wrap()));
-        assert_eq!(f, 0.1 + 0.2);
-        let r = Rational::unwrap(q(1, 10).wrap().add(&q(2, 10).wrap()));
-        assert_eq!(r, q(3, 10));
-        assert!(Scalar::F64(1.0).sub(&Scalar::F64(1.0)).is_zero());
-        assert_eq!(Scalar::F64(2.0).neg(), Scalar::F64(-2.0));
     }
 }
