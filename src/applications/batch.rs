@@ -21,8 +21,8 @@
 //! one contiguous run of `BATCH_LANES` numbers, at `block * block_len + (p * dim + x) * BATCH_LANES`.
 //! Applying M to a block is a sequence of multiply-adds over contiguous runs, which the
 //! compiler vectorises. A block of a cubic 3-D curve batch (12 runs in, 12 out, 48 KiB each)
-//! stays in the L2 cache while it is worked on. On this project's machine, 512 objects per
-//! block ran 19% faster than 256, and 1024 was no faster (`benches/peers.rs`). Blocks are
+//! stays in the L2 cache while it is worked on (`BENCHMARKS.md` has the measured choice of the
+//! block size). Blocks are
 //! independent, so with the `rayon` feature `Batch::par_restrict_into` spreads them over
 //! threads. The last block is padded with zeros.
 

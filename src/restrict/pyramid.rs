@@ -16,13 +16,11 @@
 //! ratio (N + 1) / N about the centroid. Every de Casteljau step is then a convex combination,
 //! which is what keeps the pyramid stable in floating point: over a fixed reference domain
 //! ([0, 1], the unit triangle) corners far outside it make every step an extrapolation, and
-//! the error grew like the corners' barycentric coordinates to the power n (relative error
-//! 2e-2 measured on a sextic triangle with a corner at y = 737). The enlargement costs accuracy
-//! the other way: the Bernstein coefficients over the reference domain are larger than the
-//! answer by up to k^n, which is at most e for k = (n + 1) / n (a fixed factor 2 cost 3e-1
-//! at curve degree 24 where this choice gives 1e-6, as the bulk path: `cargo run --release
-//! --example float_error`). The choice uses ring operations only, so the symbolic proofs
-//! cover it. The Bernstein form over the reference domain comes from Horner's rule carried out in
+//! the error grows like the corners' barycentric coordinates to the power n. The enlargement
+//! costs accuracy the other way: the Bernstein coefficients over the reference domain are
+//! larger than the answer by up to k^n, which is at most e for k = (n + 1) / n, where a fixed
+//! factor 2 would cost up to 2^n (`BENCHMARKS.md` has the measured errors). The choice uses
+//! ring operations only, so the symbolic proofs cover it. The Bernstein form over the reference domain comes from Horner's rule carried out in
 //! the Bernstein basis ([`crate::bernstein_by_horner`], [`crate::triangle_bernstein_by_horner`]),
 //! not from the Taylor shift of [`crate::Method::Bulk`], so the pyramid computes through no other
 //! method.
