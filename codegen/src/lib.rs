@@ -5,7 +5,7 @@
 //! twice: by `blossom-macros` (a thin `#[proc_macro]` wrapper) at compile time, and by the
 //! `blossom` binary (`blossom expand curve 3`, crate `blossom-cli`) at run time, so the code
 //! printed by the binary is exactly the code the macro generates. The formatting to text
-//! ([`format_items`], [`source`]) needs prettyplease and is behind the feature `pretty`, which
+//! (`format_items`, `source`) needs prettyplease and is behind the feature `pretty`, which
 //! the macro does not use.
 //!
 //! The pipeline, one module per step:

@@ -215,8 +215,12 @@ fn combine<const ACCUMULATE: bool>(
     }
 }
 
-/// `len` objects (curves or patches) of `points` control points of dimension `dim`, in the
-/// blocked structure-of-arrays layout described in the [module docs](self).
+/// `len` objects (curves or patches) of `points` control points of dimension `dim`, in a
+/// blocked structure-of-arrays layout ("AoSoA"): blocks of [`BATCH_LANES`] objects, and within
+/// a block coordinate x of control point p of every object is one contiguous run of
+/// `BATCH_LANES` numbers, at `block * block_len + (p * dim + x) * BATCH_LANES`; the last block
+/// is padded with zeros. Applying a [`RestrictionMap`] is then a sequence of multiply-adds over
+/// contiguous runs, which the compiler vectorises.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Batch {
     points: usize,

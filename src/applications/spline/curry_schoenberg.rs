@@ -107,8 +107,8 @@ pub fn continuity_at<T: Field>(left: &PowerCurve<T>, right: &PowerCurve<T>, e: &
 /// multiplicities from the continuity that holds exactly at each breakpoint (Theorem 2.4).
 ///
 /// In float arithmetic the continuity is judged on rounded Taylor coefficients, which rounding
-/// can make unequal; the command line therefore decides it on the exact input (see
-/// [`crate::cli::spline_jobs`]).
+/// can make unequal; the command line (crate `blossom-cli`) therefore decides it on the exact
+/// input.
 ///
 /// ```
 /// use blossom::{bspline_from_pieces, Piece};
