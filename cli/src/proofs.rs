@@ -2,9 +2,13 @@
 //! domain corners are variables, yields polynomials identical to those of the subset-sum
 //! definition. Identity of the polynomials is a proof that the methods agree for that degree
 //! and every input, not a sample.
+//!
+//! The same comparison takes any candidate function in place of a method
+//! ([`prove_curve_candidate`], [`prove_tensor_candidate`], [`prove_triangle_candidate`]), so
+//! that a wrong one, e.g. eq. (14) with a misprinted ingredient, can be shown to fail it.
 
 use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method};
-use blossom::{Poly, PowerCurve, PowerSurface};
+use blossom::{BezierCurve, Poly, PowerCurve, PowerSurface, TensorPatch, TriangularPatch};
 
 /// The shape a proof is about.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -71,40 +75,160 @@ fn count_terms<'a>(points: impl Iterator<Item = &'a Vec<Poly>>) -> usize {
     points.flat_map(|p| p.iter()).map(Poly::num_terms).sum()
 }
 
-/// Proves each of `methods` against the definition for the curve of degree `n` on [a, b].
-pub fn prove_curve(n: usize, methods: &[Method]) -> Vec<ProofRow> {
+/// A candidate restriction of curves: the control points on [a, b] of a power-basis curve.
+pub type CurveCandidate<'a> = &'a dyn Fn(&PowerCurve<Poly>, &Poly, &Poly) -> BezierCurve<Poly>;
+
+/// A candidate restriction of tensor patches: the net on `[a, b, c, d]`.
+pub type TensorCandidate<'a> = &'a dyn Fn(&PowerSurface<Poly>, &[Poly; 4]) -> TensorPatch<Poly>;
+
+/// A candidate restriction of triangular patches: the net on the triangle with corners `tri`.
+pub type TriangleCandidate<'a> =
+    &'a dyn Fn(&PowerSurface<Poly>, &[[Poly; 2]; 3]) -> TriangularPatch<Poly>;
+
+/// One candidate restriction, any function of the symbolic input, against the definition:
+/// the same comparison as a [`ProofRow`], named by the caller instead of by a [`Method`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CandidateProof {
+    /// The shape.
+    pub shape: Shape,
+    /// `(n, m)`; `m = 0` for curves.
+    pub degree: (usize, usize),
+    /// What the candidate is, in words.
+    pub name: String,
+    /// Number of monomials in all control points of the definition (size of what is proved).
+    pub terms: usize,
+    /// Whether the candidate's control points are identical polynomials.
+    pub identical: bool,
+}
+
+/// The symbolic input of one shape and degree and the definition's answer on it: every proof,
+/// of a method or of a candidate, is [`Reference::identical`], the one comparison.
+struct Reference<I, O> {
+    shape: Shape,
+    degree: (usize, usize),
+    input: I,
+    answer: O,
+    terms: usize,
+}
+
+impl<I, O: PartialEq> Reference<I, O> {
+    /// Whether `candidate` gives the definition's answer on the symbolic input, as
+    /// polynomials (identical coefficients of every monomial).
+    fn identical(&self, candidate: &dyn Fn(&I) -> O) -> bool {
+        candidate(&self.input) == self.answer
+    }
+
+    fn method_row(&self, method: Method, candidate: &dyn Fn(&I) -> O) -> ProofRow {
+        ProofRow {
+            shape: self.shape,
+            degree: self.degree,
+            method,
+            terms: self.terms,
+            identical: self.identical(candidate),
+        }
+    }
+
+    fn candidate_proof(&self, name: &str, candidate: &dyn Fn(&I) -> O) -> CandidateProof {
+        CandidateProof {
+            shape: self.shape,
+            degree: self.degree,
+            name: name.to_string(),
+            terms: self.terms,
+            identical: self.identical(candidate),
+        }
+    }
+}
+
+type CurveInput = (PowerCurve<Poly>, [Poly; 2]);
+type TensorInput = (PowerSurface<Poly>, [Poly; 4]);
+type TriangleInput = (PowerSurface<Poly>, [[Poly; 2]; 3]);
+
+/// The curve of degree `n` on [a, b] and the definition's control points.
+fn curve_reference(n: usize) -> Reference<CurveInput, BezierCurve<Poly>> {
     let curve = symbolic_curve(n);
     let [a, b] = vars(["a", "b"]);
-    let reference = restrict_curve(&curve, &a, &b, Method::Definition);
-    let terms = count_terms(reference.control_points().iter());
+    let answer = restrict_curve(&curve, &a, &b, Method::Definition);
+    let terms = count_terms(answer.control_points().iter());
+    Reference {
+        shape: Shape::Curve,
+        degree: (n, 0),
+        input: (curve, [a, b]),
+        answer,
+        terms,
+    }
+}
+
+/// The (n, m) patch on [a, b] x [c, d] and the definition's net.
+fn tensor_reference(n: usize, m: usize) -> Reference<TensorInput, TensorPatch<Poly>> {
+    let surface = symbolic_surface(n, m);
+    let rect = vars(["a", "b", "c", "d"]);
+    let answer = restrict_tensor(&surface, &rect, Method::Definition);
+    let terms = count_terms(answer.control_points().iter().flatten());
+    Reference {
+        shape: Shape::Tensor,
+        degree: (n, m),
+        input: (surface, rect),
+        answer,
+        terms,
+    }
+}
+
+/// The surface of bidegree (n, m) as a triangular patch of total degree n + m on the
+/// triangle with symbolic corners, and the definition's net.
+fn triangle_reference(n: usize, m: usize) -> Reference<TriangleInput, TriangularPatch<Poly>> {
+    let surface = symbolic_surface(n, m);
+    let tri = symbolic_triangle();
+    let answer = restrict_triangle(&surface, &tri, Method::Definition);
+    let terms = count_terms(answer.control_points().iter());
+    Reference {
+        shape: Shape::Triangle,
+        degree: (n, m),
+        input: (surface, tri),
+        answer,
+        terms,
+    }
+}
+
+/// Proves each of `methods` against the definition for the curve of degree `n` on [a, b].
+pub fn prove_curve(n: usize, methods: &[Method]) -> Vec<ProofRow> {
+    let reference = curve_reference(n);
     methods
         .iter()
-        .map(|&method| ProofRow {
-            shape: Shape::Curve,
-            degree: (n, 0),
-            method,
-            terms,
-            identical: restrict_curve(&curve, &a, &b, method) == reference,
+        .map(|&method| {
+            reference.method_row(method, &|(curve, [a, b])| {
+                restrict_curve(curve, a, b, method)
+            })
         })
         .collect()
 }
 
+/// Runs `candidate` through the comparison of [`prove_curve`]: identical as polynomials to the
+/// definition for the curve of degree `n` on [a, b], or not.
+pub fn prove_curve_candidate(n: usize, name: &str, candidate: CurveCandidate) -> CandidateProof {
+    curve_reference(n).candidate_proof(name, &|(curve, [a, b])| candidate(curve, a, b))
+}
+
 /// Proves each of `methods` against the definition for the (n, m) patch on [a, b] x [c, d].
 pub fn prove_tensor(n: usize, m: usize, methods: &[Method]) -> Vec<ProofRow> {
-    let surface = symbolic_surface(n, m);
-    let rect = vars(["a", "b", "c", "d"]);
-    let reference = restrict_tensor(&surface, &rect, Method::Definition);
-    let terms = count_terms(reference.control_points().iter().flatten());
+    let reference = tensor_reference(n, m);
     methods
         .iter()
-        .map(|&method| ProofRow {
-            shape: Shape::Tensor,
-            degree: (n, m),
-            method,
-            terms,
-            identical: restrict_tensor(&surface, &rect, method) == reference,
+        .map(|&method| {
+            reference.method_row(method, &|(surface, rect)| {
+                restrict_tensor(surface, rect, method)
+            })
         })
         .collect()
+}
+
+/// Runs `candidate` through the comparison of [`prove_tensor`] for the (n, m) patch.
+pub fn prove_tensor_candidate(
+    n: usize,
+    m: usize,
+    name: &str,
+    candidate: TensorCandidate,
+) -> CandidateProof {
+    tensor_reference(n, m).candidate_proof(name, &|(surface, rect)| candidate(surface, rect))
 }
 
 /// The symbolic triangle with corners (a1, a2), (b1, b2), (c1, c2).
@@ -116,20 +240,27 @@ pub fn symbolic_triangle() -> [[Poly; 2]; 3] {
 /// Proves each of `methods` against the definition for the surface of bidegree (n, m) as a
 /// triangular patch of total degree n + m on the triangle with symbolic corners.
 pub fn prove_triangle(n: usize, m: usize, methods: &[Method]) -> Vec<ProofRow> {
-    let surface = symbolic_surface(n, m);
-    let tri = symbolic_triangle();
-    let reference = restrict_triangle(&surface, &tri, Method::Definition);
-    let terms = count_terms(reference.control_points().iter());
+    let reference = triangle_reference(n, m);
     methods
         .iter()
-        .map(|&method| ProofRow {
-            shape: Shape::Triangle,
-            degree: (n, m),
-            method,
-            terms,
-            identical: restrict_triangle(&surface, &tri, method) == reference,
+        .map(|&method| {
+            reference.method_row(method, &|(surface, tri)| {
+                restrict_triangle(surface, tri, method)
+            })
         })
         .collect()
+}
+
+/// Runs `candidate` through the comparison of [`prove_triangle`] for the surface of bidegree
+/// (n, m) on the symbolic triangle; e.g. eq. (14) read with a printed variant of one of its
+/// ingredients, through [`blossom::restrict_triangle_with_formula`].
+pub fn prove_triangle_candidate(
+    n: usize,
+    m: usize,
+    name: &str,
+    candidate: TriangleCandidate,
+) -> CandidateProof {
+    triangle_reference(n, m).candidate_proof(name, &|(surface, tri)| candidate(surface, tri))
 }
 
 /// Every method other than the definition itself.

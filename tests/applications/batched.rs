@@ -1,34 +1,20 @@
-//! Batches sharing one domain (`blossom::batched`): the map's entries are the exact ones
+//! Batches sharing one domain (`blossom::Batch`, `blossom::RestrictionMap`): the map's entries are the exact ones
 //! rounded once, and a batch restricted by the map equals every object restricted on its own
 //! by de Casteljau's pyramid in exact arithmetic (to rounding), across block boundaries; the
 //! parallel path equals the serial one bit for bit; shapes that do not fit are errors.
 
-mod common;
-
-use blossom::batched::{Batch, RestrictionMap, LANES};
-use blossom::blossoms::pyramid::{
-    bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom,
-};
-use blossom::ring::rational_to_f64;
+use crate::common::{exact, repeated, Rng};
+use blossom::rational_to_f64;
+use blossom::{bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom};
+use blossom::{Batch, RestrictionMap, BATCH_LANES as LANES};
 use blossom::{BezierCurve, Rational, TriangularPatch};
-use common::Rng;
-
-fn q(x: f64) -> Rational {
-    Rational::from_float(x).unwrap()
-}
 
 fn unit(rng: &mut Rng) -> f64 {
     (rng.next() % 2_000_001) as f64 / 1_000_000.0 - 1.0
 }
 
-fn repeated(x: &Rational, k: usize, y: &Rational, l: usize) -> Vec<Rational> {
-    std::iter::repeat_n(x.clone(), k)
-        .chain(std::iter::repeat_n(y.clone(), l))
-        .collect()
-}
-
-fn close(x: f64, exact: &Rational) {
-    let y = rational_to_f64(exact);
+fn close(x: f64, want: &Rational) {
+    let y = rational_to_f64(want);
     assert!((x - y).abs() <= 1e-12 * (1.0 + y.abs()), "{x} vs {y}");
 }
 
@@ -50,10 +36,10 @@ fn curve_map_entries_are_the_rounded_exact_blossoms() {
         for i in 0..=n {
             // M_ji = B_i^n[a^(n-j), b^j]: the blossom of the polygon e_i, exactly.
             let basis: Vec<Vec<Rational>> = (0..=n)
-                .map(|k| vec![if k == i { q(1.0) } else { q(0.0) }])
+                .map(|k| vec![if k == i { exact(1.0) } else { exact(0.0) }])
                 .collect();
-            let exact = bezier_curve_blossom(&basis, &repeated(&q(a), n - j, &q(b), j));
-            assert_eq!(map.entry(j, i), rational_to_f64(&exact[0]), "M_{j}{i}");
+            let entry = bezier_curve_blossom(&basis, &repeated(&exact(a), n - j, &exact(b), j));
+            assert_eq!(map.entry(j, i), rational_to_f64(&entry[0]), "M_{j}{i}");
         }
     }
 }
@@ -73,12 +59,13 @@ fn curve_batches_equal_each_curve_restricted_exactly() {
         let mut out = Batch::zeros(n + 1, dim, count);
         batch.restrict_into(&map, &mut out).unwrap();
         for (k, net) in nets.iter().enumerate() {
-            let exact: Vec<Vec<Rational>> = net
+            let exact_net: Vec<Vec<Rational>> = net
                 .iter()
-                .map(|p| p.iter().map(|&x| q(x)).collect())
+                .map(|p| p.iter().map(|&x| exact(x)).collect())
                 .collect();
             for j in 0..=n {
-                let want = bezier_curve_blossom(&exact, &repeated(&q(a), n - j, &q(b), j));
+                let want =
+                    bezier_curve_blossom(&exact_net, &repeated(&exact(a), n - j, &exact(b), j));
                 for (x, w) in want.iter().enumerate() {
                     close(out.get(k, j, x), w);
                 }
@@ -104,13 +91,13 @@ fn tensor_and_triangle_batches_equal_the_pyramid() {
     let map = RestrictionMap::tensor((n, m), rect).unwrap();
     let mut out = Batch::zeros(map.outputs(), dim, count);
     batch.restrict_into(&map, &mut out).unwrap();
-    let [a, b, c, d] = rect.map(q);
+    let [a, b, c, d] = rect.map(exact);
     for (k, net) in nets.iter().enumerate().step_by(37) {
         let grid: Vec<Vec<Vec<Rational>>> = net
             .chunks(m + 1)
             .map(|row| {
                 row.iter()
-                    .map(|p| p.iter().map(|&x| q(x)).collect())
+                    .map(|p| p.iter().map(|&x| exact(x)).collect())
                     .collect()
             })
             .collect();
@@ -137,12 +124,12 @@ fn tensor_and_triangle_batches_equal_the_pyramid() {
     let map = RestrictionMap::triangle(big_n, corners).unwrap();
     let mut out = Batch::zeros(len, dim, count);
     batch.restrict_into(&map, &mut out).unwrap();
-    let bary = corners.map(|[s, t]| [q(s), q(t), q(1.0 - s - t)]);
+    let bary = corners.map(|[s, t]| [exact(s), exact(t), exact(1.0 - s - t)]);
     for (k, net) in nets.iter().enumerate().step_by(41) {
         let patch = TriangularPatch::new(
             big_n,
             net.iter()
-                .map(|p| p.iter().map(|&x| q(x)).collect())
+                .map(|p| p.iter().map(|&x| exact(x)).collect())
                 .collect(),
         )
         .unwrap();

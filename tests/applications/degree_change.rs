@@ -2,18 +2,10 @@
 //! formula's built-in elevation, reproduction of lower-degree curves by every reduction,
 //! optimality of the least-squares reductions, and Example 2 of seed 004 with a snapshot.
 
-mod common;
-
-use blossom::degree::{bernstein_gram, elevate, reduce, squared_l2_distance, Reduction};
-use blossom::inverse::curve_control_points;
-use blossom::verify::seeds_002_004::reduction;
+use crate::common::{q, Rng};
+use blossom::curve_control_points_from_samples;
+use blossom::{bernstein_gram, elevate, reduce, squared_l2_distance, Reduction};
 use blossom::{BezierCurve, Poly, Rational, Ring};
-use common::Rng;
-use serde_json::json;
-
-fn q(n: i64, d: i64) -> Rational {
-    Rational::new(n.into(), d.into())
-}
 
 fn random_bezier(rng: &mut Rng, n: usize, dim: usize) -> BezierCurve<Rational> {
     BezierCurve::new((0..=n).map(|_| rng.point(dim)).collect()).unwrap()
@@ -26,7 +18,8 @@ fn elevation_is_the_inverse_formula_at_the_higher_degree_symbolically() {
         let b =
             BezierCurve::new((0..=n).map(|i| vec![Poly::var(&format!("b{i}"))]).collect()).unwrap();
         for m in n..=n + 3 {
-            let by_formula = curve_control_points(m, &Poly::zero(), &Poly::one(), &|t| b.eval(t));
+            let by_formula =
+                curve_control_points_from_samples(m, &Poly::zero(), &Poly::one(), &|t| b.eval(t));
             assert_eq!(
                 elevate(&b, m).unwrap().control_points(),
                 by_formula.as_slice(),
@@ -120,7 +113,7 @@ fn least_squares_are_optimal_and_keep_what_they_promise() {
 fn floats_follow_the_exact_reductions() {
     let mut rng = Rng(53);
     let b = random_bezier(&mut rng, 8, 3);
-    let to_f = |x: &Rational| blossom::ring::rational_to_f64(x);
+    let to_f = |x: &Rational| blossom::rational_to_f64(x);
     let bf = BezierCurve::new(
         b.control_points()
             .iter()
@@ -140,24 +133,4 @@ fn floats_follow_the_exact_reductions() {
             }
         }
     }
-}
-
-#[test]
-fn example_2_of_seed_004() {
-    let b = reduction::curve();
-    assert_eq!(b.control_points()[5], vec![q(-575, 252), q(13, 42)]);
-    let all = reduction::reductions();
-    insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"), prepend_module_to_snapshot => false}, {
-        insta::assert_json_snapshot!(
-            "degree_example_2_reductions",
-            all.iter()
-                .map(|(m, r, e)| json!({
-                    "method": m.name(),
-                    "control_points": r.control_points().iter().map(|p| p.iter().map(|x| x.to_string()).collect::<Vec<_>>()).collect::<Vec<_>>(),
-                    "l2_error": e.to_string(),
-                    "l2_error_approx": format!("{:.6e}", blossom::ring::rational_to_f64(e)),
-                }))
-                .collect::<Vec<_>>()
-        );
-    });
 }

@@ -2,18 +2,11 @@
 //! with N/w at every parameter, elevation through the degree argument agrees with exact
 //! elevation of the homogeneous points, and the circle arc of seed 004 (with a snapshot).
 
-mod common;
-
-use blossom::degree::elevate;
-use blossom::nurbs::{RationalBSpline, RationalCurve, RationalSurface};
-use blossom::spline::BSpline;
-use blossom::{BezierCurve, Rational, Ring};
-use common::Rng;
-use serde_json::json;
-
-fn q(n: i64, d: i64) -> Rational {
-    Rational::new(n.into(), d.into())
-}
+use crate::common::{q, Rng};
+use crate::json::Json;
+use blossom::{
+    elevate, BSpline, BezierCurve, Rational, RationalBSpline, RationalCurve, RationalSurface, Ring,
+};
 
 /// A denominator without zeros on [-1, 1]: c_0 = 5 and small other coefficients.
 fn denominator(rng: &mut Rng, n: usize) -> Vec<Rational> {
@@ -156,11 +149,11 @@ fn circle_arc_of_seed_004() {
         &[q(1, 1), q(1, 1), q(7, 6), q(3, 2), q(2, 1)]
     );
     assert_eq!(quartic.points()[2], vec![q(5, 7), q(6, 7)]);
-    let s = |v: &[Rational]| v.iter().map(|x| x.to_string()).collect::<Vec<_>>();
+    let s = |v: &[Rational]| Json::strings(v);
     insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"), prepend_module_to_snapshot => false}, {
-        insta::assert_json_snapshot!("nurbs_circle_arc", json!({
-            "quadratic": {"points": quad.points().iter().map(|p| s(p)).collect::<Vec<_>>(), "weights": s(quad.weights())},
-            "quartic": {"points": quartic.points().iter().map(|p| s(p)).collect::<Vec<_>>(), "weights": s(quartic.weights())},
-        }));
+        insta::assert_snapshot!("nurbs_circle_arc", Json::object([
+            ("quadratic", Json::object([("points", Json::array(quad.points().iter().map(|p| s(p)))), ("weights", s(quad.weights()))])),
+            ("quartic", Json::object([("points", Json::array(quartic.points().iter().map(|p| s(p)))), ("weights", s(quartic.weights()))])),
+        ]).pretty());
     });
 }

@@ -3,16 +3,10 @@
 //! a spline was built from (Curry-Schoenberg), the Bézier pieces against the engine's
 //! restriction, and knot insertion against the original curve.
 
-mod common;
-
-use blossom::blossoms::definition::curve_blossom;
-use blossom::spline::{from_pieces, from_pieces_with_knots, BSpline, Piece};
+use crate::common::{q, Rng};
+use blossom::curve_blossom;
+use blossom::{bspline_from_pieces, bspline_from_pieces_with_knots, BSpline, Piece};
 use blossom::{restrict_curve, Method, PowerCurve, Rational, Ring};
-use common::Rng;
-
-fn q(n: i64, d: i64) -> Rational {
-    Rational::new(n.into(), d.into())
-}
 
 fn pad(c: &PowerCurve<Rational>, p: usize) -> PowerCurve<Rational> {
     let mut v = c.coefficients().to_vec();
@@ -43,13 +37,13 @@ fn random_spline(
                 conts.push(r);
                 // Taylor coefficients at e: copy 0..=r, draw the others; shift back by -e.
                 let mut t = c.coefficients().to_vec();
-                blossom::basis::taylor_shift(&mut t, &e);
+                blossom::taylor_shift(&mut t, &e);
                 for (i, ti) in t.iter_mut().enumerate() {
                     if i as isize > r {
                         *ti = rng.point(dim);
                     }
                 }
-                blossom::basis::taylor_shift(&mut t, &e.neg());
+                blossom::taylor_shift(&mut t, &e.neg());
                 PowerCurve::new(t).unwrap()
             }
         };
@@ -78,7 +72,7 @@ fn curry_schoenberg_round_trips_through_every_algorithm() {
     for p in 0..=5 {
         for k in 1..=4 {
             let (pieces, conts) = random_spline(&mut rng, p, k, 2);
-            let f = from_pieces(p, &pieces).unwrap();
+            let f = bspline_from_pieces(p, &pieces).unwrap();
             // Interior multiplicities are p - r, at most.
             for (i, r) in conts.iter().enumerate() {
                 let e = &pieces[i + 1].interval[0];
@@ -128,7 +122,7 @@ fn blossom_by_de_boor_is_the_blossom_of_the_piece() {
     let mut rng = Rng(41);
     for p in 1..=5 {
         let (pieces, _) = random_spline(&mut rng, p, 3, 3);
-        let f = from_pieces(p, &pieces).unwrap();
+        let f = bspline_from_pieces(p, &pieces).unwrap();
         let t = f.knots().to_vec();
         for s in f.knot_vector().spans() {
             let src = piece_at(&pieces, &t[s]);
@@ -150,7 +144,7 @@ fn knot_insertion_preserves_the_curve() {
     let mut rng = Rng(42);
     for p in 1..=4 {
         let (pieces, _) = random_spline(&mut rng, p, 3, 2);
-        let mut f = from_pieces(p, &pieces).unwrap();
+        let mut f = bspline_from_pieces(p, &pieces).unwrap();
         let (a, b) = (f.domain().0.clone(), f.domain().1.clone());
         for step in 0..6 {
             // Insert at a random point of the domain, or at an existing knot.
@@ -222,14 +216,15 @@ fn fewer_knots_than_the_continuity_needs_are_refused() {
             curve: c(&[2, -1]),
         },
     ];
-    let ok = from_pieces(2, &pieces).unwrap();
+    let ok = bspline_from_pieces(2, &pieces).unwrap();
     assert_eq!(ok.knot_vector().multiplicity(&q(1, 1)), 2);
-    let e = from_pieces_with_knots(2, &pieces, [0, 0, 0, 1, 2, 2, 2].map(|k| q(k, 1)).to_vec())
-        .unwrap_err();
+    let e =
+        bspline_from_pieces_with_knots(2, &pieces, [0, 0, 0, 1, 2, 2, 2].map(|k| q(k, 1)).to_vec())
+            .unwrap_err();
     assert_eq!(e.field, "knots");
     assert!(e.message.contains("d_"), "{e}");
     // A knot vector whose domain is not the pieces' interval.
-    let e = from_pieces_with_knots(
+    let e = bspline_from_pieces_with_knots(
         2,
         &pieces,
         [0, 0, 0, 1, 1, 3, 3, 3].map(|k| q(k, 1)).to_vec(),
@@ -237,7 +232,7 @@ fn fewer_knots_than_the_continuity_needs_are_refused() {
     .unwrap_err();
     assert!(e.message.contains("domain"), "{e}");
     // More knots than needed are fine.
-    let more = from_pieces_with_knots(
+    let more = bspline_from_pieces_with_knots(
         2,
         &pieces,
         [0, 0, 0, 1, 1, 1, 2, 2, 2].map(|k| q(k, 1)).to_vec(),
@@ -250,8 +245,8 @@ fn fewer_knots_than_the_continuity_needs_are_refused() {
 fn floats_follow_the_exact_answer() {
     let mut rng = Rng(43);
     let (pieces, _) = random_spline(&mut rng, 3, 3, 2);
-    let f = from_pieces(3, &pieces).unwrap();
-    let to_f = |x: &Rational| blossom::ring::rational_to_f64(x);
+    let f = bspline_from_pieces(3, &pieces).unwrap();
+    let to_f = |x: &Rational| blossom::rational_to_f64(x);
     let ff = BSpline::new(
         3,
         f.knots().iter().map(to_f).collect(),

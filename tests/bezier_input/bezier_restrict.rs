@@ -1,5 +1,5 @@
-//! Restriction of Bézier input (`blossom::subdivide`: forward differences to the power basis,
-//! then the bulk power-basis restriction) against de Casteljau's pyramid on the blossom, which
+//! Restriction of Bézier input (`blossom::restrict_bezier_*`: forward differences to the power
+//! basis, then the bulk power-basis restriction) against de Casteljau's pyramid on the blossom, which
 //! never leaves the Bernstein basis, on many random inputs per degree and per kind of domain:
 //! sub-intervals of [0, 1], intervals outside it, straddling it, reversed and degenerate;
 //! sub-triangles inside the patch's domain, outside it, with reversed orientation and
@@ -8,19 +8,17 @@
 //! Symbolically through the barycentric API (the sum check on `Poly`), and in f64 against the
 //! exact answer of the same inputs, with the measured error printed.
 //!
-//! `tests/subdivide.rs` has one random input per degree; this file widens the sample.
+//! `subdivide.rs` has one random input per degree; this file widens the sample.
 
-use blossom::ring::rational_to_f64;
-use blossom::subdivide::restrict_bezier_triangle_affine;
+use blossom::rational_to_f64;
+use blossom::restrict_bezier_triangle_affine;
 use blossom::{
     restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle, BezierCurve, Poly,
     Rational, Ring, TensorPatch, TriangularPatch,
 };
 use num_bigint::BigInt;
 
-mod common;
-
-use common::{curve_by_pyramid, exact, tensor_by_pyramid, triangle_by_pyramid, Rng};
+use crate::common::{curve_by_pyramid, exact, tensor_by_pyramid, triangle_by_pyramid, Rng};
 
 /// The samplers this file needs on top of the shared generator.
 trait Samplers {

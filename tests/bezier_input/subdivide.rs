@@ -1,17 +1,16 @@
-//! Restriction of Bézier input (`blossom::subdivide`), through the power basis and the bulk
-//! restriction, checked against de Casteljau's pyramid on the blossom, which never leaves the
-//! Bernstein basis: exactly on random rational nets, symbolically (every control point and the
-//! domain are variables), and in f64 with a measured error. Bad corners are refused.
+//! Restriction of Bézier input (`blossom::restrict_bezier_curve`, `_tensor`, `_triangle`),
+//! through the power basis and the bulk restriction, checked against de Casteljau's pyramid on
+//! the blossom, which never leaves the Bernstein basis: exactly on random rational nets,
+//! symbolically (every control point and the domain are variables), and in f64 with a measured
+//! error. Bad corners are refused.
 
-mod common;
-
-use blossom::ring::rational_to_f64;
-use blossom::subdivide::restrict_bezier_triangle_affine;
+use crate::common::{curve_by_pyramid, exact, q, tensor_by_pyramid, triangle_by_pyramid, Rng};
+use blossom::rational_to_f64;
+use blossom::restrict_bezier_triangle_affine;
 use blossom::{
     restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle, BezierCurve, Poly,
     Rational, Ring, TensorPatch, TriangularPatch,
 };
-use common::{curve_by_pyramid, exact, tensor_by_pyramid, triangle_by_pyramid, Rng};
 
 /// Random barycentric corners (s, t, 1 - s - t), exact.
 fn corners(rng: &mut Rng) -> [[Rational; 3]; 3] {
@@ -121,13 +120,10 @@ fn symbolic_identity_with_the_pyramid() {
 #[test]
 fn f64_error_is_small_at_moderate_degree() {
     let mut rng = Rng(504);
-    let unit = |rng: &mut Rng| (rng.next() % 2001) as f64 / 1000.0 - 1.0;
     let mut worst: f64 = 0.0;
     for n in 1..=8 {
         for _ in 0..20 {
-            let pts: Vec<Vec<f64>> = (0..=n)
-                .map(|_| vec![unit(&mut rng), unit(&mut rng)])
-                .collect();
+            let pts: Vec<Vec<f64>> = (0..=n).map(|_| vec![rng.unit(), rng.unit()]).collect();
             let a = (rng.next() % 1000) as f64 / 2000.0;
             let b = 0.5 + (rng.next() % 1000) as f64 / 2000.0;
             let float = restrict_bezier_curve(&BezierCurve::new(pts.clone()).unwrap(), &a, &b);
@@ -152,7 +148,6 @@ fn f64_error_is_small_at_moderate_degree() {
 
 #[test]
 fn corners_must_be_barycentric() {
-    let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
     let patch = TriangularPatch::new(1, vec![vec![q(0, 1)], vec![q(1, 1)], vec![q(2, 1)]]).unwrap();
     let good = [q(1, 1), q(0, 1), q(0, 1)];
     let bad = [q(1, 2), q(1, 2), q(1, 2)];

@@ -1,44 +1,15 @@
-//! Shared helpers of the integration tests: a tiny deterministic PRNG and random inputs.
+//! Shared helpers of the integration tests, root and `cli/` alike: a tiny deterministic PRNG
+//! and random inputs, the blossom argument lists, de Casteljau's pyramid as the reference
+//! restriction of Bézier input, the rational n / d and the exact value of a double.
+//!
+//! Each test crate includes this one file (`#[path = ...] mod common;`) and uses part of it.
 #![allow(dead_code)]
 
-use blossom::blossoms::pyramid::{
-    bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom,
-};
 use blossom::{
-    BezierCurve, PowerCurve, PowerSurface, Rational, Ring, TensorPatch, TriangularPatch,
+    bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom, BezierCurve, PowerCurve,
+    PowerSurface, Rational, Ring, TensorPatch, TriangularPatch,
 };
 use num_bigint::BigInt;
-use std::io::Write;
-use std::process::{Command, Stdio};
-
-/// What one run of the `blossom` binary produced.
-pub struct Run {
-    pub code: i32,
-    pub stdout: String,
-    pub stderr: String,
-}
-
-/// Runs `blossom ARGS` with `input` on standard input.
-pub fn run_binary(args: &[&str], input: &[u8]) -> Run {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_blossom"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the binary starts");
-    {
-        let mut stdin = child.stdin.take().expect("stdin is piped");
-        // The binary may exit before reading (bad arguments): ignore a broken pipe.
-        let _ = stdin.write_all(input);
-    }
-    let out = child.wait_with_output().expect("the binary finishes");
-    Run {
-        code: out.status.code().expect("an exit code, not a signal"),
-        stdout: String::from_utf8(out.stdout).expect("UTF-8 stdout"),
-        stderr: String::from_utf8(out.stderr).expect("UTF-8 stderr"),
-    }
-}
 
 /// SplitMix64: deterministic, dependency-free.
 pub struct Rng(pub u64);
@@ -57,6 +28,11 @@ impl Rng {
         let p = (self.next() % 41) as i64 - 20;
         let q = (self.next() % 9) as i64 + 1;
         Rational::new(BigInt::from(p), BigInt::from(q))
+    }
+
+    /// A double in [-1, 1] on the grid of step 1/1000.
+    pub fn unit(&mut self) -> f64 {
+        (self.next() % 2001) as f64 / 1000.0 - 1.0
     }
 
     pub fn point(&mut self, dim: usize) -> Vec<Rational> {
@@ -126,6 +102,11 @@ pub fn triangle_by_pyramid<T: Ring>(
             bezier_triangle_blossom(patch, &args)
         })
         .collect()
+}
+
+/// The rational n / d.
+pub fn q(n: i64, d: i64) -> Rational {
+    Rational::new(BigInt::from(n), BigInt::from(d))
 }
 
 /// The exact value of a double (finite by construction in the tests).

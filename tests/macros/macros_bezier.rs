@@ -5,17 +5,13 @@
 //! (seed 004, eqs. (2) and (9)), and the inverse (polarisation) formula of seed 004 applied to
 //! points of the Bézier curve or patch (evaluated by de Casteljau). The table is snapshotted.
 
-use blossom::blossoms::pyramid::{
-    bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom,
+use crate::common::{q, repeated};
+use blossom::{bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom};
+use blossom::{
+    curve_control_points_from_samples, tensor_control_points_from_samples,
+    triangle_control_points_from_samples, BezierCurve, Poly, Rational, Ring, TensorPatch,
+    TriangularPatch,
 };
-use blossom::{inverse, BezierCurve, Poly, Rational, Ring, TensorPatch, TriangularPatch};
-
-/// x repeated k times, then y repeated l times.
-fn repeated<X: Clone>(x: &X, k: usize, y: &X, l: usize) -> Vec<X> {
-    std::iter::repeat_n(x.clone(), k)
-        .chain(std::iter::repeat_n(y.clone(), l))
-        .collect()
-}
 
 /// A point of one symbolic coordinate.
 type P = [Poly; 1];
@@ -54,7 +50,7 @@ fn prove_curve<const L: usize>(f: CurveFn<L>) -> Row {
         w[v].to_vec() == bezier_curve_blossom(&net, &args)
     });
     let curve = BezierCurve::new(net.clone()).unwrap();
-    let sampled = inverse::curve_control_points(n, &a, &b, &|t: &Poly| curve.eval(t));
+    let sampled = curve_control_points_from_samples(n, &a, &b, &|t: &Poly| curve.eval(t));
     let polarisation = (0..=n).all(|v| w[v].to_vec() == sampled[v]);
     Row {
         shape: "bezier_curve",
@@ -85,7 +81,7 @@ fn prove_tensor<const R: usize, const C: usize>(f: TensorFn<R, C>) -> Row {
     });
     let patch = TensorPatch::new(net).unwrap();
     let sampled =
-        inverse::tensor_control_points((n, m), &rect, &|u: &Poly, v: &Poly| patch.eval(u, v));
+        tensor_control_points_from_samples((n, m), &rect, &|u: &Poly, v: &Poly| patch.eval(u, v));
     let polarisation = (0..=n).all(|nu| (0..=m).all(|mu| p[nu][mu].to_vec() == sampled[nu][mu]));
     Row {
         shape: "bezier_tensor",
@@ -113,7 +109,7 @@ fn prove_triangle<const L: usize>(n: usize, f: TriangleFn<L>) -> Row {
             .collect();
         pyramid &= q[k].to_vec() == bezier_triangle_blossom(&patch, &args);
     }
-    let sampled = inverse::triangle_control_points(n, &tri, &|u: &Poly, v: &Poly| {
+    let sampled = triangle_control_points_from_samples(n, &tri, &|u: &Poly, v: &Poly| {
         patch.eval(&bary(&[u.clone(), v.clone()]))
     });
     let polarisation = (0..L).all(|k| q[k].to_vec() == sampled[k]);
@@ -188,7 +184,6 @@ fn bezier_cubic_in_f64_and_exact() {
     // The cubic with control points (0,0), (1,2), (3,3), (4,0) on [1/4, 3/4], against the
     // pyramid in exact arithmetic and within 1e-15 in f64.
     let pts = [[0, 0], [1, 2], [3, 3], [4, 0]];
-    let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
     let exact_ctrl = pts.map(|p| p.map(|x| q(x, 1)));
     let (a, b) = (q(1, 4), q(3, 4));
     let w = cubic(&exact_ctrl, &a, &b);
@@ -201,7 +196,7 @@ fn bezier_cubic_in_f64_and_exact() {
     let wf = cubic(&float_ctrl, &0.25, &0.75);
     for (wf, w) in wf.iter().zip(&w) {
         for (x, y) in wf.iter().zip(w) {
-            assert!((x - blossom::ring::rational_to_f64(y)).abs() <= 1e-15);
+            assert!((x - blossom::rational_to_f64(y)).abs() <= 1e-15);
         }
     }
 }

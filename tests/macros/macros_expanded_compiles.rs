@@ -1,42 +1,17 @@
 //! The source printed by `blossom expand` compiles on its own in a crate that depends on
-//! `blossom`: the files in `tests/macros_expanded/` are exactly what `expand_source` prints
-//! (checked below; regenerate with `BLOSSOM_UPDATE_EXPANDED=1`), and are compiled here by
-//! `include!` and run against the closed form.
+//! `blossom` only: the files in `tests/macros_expanded/` (exactly what `expand_source` prints,
+//! checked by `cli/tests/grid/expanded_files.rs`) are compiled here by `include!` and run
+//! against the closed form.
 
-use blossom::specialised::{expand_source, Shape};
+use crate::common::q;
 use blossom::{
     restrict_curve, restrict_tensor, restrict_triangle, Method, PowerCurve, PowerSurface, Rational,
 };
 
 mod expanded {
-    include!("macros_expanded/curve_3.rs");
-    include!("macros_expanded/tensor_3_2.rs");
-    include!("macros_expanded/triangle_3_2.rs");
-}
-
-#[test]
-fn the_files_are_what_expand_prints() {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/macros_expanded");
-    for (shape, file) in [
-        (Shape::Curve(3), "curve_3.rs"),
-        (Shape::Tensor(3, 2), "tensor_3_2.rs"),
-        (Shape::Triangle(3, 2), "triangle_3_2.rs"),
-    ] {
-        let printed = expand_source(shape).unwrap();
-        let path = format!("{dir}/{file}");
-        if std::env::var_os("BLOSSOM_UPDATE_EXPANDED").is_some() {
-            std::fs::write(&path, &printed).unwrap();
-        }
-        let stored = std::fs::read_to_string(&path).unwrap();
-        assert!(
-            stored == printed,
-            "{file} differs from `blossom expand {shape}`"
-        );
-    }
-}
-
-fn q(n: i64, d: i64) -> Rational {
-    Rational::new(n.into(), d.into())
+    include!("../macros_expanded/curve_3.rs");
+    include!("../macros_expanded/tensor_3_2.rs");
+    include!("../macros_expanded/triangle_3_2.rs");
 }
 
 #[test]

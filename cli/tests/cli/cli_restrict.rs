@@ -2,9 +2,7 @@
 //! (`cli.md`) describes: bad input of every class, hand-checked answers, and agreement of all
 //! methods and both arithmetics on random jobs.
 
-mod common;
-
-use common::{run_binary as run_bytes, Run};
+use crate::binary::{run_binary as run_bytes, Run};
 use serde_json::{json, Value};
 
 fn run(args: &[&str], input: &str) -> Run {
@@ -114,7 +112,7 @@ fn unknown_or_unsupported_kind() {
         "kind: unknown kind \"foo\" (expected one of curve, tensor, triangle, bezier-curve, \
          bspline, bspline-eval, rational-curve, elevate, reduce)"
     );
-    // The spline, rational and degree-change kinds are answered (tests/cli_spline_jobs.rs):
+    // The spline, rational and degree-change kinds are answered (cli_spline_jobs.rs):
     // without their fields they are refused for the first missing one.
     for (kind, first) in [
         ("bezier-curve", "control_points"),
@@ -836,7 +834,7 @@ fn check_random_jobs(kind: &str, seed: u64, count: usize) {
             .iter()
             .map(|v| {
                 let text = v.as_str().expect("exact numbers are strings");
-                blossom::number::parse_f64(text).expect("an exact number")
+                blossom_cli::number::parse_f64(text).expect("an exact number")
             })
             .collect();
         let scale = exact_f64.iter().fold(1.0f64, |s, x| s.max(x.abs()));

@@ -2,9 +2,8 @@
 //! exactly as `cli.md` describes: hand-checked answers, bad input of every class (exit 2, one
 //! `error: FIELD: ...` line, empty stdout), and random jobs checked against each other.
 
-mod common;
-
-use common::{run_binary, Rng, Run};
+use crate::binary::{run_binary, Run};
+use crate::common::Rng;
 use serde_json::{json, Value};
 
 /// Runs `blossom restrict ARGS` on `job`.
@@ -81,7 +80,7 @@ fn hand_checked_answers() {
     assert_eq!(reduce[1]["control_points"], json!([["1/3"], ["1/3"]]));
     assert_eq!(reduce[1]["l2_error"], json!("1/45"));
     assert_eq!(reduce[2]["l2_error"], json!("2/15"));
-    insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"), prepend_module_to_snapshot => false}, {
+    insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/../snapshots"), prepend_module_to_snapshot => false}, {
         insta::assert_snapshot!("cli_spline_jobs_answers", [bspline, eval, arc, quadratic, elevate, bezier, reduce[0].clone(), reduce[1].clone(), reduce[2].clone()]
             .iter().map(|v| v.to_string()).collect::<Vec<_>>().join("\n"));
     });
@@ -173,7 +172,7 @@ fn random_jobs_agree_across_algorithms() {
             .zip(float["control_points"].as_array().unwrap())
         {
             for (x, y) in e.as_array().unwrap().iter().zip(f.as_array().unwrap()) {
-                let (x, y) = (blossom::ring::rational_to_f64(&q(x)), y.as_f64().unwrap());
+                let (x, y) = (blossom::rational_to_f64(&q(x)), y.as_f64().unwrap());
                 assert!((x - y).abs() <= 1e-9 * (1.0 + x.abs()), "{x} vs {y}");
             }
         }
@@ -233,7 +232,7 @@ fn random_jobs_agree_across_algorithms() {
 
 fn as_f64(v: &Value) -> f64 {
     match v {
-        Value::String(_) => blossom::ring::rational_to_f64(&q(v)),
+        Value::String(_) => blossom::rational_to_f64(&q(v)),
         _ => v.as_f64().expect("a number"),
     }
 }

@@ -5,14 +5,14 @@
 
 #[test]
 fn every_generated_evaluator_of_the_grid_is_proved() {
-    let rows = blossom::specialised::proof_table();
+    let rows = blossom_cli::specialised::proof_table();
     assert_eq!(rows.len(), 10 + 16 + 9 + 10);
-    let text = blossom::specialised::proof_table_text(&rows);
+    let text = blossom_cli::specialised::proof_table_text(&rows);
     for row in &rows {
         assert!(row.identical(), "not proved:\n{text}");
     }
     insta::with_settings!({
-        snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"),
+        snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/../snapshots"),
         prepend_module_to_snapshot => false,
     }, {
         insta::assert_snapshot!("macros_proof_table", text);

@@ -7,7 +7,7 @@ use quote::quote;
 
 fn snapshot(name: &str, code: &str) {
     insta::with_settings!({
-        snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"),
+        snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/../snapshots"),
         prepend_module_to_snapshot => false,
     }, {
         insta::assert_snapshot!(name, code);

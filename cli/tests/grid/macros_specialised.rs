@@ -1,29 +1,20 @@
 //! The carried grid and its dispatch: exactly the documented degrees are carried, and each
 //! carried evaluator agrees with the bulk restriction (f64, 3-D points, random inputs) and,
-//! exactly, with the closed form on rationals for a sample.
+//! exactly, with the subset-sum definition on rationals for a sample.
 #![cfg(feature = "carried-grid")]
 
-use blossom::specialised::{
-    carried_degrees, carries, restrict_curve_specialised, restrict_tensor_specialised,
-    restrict_triangle_specialised, Shape,
-};
+use crate::common::{q, Rng};
 use blossom::{
     restrict_curve, restrict_tensor, restrict_triangle, Method, PowerCurve, PowerSurface, Rational,
 };
+use blossom_cli::specialised::{
+    carried_degrees, carries, restrict_curve_specialised, restrict_tensor_specialised,
+    restrict_triangle_specialised, Shape,
+};
 
-/// A tiny deterministic generator of small numbers.
-struct Lcg(u64);
-impl Lcg {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((self.0 >> 33) % 2001) as f64 / 1000.0 - 1.0
-    }
-    fn point(&mut self) -> Vec<f64> {
-        (0..3).map(|_| self.next()).collect()
-    }
+/// A 3-D point of doubles in [-1, 1].
+fn point(rng: &mut Rng) -> Vec<f64> {
+    (0..3).map(|_| rng.unit()).collect()
 }
 
 fn close(x: &[Vec<f64>], y: &[Vec<f64>]) -> bool {
@@ -35,10 +26,10 @@ fn close(x: &[Vec<f64>], y: &[Vec<f64>]) -> bool {
 
 #[test]
 fn exactly_the_documented_curves_are_carried() {
-    let mut rng = Lcg(1);
+    let mut rng = Rng(1);
     for n in 0..=18 {
-        let curve = PowerCurve::new((0..=n).map(|_| rng.point()).collect()).unwrap();
-        let (a, b) = (rng.next(), rng.next() + 2.0);
+        let curve = PowerCurve::new((0..=n).map(|_| point(&mut rng)).collect()).unwrap();
+        let (a, b) = (rng.unit(), rng.unit() + 2.0);
         let got = restrict_curve_specialised(&curve, &a, &b);
         assert_eq!(got.is_some(), carries(Shape::Curve(n)), "curve {n}");
         assert_eq!(carries(Shape::Curve(n)), (1..=16).contains(&n));
@@ -55,16 +46,16 @@ fn exactly_the_documented_curves_are_carried() {
 
 #[test]
 fn exactly_the_documented_surfaces_are_carried() {
-    let mut rng = Lcg(2);
+    let mut rng = Rng(2);
     for n in 0..=6 {
         for m in 0..=6 {
             let s = PowerSurface::new(
                 (0..=n)
-                    .map(|_| (0..=m).map(|_| rng.point()).collect())
+                    .map(|_| (0..=m).map(|_| point(&mut rng)).collect())
                     .collect(),
             )
             .unwrap();
-            let rect = [rng.next(), rng.next() + 2.0, rng.next(), rng.next() + 2.0];
+            let rect = [rng.unit(), rng.unit() + 2.0, rng.unit(), rng.unit() + 2.0];
             let got = restrict_tensor_specialised(&s, &rect);
             assert_eq!(
                 got.is_some(),
@@ -78,9 +69,9 @@ fn exactly_the_documented_surfaces_are_carried() {
                 }
             }
             let tri = [
-                [rng.next(), rng.next()],
-                [rng.next() + 2.0, rng.next()],
-                [rng.next(), rng.next() + 2.0],
+                [rng.unit(), rng.unit()],
+                [rng.unit() + 2.0, rng.unit()],
+                [rng.unit(), rng.unit() + 2.0],
             ];
             let got = restrict_triangle_specialised(&s, &tri);
             assert_eq!(
@@ -104,8 +95,7 @@ fn exactly_the_documented_surfaces_are_carried() {
 /// for f64, and instantiating the whole grid a second time would double this test's build).
 #[test]
 fn carried_evaluators_are_exact_on_rationals() {
-    use blossom::specialised::grid;
-    let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
+    use blossom_cli::specialised::grid;
     let coef: [[[Rational; 2]; 3]; 3] = std::array::from_fn(|i| {
         std::array::from_fn(|j| [q(i as i64 - 2 * j as i64, 3), q((i * j) as i64 + 1, 7)])
     });

@@ -1,11 +1,9 @@
 //! f64 answers against exact ones: the measured relative error stays within documented bounds
 //! (see `cargo run --release --example float_error` for the full table).
 
-mod common;
-
-use blossom::accuracy::{curve_error, tensor_error, triangle_error};
+use crate::common::Rng;
 use blossom::{Method, Rational};
-use common::Rng;
+use blossom_cli::accuracy::{curve_error, tensor_error, triangle_error};
 use num_bigint::BigInt;
 
 fn unit(rng: &mut Rng) -> Rational {

@@ -1,15 +1,15 @@
 //! The subdivision paper's tables re-derived exactly, and the `verify` report, snapshotted in
 //! the top-level `snapshots/` directory.
 
-use blossom::verify::subdivision::{example_1_surface, format_point};
-use blossom::verify::{build_report, Status};
 use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method, Poly, Rational, Ring};
+use blossom_cli::verify::subdivision::{example_1_surface, format_point};
+use blossom_cli::verify::{build_report, Status};
 use std::fmt::Write;
 use std::str::FromStr;
 
 macro_rules! snapshot {
     ($name:expr, $value:expr) => {
-        insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"), prepend_module_to_snapshot => false}, {
+        insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/../snapshots"), prepend_module_to_snapshot => false}, {
             insta::assert_snapshot!($name, $value);
         });
     };
@@ -56,10 +56,10 @@ fn report_explains_everything_and_finds_the_table_2_convention() {
 
 #[test]
 fn a_wrong_printed_value_is_unexplained() {
-    use blossom::verify::paper_data::{
+    use blossom_cli::verify::paper_data::{
         TABLE_1_RECTANGLES, TABLE_1_S2, TABLE_2_S4, TABLE_2_TRIANGLES,
     };
-    use blossom::verify::subdivision::{tensor_section, triangle_section};
+    use blossom_cli::verify::subdivision::{tensor_section, triangle_section};
     // One printed coordinate off by a little: no reading of the labels explains it.
     let mut s4 = TABLE_2_S4;
     s4[7].1[2] = "2420/6400";
@@ -128,7 +128,7 @@ fn computed_tables_snapshot() {
 
 #[test]
 fn symbolic_control_points_snapshot() {
-    let curve = blossom::proofs::symbolic_curve(3);
+    let curve = blossom_cli::proofs::symbolic_curve(3);
     let (a, b) = (Poly::var("a"), Poly::var("b"));
     let bez = restrict_curve(&curve, &a, &b, Method::Bulk);
     let mut out = String::from("cubic C(u) = c0 + c1 u + c2 u^2 + c3 u^3 on [a, b]\n");
@@ -144,7 +144,7 @@ fn symbolic_control_points_snapshot() {
     assert_eq!(bez.control_points()[1][0], hand);
     snapshot!("symbolic_cubic_curve", out);
 
-    let surface = blossom::proofs::symbolic_surface(1, 1);
+    let surface = blossom_cli::proofs::symbolic_surface(1, 1);
     let rect = ["a", "b", "c", "d"].map(Poly::var);
     let net = restrict_tensor(&surface, &rect, Method::Bulk);
     let mut out =

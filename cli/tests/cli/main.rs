@@ -1,0 +1,8 @@
+//! The `blossom` binary driven as a process: `blossom restrict` and the spline jobs.
+
+mod binary;
+#[path = "../../../tests/common/mod.rs"]
+mod common;
+
+mod cli_restrict;
+mod cli_spline_jobs;

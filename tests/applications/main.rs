@@ -1,0 +1,13 @@
+//! The applications layer of the library: batches, degree change, rational curves and
+//! surfaces, B-splines and the inverse formula for closures.
+
+#[path = "../common/mod.rs"]
+mod common;
+mod json;
+
+mod batched;
+mod degree_change;
+mod inverse_closures;
+mod nurbs_rational;
+mod spline_bspline;
+mod spline_examples;

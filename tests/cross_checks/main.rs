@@ -1,0 +1,6 @@
+//! Exact cross-checks of independent restriction methods against one another.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod cross_check_exact;
