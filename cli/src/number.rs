@@ -233,7 +233,7 @@ fn small_exponent(digits: &str) -> Option<u64> {
 /// Reads a number written as text (see the module documentation) exactly.
 ///
 /// ```
-/// use blossom::number::{format_rational, parse_rational};
+/// use blossom_cli::number::{format_rational, parse_rational};
 /// let q = parse_rational("-2.5e-1").unwrap();
 /// assert_eq!(format_rational(&q).unwrap(), "-1/4");
 /// assert!(parse_rational("1/0").is_err());
@@ -314,7 +314,7 @@ fn power_of_ten(k: u64) -> BigInt {
 /// Reads a number written as text (see the module documentation) as the nearest `f64`.
 ///
 /// ```
-/// use blossom::number::parse_f64;
+/// use blossom_cli::number::parse_f64;
 /// assert_eq!(parse_f64("1/3").unwrap(), 1.0 / 3.0);
 /// assert_eq!(parse_f64("0.1").unwrap(), 0.1);
 /// assert!(parse_f64("1e400").is_err());

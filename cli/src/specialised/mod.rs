@@ -27,7 +27,7 @@
 //!
 //! ```
 //! # #[cfg(feature = "carried-grid")] {
-//! use blossom::specialised::{grid, restrict_curve_specialised};
+//! use blossom_cli::specialised::{grid, restrict_curve_specialised};
 //! use blossom::{restrict_curve, Method, PowerCurve, Rational};
 //!
 //! let q = |n: i64| Rational::from_integer(n.into());
