@@ -1,7 +1,7 @@
 //! The printed versions of Theorem 3's ingredients where the two transcriptions (000, 001)
 //! or the theorem and its proof differ: the count (15), the sum (16), Remark 1's count (21)
 //! and the summation bounds under (14). Each version is implemented as printed, through the
-//! one evaluator of eq. (14) ([`closed_form::triangle_point_with`]), and compared with the
+//! one evaluator of eq. (14) ([`blossom::restrict_triangle_with_formula`]), and compared with the
 //! subset-sum definition (13).
 
 use blossom::{binomial, multinomial};
