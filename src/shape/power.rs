@@ -190,4 +190,18 @@ mod tests {
         let e = PowerSurface::new(vec![vec![vec![1.0], vec![2.0, 3.0]]]).unwrap_err();
         assert_eq!(e.field, "coefficients[0][1]");
     }
+
+    #[test]
+    fn bad_shapes_have_a_matchable_kind() {
+        use crate::error::ErrorKind;
+        let kind = |r: Result<PowerCurve<f64>>| r.unwrap_err().kind();
+        assert_eq!(kind(PowerCurve::new(vec![])), ErrorKind::Empty);
+        assert_eq!(kind(PowerCurve::new(vec![vec![]])), ErrorKind::Dimension);
+        assert_eq!(
+            kind(PowerCurve::new(vec![vec![1.0, 2.0], vec![1.0]])),
+            ErrorKind::Dimension
+        );
+        let e = PowerSurface::new(vec![vec![vec![1.0], vec![2.0]], vec![vec![3.0]]]).unwrap_err();
+        assert_eq!((e.path(), e.kind()), ("coefficients[1]", ErrorKind::Shape));
+    }
 }
