@@ -3,7 +3,7 @@
 //! by de Casteljau's pyramid in exact arithmetic (to rounding), across block boundaries; the
 //! parallel path equals the serial one bit for bit; shapes that do not fit are errors.
 
-use crate::common::{exact, repeated, Rng};
+use crate::common::{exact, exact_points, repeated, Rng};
 use blossom::rational_to_f64;
 use blossom::{bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom};
 use blossom::{Batch, RestrictionMap, BATCH_LANES as LANES};
@@ -59,10 +59,7 @@ fn curve_batches_equal_each_curve_restricted_exactly() {
         let mut out = Batch::zeros(n + 1, dim, count);
         batch.restrict_into(&map, &mut out).unwrap();
         for (k, net) in nets.iter().enumerate() {
-            let exact_net: Vec<Vec<Rational>> = net
-                .iter()
-                .map(|p| p.iter().map(|&x| exact(x)).collect())
-                .collect();
+            let exact_net: Vec<Vec<Rational>> = exact_points(&net);
             for j in 0..=n {
                 let want =
                     bezier_curve_blossom(&exact_net, &repeated(&exact(a), n - j, &exact(b), j));
@@ -93,14 +90,8 @@ fn tensor_and_triangle_batches_equal_the_pyramid() {
     batch.restrict_into(&map, &mut out).unwrap();
     let [a, b, c, d] = rect.map(exact);
     for (k, net) in nets.iter().enumerate().step_by(37) {
-        let grid: Vec<Vec<Vec<Rational>>> = net
-            .chunks(m + 1)
-            .map(|row| {
-                row.iter()
-                    .map(|p| p.iter().map(|&x| exact(x)).collect())
-                    .collect()
-            })
-            .collect();
+        let grid: Vec<Vec<Vec<Rational>>> =
+            net.chunks(m + 1).map(|row| exact_points(&row)).collect();
         for nu in 0..=n {
             for mu in 0..=m {
                 let want = bezier_tensor_blossom(
@@ -126,13 +117,7 @@ fn tensor_and_triangle_batches_equal_the_pyramid() {
     batch.restrict_into(&map, &mut out).unwrap();
     let bary = corners.map(|[s, t]| [exact(s), exact(t), exact(1.0 - s - t)]);
     for (k, net) in nets.iter().enumerate().step_by(41) {
-        let patch = TriangularPatch::new(
-            big_n,
-            net.iter()
-                .map(|p| p.iter().map(|&x| exact(x)).collect())
-                .collect(),
-        )
-        .unwrap();
+        let patch = TriangularPatch::new(big_n, exact_points(&net)).unwrap();
         for (idx, (nu, mu, la, _)) in patch.entries().enumerate() {
             let args: Vec<[Rational; 3]> = std::iter::repeat_n(bary[0].clone(), nu)
                 .chain(std::iter::repeat_n(bary[1].clone(), mu))

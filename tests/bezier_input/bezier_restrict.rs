@@ -18,7 +18,9 @@ use blossom::{
 };
 use num_bigint::BigInt;
 
-use crate::common::{curve_by_pyramid, exact, tensor_by_pyramid, triangle_by_pyramid, Rng};
+use crate::common::{
+    curve_by_pyramid, exact, exact_points, tensor_by_pyramid, triangle_by_pyramid, Rng,
+};
 
 /// The samplers this file needs on top of the shared generator.
 trait Samplers {
@@ -416,12 +418,7 @@ fn f64_curves_against_the_exact_answer() {
                 (rng.unit_f64() * 2.0 - 1.0, rng.unit_f64() * 2.0 + 1.0)
             };
             let float = restrict_bezier_curve(&BezierCurve::new(pts.clone()).unwrap(), &a, &b);
-            let exact_curve = BezierCurve::new(
-                pts.iter()
-                    .map(|p| p.iter().map(|&x| exact(x)).collect())
-                    .collect(),
-            )
-            .unwrap();
+            let exact_curve = BezierCurve::new(exact_points(&pts)).unwrap();
             let want = restrict_bezier_curve(&exact_curve, &exact(a), &exact(b));
             let e = relative_error(
                 float.control_points(),
@@ -458,14 +455,7 @@ fn f64_patches_against_the_exact_answer() {
                 .collect();
             let rect: [f64; 4] = std::array::from_fn(|_| (rng.unit_f64() + 1.0) / 2.0);
             let float = restrict_bezier_tensor(&TensorPatch::new(net.clone()).unwrap(), &rect);
-            let exact_net = net
-                .iter()
-                .map(|row| {
-                    row.iter()
-                        .map(|p| p.iter().map(|&x| exact(x)).collect())
-                        .collect()
-                })
-                .collect();
+            let exact_net = net.iter().map(|row| exact_points(&row)).collect();
             let want =
                 restrict_bezier_tensor(&TensorPatch::new(exact_net).unwrap(), &rect.map(exact));
             let size = input_size(&net.concat());
@@ -498,13 +488,7 @@ fn f64_patches_against_the_exact_answer() {
             let float =
                 restrict_bezier_triangle(&TriangularPatch::new(n, pts.clone()).unwrap(), &corners)
                     .unwrap();
-            let exact_patch = TriangularPatch::new(
-                n,
-                pts.iter()
-                    .map(|p| p.iter().map(|&x| exact(x)).collect())
-                    .collect(),
-            )
-            .unwrap();
+            let exact_patch = TriangularPatch::new(n, exact_points(&pts)).unwrap();
             let want = restrict_bezier_triangle_affine(
                 &exact_patch,
                 &corners.map(|[s, t, _]| [exact(s), exact(t)]),

@@ -4,7 +4,9 @@
 //! symbolically (every control point and the domain are variables), and in f64 with a measured
 //! error. Bad corners are refused.
 
-use crate::common::{curve_by_pyramid, exact, q, tensor_by_pyramid, triangle_by_pyramid, Rng};
+use crate::common::{
+    curve_by_pyramid, exact, exact_points, q, tensor_by_pyramid, triangle_by_pyramid, Rng,
+};
 use blossom::rational_to_f64;
 use blossom::restrict_bezier_triangle_affine;
 use blossom::{
@@ -127,12 +129,7 @@ fn f64_error_is_small_at_moderate_degree() {
             let a = (rng.next() % 1000) as f64 / 2000.0;
             let b = 0.5 + (rng.next() % 1000) as f64 / 2000.0;
             let float = restrict_bezier_curve(&BezierCurve::new(pts.clone()).unwrap(), &a, &b);
-            let exact_curve = BezierCurve::new(
-                pts.iter()
-                    .map(|p| p.iter().map(|&x| exact(x)).collect())
-                    .collect(),
-            )
-            .unwrap();
+            let exact_curve = BezierCurve::new(exact_points(&pts)).unwrap();
             let want = restrict_bezier_curve(&exact_curve, &exact(a), &exact(b));
             for (pf, pe) in float.control_points().iter().zip(want.control_points()) {
                 for (x, y) in pf.iter().zip(pe) {

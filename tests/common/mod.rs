@@ -113,3 +113,11 @@ pub fn q(n: i64, d: i64) -> Rational {
 pub fn exact(x: f64) -> Rational {
     Rational::from_float(x).expect("a finite double")
 }
+
+/// The exact values of a list of points of doubles.
+pub fn exact_points(points: &[Vec<f64>]) -> Vec<Vec<Rational>> {
+    points
+        .iter()
+        .map(|p| p.iter().map(|&x| exact(x)).collect())
+        .collect()
+}
