@@ -59,7 +59,7 @@ fn curve_batches_equal_each_curve_restricted_exactly() {
         let mut out = Batch::zeros(n + 1, dim, count);
         batch.restrict_into(&map, &mut out).unwrap();
         for (k, net) in nets.iter().enumerate() {
-            let exact_net: Vec<Vec<Rational>> = exact_points(&net);
+            let exact_net: Vec<Vec<Rational>> = exact_points(net);
             for j in 0..=n {
                 let want =
                     bezier_curve_blossom(&exact_net, &repeated(&exact(a), n - j, &exact(b), j));
@@ -91,7 +91,7 @@ fn tensor_and_triangle_batches_equal_the_pyramid() {
     let [a, b, c, d] = rect.map(exact);
     for (k, net) in nets.iter().enumerate().step_by(37) {
         let grid: Vec<Vec<Vec<Rational>>> =
-            net.chunks(m + 1).map(|row| exact_points(&row)).collect();
+            net.chunks(m + 1).map(|row| exact_points(row)).collect();
         for nu in 0..=n {
             for mu in 0..=m {
                 let want = bezier_tensor_blossom(
@@ -117,7 +117,7 @@ fn tensor_and_triangle_batches_equal_the_pyramid() {
     batch.restrict_into(&map, &mut out).unwrap();
     let bary = corners.map(|[s, t]| [exact(s), exact(t), exact(1.0 - s - t)]);
     for (k, net) in nets.iter().enumerate().step_by(41) {
-        let patch = TriangularPatch::new(big_n, exact_points(&net)).unwrap();
+        let patch = TriangularPatch::new(big_n, exact_points(net)).unwrap();
         for (idx, (nu, mu, la, _)) in patch.entries().enumerate() {
             let args: Vec<[Rational; 3]> = std::iter::repeat_n(bary[0].clone(), nu)
                 .chain(std::iter::repeat_n(bary[1].clone(), mu))

@@ -455,7 +455,7 @@ fn f64_patches_against_the_exact_answer() {
                 .collect();
             let rect: [f64; 4] = std::array::from_fn(|_| (rng.unit_f64() + 1.0) / 2.0);
             let float = restrict_bezier_tensor(&TensorPatch::new(net.clone()).unwrap(), &rect);
-            let exact_net = net.iter().map(|row| exact_points(&row)).collect();
+            let exact_net = net.iter().map(|row| exact_points(row)).collect();
             let want =
                 restrict_bezier_tensor(&TensorPatch::new(exact_net).unwrap(), &rect.map(exact));
             let size = input_size(&net.concat());
