@@ -90,8 +90,7 @@ fn tensor_and_triangle_batches_equal_the_pyramid() {
     batch.restrict_into(&map, &mut out).unwrap();
     let [a, b, c, d] = rect.map(exact);
     for (k, net) in nets.iter().enumerate().step_by(37) {
-        let grid: Vec<Vec<Vec<Rational>>> =
-            net.chunks(m + 1).map(|row| exact_points(row)).collect();
+        let grid: Vec<Vec<Vec<Rational>>> = net.chunks(m + 1).map(exact_points).collect();
         for nu in 0..=n {
             for mu in 0..=m {
                 let want = bezier_tensor_blossom(
