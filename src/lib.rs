@@ -75,6 +75,11 @@ pub use shape::bezier::{
     bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom, BezierCurve, TensorPatch,
     TriangularPatch,
 };
+pub use shape::halving::{
+    curve_net, curve_scratch_len, tensor_net, tensor_scratch_len, triangle_net,
+    triangle_scratch_len, BernsteinPairStep, BernsteinStep, CurveStep, PowerPairStep, PowerStep,
+    TriangleStep,
+};
 pub use shape::point::Point;
 pub use shape::power::{PowerCurve, PowerSurface};
 pub use shape::simplex::{triangle_index, triangle_len};
@@ -93,10 +98,6 @@ pub use restrict::{restrict_curve, restrict_tensor, restrict_triangle, Method};
 
 // Applications.
 pub use applications::batch::{Batch, RestrictionMap, BATCH_LANES};
-pub use applications::bezier_input::{
-    restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle,
-    restrict_bezier_triangle_affine,
-};
 pub use applications::degree::{
     bernstein_gram, elevate, elevation_matrix, least_squares_matrix, reduce, squared_l2_distance,
     Reduction,
@@ -108,6 +109,10 @@ pub use applications::rational::{
 pub use applications::spline::{
     bspline_basis_on_span, bspline_from_pieces, bspline_from_pieces_with_knots, continuity_at,
     BSpline, BezierPiece, KnotVector, Piece, PowerPiece,
+};
+pub use shape::subdivide::{
+    restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle,
+    restrict_bezier_triangle_affine,
 };
 
 // The compile-time expansion of formulae (3), (9), (14).

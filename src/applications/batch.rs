@@ -26,12 +26,12 @@
 //! independent, so with the `rayon` feature `Batch::par_restrict_into` spreads them over
 //! threads. The last block is padded with zeros.
 
-use crate::applications::bezier_input::{
-    restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle_affine,
-};
 use crate::error::{Error, ErrorKind, Result};
 use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
 use crate::shape::simplex::triangle_len;
+use crate::shape::subdivide::{
+    restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle_affine,
+};
 use crate::Rational;
 use num_traits::{One, Zero};
 

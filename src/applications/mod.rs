@@ -1,10 +1,9 @@
-//! What is built on restriction and on the shapes: restriction of Bézier input, batches of
+//! What is built on restriction and on the shapes: batches of
 //! objects sharing a domain, B-splines (seed 002), rational curves and surfaces, and degree
 //! elevation and reduction (seed 004). Each module imports only the layers below it and its
 //! siblings listed before it here.
 
 pub(crate) mod batch;
-pub(crate) mod bezier_input;
 pub(crate) mod degree;
 pub(crate) mod rational;
 pub(crate) mod spline;

@@ -8,17 +8,19 @@
 //! | [`closed_form`] (per control point) | Theorem 1, eq. (3) | Theorem 2, eq. (9) | Theorem 3, eq. (14) |
 //! | [`pyramid`] (de Casteljau) | eq. (2) of 004 | eq. (9) of 004 | barycentric steps |
 //! | [`polarisation`] (inverse formula) | eqs. (20), (22) of 004 | two passes | eqs. (21), (23) of 004 |
-//! | [`bulk`] (Taylor shift) | shift + Bernstein | along u, then v | 2-D shift, Horner, Bernstein |
+//! | [`halving`] (scaled power basis, shared work) | eq. (3) by halving | along u, then v | box halving |
+//! | [`taylor_shift`] (through the power basis) | shift + Bernstein | along u, then v | 2-D shift, Horner, Bernstein |
 //!
 //! The dispatch on [`Method`] is this module's one job; each algorithm is a file of its own and
 //! none calls another.
 
-pub(crate) mod bulk;
 pub(crate) mod closed_form;
 pub(crate) mod definition;
+pub(crate) mod halving;
 pub(crate) mod nets;
 pub(crate) mod polarisation;
 pub(crate) mod pyramid;
+pub(crate) mod taylor_shift;
 
 use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
 use crate::shape::power::{PowerCurve, PowerSurface};
@@ -27,8 +29,15 @@ use crate::Ring;
 /// Which algorithm computes a restriction. All give the identical exact answer.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Method {
-    /// All control points at once by changes of variable and basis (the default).
+    /// All control points at once, sharing work, in the scaled power basis the input is
+    /// written in ([`crate::curve_net`] on d_i = c_i / C(n, i)): O(n^2) for a curve, as
+    /// accurate in f64 as the closed form. The default.
     Bulk,
+    /// All control points at once through a Taylor shift and the change to the Bernstein
+    /// basis. Division-free and O(n^2) too, but the power basis of the shifted polynomial is
+    /// ill-conditioned: in f64 it loses digits with the degree (kept as an independent method
+    /// and as the measured "before" of `BENCHMARKS.md`).
+    TaylorShift,
     /// The closed forms (3), (9), (14), one control point at a time.
     ClosedForm,
     /// The subset-sum definitions (2), (8), (13) at every control point.
@@ -41,8 +50,9 @@ pub enum Method {
 
 impl Method {
     /// Every method, the default first.
-    pub const ALL: [Method; 5] = [
+    pub const ALL: [Method; 6] = [
         Method::Bulk,
+        Method::TaylorShift,
         Method::ClosedForm,
         Method::Definition,
         Method::Pyramid,
@@ -53,6 +63,7 @@ impl Method {
     pub fn name(self) -> &'static str {
         match self {
             Method::Bulk => "bulk",
+            Method::TaylorShift => "taylor-shift",
             Method::ClosedForm => "closed-form",
             Method::Definition => "definition",
             Method::Pyramid => "pyramid",
@@ -69,7 +80,8 @@ pub fn restrict_curve<T: Ring>(
     method: Method,
 ) -> BezierCurve<T> {
     match method {
-        Method::Bulk => bulk::restrict_curve(curve, a, b),
+        Method::Bulk => halving::restrict_curve(curve, a, b),
+        Method::TaylorShift => taylor_shift::restrict_curve(curve, a, b),
         Method::ClosedForm => closed_form::restrict_curve(curve, a, b),
         Method::Definition => definition::restrict_curve(curve, a, b),
         Method::Pyramid => pyramid::restrict_curve(curve, a, b),
@@ -84,7 +96,8 @@ pub fn restrict_tensor<T: Ring>(
     method: Method,
 ) -> TensorPatch<T> {
     match method {
-        Method::Bulk => bulk::restrict_tensor(surface, rect),
+        Method::Bulk => halving::restrict_tensor(surface, rect),
+        Method::TaylorShift => taylor_shift::restrict_tensor(surface, rect),
         Method::ClosedForm => closed_form::restrict_tensor(surface, rect),
         Method::Definition => definition::restrict_tensor(surface, rect),
         Method::Pyramid => pyramid::restrict_tensor(surface, rect),
@@ -100,7 +113,8 @@ pub fn restrict_triangle<T: Ring>(
     method: Method,
 ) -> TriangularPatch<T> {
     match method {
-        Method::Bulk => bulk::restrict_triangle(surface, tri),
+        Method::Bulk => halving::restrict_triangle(surface, tri),
+        Method::TaylorShift => taylor_shift::restrict_triangle(surface, tri),
         Method::ClosedForm => closed_form::restrict_triangle(surface, tri),
         Method::Definition => definition::restrict_triangle(surface, tri),
         Method::Pyramid => pyramid::restrict_triangle(surface, tri),

@@ -5,6 +5,8 @@
 
 pub(crate) mod basis;
 pub(crate) mod bezier;
+pub(crate) mod halving;
 pub(crate) mod point;
 pub(crate) mod power;
 pub(crate) mod simplex;
+pub(crate) mod subdivide;

@@ -41,13 +41,14 @@ pub enum MethodChoice {
 }
 
 /// The names `--method` accepts, in the order the help and error messages list them.
-pub const METHOD_NAMES: [(&str, MethodChoice); 6] = [
+pub const METHOD_NAMES: [(&str, MethodChoice); 7] = [
     ("closed-form", MethodChoice::Library(Method::ClosedForm)),
     ("definition", MethodChoice::Library(Method::Definition)),
     ("pyramid", MethodChoice::Library(Method::Pyramid)),
     ("polarisation", MethodChoice::Library(Method::Polarisation)),
     ("specialised", MethodChoice::Specialised),
     ("bulk", MethodChoice::Library(Method::Bulk)),
+    ("taylor-shift", MethodChoice::Library(Method::TaylorShift)),
 ];
 
 /// Options of `blossom restrict`.

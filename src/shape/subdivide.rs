@@ -8,32 +8,28 @@
 //! * tensor patch on [a, b] x [c, d]: p_(nu mu) = b[a^(n-nu), b^nu; c^(m-mu), d^mu];
 //! * triangle with corners A, B, C: q_(nu mu lambda) = b[A^nu, B^mu, C^lambda].
 //!
-//! Every control point could be computed on its own by de Casteljau's pyramid on the blossom
-//! ([`crate::blossoms::pyramid`]), O(n^2) per point and O(n^3) in all for a curve. Here they
-//! are computed together, as the subdivision paper's conclusion suggests, by a change of
-//! basis and an affine change of variable:
+//! All control points come from the halving engine ([`crate::curve_net`],
+//! [`crate::tensor_net`], [`crate::triangle_net`]) with de Casteljau's affine steps: the input
+//! stays in the Bernstein basis, every step is (1 - t) x + t y (or its triangular form), and
+//! the work is shared between control points. The costs are O(n^2) per curve, O(nm(n + m))
+//! per tensor patch and O(N^3) per triangular patch, division-free, so the same code runs on
+//! f64, exact rationals and symbolic polynomials, and in f64 it is as accurate as one
+//! de Casteljau pyramid per control point (`tests/accuracy` measures both on the same inputs).
 //!
-//! 1. to the power basis by forward differences ([`crate::shape::basis::bernstein_to_power`],
-//!    [`crate::shape::basis::triangle_bernstein_to_power`]): c_k = C(n, k) Δ^k b_0;
-//! 2. the bulk restriction of the power form ([`crate::restrict`], [`crate::Method::Bulk`]):
-//!    a Taylor shift and a scaling, then the Bernstein form.
-//!
-//! The costs are O(n^2) per curve, O(nm(n + m)) per tensor patch (curve passes along rows,
-//! then along columns) and O(N^3) per triangular patch. Every step is division-free, so the
-//! same code runs on f64, exact rationals and symbolic polynomials. The tests prove it equal to
-//! the pyramid for every control point. In f64 the power basis costs accuracy at high degree
-//! (`examples/float_error.rs` measures it).
+//! These functions take and return the runtime-dimension shapes; the coordinates are copied to
+//! one contiguous run in and out. [`crate::Bezier`] and its siblings store contiguous `[T; D]`
+//! points and restrict without any allocation.
 
 use crate::error::{Error, ErrorKind, Result};
-use crate::restrict::bulk::{bulk_curve_points, bulk_triangle_grid};
-use crate::shape::basis::{bernstein_to_power, triangle_bernstein_to_power};
 use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
-use crate::shape::point::{self, flatten, unflatten, Point};
-use crate::shape::simplex::triangle_index;
+use crate::shape::halving::{
+    curve_net, tensor_net, triangle_net, BernsteinPairStep, BernsteinStep,
+};
+use crate::shape::point::points_of;
 use crate::Ring;
 
 /// The Bézier curve `curve` over [0, 1] restricted to [a, b] (any a, b, also outside [0, 1]
-/// or with a > b): control points q_j = b[a^(n-j), b^j]. O(n^2) per coordinate.
+/// or with a > b): control points q_j = b[a^(n-j), b^j]. O(n^2) per coordinate, by halving.
 ///
 /// ```
 /// use blossom::{restrict_bezier_curve, BezierCurve};
@@ -44,8 +40,12 @@ use crate::Ring;
 /// # Ok::<(), blossom::Error>(())
 /// ```
 pub fn restrict_bezier_curve<T: Ring>(curve: &BezierCurve<T>, a: &T, b: &T) -> BezierCurve<T> {
-    let power = bernstein_to_power(curve.control_points());
-    BezierCurve::new(bulk_curve_points(power, a, b)).expect("n + 1 points of one dimension")
+    let dim = curve.control_points()[0].len();
+    let flat = curve.control_points().concat();
+    let mut out = vec![T::zero(); flat.len()];
+    let (a, b) = (BernsteinStep(a), BernsteinStep(b));
+    curve_net(&flat, dim, &a, &b, &mut out, &mut Vec::new());
+    BezierCurve::new(points_of(&out, dim)).expect("n + 1 points of one dimension")
 }
 
 /// The tensor-product patch `patch` over [0, 1]^2 restricted to `rect = [a, b, c, d]`, i.e.
@@ -53,13 +53,28 @@ pub fn restrict_bezier_curve<T: Ring>(curve: &BezierCurve<T>, a: &T, b: &T) -> B
 /// The curve algorithm along u with whole rows as points, then along v for every row:
 /// O(nm(n + m)) per coordinate.
 pub fn restrict_bezier_tensor<T: Ring>(patch: &TensorPatch<T>, rect: &[T; 4]) -> TensorPatch<T> {
-    let [a, b, c, d] = rect;
     let dim = patch.control_points()[0][0].len();
-    let rows = flatten(patch.control_points());
-    let rows = unflatten(bulk_curve_points(bernstein_to_power(&rows), a, b), dim);
-    let net = rows
+    let cols = patch.control_points()[0].len();
+    let flat: Vec<T> = patch
+        .control_points()
         .iter()
-        .map(|row| bulk_curve_points(bernstein_to_power(row), c, d))
+        .flatten()
+        .flatten()
+        .cloned()
+        .collect();
+    let mut out = vec![T::zero(); flat.len()];
+    let steps = rect.each_ref().map(BernsteinStep);
+    tensor_net(
+        &flat,
+        cols,
+        dim,
+        steps.each_ref(),
+        &mut out,
+        &mut Vec::new(),
+    );
+    let net = out
+        .chunks(cols * dim)
+        .map(|row| points_of(row, dim))
         .collect();
     TensorPatch::new(net).expect("a rectangular net")
 }
@@ -101,20 +116,9 @@ pub fn restrict_bezier_triangle_affine<T: Ring>(
 ) -> TriangularPatch<T> {
     let n = patch.degree();
     let dim = patch.control_points()[0].len();
-    // The power form in (s, t) as an (N+1) x (N+1) grid, zero where i + j > N.
-    let power = triangle_bernstein_to_power(patch);
-    let grid: Vec<Vec<Point<T>>> = (0..=n)
-        .map(|i| {
-            (0..=n)
-                .map(|j| {
-                    if i + j <= n {
-                        power[triangle_index(n, i, j)].clone()
-                    } else {
-                        point::zero(dim)
-                    }
-                })
-                .collect()
-        })
-        .collect();
-    bulk_triangle_grid(&grid, n, corners)
+    let flat = patch.control_points().concat();
+    let mut out = vec![T::zero(); flat.len()];
+    let steps = corners.each_ref().map(BernsteinPairStep);
+    triangle_net(&flat, n, dim, steps.each_ref(), &mut out, &mut Vec::new());
+    TriangularPatch::new(n, points_of(&out, dim)).expect("a triangular net")
 }

@@ -1,4 +1,4 @@
-//! The Taylor-shift path ([`crate::Method::Bulk`]): all control points at once by changes of
+//! The Taylor-shift path ([`crate::Method::TaylorShift`]): all control points at once by changes of
 //! variable and of basis, through the power basis.
 //!
 //! * curve on [a, b]: the coefficients of C(a + (b - a) t) by a Taylor shift and a scaling,
