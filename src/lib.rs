@@ -67,6 +67,7 @@ pub use num::ring::{rational_to_f64, Rational, Ring};
 pub use error::{Error, ErrorKind};
 
 // Shapes.
+pub use shape::array::{Bezier, BezierTensor, BezierTriangle};
 pub use shape::basis::{
     bernstein_by_horner, bernstein_to_power, power_to_bernstein, scale_argument, taylor_shift,
     triangle_bernstein_by_horner, triangle_bernstein_to_power, triangle_power_to_bernstein,
@@ -83,6 +84,7 @@ pub use shape::halving::{
 pub use shape::point::Point;
 pub use shape::power::{PowerCurve, PowerSurface};
 pub use shape::simplex::{triangle_index, triangle_len};
+pub use shape::traits::{Evaluate, Restrict};
 
 // Restriction.
 pub use restrict::closed_form::{

@@ -430,6 +430,70 @@ fn triangle_step_in_place<T, S: TriangleStep<T>>(
     }
 }
 
+/// The blossom of the curve-like form `level` (n + 1 points) at `args` (n of them), in place:
+/// the answer is `level[..dim]`. n steps of one argument each, O(n^2).
+///
+/// # Panics
+/// If `args.len() + 1` is not the number of points of `level`.
+pub(crate) fn curve_blossom_in_place<T: Ring, S: CurveStep<T>>(
+    level: &mut [T],
+    dim: usize,
+    args: &[S],
+) {
+    assert_eq!(
+        (args.len() + 1) * dim,
+        level.len(),
+        "n arguments for n + 1 points"
+    );
+    let len = level.len();
+    for (r, step) in args.iter().enumerate() {
+        step_left(&mut level[..len - r * dim], dim, step);
+    }
+}
+
+/// The blossom of the triangular form `level` (degree n) at `args` (n of them), in place: the
+/// answer is `level[..dim]`.
+///
+/// # Panics
+/// If `level` does not hold `triangle_len(args.len())` points.
+pub(crate) fn triangle_blossom_in_place<T: Ring, S: TriangleStep<T>>(
+    level: &mut [T],
+    dim: usize,
+    args: &[S],
+) {
+    let n = args.len();
+    assert_eq!(
+        triangle_len(n) * dim,
+        level.len(),
+        "n arguments for degree n"
+    );
+    for (r, step) in args.iter().enumerate() {
+        triangle_step_in_place(level, n - r, dim, step);
+    }
+}
+
+/// De Casteljau's subdivision of the Bernstein curve `src` at `t`: `left` receives the
+/// control points f(0^(n-i), t^i) of the part over [0, t], `right` those f(t^(n-i), 1^i) of
+/// the part over [t, 1], from the edges of one pyramid (n(n + 1) / 2 steps). `right` doubles as
+/// the working level.
+///
+/// # Panics
+/// If the three slices differ in length or are not whole points.
+pub(crate) fn curve_split<T: Ring>(src: &[T], dim: usize, t: &T, left: &mut [T], right: &mut [T]) {
+    assert!(left.len() == src.len() && right.len() == src.len() && src.len() % dim == 0);
+    let n = src.len() / dim - 1;
+    let step = BernsteinStep(t);
+    right.clone_from_slice(src);
+    for r in 0..=n {
+        // The level of r steps occupies right[..(n + 1 - r) * dim]; its first point is
+        // f(0^(n-r), t^r), its last f(t^r, 1^(n-r)), which is where it stays.
+        left[r * dim..(r + 1) * dim].clone_from_slice(&right[..dim]);
+        if r < n {
+            step_left(&mut right[..(n + 1 - r) * dim], dim, &step);
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -3,6 +3,7 @@
 //! de Casteljau's algorithm on the blossom), and the changes of basis between them. This layer
 //! imports only the numbers.
 
+pub(crate) mod array;
 pub(crate) mod basis;
 pub(crate) mod bezier;
 pub(crate) mod halving;
@@ -10,3 +11,4 @@ pub(crate) mod point;
 pub(crate) mod power;
 pub(crate) mod simplex;
 pub(crate) mod subdivide;
+pub(crate) mod traits;

@@ -4,5 +4,6 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod arrays;
 mod bezier_restrict;
 mod subdivide;

@@ -1,0 +1,350 @@
+//! Bézier shapes with contiguous fixed-dimension points `[T; D]`: the front end for Rust code
+//! that knows its dimension. The control points of one shape are one allocation, and every
+//! restriction has an `_into` form that allocates nothing once its scratch buffer has grown.
+//!
+//! * [`Bezier`]: a curve sum_i p_i B_i^n(t) over [0, 1];
+//! * [`BezierTensor`]: a tensor-product patch over [0, 1]^2, points row by row;
+//! * [`BezierTriangle`]: a triangular patch over the reference triangle, with corners
+//!   (1, 0), (0, 1), (0, 0) in the affine coordinates (s, t) and barycentric coordinates
+//!   (s, t, 1 - s - t); points in lexicographic order of (ν, μ) as [`crate::TriangularPatch`].
+//!
+//! Restriction is the halving engine ([`crate::curve_net`] and its siblings) with de Casteljau
+//! steps; evaluation and blossoms are de Casteljau's pyramid.
+
+use crate::error::{Error, ErrorKind, Result};
+use crate::shape::halving::{
+    curve_blossom_in_place, curve_net, curve_split, tensor_net, triangle_blossom_in_place,
+    triangle_net, BernsteinPairStep, BernsteinStep,
+};
+use crate::shape::simplex::{triangle_index, triangle_len};
+use crate::Ring;
+use std::ops::Range;
+
+fn empty_dimension<const D: usize>() -> Result<()> {
+    if D == 0 {
+        return Err(Error::of(
+            ErrorKind::Dimension,
+            "D",
+            "points need at least 1 coordinate",
+        ));
+    }
+    Ok(())
+}
+
+fn check_out(field: &str, want: usize, found: usize) -> Result<()> {
+    if want != found {
+        return Err(Error::of(
+            ErrorKind::Shape,
+            field,
+            format!("expected {want} points, found {found}"),
+        ));
+    }
+    Ok(())
+}
+
+fn first_point<T: Clone, const D: usize>(flat: &[T]) -> [T; D] {
+    std::array::from_fn(|x| flat[x].clone())
+}
+
+fn to_points<T: Clone, const D: usize>(flat: &[T]) -> Vec<[T; D]> {
+    flat.chunks(D).map(first_point).collect()
+}
+
+/// A Bézier curve of any degree with `D`-dimensional control points stored contiguously.
+///
+/// ```
+/// use blossom::Bezier;
+/// let cubic = Bezier::new(vec![[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 0.0]])?;
+/// let middle = cubic.subsegment(0.25..0.75);
+/// // The ends of a subsegment are points of the curve.
+/// assert_eq!(middle.points()[0], cubic.eval(&0.25));
+/// assert_eq!(middle.points()[3], cubic.eval(&0.75));
+/// let (left, right) = cubic.split(&0.5);
+/// assert_eq!(left.points()[3], right.points()[0]);
+/// # Ok::<(), blossom::Error>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Bezier<T, const D: usize> {
+    points: Vec<[T; D]>,
+}
+
+impl<T: Ring, const D: usize> Bezier<T, D> {
+    /// The curve with control points `points` (degree `points.len() - 1`).
+    ///
+    /// # Errors
+    /// `points` when it is empty, `D` when `D == 0`.
+    pub fn new(points: Vec<[T; D]>) -> Result<Self> {
+        empty_dimension::<D>()?;
+        if points.is_empty() {
+            return Err(Error::of(
+                ErrorKind::Empty,
+                "points",
+                "expected at least one control point",
+            ));
+        }
+        Ok(Bezier { points })
+    }
+
+    /// The degree n.
+    pub fn degree(&self) -> usize {
+        self.points.len() - 1
+    }
+
+    /// The control points p_0, ..., p_n.
+    pub fn points(&self) -> &[[T; D]] {
+        &self.points
+    }
+
+    /// Consumes the curve, returning its control points.
+    pub fn into_points(self) -> Vec<[T; D]> {
+        self.points
+    }
+
+    /// The blossom f(t_1, ..., t_n) (de Casteljau with one argument per level).
+    ///
+    /// # Errors
+    /// `args` when it does not hold n arguments.
+    pub fn blossom(&self, args: &[T]) -> Result<[T; D]> {
+        if args.len() != self.degree() {
+            return Err(Error::of(
+                ErrorKind::Arity,
+                "args",
+                format!(
+                    "a blossom of degree {} takes {} arguments, found {}",
+                    self.degree(),
+                    self.degree(),
+                    args.len()
+                ),
+            ));
+        }
+        let mut level = self.points.as_flattened().to_vec();
+        let steps: Vec<BernsteinStep<'_, T>> = args.iter().map(BernsteinStep).collect();
+        curve_blossom_in_place(&mut level, D, &steps);
+        Ok(first_point(&level))
+    }
+
+    /// The point at `t` (de Casteljau; one allocation for the working level).
+    pub fn eval(&self, t: &T) -> [T; D] {
+        let mut level = self.points.as_flattened().to_vec();
+        let steps = vec![BernsteinStep(t); self.degree()];
+        curve_blossom_in_place(&mut level, D, &steps);
+        first_point(&level)
+    }
+
+    /// The same curve over `range` = a..b, reparametrised over [0, 1]: control points
+    /// f(a^(n-j), b^j). Any a, b, also outside [0, 1] or with a > b.
+    pub fn subsegment(&self, range: Range<T>) -> Self {
+        let mut out = self.points.clone();
+        self.subsegment_into(&range.start, &range.end, &mut out, &mut Vec::new())
+            .expect("out has n + 1 points");
+        Bezier { points: out }
+    }
+
+    /// [`Bezier::subsegment`] into `out` (n + 1 points), with `scratch` grown to
+    /// [`crate::curve_scratch_len`]`(n, D)` on first use and reused afterwards: no allocation
+    /// once it is large enough.
+    ///
+    /// # Errors
+    /// `out` when it does not hold n + 1 points.
+    pub fn subsegment_into(
+        &self,
+        a: &T,
+        b: &T,
+        out: &mut [[T; D]],
+        scratch: &mut Vec<T>,
+    ) -> Result<()> {
+        check_out("out", self.points.len(), out.len())?;
+        curve_net(
+            self.points.as_flattened(),
+            D,
+            &BernsteinStep(a),
+            &BernsteinStep(b),
+            out.as_flattened_mut(),
+            scratch,
+        );
+        Ok(())
+    }
+
+    /// The parts over [0, t] and [t, 1], each over [0, 1], by one de Casteljau pyramid.
+    pub fn split(&self, t: &T) -> (Self, Self) {
+        let src = self.points.as_flattened();
+        let mut left = src.to_vec();
+        let mut right = src.to_vec();
+        curve_split(src, D, t, &mut left, &mut right);
+        (
+            Bezier {
+                points: to_points(&left),
+            },
+            Bezier {
+                points: to_points(&right),
+            },
+        )
+    }
+}
+
+/// A tensor-product Bézier patch of bidegree (n, m) with `D`-dimensional control points stored
+/// contiguously, row by row: point (ν, μ) is `points()[ν * (m + 1) + μ]`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BezierTensor<T, const D: usize> {
+    cols: usize,
+    points: Vec<[T; D]>,
+}
+
+impl<T: Ring, const D: usize> BezierTensor<T, D> {
+    /// The patch of bidegree `degree` = (n, m) with the (n + 1)(m + 1) points `points`.
+    ///
+    /// # Errors
+    /// `points` when their number is not (n + 1)(m + 1), `D` when `D == 0`.
+    pub fn new(degree: (usize, usize), points: Vec<[T; D]>) -> Result<Self> {
+        empty_dimension::<D>()?;
+        let (rows, cols) = (degree.0 + 1, degree.1 + 1);
+        check_out("points", rows * cols, points.len())?;
+        Ok(BezierTensor { cols, points })
+    }
+
+    /// The bidegree (n, m).
+    pub fn degree(&self) -> (usize, usize) {
+        (self.points.len() / self.cols - 1, self.cols - 1)
+    }
+
+    /// The control points, row by row.
+    pub fn points(&self) -> &[[T; D]] {
+        &self.points
+    }
+
+    /// The control point p_(ν μ).
+    pub fn get(&self, nu: usize, mu: usize) -> &[T; D] {
+        &self.points[nu * self.cols + mu]
+    }
+
+    /// The point at (s, t): de Casteljau along v in every row, then along u.
+    pub fn eval(&self, s: &T, t: &T) -> [T; D] {
+        let (n, m) = self.degree();
+        let along_v = vec![BernsteinStep(t); m];
+        let mut column = Vec::with_capacity((n + 1) * D);
+        let mut row = Vec::with_capacity(self.cols * D);
+        for r in self.points.chunks(self.cols) {
+            row.clear();
+            row.extend_from_slice(r.as_flattened());
+            curve_blossom_in_place(&mut row, D, &along_v);
+            column.extend_from_slice(&row[..D]);
+        }
+        curve_blossom_in_place(&mut column, D, &vec![BernsteinStep(s); n]);
+        first_point(&column)
+    }
+
+    /// The patch over `rect` = [a, b, c, d], i.e. [a, b] x [c, d], reparametrised over
+    /// [0, 1]^2.
+    pub fn restrict(&self, rect: &[T; 4]) -> Self {
+        let mut out = self.points.clone();
+        self.restrict_into(rect, &mut out, &mut Vec::new())
+            .expect("out has as many points");
+        BezierTensor {
+            cols: self.cols,
+            points: out,
+        }
+    }
+
+    /// [`BezierTensor::restrict`] into `out`, with a reusable `scratch`
+    /// ([`crate::tensor_scratch_len`]).
+    ///
+    /// # Errors
+    /// `out` when it does not hold (n + 1)(m + 1) points.
+    pub fn restrict_into(
+        &self,
+        rect: &[T; 4],
+        out: &mut [[T; D]],
+        scratch: &mut Vec<T>,
+    ) -> Result<()> {
+        check_out("out", self.points.len(), out.len())?;
+        let steps = rect.each_ref().map(BernsteinStep);
+        tensor_net(
+            self.points.as_flattened(),
+            self.cols,
+            D,
+            steps.each_ref(),
+            out.as_flattened_mut(),
+            scratch,
+        );
+        Ok(())
+    }
+}
+
+/// A triangular Bézier patch of degree N with `D`-dimensional control points stored
+/// contiguously in lexicographic order of (ν, μ), over the reference triangle with corners
+/// (1, 0), (0, 1), (0, 0) in the affine coordinates (s, t).
+#[derive(Clone, Debug, PartialEq)]
+pub struct BezierTriangle<T, const D: usize> {
+    degree: usize,
+    points: Vec<[T; D]>,
+}
+
+impl<T: Ring, const D: usize> BezierTriangle<T, D> {
+    /// The patch of degree `degree` with the (N + 1)(N + 2) / 2 points `points`.
+    ///
+    /// # Errors
+    /// `points` when their number is wrong, `D` when `D == 0`.
+    pub fn new(degree: usize, points: Vec<[T; D]>) -> Result<Self> {
+        empty_dimension::<D>()?;
+        check_out("points", triangle_len(degree), points.len())?;
+        Ok(BezierTriangle { degree, points })
+    }
+
+    /// The degree N.
+    pub fn degree(&self) -> usize {
+        self.degree
+    }
+
+    /// The control points in lexicographic order of (ν, μ).
+    pub fn points(&self) -> &[[T; D]] {
+        &self.points
+    }
+
+    /// The control point q_(ν μ λ), λ = N - ν - μ.
+    pub fn get(&self, nu: usize, mu: usize) -> &[T; D] {
+        &self.points[triangle_index(self.degree, nu, mu)]
+    }
+
+    /// The point at the affine coordinates (s, t) (barycentric (s, t, 1 - s - t)).
+    pub fn eval(&self, at: &[T; 2]) -> [T; D] {
+        let mut level = self.points.as_flattened().to_vec();
+        triangle_blossom_in_place(&mut level, D, &vec![BernsteinPairStep(at); self.degree]);
+        first_point(&level)
+    }
+
+    /// The patch over the triangle with corners `corners` = [A, B, C] (affine coordinates),
+    /// reparametrised over the reference triangle: q_(ν μ λ) = f(A^ν, B^μ, C^λ).
+    pub fn restrict(&self, corners: &[[T; 2]; 3]) -> Self {
+        let mut out = self.points.clone();
+        self.restrict_into(corners, &mut out, &mut Vec::new())
+            .expect("out has as many points");
+        BezierTriangle {
+            degree: self.degree,
+            points: out,
+        }
+    }
+
+    /// [`BezierTriangle::restrict`] into `out`, with a reusable `scratch`
+    /// ([`crate::triangle_scratch_len`]).
+    ///
+    /// # Errors
+    /// `out` when it does not hold (N + 1)(N + 2) / 2 points.
+    pub fn restrict_into(
+        &self,
+        corners: &[[T; 2]; 3],
+        out: &mut [[T; D]],
+        scratch: &mut Vec<T>,
+    ) -> Result<()> {
+        check_out("out", self.points.len(), out.len())?;
+        let steps = corners.each_ref().map(BernsteinPairStep);
+        triangle_net(
+            self.points.as_flattened(),
+            self.degree,
+            D,
+            steps.each_ref(),
+            out.as_flattened_mut(),
+            scratch,
+        );
+        Ok(())
+    }
+}
