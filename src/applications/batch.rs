@@ -1,137 +1,117 @@
 //! Many Bézier curves or patches restricted to one shared domain.
 //!
-//! For a fixed domain the restriction is one fixed linear map on control points. For a curve
-//! on [a, b], q_j = sum_i M_ji b_i, where M_ji = B_i^n[a^(n-j), b^j] is the blossom of the
-//! Bernstein polynomial B_i^n. Tensor and triangular patches work the same way, with the
-//! blossoms of their own bases. The map is built once, *exactly*:
-//!
-//! 1. every finite f64 is a dyadic rational, so the domain is read exactly;
-//! 2. the restriction of the identity net (control point i = the unit vector e_i) is computed
-//!    in rational arithmetic by [`crate::subdivide`], and its coordinates are the entries of
-//!    M;
-//! 3. each entry is rounded once to the nearest f64.
-//!
-//! Applying M costs one multiply-add per entry, per coordinate and per object. That is all
-//! the floating-point work, and it is memory-bound for cubics.
-//!
 //! # Layout
 //!
 //! A [`Batch`] stores its objects as a structure of arrays in blocks of [`BATCH_LANES`] objects
 //! ("AoSoA"). Within a block, coordinate x of control point p of the objects in the block is
 //! one contiguous run of `BATCH_LANES` numbers, at `block * block_len + (p * dim + x) * BATCH_LANES`.
-//! Applying M to a block is a sequence of multiply-adds over contiguous runs, which the
-//! compiler vectorises. A block of a cubic 3-D curve batch (12 runs in, 12 out, 48 KiB each)
-//! stays in the L2 cache while it is worked on (`BENCHMARKS.md` has the measured choice of the
-//! block size). Blocks are
-//! independent, so with the `rayon` feature `Batch::par_restrict_into` spreads them over
-//! threads. The last block is padded with zeros.
+//!
+//! # Restriction
+//!
+//! Point p of a block, all its coordinates for all its objects, is one contiguous run of
+//! `dim * BATCH_LANES` numbers. A block is therefore *one* Bézier object whose points have
+//! `dim * BATCH_LANES` coordinates, and the restriction engine ([`crate::curve_net`],
+//! [`crate::tensor_net`], [`crate::triangle_net`]) runs on it unchanged: every de Casteljau
+//! step is one straight loop over `dim * BATCH_LANES` numbers, which the compiler vectorises,
+//! and every object gets exactly the answer (bit for bit) of the engine run on it alone: the
+//! accuracy of de Casteljau, not that of a precomputed matrix. A block of a cubic 3-D curve
+//! batch (48 KiB in, 48 KiB out, 36 KiB of scratch) stays in the L2 cache while it is worked on
+//! (`BENCHMARKS.md` has the measured choice of the block size). Blocks are independent, so
+//! with the `rayon` feature `Batch::par_restrict_into` spreads them over threads. The last
+//! block is padded with zeros.
 
 use crate::error::{Error, ErrorKind, Result};
-use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
-use crate::shape::simplex::triangle_len;
-use crate::shape::subdivide::{
-    restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle_affine,
+use crate::shape::bezier::BezierCurve;
+use crate::shape::halving::{
+    curve_net, tensor_net, triangle_net, BernsteinPairStep, BernsteinStep,
 };
-use crate::Rational;
-use num_traits::{One, Zero};
+use crate::shape::simplex::triangle_len;
 
 /// Objects per block of a [`Batch`] (measured: see the module docs).
 pub const BATCH_LANES: usize = 512;
 
-/// The f64 value `x` as an exact rational, or an error naming `field` when it is not finite.
-fn exact(x: f64, field: &str) -> Result<Rational> {
-    Rational::from_float(x).ok_or_else(|| {
-        Error::of(
+/// The f64 value `x`, or an error naming `field` when it is not finite.
+fn finite(x: f64, field: &str) -> Result<f64> {
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(Error::of(
             ErrorKind::NotFinite,
             field,
             format!("expected a finite number, found {x}"),
-        )
-    })
+        ))
+    }
 }
 
-/// The unit vector e_i of dimension `len`, exactly.
-fn unit(i: usize, len: usize) -> Vec<Rational> {
-    (0..len)
-        .map(|k| {
-            if k == i {
-                Rational::one()
-            } else {
-                Rational::zero()
-            }
-        })
-        .collect()
+/// The domain of a [`RestrictionMap`].
+#[derive(Clone, Debug, PartialEq)]
+enum Domain {
+    Curve([f64; 2]),
+    Tensor { cols: usize, rect: [f64; 4] },
+    Triangle { degree: usize, corners: [[f64; 2]; 3] },
 }
 
-/// The restriction of every object of a batch to one domain, as a matrix
-/// `entries[out * inputs + in]` rounded once from the exact one.
+/// The restriction of every object of a batch to one domain: a linear map on control points,
+/// applied by the halving engine.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RestrictionMap {
     inputs: usize,
     outputs: usize,
-    entries: Vec<f64>,
+    domain: Domain,
 }
 
 impl RestrictionMap {
-    /// Rounds the exact restrictions of the unit nets: `points[j][i]` = M_ji.
-    fn from_exact(points: &[Vec<Rational>]) -> Self {
-        let outputs = points.len();
-        let inputs = points[0].len();
-        let entries = points
-            .iter()
-            .flat_map(|p| p.iter().map(crate::num::ring::rational_to_f64))
-            .collect();
-        RestrictionMap {
-            inputs,
-            outputs,
-            entries,
-        }
-    }
-
-    /// The map of Bézier curves of degree `degree` over [0, 1] restricted to [a, b].
+    /// Bézier curves of degree `degree` over [0, 1] restricted to [a, b].
+    ///
+    /// # Errors
+    /// `a` or `b` when not finite.
     pub fn curve(degree: usize, a: f64, b: f64) -> Result<Self> {
-        let (a, b) = (exact(a, "a")?, exact(b, "b")?);
-        let len = degree + 1;
-        let identity = BezierCurve::new((0..len).map(|i| unit(i, len)).collect())?;
-        Ok(Self::from_exact(
-            restrict_bezier_curve(&identity, &a, &b).control_points(),
-        ))
+        let domain = Domain::Curve([finite(a, "a")?, finite(b, "b")?]);
+        Ok(RestrictionMap {
+            inputs: degree + 1,
+            outputs: degree + 1,
+            domain,
+        })
     }
 
-    /// The map of tensor patches of bidegree `degree` over [0, 1]^2 restricted to
-    /// `rect = [a, b, c, d]`; control points are numbered row by row, `p = nu * (m + 1) + mu`.
+    /// Tensor patches of bidegree `degree` over [0, 1]^2 restricted to `rect = [a, b, c, d]`;
+    /// control points are numbered row by row, `p = nu * (m + 1) + mu`.
+    ///
+    /// # Errors
+    /// `rect[k]` when not finite.
     pub fn tensor(degree: (usize, usize), rect: [f64; 4]) -> Result<Self> {
-        let rect = [
-            exact(rect[0], "rect[0]")?,
-            exact(rect[1], "rect[1]")?,
-            exact(rect[2], "rect[2]")?,
-            exact(rect[3], "rect[3]")?,
-        ];
-        let (rows, cols) = (degree.0 + 1, degree.1 + 1);
-        let len = rows * cols;
-        let identity = TensorPatch::new(
-            (0..rows)
-                .map(|r| (0..cols).map(|c| unit(r * cols + c, len)).collect())
-                .collect(),
-        )?;
-        let net = restrict_bezier_tensor(&identity, &rect);
-        let points: Vec<Vec<Rational>> = net.control_points().iter().flatten().cloned().collect();
-        Ok(Self::from_exact(&points))
+        for (k, &x) in rect.iter().enumerate() {
+            finite(x, &format!("rect[{k}]"))?;
+        }
+        let len = (degree.0 + 1) * (degree.1 + 1);
+        Ok(RestrictionMap {
+            inputs: len,
+            outputs: len,
+            domain: Domain::Tensor {
+                cols: degree.1 + 1,
+                rect,
+            },
+        })
     }
 
-    /// The map of triangular patches of degree `degree` restricted to the sub-triangle whose
-    /// corners have the first two barycentric coordinates `corners` (the third is 1 minus
-    /// their sum); control points in the order of [`TriangularPatch`].
+    /// Triangular patches of degree `degree` restricted to the sub-triangle whose corners have
+    /// the first two barycentric coordinates `corners` (the third is 1 minus their sum);
+    /// control points in the order of [`crate::TriangularPatch`].
+    ///
+    /// # Errors
+    /// `corners[k][l]` when not finite.
     pub fn triangle(degree: usize, corners: [[f64; 2]; 3]) -> Result<Self> {
-        let mut exact_corners: [[Rational; 2]; 3] = Default::default();
         for (k, corner) in corners.iter().enumerate() {
             for (l, &x) in corner.iter().enumerate() {
-                exact_corners[k][l] = exact(x, &format!("corners[{k}][{l}]"))?;
+                finite(x, &format!("corners[{k}][{l}]"))?;
             }
         }
         let len = triangle_len(degree);
-        let identity = TriangularPatch::new(degree, (0..len).map(|i| unit(i, len)).collect())?;
-        let net = restrict_bezier_triangle_affine(&identity, &exact_corners);
-        Ok(Self::from_exact(net.control_points()))
+        Ok(RestrictionMap {
+            inputs: len,
+            outputs: len,
+            domain: Domain::Triangle { degree, corners },
+        })
     }
 
     /// Control points per object taken in.
@@ -144,74 +124,28 @@ impl RestrictionMap {
         self.outputs
     }
 
-    /// The entry M_(out, in).
-    pub fn entry(&self, out: usize, input: usize) -> f64 {
-        self.entries[out * self.inputs + input]
-    }
-
-    /// Applies the map to one block: `output` and `input` are blocks of `dim`-dimensional
-    /// objects in the layout of [`Batch`]. Each output run is written in one pass per group of
-    /// up to four inputs (o = w0 i0 + w1 i1 + w2 i2 + w3 i3, then o += ... for the next
-    /// group), so a cubic's output run is loaded and stored once.
-    fn apply_block(&self, dim: usize, input: &[f64], output: &mut [f64]) {
-        let run = |i: usize, x: usize| -> &[f64; BATCH_LANES] {
-            input[(i * dim + x) * BATCH_LANES..][..BATCH_LANES]
-                .try_into()
-                .expect("a run of BATCH_LANES numbers")
-        };
-        for j in 0..self.outputs {
-            let row = &self.entries[j * self.inputs..][..self.inputs];
-            for x in 0..dim {
-                let out: &mut [f64; BATCH_LANES] = (&mut output[(j * dim + x) * BATCH_LANES..]
-                    [..BATCH_LANES])
-                    .try_into()
-                    .expect("a run of BATCH_LANES numbers");
-                for (g, weights) in row.chunks(4).enumerate() {
-                    let last = weights.len() - 1;
-                    let runs: [&[f64; BATCH_LANES]; 4] =
-                        std::array::from_fn(|k| run(4 * g + k.min(last), x));
-                    let runs = &runs[..weights.len()];
-                    if g == 0 {
-                        combine::<false>(out, weights, runs);
-                    } else {
-                        combine::<true>(out, weights, runs);
-                    }
-                }
+    /// Restricts one block: `input` and `output` are blocks of `dim`-dimensional objects in
+    /// the layout of [`Batch`], i.e. one object with points of `dim * BATCH_LANES` numbers.
+    fn apply_block(&self, dim: usize, input: &[f64], output: &mut [f64], scratch: &mut Vec<f64>) {
+        let lanes = dim * BATCH_LANES;
+        match &self.domain {
+            Domain::Curve([a, b]) => curve_net(
+                input,
+                lanes,
+                &BernsteinStep(a),
+                &BernsteinStep(b),
+                output,
+                scratch,
+            ),
+            Domain::Tensor { cols, rect } => {
+                let steps = rect.each_ref().map(BernsteinStep);
+                tensor_net(input, *cols, lanes, steps.each_ref(), output, scratch)
+            }
+            Domain::Triangle { degree, corners } => {
+                let steps = corners.each_ref().map(BernsteinPairStep);
+                triangle_net(input, *degree, lanes, steps.each_ref(), output, scratch)
             }
         }
-    }
-}
-
-/// `out = sum_k weights[k] runs[k]` (or `out +=` when `ACCUMULATE`), for 1 to 4 runs, lane
-/// by lane in straight loops that the compiler vectorises.
-fn combine<const ACCUMULATE: bool>(
-    out: &mut [f64; BATCH_LANES],
-    weights: &[f64],
-    runs: &[&[f64; BATCH_LANES]],
-) {
-    let put = |o: &mut f64, v: f64| *o = if ACCUMULATE { *o + v } else { v };
-    match (weights, runs) {
-        (&[w0, w1, w2, w3], &[r0, r1, r2, r3]) => {
-            for ((((o, a), b), c), d) in out.iter_mut().zip(r0).zip(r1).zip(r2).zip(r3) {
-                put(o, w0 * a + w1 * b + (w2 * c + w3 * d));
-            }
-        }
-        (&[w0, w1, w2], &[r0, r1, r2]) => {
-            for (((o, a), b), c) in out.iter_mut().zip(r0).zip(r1).zip(r2) {
-                put(o, w0 * a + w1 * b + w2 * c);
-            }
-        }
-        (&[w0, w1], &[r0, r1]) => {
-            for ((o, a), b) in out.iter_mut().zip(r0).zip(r1) {
-                put(o, w0 * a + w1 * b);
-            }
-        }
-        (&[w0], &[r0]) => {
-            for (o, a) in out.iter_mut().zip(r0) {
-                put(o, w0 * a);
-            }
-        }
-        _ => unreachable!("one run per weight, 1 to 4 of them"),
     }
 }
 
@@ -219,8 +153,8 @@ fn combine<const ACCUMULATE: bool>(
 /// blocked structure-of-arrays layout ("AoSoA"): blocks of [`BATCH_LANES`] objects, and within
 /// a block coordinate x of control point p of every object is one contiguous run of
 /// `BATCH_LANES` numbers, at `block * block_len + (p * dim + x) * BATCH_LANES`; the last block
-/// is padded with zeros. Applying a [`RestrictionMap`] is then a sequence of multiply-adds over
-/// contiguous runs, which the compiler vectorises.
+/// is padded with zeros. A block is one object with points of `dim * BATCH_LANES` numbers, on
+/// which [`RestrictionMap`] runs the restriction engine.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Batch {
     points: usize,
@@ -289,6 +223,47 @@ impl Batch {
     fn index(&self, k: usize, p: usize, x: usize) -> usize {
         let block = self.points * self.dim * BATCH_LANES;
         (k / BATCH_LANES) * block + (p * self.dim + x) * BATCH_LANES + k % BATCH_LANES
+    }
+
+    /// The batch of objects given as plain arrays of `K` points of `D` coordinates (a curve's
+    /// polygon, a tensor net row by row, a triangular net in its order).
+    pub fn from_arrays<const K: usize, const D: usize>(objects: &[[[f64; D]; K]]) -> Self {
+        let mut batch = Batch::zeros(K, D, objects.len());
+        for (k, object) in objects.iter().enumerate() {
+            for (p, point) in object.iter().enumerate() {
+                for (x, &value) in point.iter().enumerate() {
+                    let i = batch.index(k, p, x);
+                    batch.data[i] = value;
+                }
+            }
+        }
+        batch
+    }
+
+    /// The objects as plain arrays of `K` points of `D` coordinates.
+    ///
+    /// # Errors
+    /// `K` or `D` when they are not the batch's points per object or dimension.
+    pub fn to_arrays<const K: usize, const D: usize>(&self) -> Result<Vec<[[f64; D]; K]>> {
+        if K != self.points {
+            return Err(Error::of(
+                ErrorKind::Shape,
+                "K",
+                format!("the batch has {} points per object, not {K}", self.points),
+            ));
+        }
+        if D != self.dim {
+            return Err(Error::of(
+                ErrorKind::Dimension,
+                "D",
+                format!("the batch has dimension {}, not {D}", self.dim),
+            ));
+        }
+        Ok((0..self.len)
+            .map(|k| {
+                std::array::from_fn(|p| std::array::from_fn(|x| self.data[self.index(k, p, x)]))
+            })
+            .collect())
     }
 
     /// Coordinate `x` of control point `p` of object `k`.
@@ -384,8 +359,8 @@ impl Batch {
     }
 
     /// Writes the restriction of every object by `map` into `out`, which must hold as many
-    /// objects of `map.outputs()` points of the same dimension (see [`Batch::zeros`]). No
-    /// allocation.
+    /// objects of `map.outputs()` points of the same dimension (see [`Batch::zeros`]). One
+    /// allocation per call (the engine's scratch, shared by all blocks).
     ///
     /// # Errors
     /// `map` or `out` when their shapes do not fit this batch.
@@ -395,8 +370,9 @@ impl Batch {
         if bin == 0 || bout == 0 {
             return Ok(());
         }
+        let mut scratch = Vec::new();
         for (input, output) in self.data.chunks(bin).zip(out.data.chunks_mut(bout)) {
-            map.apply_block(self.dim, input, output);
+            map.apply_block(self.dim, input, output, &mut scratch);
         }
         Ok(())
     }
@@ -417,7 +393,9 @@ impl Batch {
         self.data
             .par_chunks(bin)
             .zip(out.data.par_chunks_mut(bout))
-            .for_each(|(input, output)| map.apply_block(self.dim, input, output));
+            .for_each_init(Vec::new, |scratch, (input, output)| {
+                map.apply_block(self.dim, input, output, scratch)
+            });
         Ok(())
     }
 }

@@ -1,13 +1,14 @@
-//! Batches sharing one domain (`blossom::Batch`, `blossom::RestrictionMap`): the map's entries are the exact ones
-//! rounded once, and a batch restricted by the map equals every object restricted on its own
-//! by de Casteljau's pyramid in exact arithmetic (to rounding), across block boundaries; the
+//! Batches sharing one domain (`blossom::Batch`, `blossom::RestrictionMap`): every object
+//! gets bit for bit what the engine gives it alone, a batch restricted by the map equals every
+//! object restricted on its own by de Casteljau's pyramid in exact arithmetic (to rounding),
+//! across block boundaries; the
 //! parallel path equals the serial one bit for bit; shapes that do not fit are errors.
 
 use crate::common::{exact, exact_points, repeated, Rng};
 use blossom::rational_to_f64;
 use blossom::{bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom};
 use blossom::{Batch, RestrictionMap, BATCH_LANES as LANES};
-use blossom::{BezierCurve, Rational, TriangularPatch};
+use blossom::{Bezier, BezierCurve, Rational, TriangularPatch};
 
 fn unit(rng: &mut Rng) -> f64 {
     (rng.next() % 2_000_001) as f64 / 1_000_000.0 - 1.0
@@ -29,19 +30,26 @@ fn random_nets(rng: &mut Rng, count: usize, points: usize, dim: usize) -> Vec<Ve
 }
 
 #[test]
-fn curve_map_entries_are_the_rounded_exact_blossoms() {
-    let (n, a, b) = (5, 0.3, 0.9);
-    let map = RestrictionMap::curve(n, a, b).unwrap();
-    for j in 0..=n {
-        for i in 0..=n {
-            // M_ji = B_i^n[a^(n-j), b^j]: the blossom of the polygon e_i, exactly.
-            let basis: Vec<Vec<Rational>> = (0..=n)
-                .map(|k| vec![if k == i { exact(1.0) } else { exact(0.0) }])
-                .collect();
-            let entry = bezier_curve_blossom(&basis, &repeated(&exact(a), n - j, &exact(b), j));
-            assert_eq!(map.entry(j, i), rational_to_f64(&entry[0]), "M_{j}{i}");
-        }
+fn every_object_gets_the_answer_of_the_engine_on_it_alone() {
+    // A block is one object with points of dim * LANES numbers: each lane must get exactly
+    // (bit for bit) what `Bezier::subsegment` gives for its curve alone.
+    let mut rng = Rng(600);
+    let count = LANES + 3;
+    let curves: Vec<[[f64; 3]; 6]> = (0..count)
+        .map(|_| std::array::from_fn(|_| std::array::from_fn(|_| unit(&mut rng))))
+        .collect();
+    let batch = Batch::from_arrays(&curves);
+    let map = RestrictionMap::curve(5, -0.75, 2.5).unwrap();
+    let mut out = Batch::zeros(6, 3, count);
+    batch.restrict_into(&map, &mut out).unwrap();
+    let got: Vec<[[f64; 3]; 6]> = out.to_arrays().unwrap();
+    for (curve, got) in curves.iter().zip(&got) {
+        let alone = Bezier::new(curve.to_vec()).unwrap().subsegment(-0.75..2.5);
+        assert_eq!(alone.points(), &got[..]);
     }
+    assert_eq!(batch.to_arrays::<6, 3>().unwrap(), curves);
+    assert_eq!(batch.to_arrays::<5, 3>().unwrap_err().field, "K");
+    assert_eq!(batch.to_arrays::<6, 2>().unwrap_err().field, "D");
 }
 
 #[test]
