@@ -7,7 +7,11 @@
 //! ([`prove_curve_candidate`], [`prove_tensor_candidate`], [`prove_triangle_candidate`]), so
 //! that a wrong one, e.g. eq. (14) with a misprinted ingredient, can be shown to fail it.
 
-use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method};
+use blossom::{
+    power_to_bernstein, restrict_bezier_curve, restrict_bezier_tensor,
+    restrict_bezier_triangle_affine, triangle_index, triangle_len, triangle_power_to_bernstein,
+};
+use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method, Ring};
 use blossom::{BezierCurve, Poly, PowerCurve, PowerSurface, TensorPatch, TriangularPatch};
 
 /// The shape a proof is about.
@@ -264,8 +268,9 @@ pub fn prove_triangle_candidate(
 }
 
 /// Every method other than the definition itself.
-pub const OTHER_METHODS: [Method; 4] = [
+pub const OTHER_METHODS: [Method; 5] = [
     Method::Bulk,
+    Method::TaylorShift,
     Method::ClosedForm,
     Method::Pyramid,
     Method::Polarisation,
@@ -286,6 +291,71 @@ pub fn proof_grid(max_curve: usize, max_tensor: usize, max_triangle: usize) -> V
     for big_n in 0..=max_triangle {
         for n in 0..=big_n {
             rows.extend(prove_triangle(n, big_n - n, &OTHER_METHODS));
+        }
+    }
+    rows
+}
+
+/// The name of the Bézier-input proofs in [`prove_bezier_input`].
+pub const BEZIER_INPUT: &str = "halving engine on Bézier input";
+
+/// The restriction engine on *Bézier* input, against the definition on the power input: the
+/// symbolic power form is written in the Bernstein basis over the reference domain
+/// ([`power_to_bernstein`], [`triangle_power_to_bernstein`], exact changes of basis that the
+/// engine never calls), then restricted by [`restrict_bezier_curve`],
+/// [`restrict_bezier_tensor`] and [`restrict_bezier_triangle_affine`], whose de Casteljau
+/// steps never leave the Bernstein basis. Same grid as [`proof_grid`].
+pub fn prove_bezier_input(
+    max_curve: usize,
+    max_tensor: usize,
+    max_triangle: usize,
+) -> Vec<CandidateProof> {
+    let mut rows = Vec::new();
+    for n in 0..=max_curve {
+        rows.push(
+            curve_reference(n).candidate_proof(BEZIER_INPUT, &|(curve, [a, b])| {
+                let bezier = BezierCurve::new(power_to_bernstein(curve.coefficients()))
+                    .expect("n + 1 points");
+                restrict_bezier_curve(&bezier, a, b)
+            }),
+        );
+    }
+    for n in 0..=max_tensor {
+        for m in 0..=max_tensor {
+            rows.push(
+                tensor_reference(n, m).candidate_proof(BEZIER_INPUT, &|(surface, rect)| {
+                    // Rows to the Bernstein basis along v, then columns along u.
+                    let rows: Vec<Vec<Vec<Poly>>> = surface
+                        .coefficients()
+                        .iter()
+                        .map(|r| power_to_bernstein(r))
+                        .collect();
+                    let long: Vec<Vec<Poly>> = rows.iter().map(|r| r.concat()).collect();
+                    let net = power_to_bernstein(&long)
+                        .into_iter()
+                        .map(|r| r.chunks(surface.dim()).map(<[Poly]>::to_vec).collect())
+                        .collect();
+                    let patch = TensorPatch::new(net).expect("a rectangular net");
+                    restrict_bezier_tensor(&patch, rect)
+                }),
+            );
+        }
+    }
+    for big_n in 0..=max_triangle {
+        for n in 0..=big_n {
+            let m = big_n - n;
+            rows.push(
+                triangle_reference(n, m).candidate_proof(BEZIER_INPUT, &|(surface, tri)| {
+                    let mut d = vec![vec![Poly::zero(); surface.dim()]; triangle_len(big_n)];
+                    for (i, row) in surface.coefficients().iter().enumerate() {
+                        for (j, c) in row.iter().enumerate() {
+                            d[triangle_index(big_n, i, j)] = c.clone();
+                        }
+                    }
+                    let patch = triangle_power_to_bernstein(big_n, &d);
+                    restrict_bezier_triangle_affine(&patch, tri)
+                }),
+            );
         }
     }
     rows

@@ -47,8 +47,14 @@ fn finite(x: f64, field: &str) -> Result<f64> {
 #[derive(Clone, Debug, PartialEq)]
 enum Domain {
     Curve([f64; 2]),
-    Tensor { cols: usize, rect: [f64; 4] },
-    Triangle { degree: usize, corners: [[f64; 2]; 3] },
+    Tensor {
+        cols: usize,
+        rect: [f64; 4],
+    },
+    Triangle {
+        degree: usize,
+        corners: [[f64; 2]; 3],
+    },
 }
 
 /// The restriction of every object of a batch to one domain: a linear map on control points,

@@ -1,7 +1,7 @@
 //! The report's summary of the symbolic proofs of the engine ([`crate::proofs`]).
 
 use super::report::{Section, Status};
-use crate::proofs::{proof_grid, ProofRow, Shape};
+use crate::proofs::{proof_grid, prove_bezier_input, ProofRow, Shape};
 
 /// Degrees proved while the report runs (the test suite proves the full grid: curves n <= 8,
 /// tensors up to (4, 4), triangles N <= 6, with `cargo test --test symbolic_proofs`).
@@ -29,7 +29,7 @@ fn describe(rows: &[ProofRow], shape: Shape) -> String {
     failures.truncate(5);
     let mut line = format!(
         "{} {degrees}: {proved}/{} proofs identical to the definition \
-         (methods bulk, closed-form, pyramid, polarisation; references of {terms} monomials in all)",
+         (methods bulk, taylor-shift, closed-form, pyramid, polarisation; references of {terms} monomials in all)",
         shape.name(),
         of_shape.len()
     );
@@ -44,11 +44,18 @@ fn describe(rows: &[ProofRow], shape: Shape) -> String {
 pub fn section() -> Section {
     let (c, t, tr) = REPORT_GRID;
     let rows = proof_grid(c, t, tr);
-    let ok = rows.iter().all(|r| r.identical);
+    let bezier = prove_bezier_input(c, t, tr);
+    let ok = rows.iter().all(|r| r.identical) && bezier.iter().all(|r| r.identical);
     let mut findings: Vec<String> = [Shape::Curve, Shape::Tensor, Shape::Triangle]
         .iter()
         .map(|&s| describe(&rows, s))
         .collect();
+    findings.push(format!(
+        "the halving engine on Bézier input (power input written in the Bernstein basis, then \
+         restrict_bezier_*): {}/{} proofs identical to the definition on the same grid",
+        bezier.iter().filter(|r| r.identical).count(),
+        bezier.len()
+    ));
     findings.push(
         "the full grid (curves n <= 8, tensors (4, 4), triangles N <= 6) runs in \
          `cargo test --test symbolic_proofs`"

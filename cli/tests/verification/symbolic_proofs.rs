@@ -1,4 +1,5 @@
-//! The engine's symbolic proofs: bulk restriction, closed forms (3), (9), (14), pyramid and
+//! The engine's symbolic proofs: the halving engine (power input, `Method::Bulk`, and Bézier
+//! input), the Taylor shift, closed forms (3), (9), (14), pyramid and
 //! polarisation identical as polynomials to the subset-sum definitions, for curves n <= 8,
 //! tensor patches (n, m) <= (4, 4) and triangles N = n + m <= 6; and the negative controls:
 //! wrong candidates (a misprinted eq. (14), control points out of order, a perturbed input)
@@ -9,10 +10,19 @@ use blossom::{
     PowerCurve, PowerSurface, TriangleFormula, THEOREM_3,
 };
 use blossom_cli::proofs::{
-    prove_curve, prove_curve_candidate, prove_tensor, prove_tensor_candidate, prove_triangle,
-    prove_triangle_candidate, OTHER_METHODS,
+    prove_bezier_input, prove_curve, prove_curve_candidate, prove_tensor, prove_tensor_candidate,
+    prove_triangle, prove_triangle_candidate, OTHER_METHODS,
 };
 use blossom_cli::verify::formula_versions::{judge, versions};
+
+#[test]
+fn the_engine_on_bezier_input_over_the_whole_grid() {
+    let rows = prove_bezier_input(8, 4, 6);
+    assert_eq!(rows.len(), 9 + 25 + 28);
+    for row in rows {
+        assert!(row.identical, "{row:?}");
+    }
+}
 
 #[test]
 fn curves_up_to_degree_8() {
