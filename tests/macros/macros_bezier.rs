@@ -200,3 +200,29 @@ fn bezier_cubic_in_f64_and_exact() {
         }
     }
 }
+
+/// The generated Bézier evaluators take the runtime engine's steps in the engine's order, so
+/// in f64 they agree with it bit for bit, also on extrapolating domains. (Consistency, not
+/// independence: the symbolic proofs above are the independent check.)
+#[test]
+fn generated_bezier_evaluators_equal_the_engine_bit_for_bit() {
+    use blossom::{Bezier, BezierTensor, BezierTriangle};
+    blossom::restriction!(name = c7, shape = bezier_curve, degree = 7);
+    blossom::restriction!(name = t32, shape = bezier_tensor, degree = (3, 2));
+    blossom::restriction!(name = r5, shape = bezier_triangle, degree = 5);
+    let mut rng = crate::common::Rng(77);
+    let mut p3 = || -> [f64; 3] { std::array::from_fn(|_| rng.unit()) };
+    let curve: [[f64; 3]; 8] = std::array::from_fn(|_| p3());
+    let net: [[[f64; 3]; 3]; 4] = std::array::from_fn(|_| std::array::from_fn(|_| p3()));
+    let tri: [[f64; 3]; 21] = std::array::from_fn(|_| p3());
+    for (a, b) in [(0.25, 0.75), (-2.5, 1.75), (0.3, 0.301)] {
+        let engine = Bezier::new(curve.to_vec()).unwrap().subsegment(a..b);
+        assert_eq!(&c7(&curve, &a, &b)[..], engine.points());
+        let rect = [a, b, b, a];
+        let patch = BezierTensor::new((3, 2), net.concat()).unwrap();
+        assert_eq!(t32(&net, &rect).concat(), patch.restrict(&rect).points());
+        let corners = [[a, 0.125], [0.5, b], [b - a, a]];
+        let patch = BezierTriangle::new(5, tri.to_vec()).unwrap();
+        assert_eq!(&r5(&tri, &corners)[..], patch.restrict(&corners).points());
+    }
+}

@@ -6,8 +6,7 @@
 //! monomials b^k a^(i-k), with the constant C(v, k) C(n-v, i-k) / C(n, i) folded and reduced.
 
 use super::{
-    array_type, coef, combination, fn_attrs, ident, reading, Input, Monomials, Operand, Term,
-    Weight,
+    array_type, coef, combination, fn_attrs, ident, reading, Monomials, Operand, Term, Weight,
 };
 use crate::constants::{binomial, Frac};
 use crate::model::Spec;
@@ -16,8 +15,7 @@ use quote::quote;
 
 /// The weight of c_i in w_v (the inner sum of eq. (3)) over the parameters `hi` (b, at
 /// `offset`) and `lo` (a, at `offset + 1`) of a monomial vector of length `width`; with its
-/// unreduced reading for the comment. For [`Input::Differences`] the weight of Δ^i b_0, i.e.
-/// C(n, i) times that of c_i: the denominator cancels. `None` on constant overflow.
+/// unreduced reading for the comment. `None` on constant overflow.
 pub fn weight(
     n: usize,
     v: usize,
@@ -25,13 +23,9 @@ pub fn weight(
     offset: usize,
     width: usize,
     (hi, lo): (&str, &str),
-    input: Input,
 ) -> Option<(Weight, String)> {
     let (n64, v64, i64_) = (n as u64, v as u64, i as u64);
-    let den = match input {
-        Input::Power => binomial(n64, i64_)?,
-        Input::Differences => 1,
-    };
+    let den = binomial(n64, i64_)?;
     let mut terms = Vec::new();
     let mut reading = Vec::new();
     for k in (i + v).saturating_sub(n)..=i.min(v) {
@@ -55,10 +49,7 @@ pub fn weight(
         };
         reading.push(format!("C({v},{k}) C({},{}) {mono}", n - v, i - k));
     }
-    let reading = match input {
-        Input::Power => format!("({}) / C({n},{i})", reading.join(" + ")),
-        Input::Differences => reading.join(" + "),
-    };
+    let reading = format!("({}) / C({n},{i})", reading.join(" + "));
     Some((Weight { terms }, reading))
 }
 
@@ -76,7 +67,7 @@ pub fn expand(spec: &Spec, n: usize) -> Option<TokenStream> {
     let table = (0..=n)
         .map(|v| {
             (0..=n)
-                .map(|i| weight(n, v, i, 0, 2, ("b", "a"), Input::Power))
+                .map(|i| weight(n, v, i, 0, 2, ("b", "a")))
                 .collect::<Option<Vec<_>>>()
         })
         .collect::<Option<Vec<_>>>()?;

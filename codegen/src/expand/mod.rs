@@ -1,6 +1,6 @@
 //! Step 3: [`Spec`] to tokens. One module per formula ([`curve`]: eq. (3), [`tensor`]: eq. (9),
-//! [`triangle`]: eq. (14); [`halving`]: eq. (3) for a Bézier polygon, evaluated by halving the
-//! blossom) on top of two shared builders:
+//! [`triangle`]: eq. (14); [`casteljau`]: Bézier shapes by de Casteljau's steps with shared
+//! work) on top of two shared builders (used by the power-basis formulae):
 //!
 //! * [`Monomials`]: products of powers of the domain parameters, each bound once by a `let`
 //!   (one `mul` per binding: `ap3 = ap2 * a`, `bp2_a = bp2 * a`, ...) and shared by every weight
@@ -11,9 +11,8 @@
 //! Points are built per coordinate with `core::array::from_fn` over the `D` coordinates: the
 //! only iteration in the generated code runs over coordinates, never over degree indices.
 
+pub mod casteljau;
 pub mod curve;
-pub mod differences;
-pub mod halving;
 pub mod tensor;
 pub mod triangle;
 
@@ -29,11 +28,11 @@ use std::collections::{BTreeSet, HashSet};
 pub fn expand(spec: &Spec) -> syn::Result<TokenStream> {
     let body = match spec.shape {
         Shape::Curve(n) => curve::expand(spec, n),
-        Shape::Tensor(n, m) => tensor::expand(spec, n, m, Input::Power),
-        Shape::Triangle(n, m) => triangle::expand(spec, n, m, Input::Power),
-        Shape::BezierCurve(n) => halving::expand(spec, n),
-        Shape::BezierTensor(n, m) => tensor::expand(spec, n, m, Input::Differences),
-        Shape::BezierTriangle(n) => triangle::expand(spec, n, 0, Input::Differences),
+        Shape::Tensor(n, m) => tensor::expand(spec, n, m),
+        Shape::Triangle(n, m) => triangle::expand(spec, n, m),
+        Shape::BezierCurve(n) => Some(casteljau::curve(spec, n)),
+        Shape::BezierTensor(n, m) => Some(casteljau::tensor(spec, n, m)),
+        Shape::BezierTriangle(n) => Some(casteljau::triangle(spec, n)),
     };
     body.ok_or_else(|| {
         syn::Error::new(
@@ -41,18 +40,6 @@ pub fn expand(spec: &Spec) -> syn::Result<TokenStream> {
             format!("a constant of {} does not fit in i128", spec.shape),
         )
     })
-}
-
-/// What the unrolled formula multiplies.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Input {
-    /// Power coefficients c_i (c_ij), with the denominators C(n, i) (C(n, i) C(m, j),
-    /// N! / (i! j! (N-i-j)!)) of (3), (9), (14) folded into the weights.
-    Power,
-    /// The forward differences of a Bézier net ([`differences`]): the power coefficients are
-    /// those differences times exactly the denominators of (3), (9), (14), which cancel, so
-    /// every weight has integer constants.
-    Differences,
 }
 
 /// How generated code refers to a scalar factor.
