@@ -103,3 +103,40 @@ fn the_pyramid_stays_accurate_on_a_long_thin_triangle() {
     let e = triangle_error(&s, &tri, Method::Pyramid);
     assert!(e < 1e-10, "pyramid {e:e}");
 }
+
+/// Issue 12, item 4: every f64 path of the engine (generic, batch, generated) within 4x of the
+/// stable reference's error on the same inputs (the textbook pyramid for Bézier input, the
+/// closed form for power input), on intervals inside [0, 1], of length 1e-3 and in [-3, 3].
+/// The Taylor shift, the old default, must fail the same bound at high degree: the sweep can
+/// tell a path that loses digits.
+#[test]
+fn the_engine_is_as_accurate_as_the_stable_reference() {
+    use blossom_cli::accuracy::sweep::{
+        bezier_curves, bezier_tensors, bezier_triangles, power_curves, Row, BATCH, BEFORE, ENGINE,
+        GENERATED,
+    };
+    let engine = [ENGINE, BATCH, GENERATED];
+    let check = |rows: Vec<Row>, paths: &[&str]| {
+        for row in &rows {
+            let ratio = row.worst_ratio(paths);
+            assert!(ratio <= 4.0, "{ratio:.2}x the reference: {row:?}");
+        }
+        rows
+    };
+    let curves = check(bezier_curves(&(1..=64).collect::<Vec<_>>(), 6, 21), &engine);
+    let degree_48 = curves.iter().find(|r| r.degree.0 == 48).expect("degree 48");
+    assert!(degree_48.worst_ratio(&[BEFORE]) > 1e6, "{degree_48:?}");
+    let tensors: Vec<(usize, usize)> = (0..=16)
+        .map(|n| (n, n))
+        .chain([(3, 1), (2, 5), (16, 3), (1, 16)])
+        .collect();
+    check(bezier_tensors(&tensors, 4, 22), &engine);
+    check(
+        bezier_triangles(&(1..=16).collect::<Vec<_>>(), 4, 23),
+        &engine,
+    );
+    check(
+        power_curves(&(1..=32).collect::<Vec<_>>(), 10, 24),
+        &["bulk"],
+    );
+}

@@ -1,8 +1,14 @@
-//! Measured error of floating-point restriction against the exact rational answer.
+//! Measured error of floating-point restriction against the exact rational answer: the
+//! power-input methods one at a time (this file), and the sweep of every f64 path against
+//! the exact answer and a stable reference on the same inputs ([`sweep`], [`reference`]).
 //!
 //! The input is exact; it is rounded once to f64, restricted in f64 by a method, and each
 //! coordinate of the result is compared with the exact restriction of the exact input. The
 //! error is relative to the size of the answer: |float - exact| / max(1, max |exact|).
+
+pub mod dyadic;
+pub mod reference;
+pub mod sweep;
 
 use blossom::rational_to_f64;
 use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method};
