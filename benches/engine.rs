@@ -41,6 +41,8 @@ impl Rng {
 
 /// The textbook restriction: de Casteljau at b keeps the part over [0, b] (its left edge, in
 /// place), then de Casteljau at a / b keeps that part's right piece (its right edge).
+// Written as the textbook writes it, indexing neighbours i - 1, i and i + 1.
+#[allow(clippy::needless_range_loop)]
 fn textbook_restrict(ctrl: &[[f64; 3]], a: f64, b: f64, out: &mut [[f64; 3]]) {
     let n = ctrl.len() - 1;
     out.copy_from_slice(ctrl);

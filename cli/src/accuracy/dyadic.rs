@@ -120,7 +120,7 @@ impl Ring for Dyadic {
         let (mantissa, extra) = if odd.is_one() {
             (&self.mantissa * num, 0)
         } else {
-            ((&self.mantissa * num << 4096usize).div_floor(&odd), 4096)
+            (((&self.mantissa * num) << 4096usize).div_floor(&odd), 4096)
         };
         Dyadic {
             mantissa,

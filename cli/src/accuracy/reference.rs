@@ -7,9 +7,8 @@ pub fn curve_point<const D: usize>(ctrl: &[[f64; D]], args: &[f64]) -> [f64; D] 
     let mut level = ctrl.to_vec();
     for (r, &t) in args.iter().enumerate() {
         for i in 0..level.len() - 1 - r {
-            for x in 0..D {
-                level[i][x] = (1.0 - t) * level[i][x] + t * level[i + 1][x];
-            }
+            let (x, y) = (level[i], level[i + 1]);
+            level[i] = std::array::from_fn(|k| (1.0 - t) * x[k] + t * y[k]);
         }
     }
     level[0]
