@@ -112,8 +112,9 @@ impl<T: Ring> TriangleStep<T> for PowerPairStep<'_, T> {
     }
 }
 
-/// `dst[k] = step(src[k], src[k + dim])`: the next level of `src`, written to `dst`.
-#[inline]
+/// `dst[k] = step(src[k], src[k + dim])`: the next level of `src`, written to `dst`. The two
+/// slices are distinct, so this is one straight loop that the compiler vectorises.
+#[inline(always)]
 fn step_into<T, S: CurveStep<T>>(src: &[T], dst: &mut [T], dim: usize, step: &S) {
     let m = src.len() - dim;
     for ((d, x), y) in dst[..m].iter_mut().zip(&src[..m]).zip(&src[dim..]) {
@@ -122,7 +123,8 @@ fn step_into<T, S: CurveStep<T>>(src: &[T], dst: &mut [T], dim: usize, step: &S)
 }
 
 /// The next level of `buf` in place, left-aligned: `buf[k] = step(buf[k], buf[k + dim])`
-/// for increasing k, so that every read precedes the write that would change it.
+/// for increasing k, so that every read precedes the write that would change it. (For the
+/// blossom at given arguments, which is not on the engine's hot path.)
 #[inline]
 fn step_left<T, S: CurveStep<T>>(buf: &mut [T], dim: usize, step: &S) {
     let m = buf.len() - dim;
@@ -132,20 +134,42 @@ fn step_left<T, S: CurveStep<T>>(buf: &mut [T], dim: usize, step: &S) {
     }
 }
 
-/// The next level of `buf` in place, right-aligned: `buf[k + dim] = step(buf[k],
-/// buf[k + dim])` for decreasing k; the result occupies `buf[dim..]`.
-#[inline]
-fn step_right<T, S: CurveStep<T>>(buf: &mut [T], dim: usize, step: &S) {
-    let m = buf.len() - dim;
-    for k in (0..m).rev() {
-        let v = step.combine(&buf[k], &buf[k + dim]);
-        buf[k + dim] = v;
+/// Applies `count >= 1` steps of `step` to `level`, alternating between the two scratch
+/// buffers `ping` and `pong` (each at least `(len - 1)` points long): the result, `count`
+/// points fewer, is returned as a slice of one of them.
+#[inline(always)]
+fn chain<'s, T, S: CurveStep<T>>(
+    level: &[T],
+    dim: usize,
+    step: &S,
+    count: usize,
+    ping: &'s mut [T],
+    pong: &'s mut [T],
+) -> &'s [T] {
+    let len = level.len();
+    step_into(level, &mut ping[..len - dim], dim, step);
+    let (mut src, mut dst) = (ping, pong);
+    for l in 1..count {
+        step_into(
+            &src[..len - l * dim],
+            &mut dst[..len - (l + 1) * dim],
+            dim,
+            step,
+        );
+        std::mem::swap(&mut src, &mut dst);
     }
+    &src[..len - count * dim]
 }
 
-/// The scratch length (in numbers) that [`curve_net`] needs for degree `n` and `dim`.
+/// The scratch length (in numbers) that [`curve_net`] needs for degree `n` and `dim`: two
+/// levels per depth of the halving.
 pub fn curve_scratch_len(n: usize, dim: usize) -> usize {
-    n * dim
+    let (mut r, mut len) = (n + 1, 0);
+    while r > 4 {
+        len += 2 * (r - 1) * dim;
+        r = r.div_ceil(2);
+    }
+    len
 }
 
 /// Restricts the curve-like form with coefficients `src` (n + 1 points of `dim` numbers) to the
@@ -169,64 +193,77 @@ pub fn curve_net<T: Ring, S: CurveStep<T>>(
     if scratch.len() < need {
         scratch.resize(need, T::zero());
     }
-    out.clone_from_slice(src);
-    curve_node(out, dim, a, b, scratch);
+    curve_node(src, dim, a, b, out, scratch);
 }
 
-/// One node of the halving: `level` holds the form of degree r - 1 (r points) and is exactly
-/// the region of the output its r control points go to.
+/// One node of the halving: `level` holds a form of degree r - 1 (r points); `out` receives
+/// its r control points.
 fn curve_node<T: Ring, S: CurveStep<T>>(
-    level: &mut [T],
+    level: &[T],
     dim: usize,
     a: &S,
     b: &S,
+    out: &mut [T],
     scratch: &mut [T],
 ) {
     let r = level.len() / dim;
-    if r <= 1 {
+    if r == 1 {
+        out.clone_from_slice(level);
         return;
     }
-    if r == 2 {
-        // q_0 = f(a), q_1 = f(b).
-        let (x, y) = level.split_at_mut(dim);
-        for (x, y) in x.iter_mut().zip(y.iter_mut()) {
-            let left = a.combine(x, y);
-            let right = b.combine(x, y);
-            *x = left;
-            *y = right;
-        }
+    if r <= 4 {
+        small_node(level, dim, a, b, out);
         return;
     }
     // The left half (s outputs) fixes r - s arguments a, the right half s arguments b.
     let s = r.div_ceil(2);
-    step_into(level, &mut scratch[..(r - 1) * dim], dim, a);
-    for l in 1..r - s {
-        step_left(&mut scratch[..(r - l) * dim], dim, a);
-    }
-    for l in 0..s {
-        step_right(&mut level[l * dim..], dim, b);
-    }
-    level[..s * dim].swap_with_slice(&mut scratch[..s * dim]);
-    let (left, right) = level.split_at_mut(s * dim);
-    curve_node(left, dim, a, b, scratch);
-    curve_node(right, dim, a, b, scratch);
+    let (ping, rest) = scratch.split_at_mut((r - 1) * dim);
+    let (pong, rest) = rest.split_at_mut((r - 1) * dim);
+    let (left, right) = out.split_at_mut(s * dim);
+    let half = chain(level, dim, a, r - s, ping, pong);
+    curve_node(half, dim, a, b, left, rest);
+    let half = chain(level, dim, b, s, ping, pong);
+    curve_node(half, dim, a, b, right, rest);
 }
 
-/// Restricts the curve-like form `level` in place (its own output region): the second pass of
-/// a tensor patch, one row at a time. `scratch` must hold [`curve_scratch_len`] numbers.
-fn curve_net_in_place<T: Ring, S: CurveStep<T>>(
-    level: &mut [T],
-    dim: usize,
-    a: &S,
-    b: &S,
-    scratch: &mut [T],
-) {
-    curve_node(level, dim, a, b, scratch);
+/// The halving of a level of 2, 3 or 4 points written out, one coordinate at a time: the same
+/// steps as [`curve_node`] (q_0 = f(a), q_1 = f(b) for two points; for three, the levels
+/// A = f(a, ·), B = f(b, ·) and q = f(a, a), f(a, b), f(b, b); for four, the levels
+/// f(a^2, ·) and f(b^2, ·) and each restricted), without recursion or scratch.
+fn small_node<T: Ring, S: CurveStep<T>>(level: &[T], dim: usize, a: &S, b: &S, out: &mut [T]) {
+    let r = level.len() / dim;
+    for x in 0..dim {
+        let p = |i: usize| &level[i * dim + x];
+        match r {
+            2 => {
+                out[x] = a.combine(p(0), p(1));
+                out[dim + x] = b.combine(p(0), p(1));
+            }
+            3 => {
+                let (a0, a1) = (a.combine(p(0), p(1)), a.combine(p(1), p(2)));
+                let (b0, b1) = (b.combine(p(0), p(1)), b.combine(p(1), p(2)));
+                out[x] = a.combine(&a0, &a1);
+                out[dim + x] = b.combine(&a0, &a1);
+                out[2 * dim + x] = b.combine(&b0, &b1);
+            }
+            _ => {
+                let a1 = [0, 1, 2].map(|i| a.combine(p(i), p(i + 1)));
+                let a2 = [0, 1].map(|i| a.combine(&a1[i], &a1[i + 1]));
+                let b1 = [0, 1, 2].map(|i| b.combine(p(i), p(i + 1)));
+                let b2 = [0, 1].map(|i| b.combine(&b1[i], &b1[i + 1]));
+                out[x] = a.combine(&a2[0], &a2[1]);
+                out[dim + x] = b.combine(&a2[0], &a2[1]);
+                out[2 * dim + x] = a.combine(&b2[0], &b2[1]);
+                out[3 * dim + x] = b.combine(&b2[0], &b2[1]);
+            }
+        }
+    }
 }
 
-/// The scratch length that [`tensor_net`] needs for bidegree (n, m) and `dim`.
+/// The scratch length that [`tensor_net`] needs for bidegree (n, m) and `dim`: the net after
+/// the pass along u, and the halving's levels of either pass.
 pub fn tensor_scratch_len(n: usize, m: usize, dim: usize) -> usize {
-    curve_scratch_len(n, (m + 1) * dim).max(curve_scratch_len(m, dim))
+    (n + 1) * (m + 1) * dim + curve_scratch_len(n, (m + 1) * dim).max(curve_scratch_len(m, dim))
 }
 
 /// Restricts the tensor-product form with coefficients `src` (rows of m + 1 points, row by row,
@@ -244,22 +281,23 @@ pub fn tensor_net<T: Ring, S: CurveStep<T>>(
     scratch: &mut Vec<T>,
 ) {
     let row = cols * dim;
-    assert!(row > 0 && src.len() % row == 0);
+    assert!(row > 0 && src.len() % row == 0 && out.len() == src.len());
     let rows = src.len() / row;
     let need = tensor_scratch_len(rows - 1, cols - 1, dim);
     if scratch.len() < need {
         scratch.resize(need, T::zero());
     }
-    curve_net(src, row, a, b, out, scratch);
-    for r in out.chunks_mut(row) {
-        curve_net_in_place(r, dim, c, d, scratch);
+    let (along_u, rest) = scratch.split_at_mut(src.len());
+    curve_node(src, row, a, b, along_u, rest);
+    for (from, to) in along_u.chunks(row).zip(out.chunks_mut(row)) {
+        curve_node(from, dim, c, d, to, rest);
     }
 }
 
-/// The scratch length that [`triangle_net`] needs for degree `n` and `dim`: the levels of
-/// degrees n - 1, ..., 0 side by side, the deepest a path of the recursion can hold at once.
+/// The scratch length that [`triangle_net`] needs for degree `n` and `dim`: two levels for each
+/// of the degrees n - 1, ..., 0, the most a path of the recursion can hold at once.
 pub fn triangle_scratch_len(n: usize, dim: usize) -> usize {
-    (0..n).map(triangle_len).sum::<usize>() * dim
+    2 * (0..n).map(triangle_len).sum::<usize>() * dim
 }
 
 /// Restricts the triangular form with coefficients `src` (degree `n`, (n + 1)(n + 2) / 2
@@ -345,18 +383,20 @@ impl<S> TriangleRun<'_, S> {
         let dim = self.dim;
         let fixed: usize = node.lo.iter().sum();
         if fixed > 0 {
-            // Fix lo_A arguments A, lo_B arguments B, lo_C arguments C once for the whole box.
+            // Fix lo_A arguments A, lo_B arguments B, lo_C arguments C once for the whole box,
+            // one step at a time between two buffers.
             let e = node.degree;
-            let (child, rest) = rest.split_at_mut(triangle_len(e - 1) * dim);
+            let (ping, rest) = rest.split_at_mut(triangle_len(e - 1) * dim);
+            let (pong, rest) = rest.split_at_mut(triangle_len(e.saturating_sub(2)) * dim);
             let mut degree = e;
-            let mut first = true;
+            let (mut src, mut dst): (&mut [T], &mut [T]) = (ping, pong);
             for (k, &count) in node.lo.iter().enumerate() {
                 for _ in 0..count {
-                    if first {
-                        triangle_step_into(level, child, degree, dim, self.corners[k]);
-                        first = false;
+                    if degree == e {
+                        triangle_step_into(level, src, degree, dim, self.corners[k]);
                     } else {
-                        triangle_step_in_place(child, degree, dim, self.corners[k]);
+                        triangle_step_into(src, dst, degree, dim, self.corners[k]);
+                        std::mem::swap(&mut src, &mut dst);
                     }
                     degree -= 1;
                 }
@@ -367,12 +407,11 @@ impl<S> TriangleRun<'_, S> {
                 hi: [0, 1, 2].map(|k| node.hi[k] - node.lo[k]),
                 offset: [0, 1, 2].map(|k| node.offset[k] + node.lo[k]),
             };
-            self.node(&child[..triangle_len(degree) * dim], inner, out, rest);
+            self.node(&src[..triangle_len(degree) * dim], inner, out, rest);
             return;
         }
-        if node.degree == 0 {
-            let at = triangle_index(self.total, node.offset[0], node.offset[1]) * dim;
-            out[at..at + dim].clone_from_slice(&level[..dim]);
+        if node.degree <= 2 {
+            self.small_box(level, node, out, rest);
             return;
         }
         // Cut the box in half along its widest side.
@@ -389,8 +428,98 @@ impl<S> TriangleRun<'_, S> {
     }
 }
 
+impl<S> TriangleRun<'_, S> {
+    /// The outputs of a box of degree at most 2 straight from `level`: for degree 2, one step
+    /// per first argument (A before B before C) shared by the outputs that start with it,
+    /// then each output's second step; cutting such a box further would cost more than it
+    /// saves.
+    fn small_box<T: Ring>(&self, level: &[T], node: TriangleBox, out: &mut [T], rest: &mut [T])
+    where
+        S: TriangleStep<T>,
+    {
+        let dim = self.dim;
+        let outputs = small_box_outputs(node);
+        match node.degree {
+            0 => {
+                let at = self.at(node, [0, 0]);
+                out[at..at + dim].clone_from_slice(&level[..dim]);
+            }
+            1 => {
+                for &(xy, [first, _]) in outputs.iter() {
+                    let at = self.at(node, xy);
+                    triangle_step_into(level, &mut out[at..at + dim], 1, dim, self.corners[first]);
+                }
+            }
+            _ => {
+                let tmp = &mut rest[..3 * dim];
+                for k in 0..3 {
+                    let mut shared = false;
+                    for &(xy, [first, second]) in outputs.iter().filter(|(_, ks)| ks[0] == k) {
+                        if !shared {
+                            triangle_step_into(level, tmp, 2, dim, self.corners[first]);
+                            shared = true;
+                        }
+                        let at = self.at(node, xy);
+                        let target = &mut out[at..at + dim];
+                        triangle_step_into(tmp, target, 1, dim, self.corners[second]);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Where output (x, y) of `node` goes in `out`.
+    fn at(&self, node: TriangleBox, [x, y]: [usize; 2]) -> usize {
+        triangle_index(self.total, node.offset[0] + x, node.offset[1] + y) * self.dim
+    }
+}
+
+/// The outputs (x, y) of a box of degree at most 2, each with its arguments in the order A,
+/// B, C (the corner indices; the second is unused below degree 2).
+fn small_box_outputs(node: TriangleBox) -> SmallOutputs {
+    let r = node.degree;
+    let mut found = SmallOutputs {
+        items: [([0; 2], [0; 2]); 6],
+        len: 0,
+    };
+    for x in node.lo[0]..=node.hi[0] {
+        for y in node.lo[1]..=node.hi[1] {
+            let Some(z) = r.checked_sub(x + y) else {
+                continue;
+            };
+            if z < node.lo[2] || z > node.hi[2] {
+                continue;
+            }
+            let mut ks = [0; 2];
+            let mut count = 0;
+            for (k, c) in [x, y, z].into_iter().enumerate() {
+                for _ in 0..c {
+                    ks[count] = k;
+                    count += 1;
+                }
+            }
+            found.items[found.len] = ([x, y], ks);
+            found.len += 1;
+        }
+    }
+    found
+}
+
+/// At most six outputs of a small box, without allocating.
+struct SmallOutputs {
+    items: [([usize; 2], [usize; 2]); 6],
+    len: usize,
+}
+
+impl SmallOutputs {
+    fn iter(&self) -> std::slice::Iter<'_, ([usize; 2], [usize; 2])> {
+        self.items[..self.len].iter()
+    }
+}
+
 /// The level of degree `degree - 1` of the triangular level `src` (degree `degree`), written
-/// to the front of `dst`.
+/// to the front of `dst`: row i of the result from rows i and i + 1 of `src`, one straight
+/// loop per row.
 fn triangle_step_into<T, S: TriangleStep<T>>(
     src: &[T],
     dst: &mut [T],
@@ -398,13 +527,26 @@ fn triangle_step_into<T, S: TriangleStep<T>>(
     dim: usize,
     step: &S,
 ) {
+    if degree == 1 {
+        // x_00, x_01, x_10 in that order: c, b, a.
+        let (c, rest) = src.split_at(dim);
+        let (b, a) = rest.split_at(dim);
+        for (((d, a), b), c) in dst[..dim].iter_mut().zip(a).zip(b).zip(c) {
+            *d = step.combine(a, b, c);
+        }
+        return;
+    }
     for i in 0..degree {
         let row = triangle_index(degree, i, 0) * dim;
         let next_row = triangle_index(degree, i + 1, 0) * dim;
         let out_row = triangle_index(degree - 1, i, 0) * dim;
         let width = (degree - i) * dim;
-        for x in 0..width {
-            dst[out_row + x] = step.combine(&src[next_row + x], &src[row + dim + x], &src[row + x]);
+        let a = &src[next_row..next_row + width];
+        let b = &src[row + dim..row + dim + width];
+        let c = &src[row..row + width];
+        let d = &mut dst[out_row..out_row + width];
+        for (((d, a), b), c) in d.iter_mut().zip(a).zip(b).zip(c) {
+            *d = step.combine(a, b, c);
         }
     }
 }

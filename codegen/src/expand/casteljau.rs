@@ -347,9 +347,8 @@ impl TrianglePass {
             self.node(e, &lvl, inner, out);
             return;
         }
-        if node.degree == 0 {
-            let at = triangle_index(self.total, node.offset[0], node.offset[1]);
-            out[at] = Some(level[0][0].clone());
+        if node.degree <= 2 {
+            self.small_box(e, level, node, out);
             return;
         }
         let k = (0..3)
@@ -362,6 +361,62 @@ impl TrianglePass {
         high.lo[k] = mid + 1;
         self.node(e, level, low, out);
         self.node(e, level, high, out);
+    }
+}
+
+impl TrianglePass {
+    /// A box of degree at most 2, as the engine's `small_box`: for degree 2 one step per first
+    /// argument (A before B before C), shared, then each output's second step.
+    fn small_box(
+        &mut self,
+        e: &mut Emitter,
+        level: &Level,
+        node: TriangleBox,
+        out: &mut [Option<TokenStream>],
+    ) {
+        let mut outputs = Vec::new();
+        for x in node.lo[0]..=node.hi[0] {
+            for y in node.lo[1]..=node.hi[1] {
+                let Some(z) = node.degree.checked_sub(x + y) else {
+                    continue;
+                };
+                if z < node.lo[2] || z > node.hi[2] {
+                    continue;
+                }
+                let ks: Vec<usize> = [x, y, z]
+                    .into_iter()
+                    .enumerate()
+                    .flat_map(|(k, c)| std::iter::repeat_n(k, c))
+                    .collect();
+                let [nu, mu] = [node.offset[0] + x, node.offset[1] + y];
+                outputs.push(((nu, mu), ks));
+            }
+        }
+        let name = |(nu, mu): (usize, usize)| format!("w{nu}_{mu}");
+        match node.degree {
+            0 => {
+                let ((nu, mu), _) = outputs[0];
+                out[triangle_index(self.total, nu, mu)] = Some(level[0][0].clone());
+            }
+            1 => {
+                for (at, ks) in &outputs {
+                    let point = self.step(e, level, ks[0], Some(name(*at)));
+                    out[triangle_index(self.total, at.0, at.1)] = Some(point[0][0].clone());
+                }
+            }
+            _ => {
+                for k in 0..3 {
+                    let mut shared = None;
+                    for (at, ks) in outputs.iter().filter(|(_, ks)| ks[0] == k) {
+                        let tmp = shared
+                            .get_or_insert_with(|| self.step(e, level, k, None))
+                            .clone();
+                        let point = self.step(e, &tmp, ks[1], Some(name(*at)));
+                        out[triangle_index(self.total, at.0, at.1)] = Some(point[0][0].clone());
+                    }
+                }
+            }
+        }
     }
 }
 
