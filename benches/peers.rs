@@ -154,6 +154,26 @@ fn single_cubic(c: &mut Criterion) {
         let mut scratch = Vec::new();
         bench.iter(|| {
             let mut acc = 0.0;
+            for c in &cases {
+                // The runtime-degree entry point on the same inline arrays as the others.
+                blossom::subsegment_into(
+                    black_box(&c.ctrl[..]),
+                    black_box(&c.a),
+                    black_box(&c.b),
+                    &mut out,
+                    &mut scratch,
+                )
+                .expect("four points");
+                acc += black_box(&out)[1][0];
+            }
+            acc
+        })
+    });
+    group.bench_function("blossom_generic_bezier_type", |bench| {
+        let mut out = [[0.0; 2]; 4];
+        let mut scratch = Vec::new();
+        bench.iter(|| {
+            let mut acc = 0.0;
             for (g, c) in arrays.iter().zip(&cases) {
                 g.subsegment_into(black_box(&c.a), black_box(&c.b), &mut out, &mut scratch)
                     .expect("four points");

@@ -67,7 +67,7 @@ pub use num::ring::{rational_to_f64, Rational, Ring};
 pub use error::{Error, ErrorKind};
 
 // Shapes.
-pub use shape::array::{Bezier, BezierTensor, BezierTriangle};
+pub use shape::array::{subsegment_into, Bezier, BezierTensor, BezierTriangle};
 pub use shape::basis::{
     bernstein_by_horner, bernstein_to_power, power_to_bernstein, scale_argument, taylor_shift,
     triangle_bernstein_by_horner, triangle_bernstein_to_power, triangle_power_to_bernstein,
@@ -78,8 +78,8 @@ pub use shape::bezier::{
 };
 pub use shape::halving::{
     curve_net, curve_scratch_len, tensor_net, tensor_scratch_len, triangle_net,
-    triangle_scratch_len, BernsteinPairStep, BernsteinStep, CurveStep, PowerPairStep, PowerStep,
-    TriangleStep,
+    triangle_scratch_len, BernsteinPairStep, BernsteinStep, CurveStep, Fixed, PowerPairStep,
+    PowerStep, TriangleStep, Width,
 };
 pub use shape::point::Point;
 pub use shape::power::{PowerCurve, PowerSurface};

@@ -14,9 +14,10 @@
 use crate::error::{Error, ErrorKind, Result};
 use crate::shape::halving::{
     curve_blossom_in_place, curve_net, curve_split, tensor_net, triangle_blossom_in_place,
-    triangle_net, BernsteinPairStep, BernsteinStep,
+    triangle_net, BernsteinPairStep, BernsteinStep, Fixed,
 };
 use crate::shape::simplex::{triangle_index, triangle_len};
+use crate::shape::unrolled::restrict_curve_unrolled;
 use crate::Ring;
 use std::ops::Range;
 
@@ -142,7 +143,9 @@ impl<T: Ring, const D: usize> Bezier<T, D> {
 
     /// [`Bezier::subsegment`] into `out` (n + 1 points), with `scratch` grown to
     /// [`crate::curve_scratch_len`]`(n, D)` on first use and reused afterwards: no allocation
-    /// once it is large enough.
+    /// once it is large enough. Degrees 1..=24 run the engine's steps unrolled by
+    /// `blossom::restriction!` (no scratch at all), higher degrees [`crate::curve_net`]; the
+    /// answer is the same bit for bit.
     ///
     /// # Errors
     /// `out` when it does not hold n + 1 points.
@@ -153,16 +156,7 @@ impl<T: Ring, const D: usize> Bezier<T, D> {
         out: &mut [[T; D]],
         scratch: &mut Vec<T>,
     ) -> Result<()> {
-        check_out("out", self.points.len(), out.len())?;
-        curve_net(
-            self.points.as_flattened(),
-            D,
-            &BernsteinStep(a),
-            &BernsteinStep(b),
-            out.as_flattened_mut(),
-            scratch,
-        );
-        Ok(())
+        subsegment_into(&self.points, a, b, out, scratch)
     }
 
     /// The parts over [0, t] and [t, 1], each over [0, 1], by one de Casteljau pyramid.
@@ -180,6 +174,40 @@ impl<T: Ring, const D: usize> Bezier<T, D> {
             },
         )
     }
+}
+
+/// [`Bezier::subsegment_into`] on control points held anywhere (an array, a slice of a larger
+/// buffer): `out` receives f(a^(n-j), b^j) for the curve with control points `points`.
+///
+/// # Errors
+/// `points` when it is empty, `out` when it does not hold as many points.
+pub fn subsegment_into<T: Ring, const D: usize>(
+    points: &[[T; D]],
+    a: &T,
+    b: &T,
+    out: &mut [[T; D]],
+    scratch: &mut Vec<T>,
+) -> Result<()> {
+    if points.is_empty() {
+        return Err(Error::of(
+            ErrorKind::Empty,
+            "points",
+            "expected at least one control point",
+        ));
+    }
+    check_out("out", points.len(), out.len())?;
+    if restrict_curve_unrolled(points, a, b, out) {
+        return Ok(());
+    }
+    curve_net(
+        points.as_flattened(),
+        Fixed::<D>,
+        &BernsteinStep(a),
+        &BernsteinStep(b),
+        out.as_flattened_mut(),
+        scratch,
+    );
+    Ok(())
 }
 
 /// A tensor-product Bézier patch of bidegree (n, m) with `D`-dimensional control points stored

@@ -112,6 +112,31 @@ impl<T: Ring> TriangleStep<T> for PowerPairStep<'_, T> {
     }
 }
 
+/// The number of numbers per point: a runtime value (`usize`), or a constant ([`Fixed`]) that
+/// lets the compiler unroll and drop bounds checks (the `[T; D]` front end passes `Fixed<D>`).
+pub trait Width: Copy {
+    /// The number of numbers per point.
+    fn get(self) -> usize;
+}
+
+impl Width for usize {
+    #[inline]
+    fn get(self) -> usize {
+        self
+    }
+}
+
+/// A compile-time [`Width`] of `D` numbers per point.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Fixed<const D: usize>;
+
+impl<const D: usize> Width for Fixed<D> {
+    #[inline]
+    fn get(self) -> usize {
+        D
+    }
+}
+
 /// `dst[k] = step(src[k], src[k + dim])`: the next level of `src`, written to `dst`. The two
 /// slices are distinct, so this is one straight loop that the compiler vectorises.
 #[inline(always)]
@@ -180,61 +205,81 @@ pub fn curve_scratch_len(n: usize, dim: usize) -> usize {
 /// # Panics
 /// If `dim == 0`, `src` is empty or not a whole number of points, or `out.len() != src.len()`
 /// (the public entry points check their input first).
-pub fn curve_net<T: Ring, S: CurveStep<T>>(
+#[inline]
+pub fn curve_net<T: Ring, S: CurveStep<T>, W: Width>(
     src: &[T],
-    dim: usize,
+    width: W,
     a: &S,
     b: &S,
     out: &mut [T],
     scratch: &mut Vec<T>,
 ) {
-    assert!(dim > 0 && !src.is_empty() && src.len() % dim == 0 && out.len() == src.len());
-    let need = curve_scratch_len(src.len() / dim - 1, dim);
+    let dim = width.get();
+    let points = if dim > 0 { src.len() / dim } else { 0 };
+    assert!(points > 0 && points * dim == src.len() && out.len() == src.len());
+    let need = curve_scratch_len(points - 1, dim);
     if scratch.len() < need {
         scratch.resize(need, T::zero());
     }
-    curve_node(src, dim, a, b, out, scratch);
+    // Small levels directly, so that a caller with a constant `dim` (the `[T; D]` front end)
+    // gets them inlined and unrolled.
+    match points {
+        1 => out.clone_from_slice(src),
+        2 => small_node::<T, S, W, 2>(src, width, a, b, out),
+        3 => small_node::<T, S, W, 3>(src, width, a, b, out),
+        4 => small_node::<T, S, W, 4>(src, width, a, b, out),
+        _ => curve_node(src, points, width, a, b, out, scratch),
+    }
 }
 
 /// One node of the halving: `level` holds a form of degree r - 1 (r points); `out` receives
 /// its r control points.
-fn curve_node<T: Ring, S: CurveStep<T>>(
+fn curve_node<T: Ring, S: CurveStep<T>, W: Width>(
     level: &[T],
-    dim: usize,
+    r: usize,
+    width: W,
     a: &S,
     b: &S,
     out: &mut [T],
     scratch: &mut [T],
 ) {
-    let r = level.len() / dim;
-    if r == 1 {
-        out.clone_from_slice(level);
-        return;
+    let dim = width.get();
+    match r {
+        1 => out.clone_from_slice(level),
+        2 => small_node::<T, S, W, 2>(level, width, a, b, out),
+        3 => small_node::<T, S, W, 3>(level, width, a, b, out),
+        4 => small_node::<T, S, W, 4>(level, width, a, b, out),
+        _ => {
+            // The left half (s outputs) fixes r - s arguments a, the right half s arguments b.
+            let s = r.div_ceil(2);
+            let (ping, rest) = scratch.split_at_mut((r - 1) * dim);
+            let (pong, rest) = rest.split_at_mut((r - 1) * dim);
+            let (left, right) = out.split_at_mut(s * dim);
+            let half = chain(level, dim, a, r - s, ping, pong);
+            curve_node(half, s, width, a, b, left, rest);
+            let half = chain(level, dim, b, s, ping, pong);
+            curve_node(half, r - s, width, a, b, right, rest);
+        }
     }
-    if r <= 4 {
-        small_node(level, dim, a, b, out);
-        return;
-    }
-    // The left half (s outputs) fixes r - s arguments a, the right half s arguments b.
-    let s = r.div_ceil(2);
-    let (ping, rest) = scratch.split_at_mut((r - 1) * dim);
-    let (pong, rest) = rest.split_at_mut((r - 1) * dim);
-    let (left, right) = out.split_at_mut(s * dim);
-    let half = chain(level, dim, a, r - s, ping, pong);
-    curve_node(half, dim, a, b, left, rest);
-    let half = chain(level, dim, b, s, ping, pong);
-    curve_node(half, dim, a, b, right, rest);
 }
 
-/// The halving of a level of 2, 3 or 4 points written out, one coordinate at a time: the same
-/// steps as [`curve_node`] (q_0 = f(a), q_1 = f(b) for two points; for three, the levels
-/// A = f(a, ·), B = f(b, ·) and q = f(a, a), f(a, b), f(b, b); for four, the levels
-/// f(a^2, ·) and f(b^2, ·) and each restricted), without recursion or scratch.
-fn small_node<T: Ring, S: CurveStep<T>>(level: &[T], dim: usize, a: &S, b: &S, out: &mut [T]) {
-    let r = level.len() / dim;
+/// The halving of a level of R = 2, 3 or 4 points written out, one coordinate at a time: the
+/// same steps as [`curve_node`] (q_0 = f(a), q_1 = f(b) for two points; for three, the levels
+/// A = f(a, ·), B = f(b, ·) and q = f(a, a), f(a, b), f(b, b); for four, the levels f(a^2, ·)
+/// and f(b^2, ·), each restricted), without recursion or scratch.
+#[inline]
+fn small_node<T: Ring, S: CurveStep<T>, W: Width, const R: usize>(
+    level: &[T],
+    width: W,
+    a: &S,
+    b: &S,
+    out: &mut [T],
+) {
+    let dim = width.get();
+    let (level, out) = (&level[..R * dim], &mut out[..R * dim]);
     for x in 0..dim {
         let p = |i: usize| &level[i * dim + x];
-        match r {
+        match R {
             2 => {
                 out[x] = a.combine(p(0), p(1));
                 out[dim + x] = b.combine(p(0), p(1));
@@ -247,14 +292,15 @@ fn small_node<T: Ring, S: CurveStep<T>>(level: &[T], dim: usize, a: &S, b: &S, o
                 out[2 * dim + x] = b.combine(&b0, &b1);
             }
             _ => {
-                let a1 = [0, 1, 2].map(|i| a.combine(p(i), p(i + 1)));
-                let a2 = [0, 1].map(|i| a.combine(&a1[i], &a1[i + 1]));
-                let b1 = [0, 1, 2].map(|i| b.combine(p(i), p(i + 1)));
-                let b2 = [0, 1].map(|i| b.combine(&b1[i], &b1[i + 1]));
-                out[x] = a.combine(&a2[0], &a2[1]);
-                out[dim + x] = b.combine(&a2[0], &a2[1]);
-                out[2 * dim + x] = a.combine(&b2[0], &b2[1]);
-                out[3 * dim + x] = b.combine(&b2[0], &b2[1]);
+                let (p0, p1, p2, p3) = (p(0), p(1), p(2), p(3));
+                let (a10, a11, a12) = (a.combine(p0, p1), a.combine(p1, p2), a.combine(p2, p3));
+                let (a20, a21) = (a.combine(&a10, &a11), a.combine(&a11, &a12));
+                let (b10, b11, b12) = (b.combine(p0, p1), b.combine(p1, p2), b.combine(p2, p3));
+                let (b20, b21) = (b.combine(&b10, &b11), b.combine(&b11, &b12));
+                out[x] = a.combine(&a20, &a21);
+                out[dim + x] = b.combine(&a20, &a21);
+                out[2 * dim + x] = a.combine(&b20, &b21);
+                out[3 * dim + x] = b.combine(&b20, &b21);
             }
         }
     }
@@ -288,9 +334,9 @@ pub fn tensor_net<T: Ring, S: CurveStep<T>>(
         scratch.resize(need, T::zero());
     }
     let (along_u, rest) = scratch.split_at_mut(src.len());
-    curve_node(src, row, a, b, along_u, rest);
+    curve_node(src, rows, row, a, b, along_u, rest);
     for (from, to) in along_u.chunks(row).zip(out.chunks_mut(row)) {
-        curve_node(from, dim, c, d, to, rest);
+        curve_node(from, cols, dim, c, d, to, rest);
     }
 }
 

@@ -12,3 +12,4 @@ pub(crate) mod power;
 pub(crate) mod simplex;
 pub(crate) mod subdivide;
 pub(crate) mod traits;
+pub(crate) mod unrolled;
