@@ -215,7 +215,7 @@ pub fn curve_net<T: Ring, S: CurveStep<T>, W: Width>(
     scratch: &mut Vec<T>,
 ) {
     let dim = width.get();
-    let points = if dim > 0 { src.len() / dim } else { 0 };
+    let points = src.len().checked_div(dim).unwrap_or(0);
     assert!(points > 0 && points * dim == src.len() && out.len() == src.len());
     let need = curve_scratch_len(points - 1, dim);
     if scratch.len() < need {
