@@ -26,35 +26,32 @@ use crate::shape::simplex::{triangle_index, triangle_len};
 use crate::{Rational, Ring};
 
 /// 1 / C(n, i) for i = 0..=n in the ring: exact in exact rings, one rounding in floats.
-fn reciprocal_binomials<T: Ring>(n: usize) -> Vec<T> {
+fn reciprocal_binomials<T: Ring>(n: usize) -> impl Iterator<Item = T> {
     // C(n, i) = C(n, i - 1) (n - i + 1) / i stays within i128 (below 2^n n) for n <= 120.
-    if n <= 120 {
-        let mut c: i128 = 1;
-        (0..=n)
-            .map(|i| {
-                if i > 0 {
-                    c = c * (n - i + 1) as i128 / i as i128;
-                }
-                T::one().scale_frac(1, c)
-            })
-            .collect()
-    } else {
-        (0..=n)
-            .map(|i| T::one().scale(&Rational::new(1.into(), binomial(n as i64, i as i64))))
-            .collect()
-    }
+    let mut c: i128 = 1;
+    (0..=n).map(move |i| {
+        if n > 120 {
+            return T::one().scale(&Rational::new(1.into(), binomial(n as i64, i as i64)));
+        }
+        if i > 0 {
+            c = c * (n - i + 1) as i128 / i as i128;
+        }
+        T::one().scale_frac(1, c)
+    })
 }
 
 /// `curve` restricted to [a, b] in the scaled power basis.
 pub(crate) fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCurve<T> {
     let n = curve.degree();
     let dim = curve.dim();
-    let scaled: Vec<T> = curve
+    let mut scaled = Vec::with_capacity((n + 1) * dim);
+    for (c, k) in curve
         .coefficients()
         .iter()
         .zip(reciprocal_binomials::<T>(n))
-        .flat_map(|(c, k)| c.iter().map(move |x| x.mul(&k)))
-        .collect();
+    {
+        scaled.extend(c.iter().map(|x| x.mul(&k)));
+    }
     let mut out = vec![T::zero(); scaled.len()];
     curve_net(
         &scaled,
@@ -71,7 +68,8 @@ pub(crate) fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> Be
 pub(crate) fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> TensorPatch<T> {
     let (n, m) = surface.degree();
     let dim = surface.dim();
-    let (along_u, along_v) = (reciprocal_binomials::<T>(n), reciprocal_binomials::<T>(m));
+    let along_u: Vec<T> = reciprocal_binomials(n).collect();
+    let along_v: Vec<T> = reciprocal_binomials(m).collect();
     let mut scaled = Vec::with_capacity((n + 1) * (m + 1) * dim);
     for (row, ku) in surface.coefficients().iter().zip(&along_u) {
         for (c, kv) in row.iter().zip(&along_v) {
@@ -107,9 +105,9 @@ pub(crate) fn restrict_triangle<T: Ring>(
     let dim = surface.dim();
     let mut scaled = vec![T::zero(); triangle_len(big_n) * dim];
     // 1 / M(N; i, j) = 1 / (C(N, i) C(N - i, j)).
-    let first = reciprocal_binomials::<T>(big_n);
+    let first: Vec<T> = reciprocal_binomials(big_n).collect();
     for (i, row) in surface.coefficients().iter().enumerate() {
-        let second = reciprocal_binomials::<T>(big_n - i);
+        let second: Vec<T> = reciprocal_binomials(big_n - i).collect();
         for (j, c) in row.iter().enumerate() {
             let k = first[i].mul(&second[j]);
             let at = triangle_index(big_n, i, j) * dim;

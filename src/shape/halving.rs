@@ -35,18 +35,28 @@
 //! For a triangle with corners A, B, C the outputs q_(ν μ λ) = f(A^ν, B^μ, C^λ) form a simplex.
 //! A node of the recursion is a box lo <= (ν, μ, λ) <= hi cut by ν + μ + λ = r; every output
 //! in it has at least lo_A arguments A, lo_B arguments B and lo_C arguments C, which are fixed
-//! once; the box is then cut in half along its widest side. Counted exactly (one step of one
-//! point as the unit), that is 1.5 N^3 + O(N^2) for all (N + 1)(N + 2) / 2 control points,
-//! i.e. O(N) per control point, against about N^3 / 6 per control point for one pyramid
-//! each: 6.8x fewer steps at N = 8, 20x at N = 16.
+//! once; the box is then cut in half along its widest side, down to boxes of degree 2, whose
+//! outputs share one step per first argument. Counted (one step of one point as the unit),
+//! that is about 1.5 N^3 for all (N + 1)(N + 2) / 2 control points, i.e. O(N) per control
+//! point, against about N^3 / 6 per control point for one pyramid each: 6.8x fewer steps at
+//! N = 8, 20x at N = 16. The order is N^3, the size of the answer times N; the measured
+//! log-log slope is in `BENCHMARKS.md`.
 //!
 //! # Storage
 //!
 //! Levels are contiguous runs of coordinates: point i of a level of `dim`-dimensional points
 //! is `level[i * dim..(i + 1) * dim]`, so one step is a single loop over `(len - 1) * dim`
-//! numbers, x[k] <- step(x[k], x[k + dim]), whatever the dimension. Nothing is allocated inside
-//! the engine: the caller passes the output and a scratch buffer, which grows on first use and
-//! is reused afterwards.
+//! numbers, x'[k] = step(x[k], x[k + dim]), whatever the dimension, written from one buffer
+//! into another so that the compiler vectorises it. Levels of at most four points are written
+//! out without loops over points. The width is a [`Width`]: a runtime `usize`, or [`Fixed`]
+//! for callers that know it at compile time. Nothing is allocated inside the engine: the caller
+//! passes the output and a scratch buffer, which grows on first use and is reused afterwards.
+//!
+//! Division-free restriction needs more steps than the textbook's two subdivisions (split at
+//! b, then at a / b: n(n + 1) steps): exactly 1.17 n(n + 1) at n = 3 and 1.45 n(n + 1) at
+//! n = 64 for the halving, the optimum over binary splits. It pays for them with long
+//! vectorised loops, and it never divides, which keeps short and extrapolating intervals as
+//! accurate as inside ones (`BENCHMARKS.md` has both measurements).
 
 use crate::shape::simplex::{triangle_index, triangle_len};
 use crate::Ring;
