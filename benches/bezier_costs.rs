@@ -1,8 +1,9 @@
 //! Growth of the cost of restricting Bézier input with the degree, f64, 3-D points, three
 //! algorithms in the same run:
 //!
-//! * `bulk`: [`blossom::subdivide`], forward differences then the bulk restriction,
-//!   O(n^2) per curve, O(nm(n + m)) per tensor patch, O(N^3) per triangle;
+//! * `bulk`: `restrict_bezier_curve` and its siblings, the halving engine in the Bernstein
+//!   basis through the runtime-dimension API, O(n^2) per curve, O(nm(n + m)) per tensor patch,
+//!   O(N^3) per triangle (`benches/engine.rs` measures the allocation-free front end);
 //! * `pyramid`: every control point on its own by de Casteljau's pyramid on the blossom,
 //!   O(n^3), O(n^2 m^2 (n + m)) (with n = m: O(n^5)) and O(N^5) in all;
 //! * `closed_form`: the power form, then every control point by the closed forms (3) and (9).

@@ -22,7 +22,7 @@
 //! factor 2 would cost up to 2^n (`BENCHMARKS.md` has the measured errors). The choice uses
 //! ring operations only, so the symbolic proofs cover it. The Bernstein form over the reference domain comes from Horner's rule carried out in
 //! the Bernstein basis ([`crate::bernstein_by_horner`], [`crate::triangle_bernstein_by_horner`]),
-//! not from the Taylor shift of [`crate::Method::Bulk`], so the pyramid computes through no other
+//! not from the Taylor shift of [`crate::Method::TaylorShift`], so the pyramid computes through no other
 //! method.
 
 use crate::restrict::nets::{repeated, tensor_net, triangle_net};

@@ -247,7 +247,7 @@ pub fn triangle_bernstein_to_power<T: Ring>(patch: &TriangularPatch<T>) -> Vec<P
 // and a constant has every control point equal to itself at any degree. Horner's rule
 // P <- u P + c_k (k = n-1..0) therefore builds the Bernstein form over [r, s] with ring
 // operations and rational constants only, and without going through a Taylor shift: this is
-// the basis change of the pyramid, kept independent of the bulk path. On a triangle the
+// the basis change of the pyramid, kept independent of the Taylor shift and of the engine. On a triangle the
 // linear forms u, v have the corners' coordinates as control values and the product rule is
 //   q_(i,j,k) = (i l_a p_(i-1,j,k) + j l_b p_(i,j-1,k) + k l_c p_(i,j,k-1)) / (d + 1).
 
