@@ -4,7 +4,6 @@
 #[path = "../../../tests/common/mod.rs"]
 mod common;
 
-mod float_accuracy;
 mod paper_tables;
 mod seeds_002_004;
 mod symbolic_proofs;

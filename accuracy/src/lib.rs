@@ -1,4 +1,5 @@
-//! Measured error of floating-point restriction against the exact rational answer: the
+//! The accuracy harness of blossom (a crate of its own, outside the binary's build): measured
+//! error of floating-point restriction against the exact answer: the
 //! power-input methods one at a time (this file), and the sweep of every f64 path against
 //! the exact answer and a stable reference on the same inputs ([`sweep`], [`reference`]).
 //!

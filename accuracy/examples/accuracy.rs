@@ -1,12 +1,12 @@
 //! Prints the accuracy table of every f64 restriction path, against the exact answer and
-//! against a stable reference on the same inputs (`blossom_cli::accuracy::sweep`):
+//! against a stable reference on the same inputs (`blossom_accuracy::sweep`):
 //!
-//! `cargo run --release -p blossom-cli --example accuracy` (add `--all` for every degree).
+//! `cargo run --release -p blossom-accuracy --example accuracy` (add `--all` for every degree).
 //!
 //! Error = max |got - exact| / max |exact|, the worst of the samples of a row; "ratio" is the
 //! worst path's error over the reference's (floored at 2^-52), for the paths of the engine.
 
-use blossom_cli::accuracy::sweep::{
+use blossom_accuracy::sweep::{
     bezier_curves, bezier_tensors, bezier_triangles, markdown, power_curves, Row, BATCH, ENGINE,
     GENERATED,
 };

@@ -3,7 +3,7 @@
 //! `cargo run --release --example float_error`.
 
 use blossom::{Method, PowerCurve, PowerSurface, Rational};
-use blossom_cli::accuracy::{curve_error, tensor_error, triangle_error};
+use blossom_accuracy::{curve_error, tensor_error, triangle_error};
 use num_bigint::BigInt;
 
 struct Rng(u64);

@@ -1,9 +1,13 @@
 //! f64 answers against exact ones: the measured relative error stays within documented bounds
-//! (see `cargo run --release --example float_error` for the full table).
+//! (see `cargo run --release -p blossom-accuracy --example float_error` for the full table),
+//! and the sweep of every engine path against a stable reference on the same inputs.
 
-use crate::common::Rng;
+#[path = "../../tests/common/mod.rs"]
+mod common;
+
 use blossom::{Method, Rational};
-use blossom_cli::accuracy::{curve_error, tensor_error, triangle_error};
+use blossom_accuracy::{curve_error, tensor_error, triangle_error};
+use common::Rng;
 use num_bigint::BigInt;
 
 fn unit(rng: &mut Rng) -> Rational {
@@ -111,7 +115,7 @@ fn the_pyramid_stays_accurate_on_a_long_thin_triangle() {
 /// tell a path that loses digits.
 #[test]
 fn the_engine_is_as_accurate_as_the_stable_reference() {
-    use blossom_cli::accuracy::sweep::{
+    use blossom_accuracy::sweep::{
         bezier_curves, bezier_tensors, bezier_triangles, power_curves, Row, BATCH, BEFORE, ENGINE,
         GENERATED,
     };
