@@ -23,21 +23,8 @@ use blossom::{
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::time::Duration;
 
-/// SplitMix64 in [0, 1).
-struct Rng(u64);
-
-impl Rng {
-    fn unit(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn point(&mut self) -> [f64; 3] {
-        std::array::from_fn(|_| 2.0 * self.unit() - 1.0)
-    }
-}
+mod common;
+use common::Rng;
 
 /// The textbook restriction: de Casteljau at b keeps the part over [0, b] (its left edge, in
 /// place), then de Casteljau at a / b keeps that part's right piece (its right edge).
