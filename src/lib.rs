@@ -83,6 +83,7 @@ pub use shape::halving::{
 };
 pub use shape::point::Point;
 pub use shape::power::{PowerCurve, PowerSurface};
+pub use shape::power_triangle::PowerTriangle;
 pub use shape::simplex::{triangle_index, triangle_len};
 pub use shape::traits::{Evaluate, Restrict};
 
@@ -90,13 +91,17 @@ pub use shape::traits::{Evaluate, Restrict};
 pub use restrict::closed_form::{
     restrict_triangle_with_formula, TriangleFormula, TriangleSplit, THEOREM_3,
 };
-pub use restrict::definition::{curve_blossom, tensor_blossom, triangle_blossom};
+pub use restrict::definition::{
+    curve_blossom, power_triangle_blossom, tensor_blossom, triangle_blossom,
+};
 pub use restrict::polarisation::{
     curve_blossom_from_samples, curve_control_points_from_samples, polar_form,
     tensor_blossom_from_samples, tensor_control_points_from_samples, triangle_blossom_from_samples,
     triangle_control_points_from_samples,
 };
-pub use restrict::{restrict_curve, restrict_tensor, restrict_triangle, Method};
+pub use restrict::{
+    restrict_curve, restrict_power_triangle, restrict_tensor, restrict_triangle, Method,
+};
 
 // Applications.
 pub use applications::batch::{Batch, RestrictionMap, BATCH_LANES};

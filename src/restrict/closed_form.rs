@@ -10,6 +10,7 @@ use crate::num::binomial::{binomial, multinomial};
 use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
 use crate::shape::point::{self, Point};
 use crate::shape::power::{PowerCurve, PowerSurface};
+use crate::shape::power_triangle::PowerTriangle;
 use crate::{Rational, Ring};
 use num_bigint::BigInt;
 use num_traits::Zero;
@@ -178,19 +179,17 @@ pub const THEOREM_3: TriangleFormula = TriangleFormula {
 /// `tri = [a, b, c]` by eq. (14) read through `formula`.
 pub fn triangle_point_with<T: Ring>(
     formula: &TriangleFormula,
-    surface: &PowerSurface<T>,
+    surface: &PowerTriangle<T>,
     tri: &[[T; 2]; 3],
     nu: usize,
     mu: usize,
 ) -> Point<T> {
-    let (n, m) = surface.degree();
-    let big_n = n + m;
+    let big_n = surface.degree();
     let [[a1, a2], [b1, b2], [c1, c2]] = tri;
     let [pa1, pa2, pb1, pb2, pc1, pc2] = [a1, a2, b1, b2, c1, c2].map(|x| powers(x, big_n));
     let pw = |p: &[T], k: i64| p[k as usize].clone();
     let mut acc = point::zero(surface.dim());
-    for (i, row) in surface.coefficients().iter().enumerate() {
-        for (j, cij) in row.iter().enumerate() {
+    for (i, j, cij) in surface.terms() {
             let mut s = TriangleSplit {
                 big_n: big_n as i64,
                 nu: nu as i64,
@@ -239,27 +238,36 @@ pub fn triangle_point_with<T: Ring>(
                 }
             }
             point::add_scaled(&mut acc, &weight, cij);
-        }
     }
     acc
 }
 
 /// All control points of `surface` on `tri` by eq. (14), one at a time.
 pub fn restrict_triangle<T: Ring>(
-    surface: &PowerSurface<T>,
+    surface: &PowerTriangle<T>,
     tri: &[[T; 2]; 3],
 ) -> TriangularPatch<T> {
-    restrict_triangle_with_formula(&THEOREM_3, surface, tri)
+    restrict_power_triangle_with_formula(&THEOREM_3, surface, tri)
 }
 
-/// All control points of `surface` on `tri` by eq. (14) read through `formula`.
+/// All control points of the grid `surface` at total degree n + m on `tri` by eq. (14) read
+/// through `formula` (one of the printed versions the report judges).
 pub fn restrict_triangle_with_formula<T: Ring>(
     formula: &TriangleFormula,
     surface: &PowerSurface<T>,
     tri: &[[T; 2]; 3],
 ) -> TriangularPatch<T> {
-    let (n, m) = surface.degree();
-    let big_n = n + m;
+    restrict_power_triangle_with_formula(formula, &PowerTriangle::from_surface(surface), tri)
+}
+
+/// All control points of `surface`, of total degree N, on `tri` by eq. (14) read through
+/// `formula`, one at a time.
+pub(crate) fn restrict_power_triangle_with_formula<T: Ring>(
+    formula: &TriangleFormula,
+    surface: &PowerTriangle<T>,
+    tri: &[[T; 2]; 3],
+) -> TriangularPatch<T> {
+    let big_n = surface.degree();
     let mut points = Vec::new();
     for nu in 0..=big_n {
         for mu in 0..=big_n - nu {

@@ -19,6 +19,7 @@ use crate::restrict::nets::{repeated, tensor_net, triangle_net};
 use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
 use crate::shape::point::{self, Point};
 use crate::shape::power::{PowerCurve, PowerSurface};
+use crate::shape::power_triangle::PowerTriangle;
 use crate::{Rational, Ring};
 
 /// The subset sums e_0..e_n of `args` (e_i = sum over i-subsets of the product), n = args.len().
@@ -73,10 +74,20 @@ pub fn tensor_blossom<T: Ring>(surface: &PowerSurface<T>, us: &[T], vs: &[T]) ->
 /// The blossom b((u_1, v_1)..(u_N, v_N)) of the surface as a triangular patch of total degree
 /// N = n + m, eq. (13).
 pub fn triangle_blossom<T: Ring>(surface: &PowerSurface<T>, args: &[[T; 2]]) -> Point<T> {
-    let (n, m) = surface.degree();
-    let big_n = n + m;
+    power_triangle_blossom(&PowerTriangle::from_surface(surface), args)
+}
+
+/// The blossom b((u_1, v_1)..(u_N, v_N)) of a surface of total degree N, eq. (13):
+/// sum_{i+j<=N} c_ij E_ij / M(N; i, j), where E_ij is the sum over disjoint index sets I, J
+/// (|I| = i, |J| = j) of prod_{k in I} u_k prod_{l in J} v_l and M(N; i, j) = N! / (i! j! (N-i-j)!)
+/// counts them. The paper states it for a grid (i <= n, j <= m, N = n + m); the sum is the same
+/// for any array with i + j <= N.
+pub fn power_triangle_blossom<T: Ring>(surface: &PowerTriangle<T>, args: &[[T; 2]]) -> Point<T> {
+    let big_n = surface.degree();
     assert_eq!(args.len(), big_n, "a blossom of degree N takes N arguments");
-    // e[i][j] = E_ij over the arguments seen so far, truncated to i <= n, j <= m.
+    let n = surface.rows().len() - 1;
+    let m = surface.rows().iter().map(Vec::len).max().unwrap_or(1) - 1;
+    // e[i][j] = E_ij over the arguments seen so far, truncated to the array's rows and columns.
     let mut e = vec![vec![T::zero(); m + 1]; n + 1];
     e[0][0] = T::one();
     for [u, v] in args {
@@ -94,11 +105,9 @@ pub fn triangle_blossom<T: Ring>(surface: &PowerSurface<T>, args: &[[T; 2]]) -> 
         }
     }
     let mut acc = point::zero(surface.dim());
-    for (i, row) in surface.coefficients().iter().enumerate() {
-        for (j, c) in row.iter().enumerate() {
-            let k = Rational::new(1.into(), multinomial(big_n as i64, &[i as i64, j as i64]));
-            point::add_scaled(&mut acc, &e[i][j].scale(&k), c);
-        }
+    for (i, j, c) in surface.terms() {
+        let k = Rational::new(1.into(), multinomial(big_n as i64, &[i as i64, j as i64]));
+        point::add_scaled(&mut acc, &e[i][j].scale(&k), c);
     }
     acc
 }
@@ -122,12 +131,11 @@ pub fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> Ten
 
 /// Control points q_{nu mu lambda} = b(a^nu, b^mu, c^lambda), eq. (12) with (13).
 pub fn restrict_triangle<T: Ring>(
-    surface: &PowerSurface<T>,
+    surface: &PowerTriangle<T>,
     tri: &[[T; 2]; 3],
 ) -> TriangularPatch<T> {
-    let (n, m) = surface.degree();
-    let big_n = n + m;
-    let points = triangle_net(big_n, tri, |args| triangle_blossom(surface, args));
+    let big_n = surface.degree();
+    let points = triangle_net(big_n, tri, |args| power_triangle_blossom(surface, args));
     TriangularPatch::new(big_n, points).expect("a full triangular net")
 }
 

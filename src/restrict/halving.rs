@@ -22,6 +22,7 @@ use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
 use crate::shape::halving::{curve_net, tensor_net, triangle_net, PowerPairStep, PowerStep};
 use crate::shape::point::points_of;
 use crate::shape::power::{PowerCurve, PowerSurface};
+use crate::shape::power_triangle::PowerTriangle;
 use crate::shape::simplex::{triangle_index, triangle_len};
 use crate::{Rational, Ring};
 
@@ -94,19 +95,18 @@ pub(crate) fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4])
     TensorPatch::new(net).expect("a rectangular net")
 }
 
-/// `surface`, of total degree N = n + m, restricted to the triangle `tri` in the scaled power
-/// basis.
+/// `surface`, of total degree N, restricted to the triangle `tri` in the scaled power basis
+/// d_ij = c_ij / M(N; i, j).
 pub(crate) fn restrict_triangle<T: Ring>(
-    surface: &PowerSurface<T>,
+    surface: &PowerTriangle<T>,
     tri: &[[T; 2]; 3],
 ) -> TriangularPatch<T> {
-    let (n, m) = surface.degree();
-    let big_n = n + m;
+    let big_n = surface.degree();
     let dim = surface.dim();
     let mut scaled = vec![T::zero(); triangle_len(big_n) * dim];
     // 1 / M(N; i, j) = 1 / (C(N, i) C(N - i, j)).
     let first: Vec<T> = reciprocal_binomials(big_n).collect();
-    for (i, row) in surface.coefficients().iter().enumerate() {
+    for (i, row) in surface.rows().iter().enumerate() {
         let second: Vec<T> = reciprocal_binomials(big_n - i).collect();
         for (j, c) in row.iter().enumerate() {
             let k = first[i].mul(&second[j]);

@@ -24,6 +24,7 @@ pub(crate) mod taylor_shift;
 
 use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
 use crate::shape::power::{PowerCurve, PowerSurface};
+use crate::shape::power_triangle::PowerTriangle;
 use crate::Ring;
 
 /// Which algorithm computes a restriction. All give the identical exact answer.
@@ -105,10 +106,31 @@ pub fn restrict_tensor<T: Ring>(
     }
 }
 
-/// `surface`, as a triangular patch of total degree N = n + m, restricted to the triangle with
-/// corners `tri = [a, b, c]`, by `method`.
+/// `surface`, as a triangular patch of total degree N = n + m (the paper's convention),
+/// restricted to the triangle with corners `tri = [a, b, c]`, by `method`.
 pub fn restrict_triangle<T: Ring>(
     surface: &PowerSurface<T>,
+    tri: &[[T; 2]; 3],
+    method: Method,
+) -> TriangularPatch<T> {
+    restrict_power_triangle(&PowerTriangle::from_surface(surface), tri, method)
+}
+
+/// `surface`, a polynomial of total degree N given by its triangular array (or a grid taken at
+/// total degree N), restricted to the triangle with corners `tri = [a, b, c]` at degree N, by
+/// `method`: q_{nu mu lambda} = b(a^nu, b^mu, c^lambda), eq. (12).
+///
+/// ```
+/// use blossom::{restrict_power_triangle, Method, PowerTriangle};
+/// // u + v, total degree 1, on the triangle (0, 0), (1, 0), (0, 1): values at the corners.
+/// let s = PowerTriangle::new(vec![vec![vec![0], vec![1]], vec![vec![1]]])?;
+/// let tri = [[1, 0], [0, 1], [0, 0]];
+/// let patch = restrict_power_triangle(&s, &tri, Method::Definition);
+/// assert_eq!((patch.degree(), patch.get(1, 0), patch.get(0, 0)), (1, &vec![1], &vec![0]));
+/// # Ok::<(), blossom::Error>(())
+/// ```
+pub fn restrict_power_triangle<T: Ring>(
+    surface: &PowerTriangle<T>,
     tri: &[[T; 2]; 3],
     method: Method,
 ) -> TriangularPatch<T> {

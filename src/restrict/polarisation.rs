@@ -35,6 +35,7 @@ use crate::restrict::nets::{repeated, tensor_net, triangle_net};
 use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
 use crate::shape::point::{self, Point};
 use crate::shape::power::{PowerCurve, PowerSurface};
+use crate::shape::power_triangle::PowerTriangle;
 use crate::{Rational, Ring};
 use num_bigint::BigInt;
 use num_traits::{One, Signed};
@@ -255,12 +256,12 @@ pub(crate) fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4])
 /// Control points q_{nu mu lambda} = b[a^nu, b^mu, c^lambda] of `surface` (total degree
 /// N = n + m) on `tri`, eq. (23).
 pub(crate) fn restrict_triangle<T: Ring>(
-    surface: &PowerSurface<T>,
+    surface: &PowerTriangle<T>,
     tri: &[[T; 2]; 3],
 ) -> TriangularPatch<T> {
-    let (n, m) = surface.degree();
-    let points = triangle_control_points_from_samples(n + m, tri, &|u, v| surface.eval(u, v));
-    TriangularPatch::new(n + m, points).expect("a full triangular net")
+    let big_n = surface.degree();
+    let points = triangle_control_points_from_samples(big_n, tri, &|u, v| surface.eval(u, v));
+    TriangularPatch::new(big_n, points).expect("a full triangular net")
 }
 
 #[cfg(test)]

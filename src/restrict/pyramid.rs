@@ -33,6 +33,7 @@ use crate::shape::bezier::{
 };
 use crate::shape::point::{flatten, unflatten};
 use crate::shape::power::{PowerCurve, PowerSurface};
+use crate::shape::power_triangle::PowerTriangle;
 use crate::Ring;
 
 /// The enlargement k = (n + 1) / n of the reference domain for degree n (module docs), as the
@@ -97,17 +98,16 @@ pub fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> Ten
     TensorPatch::new(points).expect("a rectangular net")
 }
 
-/// Control points q_{nu mu lambda} = b[a^nu, b^mu, c^lambda] of `surface` (total degree
-/// N = n + m) on the triangle with corners `tri = [a, b, c]`, by the triangular pyramid on its
+/// Control points q_{nu mu lambda} = b[a^nu, b^mu, c^lambda] of `surface` (total degree N) on the triangle with corners `tri = [a, b, c]`, by the triangular pyramid on its
 /// Bernstein net over the reference triangle g + k(p - g), p = a, b, c (g the centroid,
 /// k = (N + 1) / N), in which each corner p has the barycentric coordinate (3N + 1) / (3(N + 1))
 /// on its own enlarged corner and 1 / (3(N + 1)) on the two others.
 pub fn restrict_triangle<T: Ring>(
-    surface: &PowerSurface<T>,
+    surface: &PowerTriangle<T>,
     tri: &[[T; 2]; 3],
 ) -> TriangularPatch<T> {
-    let (n, m) = surface.degree();
-    let k = enlargement(n + m);
+    let big_n = surface.degree();
+    let k = enlargement(big_n);
     let [a, b, c] = tri;
     // g + k (p - g) = ((3N + 2) p - q - r) / (3N).
     let enlarged = |p: &[T; 2], q: &[T; 2], r: &[T; 2]| -> [T; 2] {
@@ -117,7 +117,7 @@ pub fn restrict_triangle<T: Ring>(
         })
     };
     let reference_corners = [enlarged(a, b, c), enlarged(b, a, c), enlarged(c, a, b)];
-    let reference = triangle_bernstein_by_horner(surface.coefficients(), n + m, &reference_corners);
+    let reference = triangle_bernstein_by_horner(surface.rows(), big_n, &reference_corners);
     let (major, minor) = (
         T::one().scale_frac(3 * k + 1, 3 * (k + 1)),
         T::one().scale_frac(1, 3 * (k + 1)),
@@ -127,8 +127,8 @@ pub fn restrict_triangle<T: Ring>(
         [minor.clone(), major.clone(), minor.clone()],
         [minor.clone(), minor, major],
     ];
-    let points = triangle_net(n + m, &local, |args| {
+    let points = triangle_net(big_n, &local, |args| {
         bezier_triangle_blossom(&reference, args)
     });
-    TriangularPatch::new(n + m, points).expect("a full triangular net")
+    TriangularPatch::new(big_n, points).expect("a full triangular net")
 }

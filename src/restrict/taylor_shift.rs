@@ -23,6 +23,7 @@ use crate::shape::basis::{
 use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
 use crate::shape::point::{self, flatten, unflatten, Point};
 use crate::shape::power::{PowerCurve, PowerSurface};
+use crate::shape::power_triangle::PowerTriangle;
 use crate::shape::simplex::{triangle_index, triangle_len};
 use crate::Ring;
 
@@ -70,18 +71,20 @@ fn times_linear<T: Ring>(form: &[Point<T>], p: &T, q: &T) -> Vec<Point<T>> {
     out
 }
 
+/// `surface`, of total degree N, restricted to the triangle `tri`: its rows padded with zeros
+/// to a grid (a no-op for a grid input) and [`bulk_triangle_grid`] at degree N.
 pub(crate) fn restrict_triangle<T: Ring>(
-    surface: &PowerSurface<T>,
+    surface: &PowerTriangle<T>,
     tri: &[[T; 2]; 3],
 ) -> TriangularPatch<T> {
-    let (n, m) = surface.degree();
-    bulk_triangle_grid(surface.coefficients(), n + m, tri)
+    bulk_triangle_grid(&surface.padded_grid(), surface.degree(), tri)
 }
 
 /// The bulk triangle restriction of the polynomial sum c_ij u^i v^j with the coefficient grid
 /// `coefficients[i][j]` (i <= n, j <= m), as a triangular patch of total degree `big_n`: n + m
 /// for the paper's convention, or N for a grid of total degree N padded with zeros (the power
-/// form of a triangular Bézier patch).
+/// form of a triangular Bézier patch, or of a triangular array). Terms with i + j > N are
+/// zero by that convention and never visited.
 pub(crate) fn bulk_triangle_grid<T: Ring>(
     coefficients: &[Vec<Point<T>>],
     big_n: usize,

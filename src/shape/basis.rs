@@ -315,31 +315,43 @@ fn times_linear_triangle<T: Ring>(p: &[Point<T>], d: usize, l: [&T; 3]) -> Vec<P
 }
 
 /// The control net of degree `big_n` on the triangle with corners `tri = [a, b, c]` of
-/// S(u, v) = sum c_ij u^i v^j (`coefficients[i][j]`, i <= n, j <= m, n + m <= `big_n`), by
-/// Horner's rule in the triangular Bernstein basis: S = (..(Q_n u + Q_(n-1)) u + ..) + Q_0 with
-/// Q_i(v) = sum_j c_ij v^j, each Q_i built by Horner in v and raised to the degree it is added
-/// at (a raise is a product with the linear form 1 = (1, 1, 1)). O(N^4) per coordinate.
+/// S(u, v) = sum c_ij u^i v^j (`coefficients[i][j]`; rows of any lengths, a grid or a triangular
+/// array, with i + j <= `big_n` for every entry), by Horner's rule in the triangular Bernstein
+/// basis: S = (..(Q_n u + Q_(n-1)) u + ..) + Q_0 with Q_i(v) = sum_j c_ij v^j, each Q_i built by
+/// Horner in v, and the running sum and each Q_i raised to a common degree before they are
+/// added (a raise is a product with the linear form 1 = (1, 1, 1)). O(N^4) per coordinate.
+///
+/// # Panics
+///
+/// When a row is empty or holds an entry with i + j > `big_n`.
 pub fn triangle_bernstein_by_horner<T: Ring>(
     coefficients: &[Vec<Point<T>>],
     big_n: usize,
     tri: &[[T; 2]; 3],
 ) -> TriangularPatch<T> {
+    assert!(
+        coefficients
+            .iter()
+            .enumerate()
+            .all(|(i, row)| !row.is_empty() && i + row.len() - 1 <= big_n),
+        "every row non-empty and every entry of total degree at most the patch's"
+    );
     let n = coefficients.len() - 1;
-    let m = coefficients[0].len() - 1;
-    assert!(n + m <= big_n, "the grid's degree exceeds the patch's");
     let [a, b, c] = tri;
     let (u, v) = ([&a[0], &b[0], &c[0]], [&a[1], &b[1], &c[1]]);
     let one = T::one();
     let ones = [&one, &one, &one];
-    let row_form = |row: &[Point<T>]| -> Vec<Point<T>> {
-        let mut acc = vec![row[m].clone()];
-        for (d, cj) in (0..m).zip(row.iter().rev().skip(1)) {
+    // Q_i(v) in the Bernstein basis of its own degree (the row's length minus one).
+    let row_form = |row: &[Point<T>]| -> (Vec<Point<T>>, usize) {
+        let top = row.len() - 1;
+        let mut acc = vec![row[top].clone()];
+        for (d, cj) in (0..top).zip(row.iter().rev().skip(1)) {
             acc = times_linear_triangle(&acc, d, v);
             for q in acc.iter_mut() {
                 crate::shape::point::add_assign(q, cj);
             }
         }
-        acc
+        (acc, top)
     };
     let raise = |mut p: Vec<Point<T>>, from: usize, to: usize| {
         for d in from..to {
@@ -347,12 +359,15 @@ pub fn triangle_bernstein_by_horner<T: Ring>(
         }
         p
     };
-    let mut acc = row_form(&coefficients[n]);
-    let mut degree = m;
+    let (mut acc, mut degree) = row_form(&coefficients[n]);
     for i in (0..n).rev() {
         acc = times_linear_triangle(&acc, degree, u);
         degree += 1;
-        let q = raise(row_form(&coefficients[i]), m, degree);
+        let (q, q_degree) = row_form(&coefficients[i]);
+        let common = degree.max(q_degree);
+        acc = raise(acc, degree, common);
+        let q = raise(q, q_degree, common);
+        degree = common;
         for (x, y) in acc.iter_mut().zip(&q) {
             crate::shape::point::add_assign(x, y);
         }

@@ -9,6 +9,7 @@ pub(crate) mod bezier;
 pub(crate) mod halving;
 pub(crate) mod point;
 pub(crate) mod power;
+pub(crate) mod power_triangle;
 pub(crate) mod simplex;
 pub(crate) mod subdivide;
 pub(crate) mod traits;

@@ -4,3 +4,4 @@
 mod common;
 
 mod cross_check_exact;
+mod total_degree;
