@@ -110,8 +110,8 @@ pub use applications::degree::{
     Reduction,
 };
 pub use applications::rational::{
-    RationalBSpline, RationalBezierCurve, RationalCurve, RationalSurface, RationalTensorPatch,
-    RationalTriangularPatch,
+    RationalBSpline, RationalBezierCurve, RationalCurve, RationalPowerTriangle, RationalSurface,
+    RationalTensorPatch, RationalTriangularPatch,
 };
 pub use applications::spline::{
     bspline_basis_on_span, bspline_from_pieces, bspline_from_pieces_with_knots, continuity_at,

@@ -23,6 +23,7 @@ use crate::restrict::polarisation::{
 use crate::shape::bezier::{bezier_curve_blossom, bezier_tensor_blossom};
 use crate::shape::point::Point;
 use crate::shape::power::{PowerCurve, PowerSurface};
+use crate::shape::power_triangle::PowerTriangle;
 use crate::shape::simplex::triangle_len;
 use crate::{Ring, TriangularPatch};
 
@@ -366,15 +367,118 @@ impl<T: Field> RationalSurface<T> {
     }
 
     /// The rational triangular patch on the triangle `tri = [a, b, c]` at total degree
-    /// `degree` (default n + m), by eq. (23) on the homogeneous surface.
+    /// `degree` (default n + m, the paper's convention; any degree at least the true total
+    /// degree of the homogeneous surface is accepted), by eq. (23) on the homogeneous surface.
     pub fn triangle(
         &self,
         tri: &[[T; 2]; 3],
         degree: Option<usize>,
     ) -> Result<RationalTriangularPatch<T>> {
-        let (n, m) = self.degree();
-        let big_n = degree.unwrap_or(n + m);
-        check_degree("degree", big_n, n + m)?;
+        RationalPowerTriangle {
+            homogeneous: PowerTriangle::from_surface(&self.homogeneous),
+        }
+        .triangle(tri, degree)
+    }
+}
+
+/// A rational surface N(u, v) / w(u, v) whose numerator and denominator are given by
+/// triangular arrays (i + j <= N) in the power basis: the input of a rational triangular patch
+/// of total degree N.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RationalPowerTriangle<T> {
+    homogeneous: PowerTriangle<T>,
+}
+
+impl<T: Ring> RationalPowerTriangle<T> {
+    /// The surface with numerator array `numerator[i][j]` (points of dimension D) and scalar
+    /// denominator array `denominator[i][j]`, both triangular of the same total degree N
+    /// (row i holds N + 1 - i entries).
+    pub fn new(numerator: &[Vec<Point<T>>], denominator: &[Vec<T>]) -> Result<Self> {
+        let num = PowerTriangle::new(numerator.to_vec())
+            .map_err(|e| rename(e, "coefficients", "numerator"))?;
+        let rows = num.rows();
+        if denominator.len() != rows.len() {
+            return Err(Error::of(
+                ErrorKind::Shape,
+                "denominator",
+                format!("expected {} rows, found {}", rows.len(), denominator.len()),
+            ));
+        }
+        for (i, (d, r)) in denominator.iter().zip(rows).enumerate() {
+            if d.len() != r.len() {
+                return Err(Error::of(
+                    ErrorKind::Shape,
+                    format!("denominator[{i}]"),
+                    format!("expected {} entries, found {}", r.len(), d.len()),
+                ));
+            }
+        }
+        if denominator.iter().flatten().all(Ring::is_zero) {
+            return Err(Error::of(
+                ErrorKind::ZeroWeight,
+                "denominator",
+                "the denominator is the zero polynomial",
+            ));
+        }
+        let array = numerator
+            .iter()
+            .zip(denominator)
+            .map(|(nr, dr)| {
+                nr.iter()
+                    .zip(dr)
+                    .map(|(p, w)| [p.as_slice(), std::slice::from_ref(w)].concat())
+                    .collect()
+            })
+            .collect();
+        Ok(RationalPowerTriangle {
+            homogeneous: PowerTriangle::new(array)?,
+        })
+    }
+
+    /// The homogeneous surface (N, w).
+    pub fn homogeneous(&self) -> &PowerTriangle<T> {
+        &self.homogeneous
+    }
+
+    /// The total degree N the surface is given at.
+    pub fn degree(&self) -> usize {
+        self.homogeneous.degree()
+    }
+
+    /// The true total degree: the highest i + j of a non-zero term of numerator or denominator.
+    pub fn true_degree(&self) -> usize {
+        self.homogeneous.true_degree()
+    }
+}
+
+impl<T: Field> RationalPowerTriangle<T> {
+    /// x(u, v) = N(u, v) / w(u, v), or `None` where w vanishes.
+    pub fn eval(&self, u: &T, v: &T) -> Option<Point<T>> {
+        let mut h = self.homogeneous.eval(u, v);
+        let w = h.pop()?;
+        divide_point(h, &w)
+    }
+
+    /// The rational triangular patch on the triangle `tri = [a, b, c]` at total degree
+    /// `degree` (default: the degree the surface is given at; any degree at least its true
+    /// total degree), by eq. (23) on the homogeneous surface.
+    pub fn triangle(
+        &self,
+        tri: &[[T; 2]; 3],
+        degree: Option<usize>,
+    ) -> Result<RationalTriangularPatch<T>> {
+        let big_n = degree.unwrap_or(self.degree());
+        let least = self.true_degree();
+        if big_n < least {
+            return Err(Error::of(
+                ErrorKind::Degree,
+                "degree",
+                format!(
+                    "expected a total degree >= {least} (the surface's true total degree), found \
+                     {big_n}"
+                ),
+            ));
+        }
         let h =
             triangle_control_points_from_samples(big_n, tri, &|u, v| self.homogeneous.eval(u, v));
         let index: Vec<(usize, usize)> = (0..=big_n)

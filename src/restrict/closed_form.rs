@@ -190,54 +190,54 @@ pub fn triangle_point_with<T: Ring>(
     let pw = |p: &[T], k: i64| p[k as usize].clone();
     let mut acc = point::zero(surface.dim());
     for (i, j, cij) in surface.terms() {
-            let mut s = TriangleSplit {
-                big_n: big_n as i64,
-                nu: nu as i64,
-                mu: mu as i64,
-                lambda: (big_n - nu - mu) as i64,
-                i: i as i64,
-                j: j as i64,
-                i_alpha: 0,
-                i_beta: 0,
-                i_gamma: 0,
-                j_alpha: 0,
-                j_beta: 0,
-                j_gamma: 0,
-            };
-            let den = (formula.denominator)(&s);
-            let mut weight = T::zero();
-            let (lo, hi) = (formula.i_alpha)(&s);
-            for ia in lo..=hi {
-                s.i_alpha = ia;
-                let (lo, hi) = (formula.i_beta)(&s);
-                for ib in lo..=hi {
-                    s.i_beta = ib;
-                    s.i_gamma = s.i - ia - ib;
-                    let (lo, hi) = (formula.j_alpha)(&s);
-                    for ja in lo..=hi {
-                        s.j_alpha = ja;
-                        let (lo, hi) = (formula.j_beta)(&s);
-                        for jb in lo..=hi {
-                            s.j_beta = jb;
-                            s.j_gamma = s.j - ja - jb;
-                            let count = (formula.count)(&s);
-                            // Exponents outside 0..=N can only come with a zero count.
-                            let exps = [ia, ib, s.i_gamma, ja, jb, s.j_gamma];
-                            if count.is_zero() || exps.iter().any(|&e| e < 0 || e > s.big_n) {
-                                continue;
-                            }
-                            let monomial = pw(&pa1, ia)
-                                .mul(&pw(&pb1, ib))
-                                .mul(&pw(&pc1, s.i_gamma))
-                                .mul(&pw(&pa2, ja))
-                                .mul(&pw(&pb2, jb))
-                                .mul(&pw(&pc2, s.j_gamma));
-                            weight.add_assign(&monomial.scale(&Rational::new(count, den.clone())));
+        let mut s = TriangleSplit {
+            big_n: big_n as i64,
+            nu: nu as i64,
+            mu: mu as i64,
+            lambda: (big_n - nu - mu) as i64,
+            i: i as i64,
+            j: j as i64,
+            i_alpha: 0,
+            i_beta: 0,
+            i_gamma: 0,
+            j_alpha: 0,
+            j_beta: 0,
+            j_gamma: 0,
+        };
+        let den = (formula.denominator)(&s);
+        let mut weight = T::zero();
+        let (lo, hi) = (formula.i_alpha)(&s);
+        for ia in lo..=hi {
+            s.i_alpha = ia;
+            let (lo, hi) = (formula.i_beta)(&s);
+            for ib in lo..=hi {
+                s.i_beta = ib;
+                s.i_gamma = s.i - ia - ib;
+                let (lo, hi) = (formula.j_alpha)(&s);
+                for ja in lo..=hi {
+                    s.j_alpha = ja;
+                    let (lo, hi) = (formula.j_beta)(&s);
+                    for jb in lo..=hi {
+                        s.j_beta = jb;
+                        s.j_gamma = s.j - ja - jb;
+                        let count = (formula.count)(&s);
+                        // Exponents outside 0..=N can only come with a zero count.
+                        let exps = [ia, ib, s.i_gamma, ja, jb, s.j_gamma];
+                        if count.is_zero() || exps.iter().any(|&e| e < 0 || e > s.big_n) {
+                            continue;
                         }
+                        let monomial = pw(&pa1, ia)
+                            .mul(&pw(&pb1, ib))
+                            .mul(&pw(&pc1, s.i_gamma))
+                            .mul(&pw(&pa2, ja))
+                            .mul(&pw(&pb2, jb))
+                            .mul(&pw(&pc2, s.j_gamma));
+                        weight.add_assign(&monomial.scale(&Rational::new(count, den.clone())));
                     }
                 }
             }
-            point::add_scaled(&mut acc, &weight, cij);
+        }
+        point::add_scaled(&mut acc, &weight, cij);
     }
     acc
 }

@@ -9,8 +9,8 @@
 //! library (all of [`crate::Method`]) runs on this one type.
 
 use crate::error::{Error, ErrorKind, Result};
-use crate::shape::power::{check_dims, PowerSurface};
 use crate::shape::point::{self, Point};
+use crate::shape::power::{check_dims, PowerSurface};
 use crate::Ring;
 
 /// S(u, v) = sum c_ij u^i v^j with i + j <= N, as a surface of total degree N.
@@ -191,7 +191,10 @@ mod tests {
         let e = PowerTriangle::<f64>::new(vec![]).unwrap_err();
         assert_eq!(e.kind(), ErrorKind::Empty);
         let e = PowerTriangle::new(vec![vec![pt(1), vec![1.0, 2.0]], vec![pt(3)]]).unwrap_err();
-        assert_eq!((e.path(), e.kind()), ("coefficients[0][1]", ErrorKind::Dimension));
+        assert_eq!(
+            (e.path(), e.kind()),
+            ("coefficients[0][1]", ErrorKind::Dimension)
+        );
     }
 
     #[test]
@@ -205,7 +208,10 @@ mod tests {
         .unwrap();
         assert_eq!((s.degree(), s.true_degree()), (2, 1));
         let low = s.at_degree(1).unwrap();
-        assert_eq!((low.degree(), low.eval(&3.0, &5.0)), (1, s.eval(&3.0, &5.0)));
+        assert_eq!(
+            (low.degree(), low.eval(&3.0, &5.0)),
+            (1, s.eval(&3.0, &5.0))
+        );
         assert_eq!(s.at_degree(0).unwrap_err().kind(), ErrorKind::Degree);
         let grid = PowerSurface::new(vec![vec![pt(0), pt(1)], vec![pt(1), pt(0)]]).unwrap();
         let t = PowerTriangle::from_surface(&grid);

@@ -5,7 +5,8 @@
 use crate::common::{q, Rng};
 use crate::json::Json;
 use blossom::{
-    elevate, BSpline, BezierCurve, Rational, RationalBSpline, RationalCurve, RationalSurface, Ring,
+    elevate, BSpline, BezierCurve, ErrorKind, Rational, RationalBSpline, RationalCurve,
+    RationalPowerTriangle, RationalSurface, Ring,
 };
 
 /// A denominator without zeros on [-1, 1]: c_0 = 5 and small other coefficients.
@@ -156,4 +157,84 @@ fn circle_arc_of_seed_004() {
             ("quartic", Json::object([("points", Json::array(quartic.points().iter().map(|p| s(p)))), ("weights", s(quartic.weights()))])),
         ]).pretty());
     });
+}
+
+#[test]
+fn rational_triangles_from_triangular_arrays_and_at_their_true_degree() {
+    let mut rng = Rng(0x2a7_71);
+    let tri = [[q(0, 1), q(1, 3)], [q(1, 2), q(0, 1)], [q(-1, 4), q(1, 2)]];
+    let barys = [
+        [q(1, 1), q(0, 1), q(0, 1)],
+        [q(1, 3), q(1, 3), q(1, 3)],
+        [q(2, 3), q(-1, 2), q(5, 6)],
+    ];
+    let coord =
+        |bary: &[Rational; 3], d: usize| (0..3).map(|k| &bary[k] * &tri[k][d]).sum::<Rational>();
+    for big_n in 1..=4usize {
+        let num: Vec<Vec<Vec<Rational>>> = (0..=big_n)
+            .map(|i| (0..=big_n - i).map(|_| rng.point(2)).collect())
+            .collect();
+        let den: Vec<Vec<Rational>> = (0..=big_n)
+            .map(|i| {
+                (0..=big_n - i)
+                    .map(|j| {
+                        if i + j == 0 {
+                            q(3, 1)
+                        } else {
+                            rng.rational() / q(40, 1)
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
+        let s = RationalPowerTriangle::new(&num, &den).unwrap();
+        assert_eq!(s.true_degree(), big_n);
+        for degree in [big_n, big_n + 2] {
+            let patch = s.triangle(&tri, Some(degree)).unwrap();
+            assert_eq!(patch.degree(), degree);
+            for bary in &barys {
+                let (u, v) = (coord(bary, 0), coord(bary, 1));
+                assert_eq!(
+                    patch.eval(bary).unwrap(),
+                    s.eval(&u, &v).unwrap(),
+                    "N = {degree}"
+                );
+            }
+        }
+        let e = s.triangle(&tri, Some(big_n - 1)).unwrap_err();
+        assert_eq!((e.path(), e.kind()), ("degree", ErrorKind::Degree));
+    }
+    // x = (u + v) / (1 + u) on a (1, 1) grid: the u v terms are zero, true degree 1 < n + m = 2.
+    let grid_num = vec![
+        vec![vec![q(0, 1)], vec![q(1, 1)]],
+        vec![vec![q(1, 1)], vec![q(0, 1)]],
+    ];
+    let grid_den = vec![vec![q(1, 1), q(0, 1)], vec![q(1, 1), q(0, 1)]];
+    let s = RationalSurface::new(&grid_num, &grid_den).unwrap();
+    let patch = s.triangle(&tri, Some(1)).unwrap();
+    assert_eq!(patch.degree(), 1);
+    for bary in &barys {
+        let (u, v) = (coord(bary, 0), coord(bary, 1));
+        assert_eq!(patch.eval(bary).unwrap(), s.eval(&u, &v).unwrap());
+    }
+    assert_eq!(
+        s.triangle(&tri, Some(0)).unwrap_err().kind(),
+        ErrorKind::Degree
+    );
+    // Shapes: a denominator row of the wrong length, a numerator that is not triangular.
+    let e = RationalPowerTriangle::new(
+        &[vec![vec![q(1, 1)], vec![q(2, 1)]], vec![vec![q(3, 1)]]],
+        &[vec![q(1, 1)], vec![q(1, 1)]],
+    )
+    .unwrap_err();
+    assert_eq!((e.path(), e.kind()), ("denominator[0]", ErrorKind::Shape));
+    let e = RationalPowerTriangle::new(
+        &[
+            vec![vec![q(1, 1)], vec![q(2, 1)]],
+            vec![vec![q(3, 1)], vec![q(4, 1)]],
+        ],
+        &[vec![q(1, 1), q(0, 1)], vec![q(1, 1), q(0, 1)]],
+    )
+    .unwrap_err();
+    assert_eq!((e.path(), e.kind()), ("numerator[1]", ErrorKind::Shape));
 }

@@ -4,9 +4,7 @@
 //! (r, s, t) must equal S(r a + s b + t c) by Horner's rule on the array.
 
 use crate::common::Rng;
-use blossom::{
-    restrict_power_triangle, restrict_triangle, Method, PowerTriangle, Rational, Ring,
-};
+use blossom::{restrict_power_triangle, restrict_triangle, Method, PowerTriangle, Rational, Ring};
 
 fn random_array(rng: &mut Rng, big_n: usize, dim: usize) -> PowerTriangle<Rational> {
     PowerTriangle::new(
