@@ -70,7 +70,8 @@ pub use error::{Error, ErrorKind};
 pub use shape::array::{subsegment_into, Bezier, BezierTensor, BezierTriangle};
 pub use shape::basis::{
     bernstein_by_horner, bernstein_to_power, power_to_bernstein, scale_argument, taylor_shift,
-    triangle_bernstein_by_horner, triangle_bernstein_to_power, triangle_power_to_bernstein,
+    tensor_bernstein_to_power, triangle_bernstein_by_horner, triangle_bernstein_to_power,
+    triangle_power_to_bernstein,
 };
 pub use shape::bezier::{
     bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom, BezierCurve, TensorPatch,

@@ -65,6 +65,41 @@ pub mod grid {
                 })
             }
         };
+        (bezier_tensor $dispatch:ident: $(($n:tt, $m:tt) => $name:ident,)*) => {
+            $( blossom::restriction!(#[inline(never)] vis = pub, name = $name, shape = bezier_tensor, degree = ($n, $m)); )*
+            /// One coordinate of a Bézier net (`input[i][j]`) by the carried evaluator of its
+            /// bidegree among those listed; `None` when it is not among them.
+            #[inline(never)]
+            pub fn $dispatch(input: &[Vec<Scalar>], rect: &[Scalar; 4]) -> Option<Vec<Vec<Scalar>>> {
+                let degree = (input.len().checked_sub(1)?, input[0].len().checked_sub(1)?);
+                Some(match degree {
+                    $(($n, $m) => {
+                        let ctrl = std::array::from_fn(|i| std::array::from_fn(|j| [input[i][j].clone()]));
+                        $name::<Scalar, 1>(&ctrl, rect)
+                            .into_iter()
+                            .map(|row| row.into_iter().map(|[w]| w).collect())
+                            .collect()
+                    })*
+                    _ => return None,
+                })
+            }
+        };
+        (bezier_triangle $dispatch:ident: $($n:tt => $name:ident,)*) => {
+            $( blossom::restriction!(#[inline(never)] vis = pub, name = $name, shape = bezier_triangle, degree = $n); )*
+            /// One coordinate of a triangular Bézier net of degree `degree` (in the order of
+            /// `blossom::TriangularPatch`) by the carried evaluator of that degree among those
+            /// listed; `None` when it is not among them.
+            #[inline(never)]
+            pub fn $dispatch(degree: usize, input: &[Scalar], tri: &[[Scalar; 2]; 3]) -> Option<Vec<Scalar>> {
+                Some(match degree {
+                    $($n => {
+                        let ctrl = std::array::from_fn(|k| [input[k].clone()]);
+                        $name::<Scalar, 1>(&ctrl, tri).into_iter().map(|[w]| w).collect()
+                    })*
+                    _ => return None,
+                })
+            }
+        };
         (triangle $dispatch:ident: $(($n:tt, $m:tt) => $name:ident,)*) => {
             $( blossom::restriction!(#[inline(never)] vis = pub, name = $name, shape = triangle, degree = ($n, $m)); )*
             /// One coordinate of a surface (`input[i][j]`) on a triangle by the carried
@@ -201,6 +236,44 @@ pub mod grid {
     (4, 3) => triangle_4_3,
     (4, 4) => triangle_4_4,
     }
+
+    // Bézier input of the `bezier-tensor` and `bezier-triangle` jobs (de Casteljau's steps
+    // with shared work, the runtime engine's order).
+    carry! { bezier_tensor bezier_tensor_carried:
+    (0, 1) => bezier_tensor_0_1,
+    (0, 2) => bezier_tensor_0_2,
+    (0, 3) => bezier_tensor_0_3,
+    (0, 4) => bezier_tensor_0_4,
+    (1, 0) => bezier_tensor_1_0,
+    (1, 1) => bezier_tensor_1_1,
+    (1, 2) => bezier_tensor_1_2,
+    (1, 3) => bezier_tensor_1_3,
+    (1, 4) => bezier_tensor_1_4,
+    (2, 0) => bezier_tensor_2_0,
+    (2, 1) => bezier_tensor_2_1,
+    (2, 2) => bezier_tensor_2_2,
+    (2, 3) => bezier_tensor_2_3,
+    (2, 4) => bezier_tensor_2_4,
+    (3, 0) => bezier_tensor_3_0,
+    (3, 1) => bezier_tensor_3_1,
+    (3, 2) => bezier_tensor_3_2,
+    (3, 3) => bezier_tensor_3_3,
+    (3, 4) => bezier_tensor_3_4,
+    (4, 0) => bezier_tensor_4_0,
+    (4, 1) => bezier_tensor_4_1,
+    (4, 2) => bezier_tensor_4_2,
+    (4, 3) => bezier_tensor_4_3,
+    (4, 4) => bezier_tensor_4_4,
+    }
+
+    carry! { bezier_triangle bezier_triangle_carried:
+    1 => bezier_triangle_1,
+    2 => bezier_triangle_2,
+    3 => bezier_triangle_3,
+    4 => bezier_triangle_4,
+    5 => bezier_triangle_5,
+    6 => bezier_triangle_6,
+    }
 }
 
 /// Runs a curve dispatch (power coefficients or Bézier control points, `input`) coordinate
@@ -295,4 +368,53 @@ pub fn restrict_triangle_specialised<T: Carried>(
         }
     }
     Some(TriangularPatch::new(n + m, points).expect("a full triangular net"))
+}
+
+/// The Bézier patch `patch` over [0, 1]^2 restricted to `rect = [a, b, c, d]` by the generated
+/// Bézier-input evaluator of its bidegree; `None` when not carried.
+pub fn restrict_bezier_tensor_specialised<T: Carried>(
+    patch: &TensorPatch<T>,
+    rect: &[T; 4],
+) -> Option<TensorPatch<T>> {
+    let (n, m) = patch.degree();
+    let dim = patch.control_points()[0][0].len();
+    let rect = rect.each_ref().map(Carried::wrap);
+    let mut net = vec![vec![Vec::with_capacity(dim); m + 1]; n + 1];
+    for x in 0..dim {
+        let ctrl: Vec<Vec<Scalar>> = patch
+            .control_points()
+            .iter()
+            .map(|row| row.iter().map(|p| p[x].wrap()).collect())
+            .collect();
+        let out = grid::bezier_tensor_carried(&ctrl, &rect)?;
+        for (net_row, out_row) in net.iter_mut().zip(out) {
+            for (p, w) in net_row.iter_mut().zip(out_row) {
+                p.push(T::unwrap(w));
+            }
+        }
+    }
+    Some(TensorPatch::new(net).expect("a rectangular net"))
+}
+
+/// The triangular Bézier patch `patch` restricted to the sub-triangle with corners `tri`, each
+/// given by its first two barycentric coordinates, by the generated Bézier-input evaluator of
+/// its degree; `None` when not carried.
+pub fn restrict_bezier_triangle_specialised<T: Carried>(
+    patch: &TriangularPatch<T>,
+    tri: &[[T; 2]; 3],
+) -> Option<TriangularPatch<T>> {
+    let big_n = patch.degree();
+    let dim = patch.control_points()[0].len();
+    let tri = tri
+        .each_ref()
+        .map(|corner| corner.each_ref().map(Carried::wrap));
+    let mut points = vec![Vec::with_capacity(dim); patch.control_points().len()];
+    for x in 0..dim {
+        let ctrl: Vec<Scalar> = patch.control_points().iter().map(|p| p[x].wrap()).collect();
+        let out = grid::bezier_triangle_carried(big_n, &ctrl, &tri)?;
+        for (p, w) in points.iter_mut().zip(out) {
+            p.push(T::unwrap(w));
+        }
+    }
+    Some(TriangularPatch::new(big_n, points).expect("a full triangular net"))
 }

@@ -374,10 +374,7 @@ impl<T: Field> RationalSurface<T> {
         tri: &[[T; 2]; 3],
         degree: Option<usize>,
     ) -> Result<RationalTriangularPatch<T>> {
-        RationalPowerTriangle {
-            homogeneous: PowerTriangle::from_surface(&self.homogeneous),
-        }
-        .triangle(tri, degree)
+        RationalPowerTriangle::from_surface(self).triangle(tri, degree)
     }
 }
 
@@ -433,6 +430,13 @@ impl<T: Ring> RationalPowerTriangle<T> {
         Ok(RationalPowerTriangle {
             homogeneous: PowerTriangle::new(array)?,
         })
+    }
+
+    /// The grid surface `surface` taken at total degree n + m.
+    pub fn from_surface(surface: &RationalSurface<T>) -> Self {
+        RationalPowerTriangle {
+            homogeneous: PowerTriangle::from_surface(&surface.homogeneous),
+        }
     }
 
     /// The homogeneous surface (N, w).

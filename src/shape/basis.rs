@@ -201,6 +201,23 @@ pub fn bernstein_to_power<T: Ring>(b: &[Point<T>]) -> Vec<Point<T>> {
     c
 }
 
+/// The power coefficients `[i][j]` (of s^i t^j) of the tensor-product patch over [0, 1]^2 with
+/// control points `net[i][j]`: c_ij = C(n, i) C(m, j) Δ_s^i Δ_t^j b_00, by
+/// [`bernstein_to_power`] along t for every row, then along s for every column.
+pub fn tensor_bernstein_to_power<T: Ring>(net: &[Vec<Point<T>>]) -> Vec<Vec<Point<T>>> {
+    let rows: Vec<Vec<Point<T>>> = net.iter().map(|row| bernstein_to_power(row)).collect();
+    let width = rows.first().map_or(0, Vec::len);
+    let columns: Vec<Vec<Point<T>>> = (0..width)
+        .map(|j| {
+            let column: Vec<Point<T>> = rows.iter().map(|row| row[j].clone()).collect();
+            bernstein_to_power(&column)
+        })
+        .collect();
+    (0..rows.len())
+        .map(|i| columns.iter().map(|column| column[i].clone()).collect())
+        .collect()
+}
+
 /// The power coefficients in the barycentric coordinates (s, t) of corners 1 and 2 (the third
 /// being 1 - s - t) of the triangular patch `patch` (the inverse of
 /// [`triangle_power_to_bernstein`]): `out[triangle_index(N, i, j)]` = coefficient of s^i t^j =
@@ -387,6 +404,29 @@ mod tests {
 
     fn frac(n: i64, d: i64) -> Rational {
         Rational::new(BigInt::from(n), BigInt::from(d))
+    }
+
+    #[test]
+    fn tensor_power_form_evaluates_to_the_patch() {
+        use crate::shape::bezier::TensorPatch;
+        use crate::shape::power::PowerSurface;
+        // A (2, 3) net with distinct entries; de Casteljau (TensorPatch::eval) is independent.
+        let net: Vec<Vec<Point<Rational>>> = (0..3)
+            .map(|i| {
+                (0..4)
+                    .map(|j| vec![q(i * i - 3 * j + 1), q(j * j * i - 2)])
+                    .collect()
+            })
+            .collect();
+        let power = PowerSurface::new(tensor_bernstein_to_power(&net)).unwrap();
+        let patch = TensorPatch::new(net).unwrap();
+        for (s, t) in [
+            (frac(1, 3), frac(2, 5)),
+            (frac(-2, 1), frac(7, 4)),
+            (q(0), q(1)),
+        ] {
+            assert_eq!(power.eval(&s, &t), patch.eval(&s, &t));
+        }
     }
 
     #[test]

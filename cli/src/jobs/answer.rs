@@ -15,8 +15,8 @@ use super::job::Job;
 use crate::number::JsonNumber;
 use blossom::Point;
 use blossom::{
-    restrict_curve, restrict_tensor, restrict_triangle, BezierCurve, Error, Method, Ring,
-    TensorPatch, TriangularPatch,
+    restrict_curve, restrict_power_triangle, restrict_tensor, restrict_triangle, BezierCurve,
+    Error, Method, Ring, TensorPatch, TriangularPatch,
 };
 use serde_json::{Map, Value};
 
@@ -43,6 +43,9 @@ pub fn compute<T: Ring>(job: &Job<T>, method: Method) -> Answer<T> {
         }
         Job::Triangle { surface, triangle } => {
             Answer::Triangle(restrict_triangle(surface, triangle, method))
+        }
+        Job::TotalDegreeTriangle { surface, triangle } => {
+            Answer::Triangle(restrict_power_triangle(surface, triangle, method))
         }
     }
 }

@@ -11,7 +11,7 @@
 
 use crate::number::{json_type, JsonNumber};
 use blossom::Point;
-use blossom::{Error, PowerCurve, PowerSurface};
+use blossom::{Error, PowerCurve, PowerSurface, PowerTriangle};
 use serde_json::{Map, Value};
 
 /// The kinds this version computes, as listed in messages.
@@ -26,6 +26,16 @@ pub const LATER_KINDS: [&str; 6] = [
     "rational-curve",
     "elevate",
     "reduce",
+];
+
+/// Kinds of the contract answered by [`super::patch_jobs`] (dispatched there like
+/// [`LATER_KINDS`]).
+pub const PATCH_KINDS: [&str; 5] = [
+    "bezier-tensor",
+    "bezier-triangle",
+    "derivative",
+    "rational-tensor",
+    "rational-triangle",
 ];
 
 /// A restriction job, read and checked.
@@ -49,6 +59,14 @@ pub enum Job<T> {
     Triangle {
         /// S(u, v) = sum c_ij u^i v^j.
         surface: PowerSurface<T>,
+        /// `[[a1, a2], [b1, b2], [c1, c2]]`.
+        triangle: [[T; 2]; 3],
+    },
+    /// `"kind": "triangle"` with `"total_degree": N`: S(u, v) = sum_{i+j<=N} c_ij u^i v^j from
+    /// its triangular array, at total degree N, on the triangle with these corners.
+    TotalDegreeTriangle {
+        /// The triangular array, `rows()[i][j]` = c_ij.
+        surface: PowerTriangle<T>,
         /// `[[a1, a2], [b1, b2], [c1, c2]]`.
         triangle: [[T; 2]; 3],
     },
@@ -92,15 +110,21 @@ pub fn parse_job<T: JsonNumber>(document: &Value) -> Result<Job<T>, Error> {
             surface: grid(field(job, "coefficients")?)?,
             rectangle: numbers::<T, 4>(field(job, "rectangle")?, "rectangle")?,
         }),
-        "triangle" => {
-            let surface = grid(field(job, "coefficients")?)?;
-            let [a, b, c] = corners::<T, 3>(field(job, "triangle")?, "triangle")?;
-            Ok(Job::Triangle {
-                surface,
-                triangle: [a, b, c],
-            })
-        }
-        later if LATER_KINDS.contains(&later) => Err(Error::new(
+        "triangle" => match job.get("total_degree") {
+            None | Some(Value::Null) => {
+                let surface = grid(field(job, "coefficients")?)?;
+                let triangle = corners::<T, 3>(field(job, "triangle")?, "triangle")?;
+                Ok(Job::Triangle { surface, triangle })
+            }
+            Some(total) => {
+                let big_n = degree_value(total, "total_degree")?;
+                let rows = triangular_array(field(job, "coefficients")?, "coefficients", big_n)?;
+                let surface = PowerTriangle::new(rows)?;
+                let triangle = corners::<T, 3>(field(job, "triangle")?, "triangle")?;
+                Ok(Job::TotalDegreeTriangle { surface, triangle })
+            }
+        },
+        later if LATER_KINDS.contains(&later) || PATCH_KINDS.contains(&later) => Err(Error::new(
             "kind",
             format!("{} is not supported by this version", quoted(later)),
         )),
@@ -112,10 +136,45 @@ pub fn parse_job<T: JsonNumber>(document: &Value) -> Result<Job<T>, Error> {
                 KINDS
                     .iter()
                     .chain(&LATER_KINDS)
+                    .chain(&PATCH_KINDS)
                     .copied()
                     .collect::<Vec<_>>()
                     .join(", ")
             ),
+        )),
+    }
+}
+
+/// The largest degree a job may name (`degree`, `to_degree`, `total_degree`, `order`, the
+/// degree of a B-spline).
+pub const MAX_DEGREE: usize = 200;
+
+/// A degree: a non-negative JSON integer or a string of digits, at most [`MAX_DEGREE`].
+pub(super) fn degree_value(value: &Value, path: &str) -> Result<usize, Error> {
+    let text = match value {
+        Value::Number(n) => n.to_string(),
+        Value::String(s) => s.trim().to_string(),
+        other => {
+            return Err(Error::new(
+                path,
+                format!(
+                    "expected a non-negative integer, found {}",
+                    json_type(other)
+                ),
+            ))
+        }
+    };
+    if text.is_empty() || !text.bytes().all(|b| b.is_ascii_digit()) {
+        return Err(Error::new(
+            path,
+            format!("expected a non-negative integer, found {text:?}"),
+        ));
+    }
+    match text.parse::<usize>() {
+        Ok(d) if d <= MAX_DEGREE => Ok(d),
+        _ => Err(Error::new(
+            path,
+            format!("expected a degree of at most {MAX_DEGREE}, found {text}"),
         )),
     }
 }
@@ -169,7 +228,10 @@ pub(super) fn numbers<T: JsonNumber, const N: usize>(
 }
 
 /// Exactly `N` corners of two coordinates each at `path` (a triangle).
-fn corners<T: JsonNumber, const N: usize>(value: &Value, path: &str) -> Result<[[T; 2]; N], Error> {
+pub(super) fn corners<T: JsonNumber, const N: usize>(
+    value: &Value,
+    path: &str,
+) -> Result<[[T; 2]; N], Error> {
     let items = array(value, path, &format!("an array of {N} corners"))?;
     if items.len() != N {
         return Err(Error::new(
@@ -204,7 +266,11 @@ fn coordinates_count(d: usize) -> String {
 
 /// A point (an array of numbers) at `path`; `dim` is the dimension of the job's points when
 /// known (the first point fixes it).
-fn point<T: JsonNumber>(value: &Value, path: &str, dim: Option<usize>) -> Result<Point<T>, Error> {
+pub(super) fn point<T: JsonNumber>(
+    value: &Value,
+    path: &str,
+    dim: Option<usize>,
+) -> Result<Point<T>, Error> {
     let coordinates = array(value, path, "a point (an array of numbers)")?;
     match dim {
         Some(d) if coordinates.len() != d => {
@@ -250,9 +316,57 @@ pub(super) fn points<T: JsonNumber>(
     Ok(out)
 }
 
+/// The triangular array of a surface of total degree `big_n` at `path`: N + 1 rows, row i holding
+/// the N + 1 - i points c_i0 .. c_i(N-i), all of one dimension.
+pub(super) fn triangular_array<T: JsonNumber>(
+    value: &Value,
+    path: &str,
+    big_n: usize,
+) -> Result<Vec<Vec<Point<T>>>, Error> {
+    let rows = array(value, path, "an array of rows of points")?;
+    if rows.len() != big_n + 1 {
+        return Err(Error::new(
+            path,
+            format!(
+                "expected {} rows (a triangular array of total degree {big_n}), found {}",
+                big_n + 1,
+                rows.len()
+            ),
+        ));
+    }
+    let mut out: Vec<Vec<Point<T>>> = Vec::with_capacity(rows.len());
+    let mut dim: Option<usize> = None;
+    for (i, row) in rows.iter().enumerate() {
+        let row_path = format!("{path}[{i}]");
+        let items = array(row, &row_path, "a row of points (an array)")?;
+        if items.len() != big_n + 1 - i {
+            return Err(Error::new(
+                &row_path,
+                format!(
+                    "expected {} points (row {i} of a triangular array of total degree {big_n} \
+                     holds N + 1 - i), found {}",
+                    big_n + 1 - i,
+                    items.len()
+                ),
+            ));
+        }
+        let parsed = points(row, &row_path, dim)?;
+        dim = parsed.first().map(Vec::len);
+        out.push(parsed);
+    }
+    Ok(out)
+}
+
 /// The rectangular coefficient grid of a surface: `coefficients[i][j]` = c_ij.
 fn grid<T: JsonNumber>(value: &Value) -> Result<PowerSurface<T>, Error> {
-    let path = "coefficients";
+    PowerSurface::new(point_grid(value, "coefficients")?)
+}
+
+/// A non-empty rectangular grid of points of one dimension at `path` (`[i][j]`).
+pub(super) fn point_grid<T: JsonNumber>(
+    value: &Value,
+    path: &str,
+) -> Result<Vec<Vec<Point<T>>>, Error> {
     let rows = array(value, path, "an array of rows of points")?;
     if rows.is_empty() {
         return Err(Error::new(path, "expected at least one row, found none"));
@@ -278,7 +392,86 @@ fn grid<T: JsonNumber>(value: &Value) -> Result<PowerSurface<T>, Error> {
         dim = parsed.first().map(Vec::len);
         out.push(parsed);
     }
-    PowerSurface::new(out)
+    Ok(out)
+}
+
+/// A non-empty rectangular grid of numbers at `path` (`[i][j]`, a scalar denominator).
+pub(super) fn number_grid<T: JsonNumber>(value: &Value, path: &str) -> Result<Vec<Vec<T>>, Error> {
+    let rows = array(value, path, "an array of rows of numbers")?;
+    if rows.is_empty() {
+        return Err(Error::new(path, "expected at least one row, found none"));
+    }
+    let mut out: Vec<Vec<T>> = Vec::with_capacity(rows.len());
+    for (i, row) in rows.iter().enumerate() {
+        let row_path = format!("{path}[{i}]");
+        let parsed = number_row(row, &row_path)?;
+        if let Some(first) = out.first() {
+            if parsed.len() != first.len() {
+                return Err(Error::new(
+                    &row_path,
+                    format!(
+                        "expected {} numbers (the grid must be rectangular), found {}",
+                        first.len(),
+                        parsed.len()
+                    ),
+                ));
+            }
+        }
+        out.push(parsed);
+    }
+    Ok(out)
+}
+
+/// The triangular array of numbers of total degree `big_n` at `path`: N + 1 rows, row i
+/// holding N + 1 - i numbers.
+pub(super) fn number_triangular_array<T: JsonNumber>(
+    value: &Value,
+    path: &str,
+    big_n: usize,
+) -> Result<Vec<Vec<T>>, Error> {
+    let rows = array(value, path, "an array of rows of numbers")?;
+    if rows.len() != big_n + 1 {
+        return Err(Error::new(
+            path,
+            format!(
+                "expected {} rows (a triangular array of total degree {big_n}), found {}",
+                big_n + 1,
+                rows.len()
+            ),
+        ));
+    }
+    rows.iter()
+        .enumerate()
+        .map(|(i, row)| {
+            let row_path = format!("{path}[{i}]");
+            let parsed = number_row(row, &row_path)?;
+            if parsed.len() != big_n + 1 - i {
+                return Err(Error::new(
+                    &row_path,
+                    format!(
+                        "expected {} numbers (row {i} of a triangular array of total degree \
+                         {big_n} holds N + 1 - i), found {}",
+                        big_n + 1 - i,
+                        parsed.len()
+                    ),
+                ));
+            }
+            Ok(parsed)
+        })
+        .collect()
+}
+
+/// A non-empty row of numbers at `path`.
+fn number_row<T: JsonNumber>(value: &Value, path: &str) -> Result<Vec<T>, Error> {
+    let items = array(value, path, "a row of numbers (an array)")?;
+    if items.is_empty() {
+        return Err(Error::new(path, "expected at least one number, found none"));
+    }
+    items
+        .iter()
+        .enumerate()
+        .map(|(k, x)| number(x, &format!("{path}[{k}]")))
+        .collect()
 }
 
 #[cfg(test)]
@@ -306,7 +499,8 @@ mod tests {
         assert_eq!(
             error(json!({"kind": "foo"})),
             "kind: unknown kind \"foo\" (expected one of curve, tensor, triangle, bezier-curve, \
-             bspline, bspline-eval, rational-curve, elevate, reduce)"
+             bspline, bspline-eval, rational-curve, elevate, reduce, bezier-tensor, bezier-triangle, \
+             derivative, rational-tensor, rational-triangle)"
         );
         assert_eq!(
             error(json!({"kind": "bspline"})),

@@ -19,6 +19,7 @@
 pub mod answer;
 pub mod args;
 pub mod job;
+pub mod patch_jobs;
 pub mod specialised;
 pub mod spline_jobs;
 
@@ -174,6 +175,9 @@ fn solve<T: JsonNumber + blossom::Field>(
 ) -> Result<Value, Error> {
     if let Some((job, kind)) = spline_jobs::recognise(document) {
         return spline_jobs::solve::<T>(job, kind, method);
+    }
+    if let Some((job, kind)) = patch_jobs::recognise(document) {
+        return patch_jobs::solve::<T>(job, kind, method);
     }
     let job = job::parse_job::<T>(document)?;
     let answer = match method {

@@ -50,6 +50,17 @@ pub fn specialised<T: crate::specialised::Carried>(
                 Shape::Triangle(n, m),
             )
         }
+        Job::TotalDegreeTriangle { surface, .. } => {
+            return Some(Err(Error::new(
+                "--method",
+                format!(
+                    "no specialised evaluator for a triangular array of total degree {}: this \
+                     binary carries {}",
+                    surface.degree(),
+                    carried_degrees()
+                ),
+            )));
+        }
     };
     Some(answer.ok_or_else(|| {
         Error::new(
@@ -103,5 +114,74 @@ pub fn specialised_bezier_curve<T: blossom::Ring>(
 #[cfg(not(feature = "carried-grid"))]
 pub fn specialised<T: blossom::Ring>(job: &Job<T>) -> Option<Result<Answer<T>, Error>> {
     let _ = job;
+    None
+}
+
+/// The message for a degree this binary does not carry: what was asked and what is carried.
+#[cfg(feature = "carried-grid")]
+fn not_carried(what: String) -> Error {
+    Error::new(
+        "--method",
+        format!(
+            "no specialised evaluator for {what}: this binary carries {}",
+            crate::specialised::carried_degrees()
+        ),
+    )
+}
+
+/// The Bézier patch `patch` restricted to `rect` by a carried Bézier-input evaluator of its
+/// bidegree: `None` when this binary has no specialised evaluators, `Some(Err(..))` naming the
+/// carried degrees for a bidegree it does not carry.
+#[cfg(feature = "carried-grid")]
+pub fn specialised_bezier_tensor<T: crate::specialised::Carried>(
+    patch: &blossom::TensorPatch<T>,
+    rect: &[T; 4],
+) -> Option<Result<blossom::TensorPatch<T>, Error>> {
+    let (n, m) = patch.degree();
+    Some(
+        crate::specialised::restrict_bezier_tensor_specialised(patch, rect).ok_or_else(|| {
+            not_carried(format!(
+                "a Bézier tensor-product patch of degree ({n}, {m})"
+            ))
+        }),
+    )
+}
+
+/// The Bézier triangle `patch` restricted to the sub-triangle with corners `plane` (each given
+/// by its first two barycentric coordinates) by a carried Bézier-input evaluator of its degree:
+/// `None` when this binary has no specialised evaluators, `Some(Err(..))` naming the carried
+/// degrees for a degree it does not carry.
+#[cfg(feature = "carried-grid")]
+pub fn specialised_bezier_triangle<T: crate::specialised::Carried>(
+    patch: &blossom::TriangularPatch<T>,
+    plane: &[[T; 2]; 3],
+) -> Option<Result<blossom::TriangularPatch<T>, Error>> {
+    Some(
+        crate::specialised::restrict_bezier_triangle_specialised(patch, plane).ok_or_else(|| {
+            not_carried(format!(
+                "a Bézier triangular patch of degree {}",
+                patch.degree()
+            ))
+        }),
+    )
+}
+
+/// Without the carried grid there is no specialised evaluator.
+#[cfg(not(feature = "carried-grid"))]
+pub fn specialised_bezier_tensor<T: blossom::Ring>(
+    patch: &blossom::TensorPatch<T>,
+    rect: &[T; 4],
+) -> Option<Result<blossom::TensorPatch<T>, Error>> {
+    let _ = (patch, rect);
+    None
+}
+
+/// Without the carried grid there is no specialised evaluator.
+#[cfg(not(feature = "carried-grid"))]
+pub fn specialised_bezier_triangle<T: blossom::Ring>(
+    patch: &blossom::TriangularPatch<T>,
+    plane: &[[T; 2]; 3],
+) -> Option<Result<blossom::TriangularPatch<T>, Error>> {
+    let _ = (patch, plane);
     None
 }

@@ -25,9 +25,11 @@
 //! restriction: `pyramid` runs de Casteljau's pyramid on the blossom of the given control
 //! points (eq. (2) of seed 004), `polarisation` samples the Bézier curve and applies the
 //! inverse formula (22) of seed 004, `specialised` runs the carried Bézier-input evaluator that
-//! `blossom::restriction!(shape = bezier_curve)` generated for the degree (1..=16), and
-//! `closed-form`, `definition` and `bulk` write the curve in the power basis (exactly, the
-//! inverse of the Bernstein basis change) and restrict it like a `curve` job. The other jobs
+//! `blossom::restriction!(shape = bezier_curve)` generated for the degree (1..=16), `bulk` runs
+//! the restriction engine on the control points (never leaving the Bernstein basis, as
+//! accurate in f64 as de Casteljau), and `taylor-shift`, `closed-form` and `definition` write
+//! the curve in the power basis (exactly, the inverse of the Bernstein basis change) and
+//! restrict it like a `curve` job. The other jobs
 //! have one algorithm each and give the same answer under every method.
 //!
 //! # Exact decisions under `--arithmetic f64`
@@ -42,11 +44,12 @@
 
 use super::answer::{point_json, Answer};
 use super::args::MethodChoice;
-use super::job::{array, field, number, numbers, points, Job};
+use super::job::{array, degree_value, field, number, numbers, points, Job};
 use crate::number::{json_type, JsonNumber};
 use crate::repeated;
 use blossom::bezier_curve_blossom;
 use blossom::curve_control_points_from_samples;
+use blossom::restrict_bezier_curve;
 use blossom::Field;
 use blossom::Point;
 use blossom::{bernstein_to_power, elevate, reduce, squared_l2_distance, Reduction};
@@ -58,8 +61,7 @@ use serde_json::{Map, Value};
 /// The kinds answered here.
 pub const KINDS: [&str; 6] = super::job::LATER_KINDS;
 
-/// The largest degree these jobs accept (`degree`, `to_degree`, the degree of a B-spline).
-pub const MAX_DEGREE: usize = 200;
+pub use super::job::MAX_DEGREE;
 
 /// The job object and its kind when `document` is a job of this module.
 pub fn recognise(document: &Value) -> Option<(&Map<String, Value>, &'static str)> {
@@ -115,42 +117,14 @@ pub fn solve<T: JsonNumber + Field>(
     Ok(Value::Object(out))
 }
 
-/// A degree: a non-negative JSON integer or a string of digits, at most [`MAX_DEGREE`].
-fn degree_value(value: &Value, path: &str) -> Result<usize, Error> {
-    let text = match value {
-        Value::Number(n) => n.to_string(),
-        Value::String(s) => s.trim().to_string(),
-        other => {
-            return Err(Error::new(
-                path,
-                format!(
-                    "expected a non-negative integer, found {}",
-                    json_type(other)
-                ),
-            ))
-        }
-    };
-    if text.is_empty() || !text.bytes().all(|b| b.is_ascii_digit()) {
-        return Err(Error::new(
-            path,
-            format!("expected a non-negative integer, found {text:?}"),
-        ));
-    }
-    match text.parse::<usize>() {
-        Ok(d) if d <= MAX_DEGREE => Ok(d),
-        _ => Err(Error::new(
-            path,
-            format!("expected a degree of at most {MAX_DEGREE}, found {text}"),
-        )),
-    }
-}
-
-fn degree_field(job: &Map<String, Value>, name: &str) -> Result<usize, Error> {
+pub(super) fn degree_field(job: &Map<String, Value>, name: &str) -> Result<usize, Error> {
     degree_value(field(job, name)?, name)
 }
 
 /// `control_points` as a Bézier curve over [0, 1].
-fn control_points<T: JsonNumber>(job: &Map<String, Value>) -> Result<BezierCurve<T>, Error> {
+pub(super) fn control_points<T: JsonNumber>(
+    job: &Map<String, Value>,
+) -> Result<BezierCurve<T>, Error> {
     BezierCurve::new(points(
         field(job, "control_points")?,
         "control_points",
@@ -159,7 +133,7 @@ fn control_points<T: JsonNumber>(job: &Map<String, Value>) -> Result<BezierCurve
 }
 
 /// Points as a JSON array; `path` names them in errors (a non-finite f64, say).
-fn points_json<T: JsonNumber>(pts: &[Point<T>], path: &str) -> Result<Value, Error> {
+pub(super) fn points_json<T: JsonNumber>(pts: &[Point<T>], path: &str) -> Result<Value, Error> {
     pts.iter()
         .enumerate()
         .map(|(k, p)| point_json(p, &format!("{path}[{k}]")))
@@ -167,7 +141,7 @@ fn points_json<T: JsonNumber>(pts: &[Point<T>], path: &str) -> Result<Value, Err
         .map(Value::Array)
 }
 
-fn numbers_json<T: JsonNumber>(xs: &[T], path: &str) -> Result<Value, Error> {
+pub(super) fn numbers_json<T: JsonNumber>(xs: &[T], path: &str) -> Result<Value, Error> {
     point_json(&xs.to_vec(), path)
 }
 
@@ -176,8 +150,9 @@ fn numbers_json<T: JsonNumber>(xs: &[T], path: &str) -> Result<Value, Error> {
 ///
 /// `pyramid` evaluates the blossom of the given control points by de Casteljau's pyramid
 /// (eq. (2) of seed 004), `polarisation` samples the curve (by de Casteljau) and applies the
-/// inverse formula (22) of seed 004; every other method writes the curve in the power basis
-/// and restricts it exactly like a `curve` job (Theorem 1, eq. (3), and the rest).
+/// inverse formula (22) of seed 004, `bulk` runs the restriction engine on the control points;
+/// every other method writes the curve in the power basis and restricts it exactly like a
+/// `curve` job (Theorem 1, eq. (3), and the rest).
 fn bezier_curve<T: JsonNumber + Field>(
     job: &Map<String, Value>,
     method: MethodChoice,
@@ -192,6 +167,9 @@ fn bezier_curve<T: JsonNumber + Field>(
             .collect(),
         MethodChoice::Library(Method::Polarisation) => {
             curve_control_points_from_samples(n, &a, &b, &|t| curve.eval(t))
+        }
+        MethodChoice::Library(Method::Bulk) => {
+            restrict_bezier_curve(&curve, &a, &b).into_control_points()
         }
         MethodChoice::Specialised => {
             match super::specialised::specialised_bezier_curve(&curve, &a, &b) {
@@ -285,14 +263,14 @@ fn bspline_answer<T: JsonNumber>(
 }
 
 /// Exact numbers in the arithmetic `T` (rounded once to the nearest double under `f64`).
-fn rounded<T: JsonNumber>(xs: &[Rational]) -> Vec<T> {
+pub(super) fn rounded<T: JsonNumber>(xs: &[Rational]) -> Vec<T> {
     xs.iter().map(T::from_rational).collect()
 }
 
 /// The job with every JSON number that has a fraction part or an exponent (`0.1`, `1e-3`)
 /// replaced by the string of its spelling, so that exact reading takes it as the decimal
 /// written instead of refusing it (see the module documentation).
-fn exact_spelling(job: &Map<String, Value>) -> Map<String, Value> {
+pub(super) fn exact_spelling(job: &Map<String, Value>) -> Map<String, Value> {
     fn convert(value: &Value) -> Value {
         match value {
             Value::Number(n) => {

@@ -46,8 +46,9 @@ mod proof_grid;
 
 #[cfg(feature = "carried-grid")]
 pub use blossom_grid::{
-    grid, restrict_bezier_curve_specialised, restrict_curve_specialised,
-    restrict_tensor_specialised, restrict_triangle_specialised,
+    grid, restrict_bezier_curve_specialised, restrict_bezier_tensor_specialised,
+    restrict_bezier_triangle_specialised, restrict_curve_specialised, restrict_tensor_specialised,
+    restrict_triangle_specialised,
 };
 pub use blossom_grid::{Carried, Scalar};
 #[cfg(feature = "carried-grid")]
@@ -62,7 +63,9 @@ pub use blossom_codegen::{Shape, MAX_CURVE_DEGREE, MAX_TENSOR_DEGREE, MAX_TRIANG
 /// Describes the carried degrees, for the error message of a degree that is not carried.
 pub fn carried_degrees() -> &'static str {
     "curves of degree 1..=16, tensor patches (n, m) with 0 <= n, m <= 5 and triangular patches \
-     (n, m) with 0 <= n, m <= 4, (n, m) = (0, 0) excepted; Bézier curves of degree 1..=16"
+     (n, m) with 0 <= n, m <= 4, (n, m) = (0, 0) excepted; Bézier curves of degree 1..=16, \
+     Bézier tensor-product patches (n, m) with 0 <= n, m <= 4, (n, m) = (0, 0) excepted, and \
+     Bézier triangular patches of degree 1..=6"
 }
 
 /// Whether the binary carries a specialised evaluator for `shape`.
@@ -72,7 +75,8 @@ pub fn carries(shape: Shape) -> bool {
         Shape::Tensor(n, m) => n <= 5 && m <= 5 && (n, m) != (0, 0),
         Shape::Triangle(n, m) => n <= 4 && m <= 4 && (n, m) != (0, 0),
         Shape::BezierCurve(n) => (1..=16).contains(&n),
-        Shape::BezierTensor(..) | Shape::BezierTriangle(_) => false,
+        Shape::BezierTensor(n, m) => n <= 4 && m <= 4 && (n, m) != (0, 0),
+        Shape::BezierTriangle(n) => (1..=6).contains(&n),
     }
 }
 

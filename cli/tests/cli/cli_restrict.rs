@@ -110,7 +110,8 @@ fn unknown_or_unsupported_kind() {
     assert_eq!(
         bad_job(&json!({"kind": "foo"}), "kind"),
         "kind: unknown kind \"foo\" (expected one of curve, tensor, triangle, bezier-curve, \
-         bspline, bspline-eval, rational-curve, elevate, reduce)"
+         bspline, bspline-eval, rational-curve, elevate, reduce, bezier-tensor, bezier-triangle, \
+         derivative, rational-tensor, rational-triangle)"
     );
     // The spline, rational and degree-change kinds are answered (cli_spline_jobs.rs):
     // without their fields they are refused for the first missing one.
@@ -121,6 +122,11 @@ fn unknown_or_unsupported_kind() {
         ("rational-curve", "numerator"),
         ("elevate", "control_points"),
         ("reduce", "control_points"),
+        ("bezier-tensor", "control_points"),
+        ("bezier-triangle", "control_points"),
+        ("derivative", "control_points"),
+        ("rational-tensor", "numerator"),
+        ("rational-triangle", "numerator"),
     ] {
         assert_eq!(
             bad_job(&json!({"kind": kind}), first),

@@ -4,5 +4,6 @@ mod binary;
 #[path = "../../../tests/common/mod.rs"]
 mod common;
 
+mod cli_patch_jobs;
 mod cli_restrict;
 mod cli_spline_jobs;
