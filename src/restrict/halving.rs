@@ -40,8 +40,9 @@ fn reciprocal_binomials<T: Ring>(n: usize) -> impl Iterator<Item = T> {
     })
 }
 
-/// `curve` restricted to [a, b] in the scaled power basis.
-pub(crate) fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCurve<T> {
+/// The coefficients d_i = c_i / C(n, i) of `curve` in the scaled power basis, one contiguous
+/// run of n + 1 points.
+pub(crate) fn scaled_curve<T: Ring>(curve: &PowerCurve<T>) -> Vec<T> {
     let n = curve.degree();
     let dim = curve.dim();
     let mut scaled = Vec::with_capacity((n + 1) * dim);
@@ -52,6 +53,13 @@ pub(crate) fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> Be
     {
         scaled.extend(c.iter().map(|x| x.mul(&k)));
     }
+    scaled
+}
+
+/// `curve` restricted to [a, b] in the scaled power basis.
+pub(crate) fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCurve<T> {
+    let dim = curve.dim();
+    let scaled = scaled_curve(curve);
     let mut out = vec![T::zero(); scaled.len()];
     curve_net(
         &scaled,
@@ -64,8 +72,9 @@ pub(crate) fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> Be
     BezierCurve::new(points_of(&out, dim)).expect("n + 1 points of one dimension")
 }
 
-/// `surface` restricted to `rect = [a, b, c, d]` in the scaled power basis.
-pub(crate) fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> TensorPatch<T> {
+/// The coefficients d_ij = c_ij / (C(n, i) C(m, j)) of `surface` in the scaled tensor power
+/// basis: n + 1 rows of m + 1 points, one contiguous run.
+pub(crate) fn scaled_tensor<T: Ring>(surface: &PowerSurface<T>) -> Vec<T> {
     let (n, m) = surface.degree();
     let dim = surface.dim();
     let along_u: Vec<T> = reciprocal_binomials(n).collect();
@@ -77,6 +86,14 @@ pub(crate) fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4])
             scaled.extend(c.iter().map(|x| x.mul(&k)));
         }
     }
+    scaled
+}
+
+/// `surface` restricted to `rect = [a, b, c, d]` in the scaled power basis.
+pub(crate) fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> TensorPatch<T> {
+    let (_, m) = surface.degree();
+    let dim = surface.dim();
+    let scaled = scaled_tensor(surface);
     let mut out = vec![T::zero(); scaled.len()];
     let steps = rect.each_ref().map(PowerStep);
     tensor_net(
@@ -94,12 +111,10 @@ pub(crate) fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4])
     TensorPatch::new(net).expect("a rectangular net")
 }
 
-/// `surface`, of total degree N = n + m, restricted to the triangle `tri` in the scaled power
-/// basis.
-pub(crate) fn restrict_triangle<T: Ring>(
-    surface: &PowerSurface<T>,
-    tri: &[[T; 2]; 3],
-) -> TriangularPatch<T> {
+/// The coefficients d_ij = c_ij / M(N; i, j) of `surface` as a triangular form of total degree
+/// N = n + m in the scaled power basis, in the lexicographic order of (i, j), one contiguous
+/// run.
+pub(crate) fn scaled_triangle<T: Ring>(surface: &PowerSurface<T>) -> Vec<T> {
     let (n, m) = surface.degree();
     let big_n = n + m;
     let dim = surface.dim();
@@ -116,6 +131,19 @@ pub(crate) fn restrict_triangle<T: Ring>(
             }
         }
     }
+    scaled
+}
+
+/// `surface`, of total degree N = n + m, restricted to the triangle `tri` in the scaled power
+/// basis.
+pub(crate) fn restrict_triangle<T: Ring>(
+    surface: &PowerSurface<T>,
+    tri: &[[T; 2]; 3],
+) -> TriangularPatch<T> {
+    let (n, m) = surface.degree();
+    let big_n = n + m;
+    let dim = surface.dim();
+    let scaled = scaled_triangle(surface);
     let mut out = vec![T::zero(); scaled.len()];
     let steps = tri.each_ref().map(PowerPairStep);
     triangle_net(
