@@ -32,7 +32,7 @@
 //!    [`TriangularPatch`], their evaluation (Horner, de Casteljau) and the changes of basis;
 //! 3. **restriction** (`restrict/`): one file per algorithm, the dispatch on [`Method`];
 //! 4. **applications** (`applications/`): Bézier input, batches, B-splines, rational forms,
-//!    degree change.
+//!    degree change, derivatives.
 //!
 //! The `blossom` binary (the papers' report, the JSON jobs, the carried grid of generated
 //! evaluators and their proofs) is the separate crate `blossom-cli`.
@@ -79,8 +79,9 @@ pub use shape::bezier::{
 };
 pub use shape::halving::{
     curve_net, curve_scratch_len, tensor_net, tensor_scratch_len, triangle_net,
-    triangle_scratch_len, BernsteinPairStep, BernsteinStep, CurveStep, Fixed, PowerPairStep,
-    PowerStep, TriangleStep, Width,
+    triangle_scratch_len, BernsteinPairStep, BernsteinPairVectorStep, BernsteinStep,
+    BernsteinVectorStep, CurveStep, Fixed, PowerPairStep, PowerPairVectorStep, PowerStep,
+    PowerVectorStep, TriangleStep, Width,
 };
 pub use shape::point::Point;
 pub use shape::power::{PowerCurve, PowerSurface};
@@ -109,6 +110,10 @@ pub use applications::batch::{Batch, RestrictionMap, BATCH_LANES};
 pub use applications::degree::{
     bernstein_gram, elevate, elevation_matrix, least_squares_matrix, reduce, squared_l2_distance,
     Reduction,
+};
+pub use applications::derivative::{
+    bezier_derivative, bezier_tensor_derivative, bezier_triangle_derivative,
+    power_curve_derivative, power_tensor_derivative, power_triangle_derivative,
 };
 pub use applications::rational::{
     RationalBSpline, RationalBezierCurve, RationalCurve, RationalPowerTriangle, RationalSurface,

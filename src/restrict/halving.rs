@@ -41,8 +41,9 @@ fn reciprocal_binomials<T: Ring>(n: usize) -> impl Iterator<Item = T> {
     })
 }
 
-/// `curve` restricted to [a, b] in the scaled power basis.
-pub(crate) fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCurve<T> {
+/// The coefficients d_i = c_i / C(n, i) of `curve` in the scaled power basis, one contiguous
+/// run of n + 1 points.
+pub(crate) fn scaled_curve<T: Ring>(curve: &PowerCurve<T>) -> Vec<T> {
     let n = curve.degree();
     let dim = curve.dim();
     let mut scaled = Vec::with_capacity((n + 1) * dim);
@@ -53,6 +54,13 @@ pub(crate) fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> Be
     {
         scaled.extend(c.iter().map(|x| x.mul(&k)));
     }
+    scaled
+}
+
+/// `curve` restricted to [a, b] in the scaled power basis.
+pub(crate) fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCurve<T> {
+    let dim = curve.dim();
+    let scaled = scaled_curve(curve);
     let mut out = vec![T::zero(); scaled.len()];
     curve_net(
         &scaled,
@@ -65,8 +73,9 @@ pub(crate) fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> Be
     BezierCurve::new(points_of(&out, dim)).expect("n + 1 points of one dimension")
 }
 
-/// `surface` restricted to `rect = [a, b, c, d]` in the scaled power basis.
-pub(crate) fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> TensorPatch<T> {
+/// The coefficients d_ij = c_ij / (C(n, i) C(m, j)) of `surface` in the scaled tensor power
+/// basis: n + 1 rows of m + 1 points, one contiguous run.
+pub(crate) fn scaled_tensor<T: Ring>(surface: &PowerSurface<T>) -> Vec<T> {
     let (n, m) = surface.degree();
     let dim = surface.dim();
     let along_u: Vec<T> = reciprocal_binomials(n).collect();
@@ -78,6 +87,14 @@ pub(crate) fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4])
             scaled.extend(c.iter().map(|x| x.mul(&k)));
         }
     }
+    scaled
+}
+
+/// `surface` restricted to `rect = [a, b, c, d]` in the scaled power basis.
+pub(crate) fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> TensorPatch<T> {
+    let (_, m) = surface.degree();
+    let dim = surface.dim();
+    let scaled = scaled_tensor(surface);
     let mut out = vec![T::zero(); scaled.len()];
     let steps = rect.each_ref().map(PowerStep);
     tensor_net(
@@ -95,12 +112,9 @@ pub(crate) fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4])
     TensorPatch::new(net).expect("a rectangular net")
 }
 
-/// `surface`, of total degree N, restricted to the triangle `tri` in the scaled power basis
-/// d_ij = c_ij / M(N; i, j).
-pub(crate) fn restrict_triangle<T: Ring>(
-    surface: &PowerTriangle<T>,
-    tri: &[[T; 2]; 3],
-) -> TriangularPatch<T> {
+/// The coefficients d_ij = c_ij / M(N; i, j) of `surface` (total degree N) as a triangular form
+/// in the scaled power basis, in the lexicographic order of (i, j), one contiguous run.
+pub(crate) fn scaled_triangle<T: Ring>(surface: &PowerTriangle<T>) -> Vec<T> {
     let big_n = surface.degree();
     let dim = surface.dim();
     let mut scaled = vec![T::zero(); triangle_len(big_n) * dim];
@@ -116,6 +130,17 @@ pub(crate) fn restrict_triangle<T: Ring>(
             }
         }
     }
+    scaled
+}
+
+/// `surface`, of total degree N, restricted to the triangle `tri` in the scaled power basis.
+pub(crate) fn restrict_triangle<T: Ring>(
+    surface: &PowerTriangle<T>,
+    tri: &[[T; 2]; 3],
+) -> TriangularPatch<T> {
+    let big_n = surface.degree();
+    let dim = surface.dim();
+    let scaled = scaled_triangle(surface);
     let mut out = vec![T::zero(); scaled.len()];
     let steps = tri.each_ref().map(PowerPairStep);
     triangle_net(

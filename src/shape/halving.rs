@@ -23,6 +23,25 @@
 //! In the Bernstein basis each step is a convex combination when the argument lies in the
 //! reference domain, which is why de Casteljau is stable; the engine does nothing else.
 //!
+//! # Vector arguments
+//!
+//! The blossom extends to a multilinear form of homogeneous arguments: a point is an argument
+//! of weight 1, a vector (a difference of two points) one of weight 0. With weight w the four
+//! steps above read w x + t (y - x), w x + t y, w c + s (a - c) + t (b - c) and
+//! w c + u a + v b, so the steps of a vector argument are [`BernsteinVectorStep`]
+//! (delta (y - x), a forward difference for delta = 1), [`PowerVectorStep`] (delta y, a shift of
+//! the scaled power coefficients for delta = 1), [`BernsteinPairVectorStep`] and
+//! [`PowerPairVectorStep`]. Vector arguments give derivatives (seed 004, eq. (10), and its
+//! generalisation d^k C / dt^k = n! / (n - k)! f(t^(n-k), delta^k)).
+//!
+//! They are step types of their own rather than a weight inside the existing ones, because
+//! the engine's hot loops would then pay one more multiplication per step for every
+//! restriction. They are not mixed with point steps inside one net either: the blossom is
+//! symmetric, so a mixed value f(a^(n-k-j), b^j, delta_1, ..., delta_k) is the net of the form
+//! of degree n - k left after fixing the k vector arguments first ([`curve_fix_in_place`],
+//! [`triangle_fix_in_place`]); [`curve_net`], [`tensor_net`] and [`triangle_net`] are
+//! unchanged and run on that form with the ordinary point steps.
+//!
 //! # Shared work
 //!
 //! A control point of a restriction to [a, b] is q_j = f(a^(n-j), b^j). The left half
@@ -119,6 +138,56 @@ impl<T: Ring> TriangleStep<T> for PowerPairStep<'_, T> {
     fn combine(&self, a: &T, b: &T, c: &T) -> T {
         let [u, v] = self.0;
         c.add(&u.mul(a)).add(&v.mul(b))
+    }
+}
+
+/// The vector argument delta (homogeneous weight 0) of a Bernstein form: delta (y - x). For
+/// delta = 1 a forward difference, the step of a derivative.
+#[derive(Clone, Copy, Debug)]
+pub struct BernsteinVectorStep<'a, T>(pub &'a T);
+
+impl<T: Ring> CurveStep<T> for BernsteinVectorStep<'_, T> {
+    #[inline]
+    fn combine(&self, x: &T, y: &T) -> T {
+        self.0.mul(&y.sub(x))
+    }
+}
+
+/// The vector argument delta (homogeneous weight 0) of a form in the scaled power basis:
+/// delta y. For delta = 1 the shift d_i -> d_(i+1).
+#[derive(Clone, Copy, Debug)]
+pub struct PowerVectorStep<'a, T>(pub &'a T);
+
+impl<T: Ring> CurveStep<T> for PowerVectorStep<'_, T> {
+    #[inline]
+    fn combine(&self, _x: &T, y: &T) -> T {
+        self.0.mul(y)
+    }
+}
+
+/// The barycentric vector argument (s, t, -s - t) (coordinates adding up to 0, homogeneous
+/// weight 0) of a Bernstein triangle: s (a - c) + t (b - c).
+#[derive(Clone, Copy, Debug)]
+pub struct BernsteinPairVectorStep<'a, T>(pub &'a [T; 2]);
+
+impl<T: Ring> TriangleStep<T> for BernsteinPairVectorStep<'_, T> {
+    #[inline]
+    fn combine(&self, a: &T, b: &T, c: &T) -> T {
+        let [s, t] = self.0;
+        s.mul(&a.sub(c)).add(&t.mul(&b.sub(c)))
+    }
+}
+
+/// The vector argument (u, v) (the homogeneous point (u, v, 0)) of a triangular form in the
+/// scaled power basis: u a + v b.
+#[derive(Clone, Copy, Debug)]
+pub struct PowerPairVectorStep<'a, T>(pub &'a [T; 2]);
+
+impl<T: Ring> TriangleStep<T> for PowerPairVectorStep<'_, T> {
+    #[inline]
+    fn combine(&self, a: &T, b: &T, _c: &T) -> T {
+        let [u, v] = self.0;
+        u.mul(a).add(&v.mul(b))
     }
 }
 
@@ -668,6 +737,52 @@ pub(crate) fn triangle_blossom_in_place<T: Ring, S: TriangleStep<T>>(
     for (r, step) in args.iter().enumerate() {
         triangle_step_in_place(level, n - r, dim, step);
     }
+}
+
+/// Fixes the arguments `args` of the blossom of the curve-like form `level` (n + 1 points of
+/// `dim` numbers, n >= `args.len()`), in place: afterwards the first `(n + 1 - args.len()) *
+/// dim` numbers of `level`, whose count is returned, hold the form of degree n - `args.len()`
+/// whose blossom is f(args, ·). One step per argument, as in [`curve_blossom_in_place`].
+///
+/// # Panics
+/// If `level` is not a whole number of points or has fewer than `args.len() + 1` of them.
+pub(crate) fn curve_fix_in_place<T: Ring, S: CurveStep<T>>(
+    level: &mut [T],
+    dim: usize,
+    args: &[S],
+) -> usize {
+    let len = level.len();
+    assert!(
+        dim > 0 && len % dim == 0 && len / dim > args.len(),
+        "at most n arguments for n + 1 points"
+    );
+    for (r, step) in args.iter().enumerate() {
+        step_left(&mut level[..len - r * dim], dim, step);
+    }
+    len - args.len() * dim
+}
+
+/// Fixes the arguments `args` of the blossom of the triangular form `level` (degree `n >=
+/// args.len()`), in place: afterwards the first `triangle_len(n - args.len()) * dim` numbers
+/// of `level` hold the triangular form of degree n - `args.len()` (in the same lexicographic
+/// order) whose blossom is f(args, ·); its degree is returned.
+///
+/// # Panics
+/// If `level` does not hold `triangle_len(n)` points or `args.len() > n`.
+pub(crate) fn triangle_fix_in_place<T: Ring, S: TriangleStep<T>>(
+    level: &mut [T],
+    n: usize,
+    dim: usize,
+    args: &[S],
+) -> usize {
+    assert!(
+        args.len() <= n && triangle_len(n) * dim == level.len(),
+        "at most n arguments for degree n"
+    );
+    for (r, step) in args.iter().enumerate() {
+        triangle_step_in_place(level, n - r, dim, step);
+    }
+    n - args.len()
 }
 
 /// De Casteljau's subdivision of the Bernstein curve `src` at `t`: `left` receives the

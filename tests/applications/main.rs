@@ -1,5 +1,5 @@
-//! The applications layer of the library: batches, degree change, rational curves and
-//! surfaces, B-splines and the inverse formula for closures.
+//! The applications layer of the library: batches, degree change, derivatives, rational
+//! curves and surfaces, B-splines and the inverse formula for closures.
 
 #[path = "../common/mod.rs"]
 mod common;
@@ -7,6 +7,7 @@ mod json;
 
 mod batched;
 mod degree_change;
+mod derivatives;
 mod inverse_closures;
 mod nurbs_rational;
 mod spline_bspline;
