@@ -9,5 +9,6 @@ mod batched;
 mod degree_change;
 mod inverse_closures;
 mod nurbs_rational;
+mod patch_degree;
 mod spline_bspline;
 mod spline_examples;
