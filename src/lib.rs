@@ -115,6 +115,14 @@ pub use applications::derivative::{
     bezier_derivative, bezier_tensor_derivative, bezier_triangle_derivative,
     power_curve_derivative, power_tensor_derivative, power_triangle_derivative,
 };
+pub use applications::patch_degree::tensor::{
+    elevate_tensor, reduce_tensor, tensor_bernstein_gram, tensor_least_squares_matrix,
+    tensor_squared_l2_distance,
+};
+pub use applications::patch_degree::triangle::{
+    elevate_triangle, reduce_triangle, triangle_bernstein_gram, triangle_elevation_matrix,
+    triangle_least_squares_matrix, triangle_squared_l2_distance,
+};
 pub use applications::rational::{
     RationalBSpline, RationalBezierCurve, RationalCurve, RationalPowerTriangle, RationalSurface,
     RationalTensorPatch, RationalTriangularPatch,
@@ -123,6 +131,7 @@ pub use applications::spline::{
     bspline_basis_on_span, bspline_from_pieces, bspline_from_pieces_with_knots, continuity_at,
     BSpline, BezierPiece, KnotVector, Piece, PowerPiece,
 };
+pub use applications::true_degree::{tensor_true_degree, triangle_true_degree, true_degree};
 pub use shape::subdivide::{
     restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle,
     restrict_bezier_triangle_affine,

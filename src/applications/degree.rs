@@ -177,95 +177,61 @@ pub fn reduce<T: Ring>(
 ///
 /// The matrix is formed exactly before it meets the points, so that floats are rounded only in
 /// the final combination instead of passing through the ill-conditioned normal equations.
+/// The end-point-keeping matrix needs `m >= 1` (error [`ErrorKind::Degree`] on `to_degree`).
 pub fn least_squares_matrix(n: usize, m: usize, method: Reduction) -> Result<Vec<Vec<Rational>>> {
-    let g = bernstein_gram(m, m);
-    let gmn = bernstein_gram(m, n);
-    let unit = |j: usize| -> Vec<Rational> {
-        (0..=n)
-            .map(|k| Rational::from_integer((k == j).into()))
-            .collect()
-    };
-    match method {
-        Reduction::LeastSquares => Ok(product(&linalg::inverse(&g, "to_degree")?, &gmn)),
-        Reduction::LeastSquaresEndpoints => {
-            // rhs_i = (G_mn - G[i][0] e_0 - G[i][m] e_n)_i as rows over the n + 1 inputs.
-            let rhs: Vec<Vec<Rational>> = (1..m)
-                .map(|i| {
-                    (0..=n)
-                        .map(|k| {
-                            let mut r = gmn[i][k].clone();
-                            if k == 0 {
-                                r -= &g[i][0];
-                            }
-                            if k == n {
-                                r -= &g[i][m];
-                            }
-                            r
-                        })
-                        .collect()
-                })
-                .collect();
-            let inner: Vec<Vec<Rational>> = (1..m).map(|i| g[i][1..m].to_vec()).collect();
-            let mut rows = vec![unit(0)];
-            rows.extend(product(&linalg::inverse(&inner, "to_degree")?, &rhs));
-            rows.push(unit(n));
-            Ok(rows)
+    let fixed: &[(usize, usize)] = match method {
+        Reduction::LeastSquares => &[],
+        Reduction::LeastSquaresEndpoints if m == 0 => {
+            return Err(Error::of(
+                ErrorKind::Degree,
+                "to_degree",
+                "a constant cannot keep both end points: to_degree must be >= 1",
+            ))
         }
-        Reduction::Interpolating => Err(Error::of(
-            ErrorKind::Invalid,
-            "method",
-            "the interpolating reduction is the inverse formula, not a least-squares matrix",
-        )),
-    }
+        Reduction::LeastSquaresEndpoints => &[(0, 0), (m, n)],
+        Reduction::Interpolating => return Err(not_a_matrix()),
+    };
+    linalg::least_squares_operator(
+        &bernstein_gram(m, m),
+        &bernstein_gram(m, n),
+        fixed,
+        "to_degree",
+    )
 }
 
-/// The product of two exact matrices (`a` has as many columns as `b` has rows).
-fn product(a: &[Vec<Rational>], b: &[Vec<Rational>]) -> Vec<Vec<Rational>> {
-    let cols = b.first().map_or(0, Vec::len);
-    a.iter()
-        .map(|row| {
-            (0..cols)
-                .map(|c| row.iter().zip(b).map(|(x, r)| x * &r[c]).sum())
-                .collect()
-        })
-        .collect()
+/// The error of asking the interpolating reduction for a least-squares matrix.
+pub(crate) fn not_a_matrix() -> Error {
+    Error::of(
+        ErrorKind::Invalid,
+        "method",
+        "the interpolating reduction is the inverse formula, not a least-squares matrix",
+    )
 }
 
 /// The squared L2 distance int_0^1 |a(t) - b(t)|^2 dt of two Bézier curves over [0, 1] of any
 /// degrees and one dimension, exactly (`a` is elevated to the degree of `b` or vice versa,
 /// and the difference d gives sum_coords d^T G d).
 pub fn squared_l2_distance<T: Ring>(a: &BezierCurve<T>, b: &BezierCurve<T>) -> Result<T> {
-    let dim = a.control_points()[0].len();
-    if b.control_points()[0].len() != dim {
-        return Err(Error::of(
-            ErrorKind::Dimension,
-            "control_points",
-            format!(
-                "curves of dimensions {dim} and {} cannot be compared",
-                b.control_points()[0].len()
-            ),
-        ));
-    }
+    check_same_dimension(a.control_points(), b.control_points(), "curves")?;
     let n = a.degree().max(b.degree());
     let (ea, eb) = (elevate(a, n)?, elevate(b, n)?);
-    let diff: Vec<Point<T>> = ea
-        .control_points()
-        .iter()
-        .zip(eb.control_points())
-        .map(|(p, q)| p.iter().zip(q).map(|(x, y)| x.sub(y)).collect())
-        .collect();
-    let g = bernstein_gram(n, n);
-    let mut acc = T::zero();
-    for (i, di) in diff.iter().enumerate() {
-        for (j, dj) in diff.iter().enumerate() {
-            let dot = di
-                .iter()
-                .zip(dj)
-                .fold(T::zero(), |s, (x, y)| s.add(&x.mul(y)));
-            acc.add_assign(&dot.scale(&g[i][j]));
-        }
+    let diff = linalg::differences(ea.control_points(), eb.control_points());
+    Ok(linalg::gram_quadratic_form(&bernstein_gram(n, n), &diff))
+}
+
+/// An error of kind [`ErrorKind::Dimension`] on `control_points` unless the first points of
+/// `a` and `b` (two `what`, e.g. "curves") have the same number of coordinates.
+pub(crate) fn check_same_dimension<T>(a: &[Point<T>], b: &[Point<T>], what: &str) -> Result<()> {
+    let (da, db) = (a[0].len(), b[0].len());
+    if da == db {
+        Ok(())
+    } else {
+        Err(Error::of(
+            ErrorKind::Dimension,
+            "control_points",
+            format!("{what} of dimensions {da} and {db} cannot be compared"),
+        ))
     }
-    Ok(acc)
 }
 
 #[cfg(test)]

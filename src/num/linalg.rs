@@ -1,6 +1,7 @@
 //! Exact linear algebra: the [`Field`] refinement of [`Ring`] (division and order, for knots,
 //! de Boor weights and Cartesian points of rational curves) and Gaussian elimination with an
-//! exact rational matrix (for the normal equations of least-squares degree reduction).
+//! exact rational matrix, with the few matrix helpers of least-squares degree reduction
+//! (products, Kronecker products, the constrained normal equations, Gram quadratic forms).
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::shape::point::{self, Point};
@@ -123,6 +124,113 @@ pub fn solve_rational_system<T: Ring>(
         ));
     }
     Ok(apply(&inverse(matrix, field)?, rhs, dim))
+}
+
+/// The product of two exact matrices (`a` has as many columns as `b` has rows).
+pub(crate) fn product(a: &[Vec<Rational>], b: &[Vec<Rational>]) -> Vec<Vec<Rational>> {
+    let cols = b.first().map_or(0, Vec::len);
+    a.iter()
+        .map(|row| {
+            (0..cols)
+                .map(|c| row.iter().zip(b).map(|(x, r)| x * &r[c]).sum())
+                .collect()
+        })
+        .collect()
+}
+
+/// The Kronecker product `[i * p + j][k * q + l]` = `a[i][k] b[j][l]` of an exact matrix `a`
+/// with an exact matrix `b` of `p` rows and `q` columns (the matrix of a tensor-product
+/// operator on row-major index pairs).
+pub(crate) fn kronecker(a: &[Vec<Rational>], b: &[Vec<Rational>]) -> Vec<Vec<Rational>> {
+    let mut out = Vec::with_capacity(a.len() * b.len());
+    for ra in a {
+        for rb in b {
+            out.push(
+                ra.iter()
+                    .flat_map(|x| rb.iter().map(move |y| x * y))
+                    .collect(),
+            );
+        }
+    }
+    out
+}
+
+/// The exact matrix R (P rows, Q columns) of the least-squares fit x = R b of a function
+/// sum_k b_k g_k by sum_i x_i f_i, with the unknowns listed in `fixed` pinned:
+/// `(i, k)` imposes x_i = b_k.
+///
+/// `gram[i][j]` = <f_i, f_j> (P x P) and `cross[i][k]` = <f_i, g_k> (P x Q). The free unknowns
+/// F solve the normal equations restricted to F:
+///
+/// sum_{j in F} gram[i][j] x_j = sum_k cross[i][k] b_k - sum_{(j, k) fixed} gram[i][j] b_k,
+/// i in F,
+///
+/// whose right-hand side, written as rows over the Q inputs b, gives the rows of R (pinned
+/// unknowns get the unit row e_k). Fails with [`ErrorKind::Singular`] about `field` when the
+/// restricted Gram matrix is singular (never for the Gram matrix of a basis).
+pub(crate) fn least_squares_operator(
+    gram: &[Vec<Rational>],
+    cross: &[Vec<Rational>],
+    fixed: &[(usize, usize)],
+    field: &str,
+) -> Result<Vec<Vec<Rational>>> {
+    let p = gram.len();
+    let q = cross.first().map_or(0, Vec::len);
+    let mut pinned: Vec<Option<usize>> = vec![None; p];
+    for &(i, k) in fixed {
+        pinned[i] = Some(k);
+    }
+    let free: Vec<usize> = (0..p).filter(|&i| pinned[i].is_none()).collect();
+    let rhs: Vec<Vec<Rational>> = free
+        .iter()
+        .map(|&i| {
+            let mut row = cross[i].clone();
+            for (j, pin) in pinned.iter().enumerate() {
+                if let Some(k) = pin {
+                    row[*k] -= &gram[i][j];
+                }
+            }
+            row
+        })
+        .collect();
+    let inner: Vec<Vec<Rational>> = free
+        .iter()
+        .map(|&i| free.iter().map(|&j| gram[i][j].clone()).collect())
+        .collect();
+    let mut solved = product(&inverse(&inner, field)?, &rhs).into_iter();
+    Ok(pinned
+        .iter()
+        .map(|pin| match pin {
+            Some(k) => (0..q)
+                .map(|c| Rational::from_integer((c == *k).into()))
+                .collect(),
+            None => solved.next().expect("one solved row per free unknown"),
+        })
+        .collect())
+}
+
+/// The quadratic form sum_{i, j} gram[i][j] <d_i, d_j> of points `d` (the squared norm of
+/// sum_i d_i f_i when `gram` is the Gram matrix of the f_i).
+pub(crate) fn gram_quadratic_form<T: Ring>(gram: &[Vec<Rational>], d: &[Point<T>]) -> T {
+    let mut acc = T::zero();
+    for (di, row) in d.iter().zip(gram) {
+        for (dj, g) in d.iter().zip(row) {
+            let dot = di
+                .iter()
+                .zip(dj)
+                .fold(T::zero(), |s, (x, y)| s.add(&x.mul(y)));
+            acc.add_assign(&dot.scale(g));
+        }
+    }
+    acc
+}
+
+/// The coordinate-wise differences `a_i - b_i` of two lists of points.
+pub(crate) fn differences<T: Ring>(a: &[Point<T>], b: &[Point<T>]) -> Vec<Point<T>> {
+    a.iter()
+        .zip(b)
+        .map(|(p, q)| p.iter().zip(q).map(|(x, y)| x.sub(y)).collect())
+        .collect()
 }
 
 #[cfg(test)]

@@ -10,5 +10,6 @@ mod degree_change;
 mod derivatives;
 mod inverse_closures;
 mod nurbs_rational;
+mod patch_degree;
 mod spline_bspline;
 mod spline_examples;
