@@ -25,6 +25,9 @@ pub enum Shape {
     /// A surface sum_{i<=n, j<=m} c_ij u^i v^j of total degree `N = n + m` restricted to a
     /// triangle (eq. (14)).
     Triangle(usize, usize),
+    /// A surface sum_{i+j<=N} c_ij u^i v^j given by its triangular array, of total degree `N`,
+    /// restricted to a triangle (eq. (14) over the array).
+    TriangleTotal(usize),
     /// A Bézier curve of degree `n` over [0, 1], given by its control points, restricted to an
     /// interval (forward differences, then eq. (3) without its denominators).
     BezierCurve(usize),
@@ -43,6 +46,7 @@ impl Shape {
             Shape::Curve(_) => "curve",
             Shape::Tensor(..) => "tensor",
             Shape::Triangle(..) => "triangle",
+            Shape::TriangleTotal(_) => "triangle_total",
             Shape::BezierCurve(_) => "bezier_curve",
             Shape::BezierTensor(..) => "bezier_tensor",
             Shape::BezierTriangle(_) => "bezier_triangle",
@@ -60,7 +64,10 @@ impl Shape {
     /// The degree as written in the macro input: `3` for a curve, `(3, 2)` for a surface.
     pub fn degree_text(self) -> String {
         match self {
-            Shape::Curve(n) | Shape::BezierCurve(n) | Shape::BezierTriangle(n) => n.to_string(),
+            Shape::Curve(n)
+            | Shape::BezierCurve(n)
+            | Shape::BezierTriangle(n)
+            | Shape::TriangleTotal(n) => n.to_string(),
             Shape::Tensor(n, m) | Shape::Triangle(n, m) | Shape::BezierTensor(n, m) => {
                 format!("({n}, {m})")
             }
@@ -73,6 +80,7 @@ impl Shape {
             Shape::Curve(n) => format!("restrict_curve_{n}"),
             Shape::Tensor(n, m) => format!("restrict_tensor_{n}_{m}"),
             Shape::Triangle(n, m) => format!("restrict_triangle_{n}_{m}"),
+            Shape::TriangleTotal(n) => format!("restrict_triangle_total_{n}"),
             Shape::BezierCurve(n) => format!("restrict_bezier_curve_{n}"),
             Shape::BezierTensor(n, m) => format!("restrict_bezier_tensor_{n}_{m}"),
             Shape::BezierTriangle(n) => format!("restrict_bezier_triangle_{n}"),
@@ -99,6 +107,10 @@ impl Shape {
                  the unrolled eq. (14) grows like N^4 terms (see the blossom-macros docs)",
                 n + m
             )),
+            Shape::TriangleTotal(n) if n > MAX_TRIANGLE_DEGREE => Err(format!(
+                "triangle total degree N = {n} is above the limit {MAX_TRIANGLE_DEGREE}: the \
+                 unrolled eq. (14) grows like N^5 terms (see the blossom-macros docs)"
+            )),
             Shape::BezierTriangle(n) if n > MAX_BEZIER_TRIANGLE_DEGREE => Err(format!(
                 "Bézier triangle degree {n} is above the limit {MAX_BEZIER_TRIANGLE_DEGREE}: its \
                  power form has (N+1)(N+2)/2 coefficients and the unrolled eq. (14) grows like \
@@ -116,6 +128,7 @@ impl fmt::Display for Shape {
             Shape::Curve(n) => write!(f, "curve {n}"),
             Shape::Tensor(n, m) => write!(f, "tensor {n} {m}"),
             Shape::Triangle(n, m) => write!(f, "triangle {n} {m}"),
+            Shape::TriangleTotal(n) => write!(f, "triangle-total {n}"),
             Shape::BezierCurve(n) => write!(f, "bezier-curve {n}"),
             Shape::BezierTensor(n, m) => write!(f, "bezier-tensor {n} {m}"),
             Shape::BezierTriangle(n) => write!(f, "bezier-triangle {n}"),

@@ -8,7 +8,7 @@ use syn::{Expr, Ident, Lit, UnOp, Visibility};
 
 const KEYS: &str = "`vis`, `name`, `shape`, `degree`";
 const SHAPES: &str =
-    "`curve`, `tensor`, `triangle`, `bezier_curve`, `bezier_tensor` or `bezier_triangle`";
+    "`curve`, `tensor`, `triangle`, `triangle_total`, `bezier_curve`, `bezier_tensor` or `bezier_triangle`";
 
 /// Collects errors so that one expansion reports every problem at once.
 #[derive(Default)]
@@ -69,6 +69,7 @@ fn shape_keyword(entry: &RawEntry) -> syn::Result<(String, Span)> {
         "curve",
         "tensor",
         "triangle",
+        "triangle_total",
         "bezier_curve",
         "bezier_tensor",
         "bezier_triangle",
@@ -225,12 +226,16 @@ pub fn validate(raw: RawInput) -> syn::Result<Spec> {
             ("bezier_curve", &[n]) => Ok(Shape::BezierCurve(n)),
             ("bezier_tensor", &[n, m]) => Ok(Shape::BezierTensor(n, m)),
             ("bezier_triangle", &[n]) => Ok(Shape::BezierTriangle(n)),
+            ("triangle_total", &[n]) => Ok(Shape::TriangleTotal(n)),
             ("curve" | "bezier_curve", _) => Err("a curve has one degree, as in `degree = 3`"),
             ("tensor" | "bezier_tensor", _) => {
                 Err("a tensor patch has a degree in u and one in v, as in `degree = (3, 2)`")
             }
             ("bezier_triangle", _) => {
                 Err("a triangular Bézier patch has one total degree N, as in `degree = 3`")
+            }
+            ("triangle_total", _) => {
+                Err("a triangular array has one total degree N, as in `degree = 3`")
             }
             _ => Err(
                 "a triangular patch takes the degrees (n, m) of u and v, as in `degree = (3, 2)`",
@@ -294,7 +299,7 @@ mod tests {
             check(quote!(nme = f, shape = circle, degree = -1)).unwrap_err(),
             "unknown key `nme`: expected one of `vis`, `name`, `shape`, `degree` \
              | missing key `name`: add `name = restrict_cubic` \
-             | unknown shape `circle`: expected `curve`, `tensor`, `triangle`, `bezier_curve`, `bezier_tensor` or `bezier_triangle` \
+             | unknown shape `circle`: expected `curve`, `tensor`, `triangle`, `triangle_total`, `bezier_curve`, `bezier_tensor` or `bezier_triangle` \
              | degree must be non-negative, found `- 1`"
         );
         assert_eq!(

@@ -10,7 +10,7 @@
 
 use crate::{Carried, Scalar};
 use blossom::Point;
-use blossom::{BezierCurve, PowerCurve, PowerSurface, TensorPatch, TriangularPatch};
+use blossom::{BezierCurve, PowerCurve, PowerSurface, PowerTriangle, TensorPatch, TriangularPatch};
 
 /// One coordinate of a curve's input (power coefficients or control points), and the answer.
 type CurveColumn = dyn Fn(&[Scalar], &Scalar, &Scalar) -> Option<Vec<Scalar>>;
@@ -95,6 +95,22 @@ pub mod grid {
                     $($n => {
                         let ctrl = std::array::from_fn(|k| [input[k].clone()]);
                         $name::<Scalar, 1>(&ctrl, tri).into_iter().map(|[w]| w).collect()
+                    })*
+                    _ => return None,
+                })
+            }
+        };
+        (triangle_total $dispatch:ident: $($n:tt => $name:ident,)*) => {
+            $( blossom::restriction!(#[inline(never)] vis = pub, name = $name, shape = triangle_total, degree = $n); )*
+            /// One coordinate of a triangular array of total degree `degree` (rows one after
+            /// the other) on a triangle by the carried evaluator of that degree among those
+            /// listed; `None` when it is not among them.
+            #[inline(never)]
+            pub fn $dispatch(degree: usize, input: &[Scalar], tri: &[[Scalar; 2]; 3]) -> Option<Vec<Scalar>> {
+                Some(match degree {
+                    $($n => {
+                        let coef = std::array::from_fn(|k| [input[k].clone()]);
+                        $name::<Scalar, 1>(&coef, tri).into_iter().map(|[w]| w).collect()
                     })*
                     _ => return None,
                 })
@@ -235,6 +251,16 @@ pub mod grid {
     (4, 2) => triangle_4_2,
     (4, 3) => triangle_4_3,
     (4, 4) => triangle_4_4,
+    }
+
+    // Triangular arrays of a given total degree (`"total_degree"` on a `triangle` job).
+    carry! { triangle_total triangle_total_carried:
+    1 => triangle_total_1,
+    2 => triangle_total_2,
+    3 => triangle_total_3,
+    4 => triangle_total_4,
+    5 => triangle_total_5,
+    6 => triangle_total_6,
     }
 
     // Bézier input of the `bezier-tensor` and `bezier-triangle` jobs (de Casteljau's steps
@@ -412,6 +438,37 @@ pub fn restrict_bezier_triangle_specialised<T: Carried>(
     for x in 0..dim {
         let ctrl: Vec<Scalar> = patch.control_points().iter().map(|p| p[x].wrap()).collect();
         let out = grid::bezier_triangle_carried(big_n, &ctrl, &tri)?;
+        for (p, w) in points.iter_mut().zip(out) {
+            p.push(T::unwrap(w));
+        }
+    }
+    Some(TriangularPatch::new(big_n, points).expect("a full triangular net"))
+}
+
+/// `surface`, a triangular array of total degree N, restricted to the triangle `tri` by the
+/// generated evaluator of its degree (eq. (14) over the array, unrolled); `None` when not
+/// carried, or when the array is not a full triangular array (a grid taken at degree N).
+pub fn restrict_power_triangle_specialised<T: Carried>(
+    surface: &PowerTriangle<T>,
+    tri: &[[T; 2]; 3],
+) -> Option<TriangularPatch<T>> {
+    let big_n = surface.degree();
+    let rows = surface.rows();
+    if rows.len() != big_n + 1
+        || rows
+            .iter()
+            .enumerate()
+            .any(|(i, r)| r.len() != big_n + 1 - i)
+    {
+        return None;
+    }
+    let tri = tri
+        .each_ref()
+        .map(|corner| corner.each_ref().map(Carried::wrap));
+    let mut points = vec![Vec::with_capacity(surface.dim()); blossom::triangle_len(big_n)];
+    for x in 0..surface.dim() {
+        let coef: Vec<Scalar> = rows.iter().flatten().map(|c| c[x].wrap()).collect();
+        let out = grid::triangle_total_carried(big_n, &coef, &tri)?;
         for (p, w) in points.iter_mut().zip(out) {
             p.push(T::unwrap(w));
         }

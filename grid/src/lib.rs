@@ -15,7 +15,8 @@ mod scalar;
 #[cfg(feature = "carried")]
 pub use carried::{
     grid, restrict_bezier_curve_specialised, restrict_bezier_tensor_specialised,
-    restrict_bezier_triangle_specialised, restrict_curve_specialised, restrict_tensor_specialised,
+    restrict_bezier_triangle_specialised, restrict_curve_specialised,
+    restrict_power_triangle_specialised, restrict_tensor_specialised,
     restrict_triangle_specialised,
 };
 pub use scalar::{Carried, Scalar};

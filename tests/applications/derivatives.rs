@@ -7,10 +7,9 @@ use crate::common::{exact, q, Rng};
 use blossom::{
     bernstein_to_power, bezier_derivative, bezier_tensor_derivative, bezier_triangle_derivative,
     power_curve_derivative, power_tensor_derivative, power_triangle_derivative, restrict_curve,
-    PowerTriangle,
     restrict_tensor, restrict_triangle, triangle_bernstein_to_power, triangle_index,
     triangle_power_to_bernstein, BezierCurve, ErrorKind, Method, PowerCurve, PowerSurface,
-    Rational, TensorPatch, TriangularPatch,
+    PowerTriangle, Rational, TensorPatch, TriangularPatch,
 };
 
 type Pt = Vec<Rational>;
@@ -281,7 +280,12 @@ fn power_triangle_derivatives_match_power_differentiation() {
                     Some(acc) => acc.iter().zip(&term).map(|(x, y)| plus(x, y)).collect(),
                 });
             }
-            let got = power_triangle_derivative(&PowerTriangle::from_surface(&surface), &tri, &directions).unwrap();
+            let got = power_triangle_derivative(
+                &PowerTriangle::from_surface(&surface),
+                &tri,
+                &directions,
+            )
+            .unwrap();
             assert_eq!(got.degree(), big_n - k);
             assert_eq!(
                 got.control_points(),
@@ -345,7 +349,9 @@ fn bad_orders_and_directions_are_refused() {
         (vec![vec![]], ErrorKind::Domain, "directions[0]"),
     ];
     for (directions, kind, path) in cases {
-        let e = power_triangle_derivative(&PowerTriangle::from_surface(&surface), &tri, &directions).unwrap_err();
+        let e =
+            power_triangle_derivative(&PowerTriangle::from_surface(&surface), &tri, &directions)
+                .unwrap_err();
         assert_eq!((e.kind(), e.path()), (kind, path), "{directions:?}");
     }
     // A constant has no derivative of order 1 in these functions' convention (order <= degree).
@@ -503,8 +509,15 @@ fn f64_triangle_derivatives_are_close_to_the_exact_ones_of_the_same_inputs() {
         let plane = [vec![0.625, -0.5], vec![0.25, 1.0]];
         for k in [1usize, n / 2] {
             let dirs64: Vec<Vec<f64>> = (0..k).map(|i| plane[i % 2].clone()).collect();
-            let got = power_triangle_derivative(&PowerTriangle::from_surface(&s64), &tri64, &dirs64).unwrap();
-            let want = power_triangle_derivative(&PowerTriangle::from_surface(&s), &tri, &exact_directions(&dirs64)).unwrap();
+            let got =
+                power_triangle_derivative(&PowerTriangle::from_surface(&s64), &tri64, &dirs64)
+                    .unwrap();
+            let want = power_triangle_derivative(
+                &PowerTriangle::from_surface(&s),
+                &tri,
+                &exact_directions(&dirs64),
+            )
+            .unwrap();
             worst[1] = worst[1].max(relative_error(got.control_points(), want.control_points()));
         }
         println!(

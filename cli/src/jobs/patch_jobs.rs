@@ -85,6 +85,7 @@ pub fn solve<T: JsonNumber + Field>(
     match kind {
         "bezier-tensor" => bezier_tensor::<T>(job, method, &mut out)?,
         "bezier-triangle" => bezier_triangle::<T>(job, method, &mut out)?,
+        "derivative" => derivative::<T>(job, &mut out)?,
         "rational-tensor" => {
             rational_tensor_input::<T>(job)?;
             let (patch, degree) = rational_tensor_exact(&exact_spelling(job))?;
@@ -447,6 +448,29 @@ fn bezier_triangle<T: JsonNumber + Field>(
     out.insert(
         "control_points".into(),
         Value::Array(triangle_entries(&net, None)?),
+    );
+    Ok(())
+}
+
+/// The control points of the `order`-th derivative of the Bézier curve over [0, 1].
+fn derivative<T: JsonNumber + Field>(
+    job: &Map<String, Value>,
+    out: &mut Map<String, Value>,
+) -> Result<(), Error> {
+    let curve = super::spline_jobs::control_points::<T>(job)?;
+    let k = degree_value(field(job, "order")?, "order")?;
+    let n = curve.degree();
+    if k > n {
+        return Err(Error::new(
+            "order",
+            format!("expected an order of at most {n} (the curve's degree), found {k}"),
+        ));
+    }
+    let hodograph = blossom::bezier_derivative(&curve, k)?;
+    out.insert("degree".into(), Value::from(n - k));
+    out.insert(
+        "control_points".into(),
+        points_json(hodograph.control_points(), "control_points")?,
     );
     Ok(())
 }

@@ -50,25 +50,21 @@ pub fn specialised<T: crate::specialised::Carried>(
                 Shape::Triangle(n, m),
             )
         }
-        Job::TotalDegreeTriangle { surface, .. } => {
-            return Some(Err(Error::new(
-                "--method",
-                format!(
-                    "no specialised evaluator for a triangular array of total degree {}: this \
-                     binary carries {}",
-                    surface.degree(),
-                    carried_degrees()
-                ),
-            )));
-        }
+        Job::TotalDegreeTriangle { surface, triangle } => (
+            crate::specialised::restrict_power_triangle_specialised(surface, triangle)
+                .map(Answer::Triangle),
+            Shape::TriangleTotal(surface.degree()),
+        ),
+    };
+    let what = match shape {
+        Shape::TriangleTotal(n) => format!("triangular array of total degree {n}"),
+        _ => format!("{} of degree {}", shape.keyword(), shape.degree_text()),
     };
     Some(answer.ok_or_else(|| {
         Error::new(
             "--method",
             format!(
-                "no specialised evaluator for a {} of degree {}: this binary carries {}",
-                shape.keyword(),
-                shape.degree_text(),
+                "no specialised evaluator for a {what}: this binary carries {}",
                 carried_degrees()
             ),
         )

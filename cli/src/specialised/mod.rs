@@ -47,7 +47,8 @@ mod proof_grid;
 #[cfg(feature = "carried-grid")]
 pub use blossom_grid::{
     grid, restrict_bezier_curve_specialised, restrict_bezier_tensor_specialised,
-    restrict_bezier_triangle_specialised, restrict_curve_specialised, restrict_tensor_specialised,
+    restrict_bezier_triangle_specialised, restrict_curve_specialised,
+    restrict_power_triangle_specialised, restrict_tensor_specialised,
     restrict_triangle_specialised,
 };
 pub use blossom_grid::{Carried, Scalar};
@@ -63,7 +64,8 @@ pub use blossom_codegen::{Shape, MAX_CURVE_DEGREE, MAX_TENSOR_DEGREE, MAX_TRIANG
 /// Describes the carried degrees, for the error message of a degree that is not carried.
 pub fn carried_degrees() -> &'static str {
     "curves of degree 1..=16, tensor patches (n, m) with 0 <= n, m <= 5 and triangular patches \
-     (n, m) with 0 <= n, m <= 4, (n, m) = (0, 0) excepted; Bézier curves of degree 1..=16, \
+     (n, m) with 0 <= n, m <= 4, (n, m) = (0, 0) excepted; triangular arrays (\"total_degree\") of \
+     total degree 1..=6; Bézier curves of degree 1..=16, \
      Bézier tensor-product patches (n, m) with 0 <= n, m <= 4, (n, m) = (0, 0) excepted, and \
      Bézier triangular patches of degree 1..=6"
 }
@@ -76,7 +78,7 @@ pub fn carries(shape: Shape) -> bool {
         Shape::Triangle(n, m) => n <= 4 && m <= 4 && (n, m) != (0, 0),
         Shape::BezierCurve(n) => (1..=16).contains(&n),
         Shape::BezierTensor(n, m) => n <= 4 && m <= 4 && (n, m) != (0, 0),
-        Shape::BezierTriangle(n) => (1..=6).contains(&n),
+        Shape::BezierTriangle(n) | Shape::TriangleTotal(n) => (1..=6).contains(&n),
     }
 }
 
@@ -100,13 +102,13 @@ pub fn expand_source(shape: Shape) -> Result<String, Error> {
 /// returns [`expand_source`] of them. Errors name the offending argument.
 pub fn expand_command<S: AsRef<str>>(args: &[S]) -> Result<String, Error> {
     let args: Vec<&str> = args.iter().map(AsRef::as_ref).collect();
-    let usage = "expected `curve N`, `tensor N M`, `triangle N M`, `bezier-curve N`, \
-                 `bezier-tensor N M` or `bezier-triangle N`";
+    let usage = "expected `curve N`, `tensor N M`, `triangle N M`, `triangle-total N`, \
+                 `bezier-curve N`, `bezier-tensor N M` or `bezier-triangle N`";
     let Some((&kw, degrees)) = args.split_first() else {
         return Err(Error::new("shape", usage));
     };
     let want = match kw {
-        "curve" | "bezier-curve" | "bezier-triangle" => 1,
+        "curve" | "triangle-total" | "bezier-curve" | "bezier-triangle" => 1,
         "tensor" | "triangle" | "bezier-tensor" => 2,
         other => {
             return Err(Error::new(
@@ -140,6 +142,7 @@ pub fn expand_command<S: AsRef<str>>(args: &[S]) -> Result<String, Error> {
         "triangle" => Shape::Triangle(ds[0], ds[1]),
         "bezier-curve" => Shape::BezierCurve(ds[0]),
         "bezier-tensor" => Shape::BezierTensor(ds[0], ds[1]),
+        "triangle-total" => Shape::TriangleTotal(ds[0]),
         _ => Shape::BezierTriangle(ds[0]),
     };
     expand_source(shape)

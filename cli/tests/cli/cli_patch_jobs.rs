@@ -409,8 +409,18 @@ fn bad_input_is_refused_with_the_field() {
             "error: total_degree: expected a non-negative integer"),
         (&[], json!({"kind": "triangle", "total_degree": 1, "coefficients": [[[1], [2]], [[3, 4]]], "triangle": [[0, 0], [1, 0], [0, 1]]}),
             "error: coefficients[1][0]: expected 1 coordinate, found 2"),
-        (&["--method", "specialised"], json!({"kind": "triangle", "total_degree": 1, "coefficients": [[[1], [2]], [[3]]], "triangle": [[0, 0], [1, 0], [0, 1]]}),
-            "error: --method: no specialised evaluator for a triangular array of total degree 1"),
+        (&["--method", "specialised"], json!({"kind": "triangle", "total_degree": 7,
+            "coefficients": (0..=7).map(|i| vec![json!([1]); 8 - i]).collect::<Vec<_>>(), "triangle": [[0, 0], [1, 0], [0, 1]]}),
+            "error: --method: no specialised evaluator for a triangular array of total degree 7"),
+        // Derivatives of an order above the degree, or not an order.
+        (&[], json!({"kind": "derivative", "control_points": [[0], [1], [3]], "order": 3}),
+            "error: order: expected an order of at most 2 (the curve's degree), found 3"),
+        (&[], json!({"kind": "derivative", "control_points": [[0], [1], [3]], "order": -1}),
+            "error: order: expected a non-negative integer"),
+        (&[], json!({"kind": "derivative", "control_points": [[0], [1], [3]]}),
+            "error: order: missing field"),
+        (&[], json!({"kind": "derivative", "control_points": [[0], [1, 2]], "order": 1}),
+            "error: control_points[1]: expected 1 coordinate, found 2"),
         (&[], json!({"kind": "rational-triangle", "total_degree": 1, "numerator": [[[0], [1]], [[1]]], "denominator": [[1, 0], [1, 0]], "triangle": [[0, 0], [1, 0], [0, 1]]}),
             "error: denominator[1]: expected 1 numbers (row 1 of a triangular array of total degree 1"),
         // Zero weights.
@@ -452,4 +462,33 @@ fn bad_input_is_refused_with_the_field() {
         &json!({"kind": "bezier-triangle", "control_points": full, "triangle": [[1, 0, 0], [0.5, 0.5, 1e-12], [0, 0, 1]]}),
     );
     assert_eq!(ok["degree"], json!(1));
+}
+
+#[test]
+fn derivatives_are_scaled_forward_differences() {
+    // The contract's formula, computed here: n!/(n-k)! times the k-th forward differences.
+    let mut rng = Rng(0xde_71);
+    for n in [0usize, 1, 3, 6, 11] {
+        let b: Vec<Vec<Rational>> = (0..=n).map(|_| rng.point(2)).collect();
+        let pts: Vec<Value> = b.iter().map(|p| point_json(p)).collect();
+        for k in 0..=n {
+            let job = json!({"kind": "derivative", "control_points": pts, "order": k});
+            let got = answer(&job);
+            assert_eq!(got["degree"], json!(n - k));
+            let mut diff = b.clone();
+            for _ in 0..k {
+                diff = diff
+                    .windows(2)
+                    .map(|w| w[1].iter().zip(&w[0]).map(|(x, y)| x.sub(y)).collect())
+                    .collect();
+            }
+            let scale = Rational::from_integer(((n - k + 1)..=n).product::<usize>().into());
+            let want: Vec<Value> = diff
+                .iter()
+                .map(|p| point_json(&p.iter().map(|x| x.mul(&scale)).collect::<Vec<_>>()))
+                .collect();
+            assert_eq!(got["control_points"], json!(want), "n = {n}, k = {k}");
+            close(&got, &answer_with(&["--arithmetic", "f64"], &job));
+        }
+    }
 }

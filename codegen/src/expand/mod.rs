@@ -30,6 +30,7 @@ pub fn expand(spec: &Spec) -> syn::Result<TokenStream> {
         Shape::Curve(n) => curve::expand(spec, n),
         Shape::Tensor(n, m) => tensor::expand(spec, n, m),
         Shape::Triangle(n, m) => triangle::expand(spec, n, m),
+        Shape::TriangleTotal(n) => triangle::expand_total(spec, n),
         Shape::BezierCurve(n) => Some(casteljau::curve(spec, n)),
         Shape::BezierTensor(n, m) => Some(casteljau::tensor(spec, n, m)),
         Shape::BezierTriangle(n) => Some(casteljau::triangle(spec, n)),
