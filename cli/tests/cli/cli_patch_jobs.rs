@@ -492,3 +492,26 @@ fn derivatives_are_scaled_forward_differences() {
         }
     }
 }
+
+/// Small worked answers of every job of this section, for review in the snapshot.
+#[test]
+fn answers_snapshot() {
+    let jobs = [
+        json!({"kind": "bezier-tensor", "control_points": [[[0, 0], [1, 2]], [[2, 1], [3, 3]]], "rectangle": ["1/2", 1, 0, "1/3"]}),
+        json!({"kind": "bezier-triangle", "control_points": [
+            {"a": 2, "b": 0, "c": 0, "point": [1]}, {"a": 0, "b": 2, "c": 0, "point": [2]},
+            {"a": 0, "b": 0, "c": 2, "point": [3]}, {"a": 1, "b": 1, "c": 0, "point": [4]},
+            {"a": 1, "b": 0, "c": 1, "point": [5]}, {"a": 0, "b": 1, "c": 1, "point": [6]}],
+            "triangle": [["1/2", "1/4", "1/4"], [0, 1, 0], [0, 0, 1]]}),
+        json!({"kind": "triangle", "total_degree": 2, "coefficients": [[[1], [2], [3]], [[4], [5]], [[6]]], "triangle": [[0, 0], [1, 0], [0, 1]]}),
+        json!({"kind": "derivative", "control_points": [[0, 0], [1, 2], [3, 3], [4, 0]], "order": 1}),
+        json!({"kind": "rational-tensor", "numerator": [[[1, 0, 0], [0, 0, 1]], [[0, 2, 0], [0, 0, 0]], [[-1, 0, 0], [0, 0, 1]]],
+            "denominator": [[1], [0], [1]], "rectangle": [0, 1, 0, 1]}),
+        json!({"kind": "rational-triangle", "numerator": [[[0], [1]], [[1], [0]]], "denominator": [[1, 0], [1, 0]],
+            "triangle": [[0, 0], [1, 0], [0, 1]], "degree": 1}),
+    ];
+    let text: Vec<String> = jobs.iter().map(|j| answer(j).to_string()).collect();
+    insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/../snapshots"), prepend_module_to_snapshot => false}, {
+        insta::assert_snapshot!("cli_patch_jobs_answers", text.join("\n"));
+    });
+}

@@ -39,6 +39,14 @@ fn triangle_3_2() {
 }
 
 #[test]
+fn triangle_total_2() {
+    snapshot(
+        "macros_triangle_total_2",
+        &blossom_codegen::source(&Spec::public(Shape::TriangleTotal(2))),
+    );
+}
+
+#[test]
 fn bezier_curve_3() {
     snapshot(
         "macros_bezier_curve_3",
