@@ -161,7 +161,7 @@ fn circle_arc_of_seed_004() {
 
 #[test]
 fn rational_triangles_from_triangular_arrays_and_at_their_true_degree() {
-    let mut rng = Rng(0x2a7_71);
+    let mut rng = Rng(0x2a771);
     let tri = [[q(0, 1), q(1, 3)], [q(1, 2), q(0, 1)], [q(-1, 4), q(1, 2)]];
     let barys = [
         [q(1, 1), q(0, 1), q(0, 1)],

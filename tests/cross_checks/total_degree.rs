@@ -21,7 +21,7 @@ fn random_triangle(rng: &mut Rng) -> [[Rational; 2]; 3] {
 
 #[test]
 fn every_method_restricts_a_triangular_array_exactly() {
-    let mut rng = Rng(0x7d0_7a1);
+    let mut rng = Rng(0x7d07a1);
     for big_n in 0..=7 {
         for _ in 0..3 {
             let s = random_array(&mut rng, big_n, 2);
@@ -48,7 +48,7 @@ fn every_method_restricts_a_triangular_array_exactly() {
 
 #[test]
 fn a_grid_means_the_same_as_its_array_at_degree_n_plus_m() {
-    let mut rng = Rng(0x9_12d);
+    let mut rng = Rng(0x912d);
     for (n, m) in [(0, 1), (1, 1), (2, 1), (1, 3), (3, 2)] {
         let grid = rng.surface(n, m, 2);
         let tri = random_triangle(&mut rng);

@@ -375,7 +375,11 @@ fn barycentric_corners<T: JsonNumber + Field>(value: &Value) -> Result<[[T; 3]; 
             T::from_rational(&Rational::new(1.into(), 1_000_000_000.into()))
         };
         let distance = if off < T::zero() { off.neg() } else { off };
-        if !(distance <= tolerance) {
+        let within = matches!(
+            distance.partial_cmp(&tolerance),
+            Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)
+        );
+        if !within {
             return Err(Error::new(
                 &corner_path,
                 format!(
@@ -545,20 +549,32 @@ fn rational_grids<U: JsonNumber>(job: &Map<String, Value>) -> Result<RationalGri
     })
 }
 
+/// A `rational-tensor` job read in the arithmetic `U`.
+struct RationalTensorJob<U> {
+    grids: RationalGrids<U>,
+    rect: [U; 4],
+    degree: Option<(usize, usize)>,
+}
+
 fn rational_tensor_input<U: JsonNumber>(
     job: &Map<String, Value>,
-) -> Result<(RationalGrids<U>, [U; 4], Option<(usize, usize)>), Error> {
-    let grids = rational_grids::<U>(job)?;
-    let rect = numbers::<U, 4>(field(job, "rectangle")?, "rectangle")?;
-    let degree = optional(job, "degree", degree_pair)?;
-    Ok((grids, rect, degree))
+) -> Result<RationalTensorJob<U>, Error> {
+    Ok(RationalTensorJob {
+        grids: rational_grids::<U>(job)?,
+        rect: numbers::<U, 4>(field(job, "rectangle")?, "rectangle")?,
+        degree: optional(job, "degree", degree_pair)?,
+    })
 }
 
 /// The rational tensor patch of a `rational-tensor` job, computed exactly, and its bidegree.
 fn rational_tensor_exact(
     job: &Map<String, Value>,
 ) -> Result<(blossom::RationalTensorPatch<Rational>, (usize, usize)), Error> {
-    let (grids, rect, degree) = rational_tensor_input::<Rational>(job)?;
+    let RationalTensorJob {
+        grids,
+        rect,
+        degree,
+    } = rational_tensor_input::<Rational>(job)?;
     let surface = RationalSurface::new(&grids.numerator, &grids.denominator)?;
     let degree = degree.unwrap_or(surface.degree());
     Ok((surface.tensor(&rect, Some(degree))?, degree))
@@ -566,9 +582,15 @@ fn rational_tensor_exact(
 
 /// A `rational-triangle` job read in the arithmetic `U`: the surface (from grids, or from
 /// triangular arrays with `"total_degree"`), the triangle and the degree asked for.
+struct RationalTriangleJob<U> {
+    surface: RationalPowerTriangle<U>,
+    triangle: [[U; 2]; 3],
+    degree: Option<usize>,
+}
+
 fn rational_triangle_input<U: JsonNumber + Field>(
     job: &Map<String, Value>,
-) -> Result<(RationalPowerTriangle<U>, [[U; 2]; 3], Option<usize>), Error> {
+) -> Result<RationalTriangleJob<U>, Error> {
     let surface = match optional(job, "total_degree", |v| degree_value(v, "total_degree"))? {
         Some(big_n) => {
             let numerator = triangular_array::<U>(field(job, "numerator")?, "numerator", big_n)?;
@@ -584,13 +606,21 @@ fn rational_triangle_input<U: JsonNumber + Field>(
     };
     let triangle = corners::<U, 3>(field(job, "triangle")?, "triangle")?;
     let degree = optional(job, "degree", |v| degree_value(v, "degree"))?;
-    Ok((surface, triangle, degree))
+    Ok(RationalTriangleJob {
+        surface,
+        triangle,
+        degree,
+    })
 }
 
 /// The rational triangular patch of a `rational-triangle` job, computed exactly.
 fn rational_triangle_exact(
     job: &Map<String, Value>,
 ) -> Result<blossom::RationalTriangularPatch<Rational>, Error> {
-    let (surface, triangle, degree) = rational_triangle_input::<Rational>(job)?;
+    let RationalTriangleJob {
+        surface,
+        triangle,
+        degree,
+    } = rational_triangle_input::<Rational>(job)?;
     surface.triangle(&triangle, degree)
 }

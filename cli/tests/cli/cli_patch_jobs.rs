@@ -122,7 +122,7 @@ fn curve_value(points: &[Vec<Rational>], t: &Rational) -> Vec<Rational> {
 
 #[test]
 fn bezier_tensor_restriction_by_every_method() {
-    let mut rng = Rng(0x7e_5012);
+    let mut rng = Rng(0x7e5012);
     for (n, m) in [(1, 1), (2, 1), (1, 3), (3, 2), (4, 4), (5, 2)] {
         let net: Vec<Vec<Vec<Rational>>> = (0..=n)
             .map(|_| (0..=m).map(|_| rng.point(2)).collect())
@@ -174,7 +174,7 @@ fn shuffled_entries(rng: &mut Rng, big_n: usize, points: &[Vec<Rational>]) -> Ve
 
 #[test]
 fn bezier_triangle_restriction_by_every_method() {
-    let mut rng = Rng(0x7_4a1);
+    let mut rng = Rng(0x74a1);
     for big_n in [1, 2, 3, 5, 6, 7] {
         let points: Vec<Vec<Rational>> = (0..(big_n + 1) * (big_n + 2) / 2)
             .map(|_| rng.point(3))
@@ -234,7 +234,7 @@ fn bezier_triangle_restriction_by_every_method() {
 
 #[test]
 fn triangles_of_a_given_total_degree() {
-    let mut rng = Rng(0x70_7a1);
+    let mut rng = Rng(0x707a1);
     for big_n in [0, 1, 2, 4, 6] {
         let rows: Vec<Vec<Vec<Rational>>> = (0..=big_n)
             .map(|i| (0..=big_n - i).map(|_| rng.point(2)).collect())
@@ -467,7 +467,7 @@ fn bad_input_is_refused_with_the_field() {
 #[test]
 fn derivatives_are_scaled_forward_differences() {
     // The contract's formula, computed here: n!/(n-k)! times the k-th forward differences.
-    let mut rng = Rng(0xde_71);
+    let mut rng = Rng(0xde71);
     for n in [0usize, 1, 3, 6, 11] {
         let b: Vec<Vec<Rational>> = (0..=n).map(|_| rng.point(2)).collect();
         let pts: Vec<Value> = b.iter().map(|p| point_json(p)).collect();
