@@ -112,6 +112,10 @@ pub use applications::spline::{
     bspline_basis_on_span, bspline_from_pieces, bspline_from_pieces_with_knots, continuity_at,
     BSpline, BezierPiece, KnotVector, Piece, PowerPiece,
 };
+pub use applications::spline::{
+    bspline_surface_from_pieces, BSplineSurface, BezierCell, RationalBSplineSurface,
+    RationalBezierCell, SurfacePiece,
+};
 pub use shape::subdivide::{
     restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle,
     restrict_bezier_triangle_affine,

@@ -11,3 +11,4 @@ mod inverse_closures;
 mod nurbs_rational;
 mod spline_bspline;
 mod spline_examples;
+mod spline_surface;
