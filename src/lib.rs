@@ -128,8 +128,9 @@ pub use applications::rational::{
     RationalTensorPatch, RationalTriangularPatch,
 };
 pub use applications::spline::{
-    bspline_basis_on_span, bspline_from_pieces, bspline_from_pieces_with_knots, continuity_at,
-    BSpline, BezierPiece, KnotVector, Piece, PowerPiece,
+    bspline_basis_on_span, bspline_from_pieces, bspline_from_pieces_with_knots,
+    bspline_surface_from_pieces, continuity_at, BSpline, BSplineSurface, BezierCell, BezierPiece,
+    KnotVector, Piece, PowerPiece, RationalBSplineSurface, RationalBezierCell, SurfacePiece,
 };
 pub use applications::true_degree::{tensor_true_degree, triangle_true_degree, true_degree};
 pub use shape::subdivide::{

@@ -10,7 +10,8 @@
 //! same way with the tensor (two passes of (22)) and triangle (eq. (23)) versions.
 //!
 //! Rational B-splines (NURBS) are B-splines of homogeneous control points (w_i d_i, w_i);
-//! [`RationalBSpline`] evaluates them by de Boor's algorithm and projects.
+//! [`RationalBSpline`] evaluates them by de Boor's algorithm and projects (the surfaces,
+//! [`crate::RationalBSplineSurface`], are in `spline/rational_surface.rs`).
 
 use crate::applications::degree::elevate;
 use crate::applications::spline::BSpline;
@@ -180,7 +181,7 @@ fn check_degree(field: &str, degree: usize, own: usize) -> Result<()> {
     }
 }
 
-fn divide_point<T: Field>(p: Point<T>, w: &T) -> Option<Point<T>> {
+pub(crate) fn divide_point<T: Field>(p: Point<T>, w: &T) -> Option<Point<T>> {
     if w.is_zero() {
         None
     } else {
@@ -214,7 +215,8 @@ fn project<T: Field>(
     Ok((points, weights))
 }
 
-fn lift<T: Ring>(b: &[T], w: &T) -> Point<T> {
+/// The homogeneous point (w b, w).
+pub(crate) fn lift<T: Ring>(b: &[T], w: &T) -> Point<T> {
     let mut h: Point<T> = b.iter().map(|x| x.mul(w)).collect();
     h.push(w.clone());
     h
@@ -356,14 +358,7 @@ impl<T: Field> RationalSurface<T> {
         check_degree("degree[1]", m, own.1)?;
         let net =
             tensor_control_points_from_samples((n, m), rect, &|u, v| self.homogeneous.eval(u, v));
-        let mut points = Vec::with_capacity(n + 1);
-        let mut weights = Vec::with_capacity(n + 1);
-        for (nu, row) in net.into_iter().enumerate() {
-            let (p, w) = project(row, "denominator", |mu| format!("weight w_{nu}{mu}"))?;
-            points.push(p);
-            weights.push(w);
-        }
-        Ok(RationalTensorPatch { points, weights })
+        RationalTensorPatch::from_homogeneous(net, "denominator", "")
     }
 
     /// The rational triangular patch on the triangle `tri = [a, b, c]` at total degree
@@ -508,6 +503,23 @@ pub struct RationalTensorPatch<T> {
 }
 
 impl<T: Field> RationalTensorPatch<T> {
+    /// The patch of the homogeneous net `[nu][mu]` = (w b, w), with an error naming `field`
+    /// when a weight w_{nu mu} vanishes (`context` is added to the message).
+    pub(crate) fn from_homogeneous(
+        net: Vec<Vec<Point<T>>>,
+        field: &str,
+        context: &str,
+    ) -> Result<Self> {
+        let mut points = Vec::with_capacity(net.len());
+        let mut weights = Vec::with_capacity(net.len());
+        for (nu, row) in net.into_iter().enumerate() {
+            let (p, w) = project(row, field, |mu| format!("weight w_{nu}{mu}{context}"))?;
+            points.push(p);
+            weights.push(w);
+        }
+        Ok(RationalTensorPatch { points, weights })
+    }
+
     /// The control points `[nu][mu]`.
     pub fn points(&self) -> &[Vec<Point<T>>] {
         &self.points

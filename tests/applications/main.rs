@@ -13,3 +13,4 @@ mod nurbs_rational;
 mod patch_degree;
 mod spline_bspline;
 mod spline_examples;
+mod spline_surface;

@@ -118,22 +118,12 @@ impl<T: Field> BSpline<T> {
     /// i = s - p + r + j (Theorem 2.3), the de Boor points at level 0 and f_s(args) at level p.
     /// `s` must be a non-empty domain span and `args.len()` the degree.
     pub(crate) fn de_boor_table(&self, s: usize, args: &[T]) -> Vec<Vec<Point<T>>> {
-        let p = self.degree();
-        let t = self.knots();
-        debug_assert!(self.knots.is_span(s) && args.len() == p);
-        let mut table = vec![self.control_points[s - p..=s].to_vec()];
-        for (r, x) in (1..=p).zip(args) {
-            let prev = &table[r - 1];
-            let level = (s - p + r..=s)
-                .map(|i| {
-                    let j = i - (s - p + r);
-                    let w = x.sub(&t[i]).divide(&t[i + p + 1 - r].sub(&t[i]));
-                    crate::shape::point::lerp(&prev[j], &prev[j + 1], &w)
-                })
-                .collect();
-            table.push(level);
-        }
-        table
+        de_boor_table(&self.knots, s, self.window(s), args)
+    }
+
+    /// The de Boor points d_{s-p}..d_s that act on span `s`.
+    fn window(&self, s: usize) -> &[Point<T>] {
+        &self.control_points[s - self.degree()..=s]
     }
 
     /// The blossom f_s(args) of the polynomial piece on the non-empty domain span `s`
@@ -165,11 +155,7 @@ impl<T: Field> BSpline<T> {
     }
 
     pub(crate) fn blossom_unchecked(&self, s: usize, args: &[T]) -> Point<T> {
-        let mut table = self.de_boor_table(s, args);
-        table
-            .pop()
-            .and_then(|mut l| l.pop())
-            .expect("level p has one point")
+        de_boor_blossom(&self.knots, s, self.window(s), args)
     }
 
     /// De Boor's full table at parameter t: the span k (0-based) with t_k <= t < t_{k+1} and
@@ -188,22 +174,14 @@ impl<T: Field> BSpline<T> {
 
     /// The Bézier pieces: on every non-empty domain span [a, b], b_i = f_s(a^(p-i), b^i).
     pub fn bezier_pieces(&self) -> Vec<BezierPiece<T>> {
-        let p = self.degree();
         let t = self.knots();
         self.knots
             .spans()
             .into_iter()
-            .map(|s| {
-                let (a, b) = (&t[s], &t[s + 1]);
-                let points = (0..=p)
-                    .map(|i| {
-                        self.blossom_unchecked(s, &crate::restrict::nets::repeated(a, p - i, b, i))
-                    })
-                    .collect();
-                BezierPiece {
-                    interval: [a.clone(), b.clone()],
-                    curve: BezierCurve::new(points).expect("p + 1 points of one dimension"),
-                }
+            .map(|s| BezierPiece {
+                interval: [t[s].clone(), t[s + 1].clone()],
+                curve: BezierCurve::new(bezier_points(&self.knots, s, self.window(s)))
+                    .expect("p + 1 points of one dimension"),
             })
             .collect()
     }
@@ -215,27 +193,106 @@ impl<T: Field> BSpline<T> {
     /// are old points (their knot windows do not contain x). An error names `x` outside the
     /// domain, or `knots` when x would exceed multiplicity p + 1.
     pub fn insert_knot(&self, x: &T) -> Result<BSpline<T>> {
-        let p = self.degree();
-        let s = self
-            .knots
-            .span(x)
-            .map_err(|e| Error::of(e.kind, "x", e.message))?;
-        let mut knots = self.knots().to_vec();
-        knots.insert(s + 1, x.clone());
-        let knots = KnotVector::new(p, knots)?;
-        let new = knots.knots();
-        let old = &self.control_points;
-        let mut points = Vec::with_capacity(old.len() + 1);
-        points.extend_from_slice(&old[..=s - p]);
-        for k in s - p + 1..=s {
-            points.push(self.blossom_unchecked(s, &new[k + 1..=k + p]));
-        }
-        points.extend_from_slice(&old[s..]);
+        let (knots, control_points) = insert_knot(&self.knots, &self.control_points, x)?;
         Ok(BSpline {
             knots,
-            control_points: points,
+            control_points,
         })
     }
+}
+
+// The algorithms on a knot vector and a list of de Boor points of any length. Every step is an
+// affine combination taken coordinate by coordinate, so a point may be a whole row of a
+// surface's control grid flattened into one long point (the tensor-product surfaces of
+// `surface.rs` run the curve algorithms this way, one variable at a time).
+
+/// De Boor's table (Theorem 2.3) on the non-empty domain span `s` of `knots` from the
+/// de Boor points `window` = d_{s-p}..d_s, one argument x_r per level: `table[r][j]` is d_i^r
+/// for i = s - p + r + j, so level 0 is `window` and level p is f_s(args).
+pub(crate) fn de_boor_table<T: Field>(
+    knots: &KnotVector<T>,
+    s: usize,
+    window: &[Point<T>],
+    args: &[T],
+) -> Vec<Vec<Point<T>>> {
+    let p = knots.degree();
+    let t = knots.knots();
+    debug_assert!(knots.is_span(s) && args.len() == p && window.len() == p + 1);
+    let mut table = vec![window.to_vec()];
+    for (r, x) in (1..=p).zip(args) {
+        let prev = &table[r - 1];
+        let level = (s - p + r..=s)
+            .map(|i| {
+                let j = i - (s - p + r);
+                let w = x.sub(&t[i]).divide(&t[i + p + 1 - r].sub(&t[i]));
+                crate::shape::point::lerp(&prev[j], &prev[j + 1], &w)
+            })
+            .collect();
+        table.push(level);
+    }
+    table
+}
+
+/// The blossom f_s(args) on the non-empty domain span `s` from the de Boor points
+/// `window` = d_{s-p}..d_s: the last level of [`de_boor_table`].
+pub(crate) fn de_boor_blossom<T: Field>(
+    knots: &KnotVector<T>,
+    s: usize,
+    window: &[Point<T>],
+    args: &[T],
+) -> Point<T> {
+    de_boor_table(knots, s, window, args)
+        .pop()
+        .and_then(|mut l| l.pop())
+        .expect("level p has one point")
+}
+
+/// The Bézier points b_i = f_s(a^(p-i), b^i), i = 0..=p, of the piece on the non-empty domain
+/// span `s` = [a, b] from the de Boor points `window` = d_{s-p}..d_s.
+pub(crate) fn bezier_points<T: Field>(
+    knots: &KnotVector<T>,
+    s: usize,
+    window: &[Point<T>],
+) -> Vec<Point<T>> {
+    let p = knots.degree();
+    let (a, b) = (&knots.knots()[s], &knots.knots()[s + 1]);
+    (0..=p)
+        .map(|i| {
+            de_boor_blossom(
+                knots,
+                s,
+                window,
+                &crate::restrict::nets::repeated(a, p - i, b, i),
+            )
+        })
+        .collect()
+}
+
+/// The knot vector and de Boor points `points` (all m of them) with `x` inserted once:
+/// with x in the span s, d'_k = f_s(t'_{k+1}, ..., t'_{k+p}) for k = s - p + 1..=s (Theorem
+/// 2.2 on the new knot vector T'), the other points unchanged. An error names `x` outside the
+/// domain, or `knots[i]` when x would exceed multiplicity p + 1.
+pub(crate) fn insert_knot<T: Field>(
+    knots: &KnotVector<T>,
+    points: &[Point<T>],
+    x: &T,
+) -> Result<(KnotVector<T>, Vec<Point<T>>)> {
+    let p = knots.degree();
+    let s = knots
+        .span(x)
+        .map_err(|e| Error::of(e.kind, "x", e.message))?;
+    let mut new = knots.knots().to_vec();
+    new.insert(s + 1, x.clone());
+    let new = KnotVector::new(p, new)?;
+    let t = new.knots();
+    let window = &points[s - p..=s];
+    let mut out = Vec::with_capacity(points.len() + 1);
+    out.extend_from_slice(&points[..=s - p]);
+    for k in s - p + 1..=s {
+        out.push(de_boor_blossom(knots, s, window, &t[k + 1..=k + p]));
+    }
+    out.extend_from_slice(&points[s..]);
+    Ok((new, out))
 }
 
 #[cfg(test)]

@@ -3,6 +3,8 @@
 //! evaluation (Theorem 2.3), piecewise polynomials as B-splines (Curry-Schoenberg, Theorem 2.4),
 //! knot insertion and the split into Bézier pieces; and, independently of blossoms, the
 //! normalised B-splines by their recursive definition (Definition 1.1) as a cross-check.
+//! Tensor-product surfaces (`surface.rs`, `surface_pieces.rs`) run the curve algorithms in one
+//! variable at a time; their rational (NURBS) form is `rational_surface.rs`.
 //!
 //! Knots and points share one number type, a [`Field`](crate::num::linalg::Field): exact
 //! [`Rational`](crate::Rational) or `f64`.
@@ -11,6 +13,9 @@ pub(crate) mod bspline;
 pub(crate) mod cox_de_boor;
 pub(crate) mod curry_schoenberg;
 pub(crate) mod knots;
+pub(crate) mod rational_surface;
+pub(crate) mod surface;
+pub(crate) mod surface_pieces;
 
 pub use bspline::{BSpline, BezierPiece};
 pub use cox_de_boor::{bspline_basis_on_span, PowerPiece};
@@ -18,3 +23,6 @@ pub use curry_schoenberg::{
     bspline_from_pieces, bspline_from_pieces_with_knots, continuity_at, Piece,
 };
 pub use knots::KnotVector;
+pub use rational_surface::{RationalBSplineSurface, RationalBezierCell};
+pub use surface::{BSplineSurface, BezierCell};
+pub use surface_pieces::{bspline_surface_from_pieces, SurfacePiece};

@@ -1,0 +1,335 @@
+//! Tensor-product B-spline surfaces through blossoms: Theorems 2.2 and 2.3 of seed 002 in each
+//! variable.
+//!
+//! A B-spline surface of bidegree (p, q) on the knot vectors T = (t_1, ..., t_{m+p+1}) in u and
+//! S = (s_1, ..., s_{n+q+1}) in v is F(u, v) = sum_k sum_l d_kl N_k^p(u) N_l^q(v). On a
+//! non-empty cell [t_σ, t_{σ+1}) x [s_τ, s_{τ+1}) it is one polynomial F_στ of bidegree
+//! (p, q), whose tensor blossom f_στ(u_1..u_p; v_1..v_q) is symmetric and multi-affine in each
+//! group of arguments. For fixed v-arguments, F is a B-spline curve in u whose de Boor points
+//! are the v-curves of the rows of the grid, so Theorem 2.2 applied in u and then in v gives
+//!
+//! d_kl = f_στ(t_{k+1}, ..., t_{k+p}; s_{l+1}, ..., s_{l+q}),  σ - p <= k <= σ, τ - q <= l <= τ,
+//!
+//! and de Boor's algorithm (Theorem 2.3) computes the blossom in two passes: **first along v
+//! for every row** k = σ - p..=σ (the curve de Boor algorithm on d_k,τ-q..d_k,τ with the
+//! v-arguments), **then along u on the resulting column** of p + 1 points with the u-arguments
+//! (the order of [`crate::bezier_tensor_blossom`]). The blossom is the same in the other order;
+//! with all u_r = u and v_r = v it is F(u, v).
+//!
+//! Knot insertion and the Bézier patches run the curve algorithms of `bspline.rs` in one
+//! variable at a time: a whole row of the grid, flattened into one long point, is a single
+//! de Boor point of a curve in u.
+
+use super::bspline::{bezier_points, de_boor_blossom, insert_knot};
+use super::knots::KnotVector;
+use crate::error::{Error, ErrorKind, Result};
+use crate::num::linalg::Field;
+use crate::shape::bezier::TensorPatch;
+use crate::shape::point::{flatten, unflatten, Point};
+
+/// A tensor-product B-spline surface of bidegree (p, q): two validated knot vectors and an
+/// m x n grid of de Boor points, `control_points[k][l]` = d_kl (k along u, l along v).
+#[derive(Clone, Debug, PartialEq)]
+pub struct BSplineSurface<T> {
+    u_knots: KnotVector<T>,
+    v_knots: KnotVector<T>,
+    control_points: Vec<Vec<Point<T>>>,
+}
+
+/// The Bézier patch of a surface on one non-empty cell [a, b] x [c, d], over [0, 1]^2 in the
+/// local parameters ((u - a) / (b - a), (v - c) / (d - c)).
+#[derive(Clone, Debug, PartialEq)]
+pub struct BezierCell<T> {
+    /// The cell as `[a, b, c, d]`.
+    pub rect: [T; 4],
+    /// The patch, `[nu][mu]` = f(a^(p-nu) b^nu; c^(q-mu) d^mu).
+    pub patch: TensorPatch<T>,
+}
+
+/// Renames an error about `knots...` (the curve's name) to `to...`.
+fn rename_knots(mut e: Error, to: &str) -> Error {
+    if let Some(rest) = e.field.strip_prefix("knots") {
+        e.field = format!("{to}{rest}");
+    }
+    e
+}
+
+impl<T: Field> BSplineSurface<T> {
+    /// The surface of bidegree `degree` = (p, q) with knots `u_knots` (m + p + 1 of them) and
+    /// `v_knots` (n + q + 1) and the de Boor grid `control_points` (m rows of n points, all of
+    /// one dimension D >= 1). Errors name `control_points[...]`, `u_knots[...]` or
+    /// `v_knots[...]`.
+    ///
+    /// ```
+    /// use blossom::BSplineSurface;
+    /// // Bilinear on [0, 2] x [0, 1] with an interior u knot at 1.
+    /// let f = BSplineSurface::new(
+    ///     (1, 1),
+    ///     vec![0.0, 0.0, 1.0, 2.0, 2.0],
+    ///     vec![0.0, 0.0, 1.0, 1.0],
+    ///     vec![vec![vec![0.0], vec![0.0]], vec![vec![1.0], vec![2.0]], vec![vec![0.0], vec![4.0]]],
+    /// )?;
+    /// assert_eq!(f.eval(&1.5, &0.5)?, vec![1.75]);
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
+    pub fn new(
+        degree: (usize, usize),
+        u_knots: Vec<T>,
+        v_knots: Vec<T>,
+        control_points: Vec<Vec<Point<T>>>,
+    ) -> Result<Self> {
+        // The same grid as a Bézier net: non-empty, rectangular, one dimension D >= 1.
+        let control_points = TensorPatch::new(control_points)?.into_control_points();
+        let (p, q) = degree;
+        let (m, n) = (control_points.len(), control_points[0].len());
+        for (field, deg, count, var, what) in [
+            ("control_points", p, m, "u", "rows"),
+            ("control_points[0]", q, n, "v", "points a row"),
+        ] {
+            if count <= deg {
+                return Err(Error::of(
+                    ErrorKind::Shape,
+                    field,
+                    format!(
+                        "a B-spline surface of degree {deg} in {var} needs at least {deg} + 1 {what} of de Boor points (Theorem 2.3, ii), found {count}"
+                    ),
+                ));
+            }
+        }
+        let mut kvs = Vec::with_capacity(2);
+        for (field, deg, count, knots) in [("u_knots", p, m, u_knots), ("v_knots", q, n, v_knots)] {
+            // count > deg, so count + deg + 1 <= 2 count fits.
+            if knots.len() != count + deg + 1 {
+                return Err(Error::of(
+                    ErrorKind::Shape,
+                    field,
+                    format!(
+                        "{count} de Boor points of degree {deg} need {count} + {deg} + 1 = {} knots, found {}",
+                        count + deg + 1,
+                        knots.len()
+                    ),
+                ));
+            }
+            kvs.push(KnotVector::new(deg, knots).map_err(|e| rename_knots(e, field))?);
+        }
+        let v_knots = kvs.pop().expect("two knot vectors");
+        let u_knots = kvs.pop().expect("two knot vectors");
+        Ok(BSplineSurface {
+            u_knots,
+            v_knots,
+            control_points,
+        })
+    }
+
+    /// The bidegree (p, q).
+    pub fn degree(&self) -> (usize, usize) {
+        (self.u_knots.degree(), self.v_knots.degree())
+    }
+
+    /// The knots in u.
+    pub fn u_knots(&self) -> &[T] {
+        self.u_knots.knots()
+    }
+
+    /// The knots in v.
+    pub fn v_knots(&self) -> &[T] {
+        self.v_knots.knots()
+    }
+
+    /// The validated knot vector in u.
+    pub fn u_knot_vector(&self) -> &KnotVector<T> {
+        &self.u_knots
+    }
+
+    /// The validated knot vector in v.
+    pub fn v_knot_vector(&self) -> &KnotVector<T> {
+        &self.v_knots
+    }
+
+    /// The de Boor grid, `[k][l]` = d_kl (0-based).
+    pub fn control_points(&self) -> &[Vec<Point<T>>] {
+        &self.control_points
+    }
+
+    /// The dimension D of the points.
+    pub fn dim(&self) -> usize {
+        self.control_points[0][0].len()
+    }
+
+    /// The domain [t_{p+1}, t_{m+1}] x [s_{q+1}, s_{n+1}] as `[a, b, c, d]`.
+    pub fn domain(&self) -> [&T; 4] {
+        let (a, b) = self.u_knots.domain();
+        let (c, d) = self.v_knots.domain();
+        [a, b, c, d]
+    }
+
+    /// The blossom f_στ(us; vs) of the polynomial on the non-empty cell `span` = (σ, τ)
+    /// (0-based knot spans `[t_σ, t_σ+1)` in u and `[s_τ, s_τ+1)` in v), by de Boor's algorithm
+    /// along v for each of the p + 1 rows, then along u. Errors name `span[0]`/`span[1]` (not a
+    /// non-empty domain span) and `us`/`vs` (not p, q arguments).
+    pub fn blossom(&self, span: (usize, usize), us: &[T], vs: &[T]) -> Result<Point<T>> {
+        let (p, q) = self.degree();
+        for (field, kv, s) in [
+            ("span[0]", &self.u_knots, span.0),
+            ("span[1]", &self.v_knots, span.1),
+        ] {
+            if !kv.is_span(s) {
+                return Err(Error::of(
+                    ErrorKind::Domain,
+                    field,
+                    format!(
+                        "{s} is not a non-empty span of the domain (spans: {:?})",
+                        kv.spans()
+                    ),
+                ));
+            }
+        }
+        for (field, deg, args) in [("us", p, us), ("vs", q, vs)] {
+            if args.len() != deg {
+                return Err(Error::of(
+                    ErrorKind::Arity,
+                    field,
+                    format!(
+                        "a blossom of degree {deg} takes {deg} arguments, found {}",
+                        args.len()
+                    ),
+                ));
+            }
+        }
+        Ok(self.blossom_unchecked(span, us, vs))
+    }
+
+    fn blossom_unchecked(&self, (s, t): (usize, usize), us: &[T], vs: &[T]) -> Point<T> {
+        let (p, q) = self.degree();
+        let column: Vec<Point<T>> = self.control_points[s - p..=s]
+            .iter()
+            .map(|row| de_boor_blossom(&self.v_knots, t, &row[t - q..=t], vs))
+            .collect();
+        de_boor_blossom(&self.u_knots, s, &column, us)
+    }
+
+    /// The non-empty cell (σ, τ) of the point (u, v) (the last span at the right or top end),
+    /// or an error naming `u` or `v` outside the domain.
+    pub fn span(&self, u: &T, v: &T) -> Result<(usize, usize)> {
+        let s = self
+            .u_knots
+            .span(u)
+            .map_err(|e| Error::of(e.kind, "u", e.message))?;
+        let t = self
+            .v_knots
+            .span(v)
+            .map_err(|e| Error::of(e.kind, "v", e.message))?;
+        Ok((s, t))
+    }
+
+    /// F(u, v) = f_στ(u^p; v^q) by de Boor's algorithm in two passes (rows along v, then the
+    /// column along u); an error naming `u` or `v` outside the domain.
+    pub fn eval(&self, u: &T, v: &T) -> Result<Point<T>> {
+        let span = self.span(u, v)?;
+        let (p, q) = self.degree();
+        Ok(self.blossom_unchecked(span, &vec![u.clone(); p], &vec![v.clone(); q]))
+    }
+
+    /// The Bézier patches, one per non-empty cell (σ, τ) = [a, b] x [c, d], in the order of the
+    /// u spans and within each of the v spans: the net f_στ(a^(p-nu) b^nu; c^(q-mu) d^mu), by
+    /// the curve's Bézier points of every row along v (p + 1 rows of q + 1 points), then of
+    /// the column of those rows (each flattened into one long point) along u.
+    pub fn bezier_patches(&self) -> Vec<BezierCell<T>> {
+        let (p, q) = self.degree();
+        let (tu, tv) = (self.u_knots(), self.v_knots());
+        let mut out = Vec::new();
+        for s in self.u_knots.spans() {
+            for t in self.v_knots.spans() {
+                let rows: Vec<Vec<Point<T>>> = self.control_points[s - p..=s]
+                    .iter()
+                    .map(|row| bezier_points(&self.v_knots, t, &row[t - q..=t]))
+                    .collect();
+                let column = bezier_points(&self.u_knots, s, &flatten(&rows));
+                let net = unflatten(column, self.dim());
+                out.push(BezierCell {
+                    rect: [
+                        tu[s].clone(),
+                        tu[s + 1].clone(),
+                        tv[t].clone(),
+                        tv[t + 1].clone(),
+                    ],
+                    patch: TensorPatch::new(net).expect("a (p + 1) x (q + 1) net"),
+                });
+            }
+        }
+        out
+    }
+
+    /// The same surface with the knot `x` inserted once into the u knots: the curve insertion
+    /// (Theorem 2.2 on the new knot vector) on the column of rows, each row one long point.
+    /// An error names `x` outside the u domain, or `u_knots[i]` when x would exceed
+    /// multiplicity p + 1.
+    pub fn insert_u_knot(&self, x: &T) -> Result<Self> {
+        let (u_knots, long) = insert_knot(&self.u_knots, &flatten(&self.control_points), x)
+            .map_err(|e| rename_knots(e, "u_knots"))?;
+        Ok(BSplineSurface {
+            u_knots,
+            v_knots: self.v_knots.clone(),
+            control_points: unflatten(long, self.dim()),
+        })
+    }
+
+    /// The same surface with the knot `x` inserted once into the v knots: the curve insertion
+    /// on every row. An error names `x` outside the v domain, or `v_knots[i]` when x would
+    /// exceed multiplicity q + 1.
+    pub fn insert_v_knot(&self, x: &T) -> Result<Self> {
+        let mut v_knots = None;
+        let mut control_points = Vec::with_capacity(self.control_points.len());
+        for row in &self.control_points {
+            let (kv, new) =
+                insert_knot(&self.v_knots, row, x).map_err(|e| rename_knots(e, "v_knots"))?;
+            control_points.push(new);
+            v_knots = Some(kv);
+        }
+        Ok(BSplineSurface {
+            u_knots: self.u_knots.clone(),
+            v_knots: v_knots.expect("at least one row"),
+            control_points,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Rational;
+    use num_bigint::BigInt;
+
+    fn q(n: i64) -> Rational {
+        Rational::from_integer(BigInt::from(n))
+    }
+
+    #[test]
+    fn bilinear_values_and_errors() {
+        let grid = |v: &[&[i64]]| {
+            v.iter()
+                .map(|r| r.iter().map(|&x| vec![q(x)]).collect())
+                .collect::<Vec<Vec<_>>>()
+        };
+        let f = BSplineSurface::new(
+            (1, 1),
+            [0, 0, 1, 1].map(q).to_vec(),
+            [0, 0, 1, 1].map(q).to_vec(),
+            grid(&[&[0, 1], &[2, 4]]),
+        )
+        .unwrap();
+        // (1 - u)(v) + u((1 - v) 2 + 4 v) at (1/2, 1/2) = 1/4 + 3/2.
+        let h = Rational::new(1.into(), 2.into());
+        assert_eq!(
+            f.eval(&h, &h).unwrap(),
+            vec![Rational::new(7.into(), 4.into())]
+        );
+        assert_eq!(f.eval(&q(2), &h).unwrap_err().field, "u");
+        assert_eq!(f.eval(&h, &q(-1)).unwrap_err().field, "v");
+        let e = f.insert_u_knot(&q(1)).unwrap_err();
+        assert_eq!(
+            (e.kind, e.field.as_str()),
+            (ErrorKind::Domain, "u_knots[4]")
+        );
+    }
+}
