@@ -169,6 +169,51 @@ fn rename(mut e: Error, from: &str, to: &str) -> Error {
     e
 }
 
+/// Rows of homogeneous points (p_ij, w_ij) from rows of numerator points and of denominator
+/// values of the same shape (checked row by row), refusing a denominator that is zero.
+fn homogeneous_rows<T: Ring>(
+    numerator: &[Vec<Point<T>>],
+    denominator: &[Vec<T>],
+) -> Result<Vec<Vec<Point<T>>>> {
+    if denominator.len() != numerator.len() {
+        return Err(Error::of(
+            ErrorKind::Shape,
+            "denominator",
+            format!(
+                "expected {} rows, found {}",
+                numerator.len(),
+                denominator.len()
+            ),
+        ));
+    }
+    for (i, (d, r)) in denominator.iter().zip(numerator).enumerate() {
+        if d.len() != r.len() {
+            return Err(Error::of(
+                ErrorKind::Shape,
+                format!("denominator[{i}]"),
+                format!("expected {} entries, found {}", r.len(), d.len()),
+            ));
+        }
+    }
+    if denominator.iter().flatten().all(Ring::is_zero) {
+        return Err(Error::of(
+            ErrorKind::ZeroWeight,
+            "denominator",
+            "the denominator is the zero polynomial",
+        ));
+    }
+    Ok(numerator
+        .iter()
+        .zip(denominator)
+        .map(|(nr, dr)| {
+            nr.iter()
+                .zip(dr)
+                .map(|(p, w)| [p.as_slice(), std::slice::from_ref(w)].concat())
+                .collect()
+        })
+        .collect())
+}
+
 fn check_degree(field: &str, degree: usize, own: usize) -> Result<()> {
     if degree < own {
         Err(Error::of(
@@ -287,42 +332,10 @@ impl<T: Ring> RationalSurface<T> {
     /// The surface with numerator grid `numerator[i][j]` (points of dimension D) and scalar
     /// denominator grid `denominator[i][j]` of the same shape.
     pub fn new(numerator: &[Vec<Point<T>>], denominator: &[Vec<T>]) -> Result<Self> {
-        let num = PowerSurface::new(numerator.to_vec())
+        PowerSurface::new(numerator.to_vec())
             .map_err(|e| rename(e, "coefficients", "numerator"))?;
-        let (n, m) = num.degree();
-        if denominator.len() != n + 1 {
-            return Err(Error::of(
-                ErrorKind::Shape,
-                "denominator",
-                format!("expected {} rows, found {}", n + 1, denominator.len()),
-            ));
-        }
-        if let Some(i) = denominator.iter().position(|r| r.len() != m + 1) {
-            return Err(Error::of(
-                ErrorKind::Shape,
-                format!("denominator[{i}]"),
-                format!("expected {} entries", m + 1),
-            ));
-        }
-        if denominator.iter().flatten().all(Ring::is_zero) {
-            return Err(Error::of(
-                ErrorKind::ZeroWeight,
-                "denominator",
-                "the denominator is the zero polynomial",
-            ));
-        }
-        let grid = numerator
-            .iter()
-            .zip(denominator)
-            .map(|(nr, dr)| {
-                nr.iter()
-                    .zip(dr)
-                    .map(|(p, w)| [p.as_slice(), std::slice::from_ref(w)].concat())
-                    .collect()
-            })
-            .collect();
         Ok(RationalSurface {
-            homogeneous: PowerSurface::new(grid)?,
+            homogeneous: PowerSurface::new(homogeneous_rows(numerator, denominator)?)?,
         })
     }
 
@@ -386,44 +399,10 @@ impl<T: Ring> RationalPowerTriangle<T> {
     /// denominator array `denominator[i][j]`, both triangular of the same total degree N
     /// (row i holds N + 1 - i entries).
     pub fn new(numerator: &[Vec<Point<T>>], denominator: &[Vec<T>]) -> Result<Self> {
-        let num = PowerTriangle::new(numerator.to_vec())
+        PowerTriangle::new(numerator.to_vec())
             .map_err(|e| rename(e, "coefficients", "numerator"))?;
-        let rows = num.rows();
-        if denominator.len() != rows.len() {
-            return Err(Error::of(
-                ErrorKind::Shape,
-                "denominator",
-                format!("expected {} rows, found {}", rows.len(), denominator.len()),
-            ));
-        }
-        for (i, (d, r)) in denominator.iter().zip(rows).enumerate() {
-            if d.len() != r.len() {
-                return Err(Error::of(
-                    ErrorKind::Shape,
-                    format!("denominator[{i}]"),
-                    format!("expected {} entries, found {}", r.len(), d.len()),
-                ));
-            }
-        }
-        if denominator.iter().flatten().all(Ring::is_zero) {
-            return Err(Error::of(
-                ErrorKind::ZeroWeight,
-                "denominator",
-                "the denominator is the zero polynomial",
-            ));
-        }
-        let array = numerator
-            .iter()
-            .zip(denominator)
-            .map(|(nr, dr)| {
-                nr.iter()
-                    .zip(dr)
-                    .map(|(p, w)| [p.as_slice(), std::slice::from_ref(w)].concat())
-                    .collect()
-            })
-            .collect();
         Ok(RationalPowerTriangle {
-            homogeneous: PowerTriangle::new(array)?,
+            homogeneous: PowerTriangle::new(homogeneous_rows(numerator, denominator)?)?,
         })
     }
 

@@ -77,6 +77,23 @@ impl<T: Ring> PowerCurve<T> {
     }
 }
 
+/// sum_i u^i sum_j v^j rows[i][j] (rows of any lengths) by nested Horner's rule.
+pub(crate) fn nested_horner<T: Ring>(rows: &[Vec<Point<T>>], dim: usize, u: &T, v: &T) -> Point<T> {
+    let mut acc: Point<T> = point::zero(dim);
+    for row in rows.iter().rev() {
+        let mut inner: Point<T> = point::zero(dim);
+        for c in row.iter().rev() {
+            for (x, cj) in inner.iter_mut().zip(c) {
+                *x = x.mul(v).add(cj);
+            }
+        }
+        for (x, y) in acc.iter_mut().zip(&inner) {
+            *x = x.mul(u).add(y);
+        }
+    }
+    acc
+}
+
 /// A polynomial surface S(u, v) = sum_{i=0..n} sum_{j=0..m} c_ij u^i v^j of bidegree (n, m)
 /// (the paper's problems (2) and (3); as a triangular patch its total degree is N = n + m).
 #[derive(Clone, Debug, PartialEq)]
@@ -144,19 +161,7 @@ impl<T: Ring> PowerSurface<T> {
 
     /// S(u, v) by nested Horner's rule.
     pub fn eval(&self, u: &T, v: &T) -> Point<T> {
-        let mut acc: Point<T> = point::zero(self.dim());
-        for row in self.coefficients.iter().rev() {
-            let mut inner: Point<T> = point::zero(self.dim());
-            for c in row.iter().rev() {
-                for (x, cj) in inner.iter_mut().zip(c) {
-                    *x = x.mul(v).add(cj);
-                }
-            }
-            for (x, y) in acc.iter_mut().zip(&inner) {
-                *x = x.mul(u).add(y);
-            }
-        }
-        acc
+        nested_horner(&self.coefficients, self.dim(), u, v)
     }
 }
 

@@ -10,7 +10,7 @@
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::shape::point::{self, Point};
-use crate::shape::power::{check_dims, PowerSurface};
+use crate::shape::power::{check_dims, nested_horner, PowerSurface};
 use crate::Ring;
 
 /// S(u, v) = sum c_ij u^i v^j with i + j <= N, as a surface of total degree N.
@@ -159,20 +159,7 @@ impl<T: Ring> PowerTriangle<T> {
 
     /// S(u, v) by nested Horner's rule.
     pub fn eval(&self, u: &T, v: &T) -> Point<T> {
-        let dim = self.dim();
-        let mut acc: Point<T> = point::zero(dim);
-        for row in self.rows.iter().rev() {
-            let mut inner: Point<T> = point::zero(dim);
-            for c in row.iter().rev() {
-                for (x, cj) in inner.iter_mut().zip(c) {
-                    *x = x.mul(v).add(cj);
-                }
-            }
-            for (x, y) in acc.iter_mut().zip(&inner) {
-                *x = x.mul(u).add(y);
-            }
-        }
-        acc
+        nested_horner(&self.rows, self.dim(), u, v)
     }
 }
 

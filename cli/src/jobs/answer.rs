@@ -62,6 +62,35 @@ pub(super) fn point_json<T: JsonNumber>(p: &Point<T>, path: &str) -> Result<Valu
         .map(Value::Array)
 }
 
+/// The entries `{"a", "b", "c", "point"(, "weight")}` of a triangular net in lexicographic
+/// order of (a, b).
+pub(super) fn triangle_entries<T: JsonNumber>(
+    net: &TriangularPatch<T>,
+    weights: Option<&[T]>,
+) -> Result<Vec<Value>, Error> {
+    net.entries()
+        .enumerate()
+        .map(|(k, (nu, mu, lambda, q))| {
+            let mut entry = Map::new();
+            entry.insert("a".into(), Value::from(nu));
+            entry.insert("b".into(), Value::from(mu));
+            entry.insert("c".into(), Value::from(lambda));
+            entry.insert(
+                "point".into(),
+                point_json(q, &format!("control_points[{k}].point"))?,
+            );
+            if let Some(w) = weights {
+                entry.insert(
+                    "weight".into(),
+                    w[k].to_json()
+                        .map_err(|m| Error::new(format!("control_points[{k}].weight"), m))?,
+                );
+            }
+            Ok(Value::Object(entry))
+        })
+        .collect()
+}
+
 /// The answer as the JSON object of the contract.
 pub fn to_json<T: JsonNumber>(answer: &Answer<T>) -> Result<Value, Error> {
     let (kind, degree, control_points) = match answer {
@@ -91,21 +120,7 @@ pub fn to_json<T: JsonNumber>(answer: &Answer<T>) -> Result<Value, Error> {
             ("tensor", Value::from(vec![n, m]), rows)
         }
         Answer::Triangle(patch) => {
-            let entries = patch
-                .entries()
-                .enumerate()
-                .map(|(k, (nu, mu, lambda, q))| {
-                    let mut entry = Map::new();
-                    entry.insert("a".into(), Value::from(nu));
-                    entry.insert("b".into(), Value::from(mu));
-                    entry.insert("c".into(), Value::from(lambda));
-                    entry.insert(
-                        "point".into(),
-                        point_json(q, &format!("control_points[{k}].point"))?,
-                    );
-                    Ok(Value::Object(entry))
-                })
-                .collect::<Result<Vec<Value>, Error>>()?;
+            let entries = triangle_entries(patch, None)?;
             ("triangle", Value::from(patch.degree()), entries)
         }
     };

@@ -179,6 +179,23 @@ pub(super) fn degree_value(value: &Value, path: &str) -> Result<usize, Error> {
     }
 }
 
+/// The job object and its kind when `document` is an object whose `kind` is one of `kinds`.
+pub(super) fn recognise_kind<'a>(
+    document: &'a Value,
+    kinds: &[&'static str],
+) -> Option<(&'a Map<String, Value>, &'static str)> {
+    let Value::Object(job) = document else {
+        return None;
+    };
+    let Some(Value::String(kind)) = job.get("kind") else {
+        return None;
+    };
+    kinds
+        .iter()
+        .find(|k| **k == kind.as_str())
+        .map(|k| (job, *k))
+}
+
 /// The value of a required field.
 pub(super) fn field<'a>(job: &'a Map<String, Value>, name: &str) -> Result<&'a Value, Error> {
     job.get(name)

@@ -37,7 +37,7 @@
 //! `f64` they read the numbers as written, compute exactly and round each number of the answer
 //! once.
 
-use super::answer::point_json;
+use super::answer::triangle_entries;
 use super::args::MethodChoice;
 use super::job::{
     array, corners, degree_value, field, number_grid, number_triangular_array, numbers, point,
@@ -62,16 +62,7 @@ pub const KINDS: [&str; 5] = super::job::PATCH_KINDS;
 
 /// The job object and its kind when `document` is a job of this module.
 pub fn recognise(document: &Value) -> Option<(&Map<String, Value>, &'static str)> {
-    let Value::Object(job) = document else {
-        return None;
-    };
-    let Some(Value::String(kind)) = job.get("kind") else {
-        return None;
-    };
-    KINDS
-        .iter()
-        .find(|k| **k == kind.as_str())
-        .map(|k| (job, *k))
+    super::job::recognise_kind(document, &KINDS)
 }
 
 /// Reads, computes and writes the job `job` of kind `kind` in the arithmetic `T`.
@@ -145,35 +136,6 @@ fn grid_json<T: JsonNumber>(rows: &[Vec<Point<T>>], path: &str) -> Result<Value,
         .map(|(i, row)| points_json(row, &format!("{path}[{i}]")))
         .collect::<Result<Vec<Value>, Error>>()
         .map(Value::Array)
-}
-
-/// The entries `{"a", "b", "c", "point"(, "weight")}` of a triangular net in lexicographic
-/// order of (a, b).
-fn triangle_entries<T: JsonNumber>(
-    net: &TriangularPatch<T>,
-    weights: Option<&[T]>,
-) -> Result<Vec<Value>, Error> {
-    net.entries()
-        .enumerate()
-        .map(|(k, (nu, mu, lambda, q))| {
-            let mut entry = Map::new();
-            entry.insert("a".into(), Value::from(nu));
-            entry.insert("b".into(), Value::from(mu));
-            entry.insert("c".into(), Value::from(lambda));
-            entry.insert(
-                "point".into(),
-                point_json(q, &format!("control_points[{k}].point"))?,
-            );
-            if let Some(w) = weights {
-                entry.insert(
-                    "weight".into(),
-                    w[k].to_json()
-                        .map_err(|m| Error::new(format!("control_points[{k}].weight"), m))?,
-                );
-            }
-            Ok(Value::Object(entry))
-        })
-        .collect()
 }
 
 /// Refuses a weight that is not zero exactly but rounds to zero (its rounded control point

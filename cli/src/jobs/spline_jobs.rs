@@ -65,16 +65,7 @@ pub use super::job::MAX_DEGREE;
 
 /// The job object and its kind when `document` is a job of this module.
 pub fn recognise(document: &Value) -> Option<(&Map<String, Value>, &'static str)> {
-    let Value::Object(job) = document else {
-        return None;
-    };
-    let Some(Value::String(kind)) = job.get("kind") else {
-        return None;
-    };
-    KINDS
-        .iter()
-        .find(|k| **k == kind.as_str())
-        .map(|k| (job, *k))
+    super::job::recognise_kind(document, &KINDS)
 }
 
 /// Reads, computes and writes the job `job` of kind `kind` in the arithmetic `T`.

@@ -32,3 +32,31 @@ pub fn run_binary(args: &[&str], input: &[u8]) -> Run {
         stderr: String::from_utf8(out.stderr).expect("UTF-8 stderr"),
     }
 }
+
+/// Runs `blossom restrict ARGS` on the JSON `job`.
+pub fn run_restrict(args: &[&str], job: &serde_json::Value) -> Run {
+    let mut all = vec!["restrict"];
+    all.extend_from_slice(args);
+    run_binary(&all, job.to_string().as_bytes())
+}
+
+/// The answer of `job` under `args`, checking the contract: exit 0, one line of JSON, nothing
+/// on standard error.
+pub fn restrict_answer(args: &[&str], job: &serde_json::Value) -> serde_json::Value {
+    let r = run_restrict(args, job);
+    assert_eq!(r.code, 0, "job {job} ({args:?}): {}", r.stderr);
+    assert!(r.stderr.is_empty());
+    assert_eq!(r.stdout.lines().count(), 1, "{}", r.stdout);
+    serde_json::from_str(&r.stdout).expect("JSON")
+}
+
+/// The error line of `job` refused under `args`, checking the contract: exit 2, empty
+/// standard output, one line `error: ...`.
+pub fn restrict_error(args: &[&str], job: &serde_json::Value) -> String {
+    let r = run_restrict(args, job);
+    assert_eq!(r.code, 2, "job {job} ({args:?}) was accepted: {}", r.stdout);
+    assert!(r.stdout.is_empty(), "{}", r.stdout);
+    assert_eq!(r.stderr.lines().count(), 1, "{}", r.stderr);
+    assert!(r.stderr.starts_with("error: "), "{}", r.stderr);
+    r.stderr.trim_end().to_string()
+}

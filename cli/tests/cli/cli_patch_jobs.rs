@@ -4,7 +4,7 @@
 //! restriction are values of the input, computed here by Horner's rule or de Casteljau, which
 //! the restriction does not call), and bad input of every class the jobs add.
 
-use crate::binary::{run_binary, Run};
+use crate::binary::{restrict_answer, restrict_error};
 use crate::common::Rng;
 use blossom::{Rational, Ring};
 use serde_json::{json, Value};
@@ -19,18 +19,8 @@ const METHODS: [&str; 7] = [
     "specialised",
 ];
 
-fn run(args: &[&str], job: &Value) -> Run {
-    let mut all = vec!["restrict"];
-    all.extend_from_slice(args);
-    run_binary(&all, job.to_string().as_bytes())
-}
-
 fn answer_with(args: &[&str], job: &Value) -> Value {
-    let r = run(args, job);
-    assert_eq!(r.code, 0, "job {job} ({args:?}): {}", r.stderr);
-    assert!(r.stderr.is_empty());
-    assert_eq!(r.stdout.lines().count(), 1, "{}", r.stdout);
-    serde_json::from_str(&r.stdout).expect("JSON")
+    restrict_answer(args, job)
 }
 
 fn answer(job: &Value) -> Value {
@@ -38,12 +28,7 @@ fn answer(job: &Value) -> Value {
 }
 
 fn error_with(args: &[&str], job: &Value) -> String {
-    let r = run(args, job);
-    assert_eq!(r.code, 2, "job {job} ({args:?}) was accepted: {}", r.stdout);
-    assert!(r.stdout.is_empty(), "{}", r.stdout);
-    assert_eq!(r.stderr.lines().count(), 1, "{}", r.stderr);
-    assert!(r.stderr.starts_with("error: "), "{}", r.stderr);
-    r.stderr.trim_end().to_string()
+    restrict_error(args, job)
 }
 
 fn q(v: &Value) -> Rational {

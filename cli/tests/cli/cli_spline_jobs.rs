@@ -2,38 +2,20 @@
 //! exactly as `cli.md` describes: hand-checked answers, bad input of every class (exit 2, one
 //! `error: FIELD: ...` line, empty stdout), and random jobs checked against each other.
 
-use crate::binary::{run_binary, Run};
+use crate::binary::{restrict_answer, restrict_error};
 use crate::common::Rng;
 use serde_json::{json, Value};
 
-/// Runs `blossom restrict ARGS` on `job`.
-fn run(args: &[&str], job: &Value) -> Run {
-    let mut all = vec!["restrict"];
-    all.extend_from_slice(args);
-    run_binary(&all, job.to_string().as_bytes())
-}
-
 fn answer_with(args: &[&str], job: &Value) -> Value {
-    let r = run(args, job);
-    assert_eq!(r.code, 0, "job {job}: {}", r.stderr);
-    assert!(r.stderr.is_empty());
-    assert_eq!(r.stdout.lines().count(), 1, "{}", r.stdout);
-    serde_json::from_str(&r.stdout).expect("JSON")
+    restrict_answer(args, job)
 }
 
 fn answer(job: &Value) -> Value {
     answer_with(&[], job)
 }
 
-/// The error line of a job refused under `args`, checking the contract: exit 2, empty stdout,
-/// one line.
 fn error_with(args: &[&str], job: &Value) -> String {
-    let r = run(args, job);
-    assert_eq!(r.code, 2, "job {job} ({args:?}) was accepted: {}", r.stdout);
-    assert!(r.stdout.is_empty(), "{}", r.stdout);
-    assert_eq!(r.stderr.lines().count(), 1, "{}", r.stderr);
-    assert!(r.stderr.starts_with("error: "), "{}", r.stderr);
-    r.stderr.trim_end().to_string()
+    restrict_error(args, job)
 }
 
 fn error(job: &Value) -> String {
