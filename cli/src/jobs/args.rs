@@ -7,7 +7,8 @@
 //! blossom                                   same as `blossom verify`
 //! blossom verify [--json]
 //! blossom restrict [--input FILE] [--arithmetic exact|f64] [--method METHOD]
-//! blossom expand curve N | tensor N M | triangle N M | bezier-curve N | bezier-tensor N M | bezier-triangle N
+//! blossom expand curve N | tensor N M | triangle N M | triangle-total N | bezier-curve N
+//!                | bezier-tensor N M | bezier-triangle N
 //! blossom [SUBCOMMAND] --help | -h          help (also `blossom help`)
 //! blossom --version | -V
 //! ```
@@ -122,7 +123,13 @@ Jobs (JSON objects; fields not listed are ignored):
   {\"kind\": \"tensor\", \"coefficients\": [[c00, ..., c0m], ...], \"rectangle\": [a, b, c, d]}
   {\"kind\": \"triangle\", \"coefficients\": [[c00, ..., c0m], ...],
    \"triangle\": [[a1, a2], [b1, b2], [c1, c2]]}
+  {\"kind\": \"triangle\", \"total_degree\": N, \"coefficients\": [[c00, ..., c0N], ..., [cN0]],
+   \"triangle\": [...]}   (a triangular array: row i holds N + 1 - i points)
   {\"kind\": \"bezier-curve\", \"control_points\": [b0, ..., bn], \"interval\": [a, b]}
+  {\"kind\": \"bezier-tensor\", \"control_points\": [[b00, ..., b0m], ...], \"rectangle\": [a, b, c, d]}
+  {\"kind\": \"bezier-triangle\", \"control_points\": [{\"a\": i, \"b\": j, \"c\": k, \"point\": p}, ...],
+   \"triangle\": [P, Q, R]}   (corners by 3 barycentric coordinates adding up to 1)
+  {\"kind\": \"derivative\", \"control_points\": [b0, ..., bn], \"order\": k}
   {\"kind\": \"bspline\", \"degree\": p,
    \"pieces\": [{\"interval\": [e0, e1], \"coefficients\": [c0, ..., cp]}, ...]}
   {\"kind\": \"bspline-eval\", \"degree\": p, \"knots\": [...], \"control_points\": [...],
@@ -132,14 +139,19 @@ Jobs (JSON objects; fields not listed are ignored):
   {\"kind\": \"elevate\", \"control_points\": [...], \"to_degree\": m}
   {\"kind\": \"reduce\", \"control_points\": [...], \"to_degree\": m,
    \"method\": \"interpolating\" | \"least-squares\" | \"least-squares-endpoints\"}
+  {\"kind\": \"rational-tensor\", \"numerator\": [[p00, ...], ...], \"denominator\": [[w00, ...], ...],
+   \"rectangle\": [a, b, c, d], \"degree\": [n, m] (optional)}
+  {\"kind\": \"rational-triangle\", \"numerator\": ..., \"denominator\": ..., \"triangle\": [...],
+   \"degree\": N (optional), \"total_degree\": N (optional: triangular arrays)}
 Points are arrays of numbers, all of one length D >= 1. A number is a JSON integer or a
 string: \"-7\", \"3/4\", \"0.125\", \"-1e-3\" (JSON numbers such as 0.1 only under f64).
 Under exact arithmetic a decimal exponent is at most 100000 in absolute value (unless the
 digits are all zero). The degree of a list of coefficients is its length minus one, zero
 coefficients included (so a rational curve's default degree is that of its longer list).
-Degrees of the spline, rational and degree-change jobs are at most 200. The methods apply to
-curve, tensor, triangle and bezier-curve; the other jobs have one algorithm each and
-answer the same under every method.
+Degrees a job names (degree, to_degree, total_degree, order, the indices of a bezier-triangle
+entry, the grids of the rational jobs) are at most 200. The methods apply to curve, tensor, triangle, bezier-curve, bezier-tensor
+and bezier-triangle; the other jobs have one algorithm each and answer the same under every
+method.
 
 Output: the answer as one line of JSON on standard output, exit code 0; on bad input one line
 `error: FIELD: ...` on standard error, nothing on standard output, exit code 2.
@@ -149,16 +161,16 @@ Output: the answer as one line of JSON on standard output, exit code 0; on bad i
 pub const EXPAND_HELP: &str = "\
 blossom expand: the Rust function `blossom::restriction!` generates for one fixed degree
 
-Usage: blossom expand curve N | tensor N M | triangle N M
+Usage: blossom expand curve N | tensor N M | triangle N M | triangle-total N
                       | bezier-curve N | bezier-tensor N M | bezier-triangle N
 
 Prints the formatted source of the unrolled closed form (3), (9) or (14) for that degree, as
 `blossom::restriction!(vis = pub, name = restrict_<shape>_<degrees>, shape = .., degree = ..)`
 expands it; it compiles on its own in a crate that depends on `blossom`. The bezier- shapes
 take control points (a Bézier curve over [0, 1], a patch over [0, 1]^2, a triangular patch)
-instead of power coefficients.
-Limits (those of the macro): curves N <= 24, tensor patches N, M <= 10, triangles N + M <= 8,
-Bézier triangles N <= 6.
+instead of power coefficients; triangle-total takes a triangular array of total degree N.
+Limits (those of the macro): curves N <= 24, tensor patches N, M <= 10, triangles N + M <= 8
+(triangle-total N <= 8), Bézier triangles N <= 6.
 ";
 
 /// Help for `blossom verify`.
