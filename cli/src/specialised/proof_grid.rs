@@ -4,7 +4,7 @@ use super::Shape;
 use crate::proofs::{symbolic_curve, symbolic_surface, symbolic_triangle};
 use blossom::{curve_control_points_from_samples, tensor_control_points_from_samples};
 use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method};
-use blossom::{triangle_control_points_from_samples, Poly, PowerCurve};
+use blossom::{triangle_control_points_from_samples, Poly, PowerCurve, Ring};
 use std::cell::RefCell;
 use std::collections::HashMap;
 use blossom_grid::{
@@ -67,9 +67,41 @@ fn memoised<'f, K: std::hash::Hash + Eq + Clone + 'f, V: Clone + 'f>(
     }
 }
 
+/// The point of the curve at a symbolic `t`, as sum c_i t^i with the powers of t formed once
+/// (one product per term; Horner's nested products of growing polynomials cost several times
+/// more on symbolic points). Any evaluation of the curve serves the polarisation formula,
+/// which only needs its points.
+fn curve_point(curve: &PowerCurve<Poly>, t: &Poly) -> Vec<Poly> {
+    let mut power = Poly::one();
+    let mut terms = Vec::with_capacity(curve.degree() + 1);
+    for c in curve.coefficients() {
+        terms.push(c[0].mul(&power));
+        power = power.mul(t);
+    }
+    vec![terms.into_iter().sum()]
+}
+
+/// The point of the surface at symbolic (u, v), as sum c_ij u^i v^j with the powers formed once.
+fn surface_point(surface: &blossom::PowerSurface<Poly>, u: &Poly, v: &Poly) -> Vec<Poly> {
+    let (n, m) = surface.degree();
+    let pu: Vec<Poly> = std::iter::successors(Some(Poly::one()), |p| Some(p.mul(u)))
+        .take(n + 1)
+        .collect();
+    let pv: Vec<Poly> = std::iter::successors(Some(Poly::one()), |p| Some(p.mul(v)))
+        .take(m + 1)
+        .collect();
+    let mut terms = Vec::with_capacity((n + 1) * (m + 1));
+    for (i, row) in surface.coefficients().iter().enumerate() {
+        for (j, c) in row.iter().enumerate() {
+            terms.push(c[0].mul(&pu[i].mul(&pv[j])));
+        }
+    }
+    vec![terms.into_iter().sum()]
+}
+
 /// The polarisation formula (22) of seed 004 on [a, b]: control points from points of the curve.
 fn curve_by_polarisation(curve: &PowerCurve<Poly>, a: &Poly, b: &Poly) -> Vec<Vec<Poly>> {
-    let sample = memoised(|t: &Poly| curve.eval(t));
+    let sample = memoised(|t: &Poly| curve_point(curve, t));
     curve_control_points_from_samples(curve.degree(), a, b, &sample)
 }
 
@@ -91,7 +123,7 @@ pub fn prove_tensor(n: usize, m: usize) -> ProofRow {
     let s = symbolic_surface(n, m);
     let rect = ["a", "b", "c", "d"].map(Poly::var);
     let p = restrict_tensor_specialised(&s, &rect).expect("a bidegree of the proof grid");
-    let sample = memoised(|(u, v): &(Poly, Poly)| s.eval(u, v));
+    let sample = memoised(|(u, v): &(Poly, Poly)| surface_point(&s, u, v));
     let by_polarisation = tensor_control_points_from_samples((n, m), &rect, &|u, v| {
         sample(&(u.clone(), v.clone()))
     });
@@ -108,7 +140,7 @@ pub fn prove_triangle(n: usize, m: usize) -> ProofRow {
     let s = symbolic_surface(n, m);
     let tri = symbolic_triangle();
     let q = restrict_triangle_specialised(&s, &tri).expect("degrees of the proof grid");
-    let sample = memoised(|(u, v): &(Poly, Poly)| s.eval(u, v));
+    let sample = memoised(|(u, v): &(Poly, Poly)| surface_point(&s, u, v));
     let by_polarisation = triangle_control_points_from_samples(n + m, &tri, &|u, v| {
         sample(&(u.clone(), v.clone()))
     });

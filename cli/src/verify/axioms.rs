@@ -226,11 +226,18 @@ pub fn check_restriction(
     .and(of_form)
 }
 
-fn slot(names: &[&str], copies: usize) -> Slot {
-    Slot {
-        names: names.iter().map(|s| s.to_string()).collect(),
-        copies,
+impl Slot {
+    /// A corner with coordinates named `names`, repeated `copies` times.
+    pub fn new(names: &[&str], copies: usize) -> Slot {
+        Slot {
+            names: names.iter().map(|s| s.to_string()).collect(),
+            copies,
+        }
     }
+}
+
+fn slot(names: &[&str], copies: usize) -> Slot {
+    Slot::new(names, copies)
 }
 
 /// One algorithm's result at one degree.

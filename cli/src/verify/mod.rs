@@ -9,10 +9,12 @@ pub mod formula_versions;
 pub mod macro_proofs;
 pub mod paper_data;
 pub mod proof_summary;
+pub mod rational_surfaces;
 pub mod report;
 pub mod seeds_002_004;
 pub mod subdivision;
 pub mod theorem_1;
+pub mod transcriptions;
 
 pub use report::{Entry, Report, Section, Status};
 
@@ -27,7 +29,10 @@ pub fn build_report() -> Report {
         let grid = scope.spawn(macro_proofs::section);
         let axioms = scope.spawn(axioms::section);
         report.sections.extend(subdivision::sections());
+        let judged = transcriptions::sections(&report.sections);
+        report.sections.extend(judged);
         let papers = seeds_002_004::sections();
+        let surfaces = rational_surfaces::sections();
         let theorem_1 = theorem_1::section();
         report
             .sections
@@ -41,6 +46,7 @@ pub fn build_report() -> Report {
             .push(axioms.join().expect("the axiom proofs do not panic"));
         report.sections.extend(papers);
         report.sections.push(theorem_1);
+        report.sections.extend(surfaces);
     });
     report
 }
