@@ -73,10 +73,7 @@ pub fn multilinear_polar_form<T: Ring>(
         return Err(Error::of(
             ErrorKind::Dimension,
             format!("args[{k}]"),
-            format!(
-                "expected {dim} coordinates, found {}",
-                args[k].len()
-            ),
+            format!("expected {dim} coordinates, found {}", args[k].len()),
         ));
     }
     if n == 0 {
@@ -176,10 +173,16 @@ mod tests {
         let e = multilinear_polar_form(2, &[vec![r(1)]], 1, &q).unwrap_err();
         assert_eq!((e.kind, e.field.as_str()), (ErrorKind::Arity, "args"));
         let e = multilinear_polar_form(2, &[vec![r(1)], vec![r(1), r(2)]], 1, &q).unwrap_err();
-        assert_eq!((e.kind, e.field.as_str()), (ErrorKind::Dimension, "args[1]"));
+        assert_eq!(
+            (e.kind, e.field.as_str()),
+            (ErrorKind::Dimension, "args[1]")
+        );
         let e = multilinear_polar_form(25, &[], 1, &q).unwrap_err();
         assert_eq!((e.kind, e.field.as_str()), (ErrorKind::Degree, "n"));
-        assert_eq!(multilinear_polar_form(0, &[], 1, &|_| vec![r(7)]).unwrap(), vec![r(7)]);
+        assert_eq!(
+            multilinear_polar_form(0, &[], 1, &|_| vec![r(7)]).unwrap(),
+            vec![r(7)]
+        );
         assert_eq!(multilinear_term_count(5), BigInt::from(31));
     }
 

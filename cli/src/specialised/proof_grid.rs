@@ -5,12 +5,12 @@ use crate::proofs::{symbolic_curve, symbolic_surface, symbolic_triangle};
 use blossom::{curve_control_points_from_samples, tensor_control_points_from_samples};
 use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method};
 use blossom::{triangle_control_points_from_samples, Poly, PowerCurve, Ring};
-use std::cell::RefCell;
-use std::collections::HashMap;
 use blossom_grid::{
     restrict_bezier_curve_specialised, restrict_curve_specialised, restrict_tensor_specialised,
     restrict_triangle_specialised,
 };
+use std::cell::RefCell;
+use std::collections::HashMap;
 
 /// One symbolic proof: the carried evaluator of `shape`, run on polynomials (coefficients
 /// `c_i` / `c_i_j` and domain corners as variables, one coordinate), against the definition
@@ -124,9 +124,8 @@ pub fn prove_tensor(n: usize, m: usize) -> ProofRow {
     let rect = ["a", "b", "c", "d"].map(Poly::var);
     let p = restrict_tensor_specialised(&s, &rect).expect("a bidegree of the proof grid");
     let sample = memoised(|(u, v): &(Poly, Poly)| surface_point(&s, u, v));
-    let by_polarisation = tensor_control_points_from_samples((n, m), &rect, &|u, v| {
-        sample(&(u.clone(), v.clone()))
-    });
+    let by_polarisation =
+        tensor_control_points_from_samples((n, m), &rect, &|u, v| sample(&(u.clone(), v.clone())));
     ProofRow {
         shape: Shape::Tensor(n, m),
         terms: count_terms(p.control_points().iter().flatten()),
@@ -141,9 +140,8 @@ pub fn prove_triangle(n: usize, m: usize) -> ProofRow {
     let tri = symbolic_triangle();
     let q = restrict_triangle_specialised(&s, &tri).expect("degrees of the proof grid");
     let sample = memoised(|(u, v): &(Poly, Poly)| surface_point(&s, u, v));
-    let by_polarisation = triangle_control_points_from_samples(n + m, &tri, &|u, v| {
-        sample(&(u.clone(), v.clone()))
-    });
+    let by_polarisation =
+        triangle_control_points_from_samples(n + m, &tri, &|u, v| sample(&(u.clone(), v.clone())));
     ProofRow {
         shape: Shape::Triangle(n, m),
         terms: count_terms(q.control_points()),

@@ -139,7 +139,12 @@ pub struct Slot {
 
 /// Polarises `w` in each slot at degree `copies`, at the arguments `args` (taken in order,
 /// `copies` per slot), by eq. (19): the form of the control point.
-fn polarise(w: &[Poly], slots: &[Slot], args: &[Vec<Poly>], bound: &HashMap<String, Poly>) -> Vec<Poly> {
+fn polarise(
+    w: &[Poly],
+    slots: &[Slot],
+    args: &[Vec<Poly>],
+    bound: &HashMap<String, Poly>,
+) -> Vec<Poly> {
     match slots.split_first() {
         None => w.iter().map(|p| substitute(p, bound)).collect(),
         Some((slot, rest)) => {
@@ -215,7 +220,10 @@ pub fn check_restriction(
             .cloned()
             .zip(args.iter().flatten().cloned())
             .collect();
-        first.iter().map(|p| substitute(p, &values)).collect::<Vec<_>>()
+        first
+            .iter()
+            .map(|p| substitute(p, &values))
+            .collect::<Vec<_>>()
     };
     let of_form = check_form(groups, k, &form, diagonal);
     Axioms {
@@ -252,14 +260,18 @@ pub struct AxiomRow {
     pub axioms: Axioms,
 }
 
-type CurveRestriction<'a> = (&'a str, Box<dyn Fn(&PowerCurve<Poly>, &Poly, &Poly) -> BezierCurve<Poly> + 'a>);
+type CurveFn<'a> = Box<dyn Fn(&PowerCurve<Poly>, &Poly, &Poly) -> BezierCurve<Poly> + 'a>;
+
+type CurveRestriction<'a> = (
+    &'a str,
+    Box<dyn Fn(&PowerCurve<Poly>, &Poly, &Poly) -> BezierCurve<Poly> + 'a>,
+);
 
 fn curve_restrictions() -> Vec<CurveRestriction<'static>> {
     let mut out: Vec<CurveRestriction> = Method::ALL
         .iter()
         .map(|&m| {
-            let f: Box<dyn Fn(&PowerCurve<Poly>, &Poly, &Poly) -> BezierCurve<Poly>> =
-                Box::new(move |c, a, b| restrict_curve(c, a, b, m));
+            let f: CurveFn = Box::new(move |c, a, b| restrict_curve(c, a, b, m));
             (m.name(), f)
         })
         .collect();
@@ -287,16 +299,24 @@ pub fn curve_rows(n: usize) -> Vec<AxiomRow> {
     let scalars = |args: &[Vec<Poly>]| args.iter().map(|x| x[0].clone()).collect::<Vec<_>>();
     let net = power_to_bernstein(c.coefficients());
     let blossoms: Vec<(&str, Boxed)> = vec![
-        ("definition (2)", form(|args| curve_blossom(&c, &scalars(args)))),
-        ("polarisation (20)", form(|args| {
-            curve_blossom_from_samples(n, &scalars(args), &|t| c.eval(t)).expect("n arguments")
-        })),
-        ("Theorem 1, (18) at (t, 1)", form(|args| {
-            homogeneous_curve_blossom(&c, &scalars(args)).expect("n arguments")
-        })),
-        ("pyramid on the Bernstein net", form(|args| {
-            bezier_curve_blossom(&net, &scalars(args))
-        })),
+        (
+            "definition (2)",
+            form(|args| curve_blossom(&c, &scalars(args))),
+        ),
+        (
+            "polarisation (20)",
+            form(|args| {
+                curve_blossom_from_samples(n, &scalars(args), &|t| c.eval(t)).expect("n arguments")
+            }),
+        ),
+        (
+            "Theorem 1, (18) at (t, 1)",
+            form(|args| homogeneous_curve_blossom(&c, &scalars(args)).expect("n arguments")),
+        ),
+        (
+            "pyramid on the Bernstein net",
+            form(|args| bezier_curve_blossom(&net, &scalars(args))),
+        ),
     ];
     let mut rows: Vec<AxiomRow> = blossoms
         .into_iter()
@@ -336,18 +356,28 @@ pub fn tensor_rows(n: usize, m: usize) -> Vec<AxiomRow> {
     };
     let net = bernstein_tensor(&s);
     let blossoms: Vec<(&str, Boxed)> = vec![
-        ("definition (8)", form(|args| {
-            let (us, vs) = split(args);
-            tensor_blossom(&s, &us, &vs)
-        })),
-        ("polarisation (20), two passes", form(|args| {
-            let (us, vs) = split(args);
-            tensor_blossom_from_samples((n, m), &us, &vs, &|u, v| s.eval(u, v)).expect("arguments")
-        })),
-        ("pyramid on the Bernstein net", form(|args| {
-            let (us, vs) = split(args);
-            bezier_tensor_blossom(net.control_points(), &us, &vs)
-        })),
+        (
+            "definition (8)",
+            form(|args| {
+                let (us, vs) = split(args);
+                tensor_blossom(&s, &us, &vs)
+            }),
+        ),
+        (
+            "polarisation (20), two passes",
+            form(|args| {
+                let (us, vs) = split(args);
+                tensor_blossom_from_samples((n, m), &us, &vs, &|u, v| s.eval(u, v))
+                    .expect("arguments")
+            }),
+        ),
+        (
+            "pyramid on the Bernstein net",
+            form(|args| {
+                let (us, vs) = split(args);
+                bezier_tensor_blossom(net.control_points(), &us, &vs)
+            }),
+        ),
     ];
     let degree = format!("({n}, {m})");
     let mut rows: Vec<AxiomRow> = blossoms
@@ -411,21 +441,37 @@ pub fn triangle_rows(n: usize, m: usize) -> Vec<AxiomRow> {
     };
     let patch = bernstein_triangle(&s);
     let blossoms: Vec<(&str, Boxed)> = vec![
-        ("definition (13)", form(|args| triangle_blossom(&s, &pairs(args)))),
-        ("polarisation (21)", form(|args| {
-            triangle_blossom_from_samples(big_n, &pairs(args), &|u, v| s.eval(u, v))
-                .expect("N arguments")
-        })),
-        ("Theorem 1, (18) at (u, v, 1)", form(|args| {
-            homogeneous_triangle_blossom(&s, &pairs(args)).expect("N arguments")
-        })),
-        ("pyramid on the Bernstein net", form(|args| {
-            let bary: Vec<[Poly; 3]> = args
-                .iter()
-                .map(|x| [x[0].clone(), x[1].clone(), Poly::one().sub(&x[0]).sub(&x[1])])
-                .collect();
-            bezier_triangle_blossom(&patch, &bary)
-        })),
+        (
+            "definition (13)",
+            form(|args| triangle_blossom(&s, &pairs(args))),
+        ),
+        (
+            "polarisation (21)",
+            form(|args| {
+                triangle_blossom_from_samples(big_n, &pairs(args), &|u, v| s.eval(u, v))
+                    .expect("N arguments")
+            }),
+        ),
+        (
+            "Theorem 1, (18) at (u, v, 1)",
+            form(|args| homogeneous_triangle_blossom(&s, &pairs(args)).expect("N arguments")),
+        ),
+        (
+            "pyramid on the Bernstein net",
+            form(|args| {
+                let bary: Vec<[Poly; 3]> = args
+                    .iter()
+                    .map(|x| {
+                        [
+                            x[0].clone(),
+                            x[1].clone(),
+                            Poly::one().sub(&x[0]).sub(&x[1]),
+                        ]
+                    })
+                    .collect();
+                bezier_triangle_blossom(&patch, &bary)
+            }),
+        ),
     ];
     let degree = format!("({n}, {m})");
     let mut rows: Vec<AxiomRow> = blossoms

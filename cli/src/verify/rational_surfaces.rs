@@ -35,10 +35,19 @@ fn grid(n: usize, m: usize, terms: &[(usize, usize, i64)]) -> Vec<Vec<Rational>>
     g
 }
 
-fn surface(n: usize, m: usize, coords: &[&[(usize, usize, i64)]], w: &[(usize, usize, i64)]) -> RationalSurface<Rational> {
+fn surface(
+    n: usize,
+    m: usize,
+    coords: &[&[(usize, usize, i64)]],
+    w: &[(usize, usize, i64)],
+) -> RationalSurface<Rational> {
     let grids: Vec<Vec<Vec<Rational>>> = coords.iter().map(|c| grid(n, m, c)).collect();
     let numerator: Vec<Vec<Point<Rational>>> = (0..=n)
-        .map(|i| (0..=m).map(|j| grids.iter().map(|g| g[i][j].clone()).collect()).collect())
+        .map(|i| {
+            (0..=m)
+                .map(|j| grids.iter().map(|g| g[i][j].clone()).collect())
+                .collect()
+        })
         .collect();
     RationalSurface::new(&numerator, &grid(n, m, w)).expect("a valid rational surface")
 }
@@ -53,7 +62,12 @@ fn params(k: i64) -> Vec<Rational> {
     (0..=k).map(|i| q(i, k)).collect()
 }
 
-fn entry(label: impl Into<String>, printed: impl Into<String>, computed: String, matches: bool) -> Entry {
+fn entry(
+    label: impl Into<String>,
+    printed: impl Into<String>,
+    computed: String,
+    matches: bool,
+) -> Entry {
     Entry {
         label: label.into(),
         printed: printed.into(),
@@ -77,13 +91,16 @@ fn net_text(points: &[Vec<Point<Rational>>], weights: &[Vec<Rational>]) -> Strin
         .join(" | ")
 }
 
+/// An implicit equation, named, and whether a point satisfies it.
+type Implicit<'a> = (&'a str, &'a dyn Fn(&[Rational]) -> bool);
+
 /// A tensor patch on [0, 1]^2 checked against `param` and the implicit equation `on` at a
 /// `k + 1` by `k + 1` grid of rational parameters.
 fn tensor_section(
     title: &str,
     s: &RationalSurface<Rational>,
     param: &dyn Fn(&Rational, &Rational) -> Vec<Rational>,
-    on: (&str, &dyn Fn(&[Rational]) -> bool),
+    on: Implicit,
     k: i64,
 ) -> Section {
     let rect = [r(0), r(1), r(0), r(1)];
@@ -97,11 +114,7 @@ fn tensor_section(
             lie += usize::from((on.1)(&got));
         }
     }
-    let weights_positive = patch
-        .weights()
-        .iter()
-        .flatten()
-        .all(|w| *w > r(0));
+    let weights_positive = patch.weights().iter().flatten().all(|w| *w > r(0));
     let (n, m) = s.degree();
     let entries = vec![
         entry(
@@ -119,7 +132,12 @@ fn tensor_section(
         entry(
             "weights",
             "positive (the patch has no pole on [0, 1]^2)",
-            format!("{}", if weights_positive { "all positive" } else { "NOT all positive" }),
+            if weights_positive {
+                "all positive"
+            } else {
+                "NOT all positive"
+            }
+            .to_string(),
             weights_positive,
         ),
     ];
@@ -143,7 +161,11 @@ fn cylinder() -> Section {
     let s = surface(
         2,
         1,
-        &[&[(0, 0, 1), (2, 0, -1)], &[(1, 0, 2)], &[(0, 1, 1), (2, 1, 1)]],
+        &[
+            &[(0, 0, 1), (2, 0, -1)],
+            &[(1, 0, 2)],
+            &[(0, 1, 1), (2, 1, 1)],
+        ],
         &[(0, 0, 1), (2, 0, 1)],
     );
     let param = |u: &Rational, v: &Rational| {
@@ -216,7 +238,8 @@ fn elevate_triangle(patch: &TriangularPatch<Rational>) -> TriangularPatch<Ration
             if k > 0 {
                 add(k, patch.get(i, j));
             }
-            out[triangle_index(n + 1, i, j)] = acc.into_iter().map(|x| x / r(n as i64 + 1)).collect();
+            out[triangle_index(n + 1, i, j)] =
+                acc.into_iter().map(|x| x / r(n as i64 + 1)).collect();
         }
     }
     TriangularPatch::new(n + 1, out).expect("a full net")
@@ -243,7 +266,11 @@ fn sphere() -> Section {
     let s = surface(
         2,
         2,
-        &[&[(1, 0, 2)], &[(0, 1, 2)], &[(2, 0, 1), (0, 2, 1), (0, 0, -1)]],
+        &[
+            &[(1, 0, 2)],
+            &[(0, 1, 2)],
+            &[(2, 0, 1), (0, 2, 1), (0, 0, -1)],
+        ],
         &[(0, 0, 1), (2, 0, 1), (0, 2, 1)],
     );
     let tri = [[r(0), r(0)], [r(1), r(0)], [r(0), r(1)]];
@@ -259,8 +286,11 @@ fn sphere() -> Section {
         triangle_control_points_from_samples(2, &tri, &|u, v| h.eval(u, v)),
     )
     .expect("6 points");
-    let quartic = s.triangle(&tri, None).expect("no zero weight on the triangle");
-    let quartic_h = TriangularPatch::new(4, lift(quartic.points(), quartic.weights())).expect("15 points");
+    let quartic = s
+        .triangle(&tri, None)
+        .expect("no zero weight on the triangle");
+    let quartic_h =
+        TriangularPatch::new(4, lift(quartic.points(), quartic.weights())).expect("15 points");
     let k = 7;
     let (mut agree2, mut agree4, mut lie, mut total) = (0, 0, 0, 0);
     for i in 0..=k {
@@ -277,7 +307,11 @@ fn sphere() -> Section {
         }
     }
     let elevated = elevate_triangle(&elevate_triangle(&quadratic));
-    let weights2: Vec<Rational> = quadratic.control_points().iter().map(|p| p[3].clone()).collect();
+    let weights2: Vec<Rational> = quadratic
+        .control_points()
+        .iter()
+        .map(|p| p[3].clone())
+        .collect();
     let positive = weights2.iter().all(|w| *w > r(0));
     let corners_ok = [(2, 0), (0, 2), (0, 0)]
         .iter()

@@ -18,10 +18,12 @@ fn multi_indices(d: usize, n: usize) -> Vec<Vec<usize>> {
     (0..=n)
         .rev()
         .flat_map(|k| {
-            multi_indices(d - 1, n - k).into_iter().map(move |mut rest| {
-                rest.insert(0, k);
-                rest
-            })
+            multi_indices(d - 1, n - k)
+                .into_iter()
+                .map(move |mut rest| {
+                    rest.insert(0, k);
+                    rest
+                })
         })
         .collect()
 }
@@ -40,7 +42,9 @@ fn general_form(n: usize, d: usize, args: &[Vec<Poly>]) -> Poly {
     let lambdas: Vec<String> = (0..d).map(|r| format!("lambda{r}")).collect();
     let mut prod = Poly::one();
     for x in args {
-        let lin = (0..d).fold(Poly::zero(), |s, r| s.add(&Poly::var(&lambdas[r]).mul(&x[r])));
+        let lin = (0..d).fold(Poly::zero(), |s, r| {
+            s.add(&Poly::var(&lambdas[r]).mul(&x[r]))
+        });
         prod = prod.mul(&lin);
     }
     let mut acc = Poly::zero();
@@ -74,7 +78,11 @@ fn general_form(n: usize, d: usize, args: &[Vec<Poly>]) -> Poly {
 
 fn symbolic_points(name: &str, n: usize, d: usize) -> Vec<Vec<Poly>> {
     (1..=n)
-        .map(|k| (0..d).map(|r| Poly::var(&format!("{name}{k}_{r}"))).collect())
+        .map(|k| {
+            (0..d)
+                .map(|r| Poly::var(&format!("{name}{k}_{r}")))
+                .collect()
+        })
         .collect()
 }
 
@@ -100,13 +108,17 @@ pub fn becomes_19(max_n: usize) -> bool {
         let homogeneous_args: Vec<Vec<Poly>> =
             ts.iter().map(|t| vec![t.clone(), Poly::one()]).collect();
         let q = |x: &[Poly]| {
-            let s = x[1].as_constant().expect("s = N at a sum of N arguments (t, 1)");
+            let s = x[1]
+                .as_constant()
+                .expect("s = N at a sum of N arguments (t, 1)");
             let t = x[0].scale(&(Rational::from_integer(1.into()) / &s));
             vec![Poly::var(&sample_name(&[t])).scale(&Ring::pow(&s, n as u32))]
         };
         let by_18 = multilinear_polar_form(n, &homogeneous_args, 2, &q).expect("n arguments");
         let affine: Vec<Vec<Poly>> = ts.iter().map(|t| vec![t.clone()]).collect();
-        let by_19 = polar_form(n, &affine, 1, &|x| vec![Poly::var(&sample_name(&[x[0].clone()]))]);
+        let by_19 = polar_form(n, &affine, 1, &|x| {
+            vec![Poly::var(&sample_name(&[x[0].clone()]))]
+        });
         by_18 == by_19
     })
 }
@@ -135,12 +147,18 @@ pub fn curve_cross_check(max_n: usize) -> (bool, bool) {
         let pts: Vec<(Rational, Rational)> = (1..=n as i64)
             .map(|k| (q(3 * k - 5, 2), q(k + 1, 2 * k + 1)))
             .collect();
-        let args: Vec<Vec<Rational>> = pts.iter().map(|(t, s)| vec![t.clone(), s.clone()]).collect();
+        let args: Vec<Vec<Rational>> = pts
+            .iter()
+            .map(|(t, s)| vec![t.clone(), s.clone()])
+            .collect();
         let f = multilinear_polar_form(n, &args, 2, &|x| blossom::homogeneous_curve(&c, x))
             .expect("n arguments");
         let ratios: Vec<Rational> = pts.iter().map(|(t, s)| t / s).collect();
         let scale: Rational = pts.iter().map(|(_, s)| s.clone()).product();
-        let want: Vec<Rational> = curve_blossom(&c, &ratios).iter().map(|x| x * &scale).collect();
+        let want: Vec<Rational> = curve_blossom(&c, &ratios)
+            .iter()
+            .map(|x| x * &scale)
+            .collect();
         f == want
     });
     (symbolic, homogeneous)

@@ -38,7 +38,14 @@ pub const ELEVEN: [Eleven; 2] = [
 ];
 
 /// The weight of u^i in b_i~(b^nu, a^(n-nu)) by (11) with the given exponent of `lo` (= a).
-fn weight(n: i64, nu: i64, i: i64, lo: &Poly, hi: &Poly, a_exponent: fn(i64, i64, i64) -> i64) -> Poly {
+fn weight(
+    n: i64,
+    nu: i64,
+    i: i64,
+    lo: &Poly,
+    hi: &Poly,
+    a_exponent: fn(i64, i64, i64) -> i64,
+) -> Poly {
     let mut w = Poly::zero();
     for k in 0.max(i + nu - n)..=i.min(nu) {
         let c = Rational::new(binomial(nu, k) * binomial(n - nu, i - k), binomial(n, i));
@@ -50,7 +57,11 @@ fn weight(n: i64, nu: i64, i: i64, lo: &Poly, hi: &Poly, a_exponent: fn(i64, i64
 
 /// Eq. (9) as the proof assembles it, p = sum c_ij b_i~ b_j~ (eq. (10)), with the u-factor
 /// read by `eleven` and the v-factor as printed (in both transcriptions).
-pub fn tensor_by_9(surface: &PowerSurface<Poly>, rect: &[Poly; 4], eleven: &Eleven) -> Vec<Vec<Poly>> {
+pub fn tensor_by_9(
+    surface: &PowerSurface<Poly>,
+    rect: &[Poly; 4],
+    eleven: &Eleven,
+) -> Vec<Vec<Poly>> {
     let (n, m) = surface.degree();
     let [a, b, c, d] = rect;
     (0..=n)
@@ -137,9 +148,8 @@ pub fn triangle_reduces_to_curves(max_n: usize) -> bool {
             .map(|k| [Poly::var(&format!("u{k}")), Poly::var(&format!("v{k}"))])
             .collect();
         (0..=big_n).all(|i| {
-            let unit = |k: usize| -> Vec<Poly> {
-                vec![if k == i { Poly::one() } else { Poly::zero() }]
-            };
+            let unit =
+                |k: usize| -> Vec<Poly> { vec![if k == i { Poly::one() } else { Poly::zero() }] };
             let curve = PowerCurve::new((0..=big_n).map(unit).collect()).expect("a curve");
             // u^i as a surface of bidegree (N, 0) and v^i as one of bidegree (0, N).
             let su = PowerSurface::new((0..=big_n).map(|k| vec![unit(k)]).collect()).expect("grid");
@@ -210,7 +220,9 @@ fn j_beta_section() -> Section {
     for (name, printed, formula) in j_beta_versions() {
         let verdict = judge(&formula, 4);
         let computed = match (&verdict.proved_up_to, &verdict.counterexample) {
-            (Some(k), _) => format!("eq. (14) with it agrees with the definition (13) for n + m <= {k}"),
+            (Some(k), _) => {
+                format!("eq. (14) with it agrees with the definition (13) for n + m <= {k}")
+            }
             (None, Some(cx)) => format!("eq. (14) with it differs from the definition: {cx}"),
             (None, None) => "no verdict".into(),
         };
@@ -241,7 +253,8 @@ fn summary_section(judged: &[Section]) -> Section {
             .find(|s| s.title.starts_with(prefix))
             .map(|s| s.status)
     };
-    let rows: [(&str, &str, &str, Option<Status>, Option<Status>); 3] = [
+    type Row<'a> = (&'a str, &'a str, &'a str, Option<Status>, Option<Status>);
+    let rows: [Row; 3] = [
         (
             "(11)",
             "000: b^k a^(i-k); 001: b^k a^(n-k)",
@@ -273,7 +286,11 @@ fn summary_section(judged: &[Section]) -> Section {
                 printed: printed.to_string(),
                 computed: format!(
                     "{claim}: the right version {}, the other refuted: {}",
-                    if *right == Some(Status::Reproduced) { "proved" } else { "NOT proved" },
+                    if *right == Some(Status::Reproduced) {
+                        "proved"
+                    } else {
+                        "NOT proved"
+                    },
                     *wrong == Some(Status::Explained)
                 ),
                 matches: ok,

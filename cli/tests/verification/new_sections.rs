@@ -38,14 +38,12 @@ fn every_algorithm_satisfies_the_axioms_and_wrong_forms_do_not() {
     let (a, b) = (Poly::var("a"), Poly::var("b"));
     let mut w = blossom::restrict_curve(&c, &a, &b, blossom::Method::Bulk).into_control_points();
     w.swap(0, 2);
-    let slots = |v: usize| {
-        vec![
-            Slot::new(&["a"], 2 - v),
-            Slot::new(&["b"], v),
-        ]
-    };
-    let points: Vec<(Vec<Poly>, Vec<Slot>)> =
-        w.into_iter().enumerate().map(|(v, p)| (p, slots(v))).collect();
+    let slots = |v: usize| vec![Slot::new(&["a"], 2 - v), Slot::new(&["b"], v)];
+    let points: Vec<(Vec<Poly>, Vec<Slot>)> = w
+        .into_iter()
+        .enumerate()
+        .map(|(v, p)| (p, slots(v)))
+        .collect();
     let found = check_restriction(&[2], 1, &points, &diagonal);
     assert!(!found.all());
     assert!(!found.multiaffine);

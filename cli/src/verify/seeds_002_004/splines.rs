@@ -565,7 +565,10 @@ fn ejemplo_2() -> Section {
         entries.push(entry(
             format!("Bézier point b_{i} on [3, 4]"),
             *formula,
-            format!("{} (from the blossom values of the B-spline's pieces)", show(&control[i])),
+            format!(
+                "{} (from the blossom values of the B-spline's pieces)",
+                show(&control[i])
+            ),
             control[i] == *want,
         ));
     }
@@ -588,7 +591,12 @@ fn ejemplo_2() -> Section {
     entries.push(entry(
         "Observación 2: d_4 on the curve at t_5",
         "only when t_5 = .. = t_8",
-        format!("F(4) = {} (power piece: {}), d_4 = {}", show(&end), show(&piece.eval(&hi)), show(&d[3])),
+        format!(
+            "F(4) = {} (power piece: {}), d_4 = {}",
+            show(&end),
+            show(&piece.eval(&hi)),
+            show(&d[3])
+        ),
         end != d[3] && end == piece.eval(&hi),
     ));
     let coefficients: Vec<String> = piece.coefficients().iter().map(|c| show(c)).collect();
