@@ -96,6 +96,11 @@ pub use restrict::closed_form::{
 pub use restrict::definition::{
     curve_blossom, power_triangle_blossom, tensor_blossom, triangle_blossom,
 };
+pub use restrict::homogeneous::{
+    homogeneous_curve, homogeneous_curve_blossom, homogeneous_surface,
+    homogeneous_triangle_blossom, multilinear_polar_form, multilinear_term_count,
+    MAX_MULTILINEAR_DEGREE,
+};
 pub use restrict::polarisation::{
     curve_blossom_from_samples, curve_control_points_from_samples, polar_form,
     tensor_blossom_from_samples, tensor_control_points_from_samples, triangle_blossom_from_samples,

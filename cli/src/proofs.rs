@@ -296,6 +296,37 @@ pub fn proof_grid(max_curve: usize, max_tensor: usize, max_triangle: usize) -> V
     rows
 }
 
+/// The surface as a tensor-product Bézier patch over [0, 1]^2: rows to the Bernstein basis
+/// along v, then columns along u ([`power_to_bernstein`], an exact change of basis).
+pub fn bernstein_tensor<T: Ring>(surface: &PowerSurface<T>) -> TensorPatch<T> {
+    let rows: Vec<Vec<Vec<T>>> = surface
+        .coefficients()
+        .iter()
+        .map(|r| power_to_bernstein(r))
+        .collect();
+    let long: Vec<Vec<T>> = rows.iter().map(|r| r.concat()).collect();
+    let net = power_to_bernstein(&long)
+        .into_iter()
+        .map(|r| r.chunks(surface.dim()).map(<[T]>::to_vec).collect())
+        .collect();
+    TensorPatch::new(net).expect("a rectangular net")
+}
+
+/// The surface, of total degree N = n + m, as a triangular Bézier patch on the reference
+/// triangle a = (1, 0), b = (0, 1), c = (0, 0): a point (u, v) has barycentric coordinates
+/// (u, v, 1 - u - v) ([`triangle_power_to_bernstein`], an exact change of basis).
+pub fn bernstein_triangle<T: Ring>(surface: &PowerSurface<T>) -> TriangularPatch<T> {
+    let (n, m) = surface.degree();
+    let big_n = n + m;
+    let mut d = vec![vec![T::zero(); surface.dim()]; triangle_len(big_n)];
+    for (i, row) in surface.coefficients().iter().enumerate() {
+        for (j, c) in row.iter().enumerate() {
+            d[triangle_index(big_n, i, j)] = c.clone();
+        }
+    }
+    triangle_power_to_bernstein(big_n, &d)
+}
+
 /// The name of the Bézier-input proofs in [`prove_bezier_input`].
 pub const BEZIER_INPUT: &str = "halving engine on Bézier input";
 
@@ -324,19 +355,7 @@ pub fn prove_bezier_input(
         for m in 0..=max_tensor {
             rows.push(
                 tensor_reference(n, m).candidate_proof(BEZIER_INPUT, &|(surface, rect)| {
-                    // Rows to the Bernstein basis along v, then columns along u.
-                    let rows: Vec<Vec<Vec<Poly>>> = surface
-                        .coefficients()
-                        .iter()
-                        .map(|r| power_to_bernstein(r))
-                        .collect();
-                    let long: Vec<Vec<Poly>> = rows.iter().map(|r| r.concat()).collect();
-                    let net = power_to_bernstein(&long)
-                        .into_iter()
-                        .map(|r| r.chunks(surface.dim()).map(<[Poly]>::to_vec).collect())
-                        .collect();
-                    let patch = TensorPatch::new(net).expect("a rectangular net");
-                    restrict_bezier_tensor(&patch, rect)
+                    restrict_bezier_tensor(&bernstein_tensor(surface), rect)
                 }),
             );
         }
@@ -346,14 +365,7 @@ pub fn prove_bezier_input(
             let m = big_n - n;
             rows.push(
                 triangle_reference(n, m).candidate_proof(BEZIER_INPUT, &|(surface, tri)| {
-                    let mut d = vec![vec![Poly::zero(); surface.dim()]; triangle_len(big_n)];
-                    for (i, row) in surface.coefficients().iter().enumerate() {
-                        for (j, c) in row.iter().enumerate() {
-                            d[triangle_index(big_n, i, j)] = c.clone();
-                        }
-                    }
-                    let patch = triangle_power_to_bernstein(big_n, &d);
-                    restrict_bezier_triangle_affine(&patch, tri)
+                    restrict_bezier_triangle_affine(&bernstein_triangle(surface), tri)
                 }),
             );
         }

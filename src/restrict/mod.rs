@@ -8,6 +8,7 @@
 //! | [`closed_form`] (per control point) | Theorem 1, eq. (3) | Theorem 2, eq. (9) | Theorem 3, eq. (14) |
 //! | [`pyramid`] (de Casteljau) | eq. (2) of 004 | eq. (9) of 004 | barycentric steps |
 //! | [`polarisation`] (inverse formula) | eqs. (20), (22) of 004 | two passes | eqs. (21), (23) of 004 |
+//! | [`homogeneous`] (multilinear form (18) of the homogenisation) | Theorem 1 of 004 at (t, 1) | - | at (u, v, 1) |
 //! | [`halving`] (scaled power basis, shared work) | eq. (3) by halving | along u, then v | box halving |
 //! | [`taylor_shift`] (through the power basis) | shift + Bernstein | along u, then v | 2-D shift, Horner, Bernstein |
 //!
@@ -17,6 +18,7 @@
 pub(crate) mod closed_form;
 pub(crate) mod definition;
 pub(crate) mod halving;
+pub(crate) mod homogeneous;
 pub(crate) mod nets;
 pub(crate) mod polarisation;
 pub(crate) mod pyramid;

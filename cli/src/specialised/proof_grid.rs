@@ -2,12 +2,15 @@
 
 use super::Shape;
 use crate::proofs::{symbolic_curve, symbolic_surface, symbolic_triangle};
-use blossom::Poly;
-use blossom::{bezier_curve_blossom, restrict_curve, restrict_tensor, restrict_triangle, Method};
+use blossom::{curve_control_points_from_samples, tensor_control_points_from_samples};
+use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method};
+use blossom::{triangle_control_points_from_samples, Poly, PowerCurve, Ring};
 use blossom_grid::{
     restrict_bezier_curve_specialised, restrict_curve_specialised, restrict_tensor_specialised,
     restrict_triangle_specialised,
 };
+use std::cell::RefCell;
+use std::collections::HashMap;
 
 /// One symbolic proof: the carried evaluator of `shape`, run on polynomials (coefficients
 /// `c_i` / `c_i_j` and domain corners as variables, one coordinate), against the definition
@@ -19,8 +22,7 @@ pub struct ProofRow {
     /// Number of terms of the symbolic control points, summed over all points.
     pub terms: usize,
     /// Identical, as polynomials, to the subset-sum definition (eqs. (2), (8), (13)); for
-    /// Bézier input, to de Casteljau's pyramid on the net, the definition of the blossom of a
-    /// Bézier curve (seed 004, eq. (2)).
+    /// Bézier input, that of the curve whose Bernstein form the net is.
     pub definition: bool,
     /// Identical, as polynomials, to the polarisation formula (inverse-relations paper).
     pub polarisation: bool,
@@ -47,6 +49,62 @@ fn count_terms<'a>(points: impl IntoIterator<Item = &'a Vec<Poly>>) -> usize {
     points.into_iter().flatten().map(Poly::num_terms).sum()
 }
 
+/// `f` with its values remembered: the polarisation formula samples the same point for many
+/// control points (on [a, b] the point (k a + l b) / (k + l) serves every w_v with k <= n - v
+/// and l <= v), and symbolic samples are the expensive part of the proof. The formula and its
+/// arguments are unchanged; only repeated evaluations are saved.
+fn memoised<'f, K: std::hash::Hash + Eq + Clone + 'f, V: Clone + 'f>(
+    f: impl Fn(&K) -> V + 'f,
+) -> impl Fn(&K) -> V + 'f {
+    let cache = RefCell::new(HashMap::new());
+    move |k: &K| {
+        if let Some(v) = cache.borrow().get(k) {
+            return V::clone(v);
+        }
+        let v = f(k);
+        cache.borrow_mut().insert(k.clone(), v.clone());
+        v
+    }
+}
+
+/// The point of the curve at a symbolic `t`, as sum c_i t^i with the powers of t formed once
+/// (one product per term; Horner's nested products of growing polynomials cost several times
+/// more on symbolic points). Any evaluation of the curve serves the polarisation formula,
+/// which only needs its points.
+fn curve_point(curve: &PowerCurve<Poly>, t: &Poly) -> Vec<Poly> {
+    let mut power = Poly::one();
+    let mut terms = Vec::with_capacity(curve.degree() + 1);
+    for c in curve.coefficients() {
+        terms.push(c[0].mul(&power));
+        power = power.mul(t);
+    }
+    vec![terms.into_iter().sum()]
+}
+
+/// The point of the surface at symbolic (u, v), as sum c_ij u^i v^j with the powers formed once.
+fn surface_point(surface: &blossom::PowerSurface<Poly>, u: &Poly, v: &Poly) -> Vec<Poly> {
+    let (n, m) = surface.degree();
+    let pu: Vec<Poly> = std::iter::successors(Some(Poly::one()), |p| Some(p.mul(u)))
+        .take(n + 1)
+        .collect();
+    let pv: Vec<Poly> = std::iter::successors(Some(Poly::one()), |p| Some(p.mul(v)))
+        .take(m + 1)
+        .collect();
+    let mut terms = Vec::with_capacity((n + 1) * (m + 1));
+    for (i, row) in surface.coefficients().iter().enumerate() {
+        for (j, c) in row.iter().enumerate() {
+            terms.push(c[0].mul(&pu[i].mul(&pv[j])));
+        }
+    }
+    vec![terms.into_iter().sum()]
+}
+
+/// The polarisation formula (22) of seed 004 on [a, b]: control points from points of the curve.
+fn curve_by_polarisation(curve: &PowerCurve<Poly>, a: &Poly, b: &Poly) -> Vec<Vec<Poly>> {
+    let sample = memoised(|t: &Poly| curve_point(curve, t));
+    curve_control_points_from_samples(curve.degree(), a, b, &sample)
+}
+
 /// Proves the carried curve evaluator of degree `n` (1..=16) symbolically.
 pub fn prove_curve(n: usize) -> ProofRow {
     let curve = symbolic_curve(n);
@@ -56,7 +114,7 @@ pub fn prove_curve(n: usize) -> ProofRow {
         shape: Shape::Curve(n),
         terms: count_terms(w.control_points()),
         definition: w == restrict_curve(&curve, &a, &b, Method::Definition),
-        polarisation: w == restrict_curve(&curve, &a, &b, Method::Polarisation),
+        polarisation: w.control_points() == curve_by_polarisation(&curve, &a, &b).as_slice(),
     }
 }
 
@@ -65,11 +123,14 @@ pub fn prove_tensor(n: usize, m: usize) -> ProofRow {
     let s = symbolic_surface(n, m);
     let rect = ["a", "b", "c", "d"].map(Poly::var);
     let p = restrict_tensor_specialised(&s, &rect).expect("a bidegree of the proof grid");
+    let sample = memoised(|(u, v): &(Poly, Poly)| surface_point(&s, u, v));
+    let by_polarisation =
+        tensor_control_points_from_samples((n, m), &rect, &|u, v| sample(&(u.clone(), v.clone())));
     ProofRow {
         shape: Shape::Tensor(n, m),
         terms: count_terms(p.control_points().iter().flatten()),
         definition: p == restrict_tensor(&s, &rect, Method::Definition),
-        polarisation: p == restrict_tensor(&s, &rect, Method::Polarisation),
+        polarisation: p.control_points() == by_polarisation.as_slice(),
     }
 }
 
@@ -78,53 +139,60 @@ pub fn prove_triangle(n: usize, m: usize) -> ProofRow {
     let s = symbolic_surface(n, m);
     let tri = symbolic_triangle();
     let q = restrict_triangle_specialised(&s, &tri).expect("degrees of the proof grid");
+    let sample = memoised(|(u, v): &(Poly, Poly)| surface_point(&s, u, v));
+    let by_polarisation =
+        triangle_control_points_from_samples(n + m, &tri, &|u, v| sample(&(u.clone(), v.clone())));
     ProofRow {
         shape: Shape::Triangle(n, m),
         terms: count_terms(q.control_points()),
         definition: q == restrict_triangle(&s, &tri, Method::Definition),
-        polarisation: q == restrict_triangle(&s, &tri, Method::Polarisation),
+        polarisation: q.control_points() == by_polarisation.as_slice(),
     }
 }
 
-/// Proves the carried Bézier-curve evaluator of degree `n` (1..=16) symbolically: control
-/// points `b_i` and the interval [a, b] are variables; the check are the pyramid on the net
-/// and the inverse formula (22) of seed 004 applied to points of the curve.
+/// Proves the carried Bézier-curve evaluator of degree `n` (1..=16) symbolically.
+///
+/// The control points are the Bernstein form b = M c of the symbolic power curve with
+/// coefficients c_0..c_n ([`blossom::power_to_bernstein`], an exact change of basis): M is
+/// invertible, so an identity of polynomials in c is one in b (every net is the Bernstein form
+/// of exactly one power curve, b = M c with c = M^-1 b). This keeps each symbolic value as
+/// small as the curve's own (a net of independent symbols b_i makes every sample n times
+/// larger) while the evaluator still runs on a symbolic net. The checks are the subset-sum
+/// definition (2) of that curve and the inverse formula (22) applied to points of the curve.
 pub fn prove_bezier_curve(n: usize) -> ProofRow {
-    let net: Vec<Vec<Poly>> = (0..=n).map(|i| vec![Poly::var(&format!("b{i}"))]).collect();
-    let curve = blossom::BezierCurve::new(net).expect("a non-empty polygon");
+    let power = symbolic_curve(n);
+    let curve = blossom::BezierCurve::new(blossom::power_to_bernstein(power.coefficients()))
+        .expect("a non-empty polygon");
     let (a, b) = (Poly::var("a"), Poly::var("b"));
     let w = restrict_bezier_curve_specialised(&curve, &a, &b).expect("a carried degree");
-    let by_pyramid: Vec<Vec<Poly>> = (0..=n)
-        .map(|j| {
-            let args = crate::repeated(&a, n - j, &b, j);
-            bezier_curve_blossom(curve.control_points(), &args)
-        })
-        .collect();
-    let by_inverse = blossom::curve_control_points_from_samples(n, &a, &b, &|t| curve.eval(t));
     ProofRow {
         shape: Shape::BezierCurve(n),
         terms: count_terms(w.control_points()),
-        definition: w.control_points() == by_pyramid.as_slice(),
-        polarisation: w.control_points() == by_inverse.as_slice(),
+        definition: w == restrict_curve(&power, &a, &b, Method::Definition),
+        polarisation: w.control_points() == curve_by_polarisation(&power, &a, &b).as_slice(),
     }
 }
 
-/// The proof grid: curves 1..=10, tensor patches (1..=4) x (1..=4), triangles with
-/// 1 <= n, m <= 3, Bézier curves 1..=10 (their evaluators are the carried ones, so this
-/// proves the code the binary runs).
+/// The proof grid: every evaluator the binary carries, run on symbolic polynomials: curves
+/// 1..=16, tensor patches (n, m) with 0 <= n, m <= 5, triangles with 0 <= n, m <= 4 ((0, 0)
+/// excepted for both), Bézier curves 1..=16.
 pub fn proof_table() -> Vec<ProofRow> {
-    let mut rows: Vec<ProofRow> = (1..=10).map(prove_curve).collect();
-    for n in 1..=4 {
-        for m in 1..=4 {
-            rows.push(prove_tensor(n, m));
+    let mut rows: Vec<ProofRow> = (1..=16).map(prove_curve).collect();
+    for n in 0..=5 {
+        for m in 0..=5 {
+            if (n, m) != (0, 0) {
+                rows.push(prove_tensor(n, m));
+            }
         }
     }
-    for n in 1..=3 {
-        for m in 1..=3 {
-            rows.push(prove_triangle(n, m));
+    for n in 0..=4 {
+        for m in 0..=4 {
+            if (n, m) != (0, 0) {
+                rows.push(prove_triangle(n, m));
+            }
         }
     }
-    rows.extend((1..=10).map(prove_bezier_curve));
+    rows.extend((1..=16).map(prove_bezier_curve));
     rows
 }
 

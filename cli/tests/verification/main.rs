@@ -4,6 +4,7 @@
 #[path = "../../../tests/common/mod.rs"]
 mod common;
 
+mod new_sections;
 mod paper_tables;
 mod seeds_002_004;
 mod symbolic_proofs;

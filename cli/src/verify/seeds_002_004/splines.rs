@@ -514,10 +514,115 @@ fn curry_schoenberg() -> Section {
     )
 }
 
+/// Ejemplo 2 computed: the cubic B-spline on T = (0, 1, .., 7) with the printed d_1..d_4 is
+/// one polynomial piece on [t_4, t_5] = [3, 4]; its de Boor points as blossom values of that
+/// piece (Theorem 2.2), its Bézier points against the uniform-cubic conversion, and its ends
+/// against Observación 1 (T is not clamped, so d_1 need not be on the curve).
+fn ejemplo_2() -> Section {
+    let t = knots(EXAMPLE_2_KNOTS);
+    let d = points(&EXAMPLE_2_POINTS);
+    let p = 3;
+    let f = BSpline::new(p, t.clone(), d.clone()).expect("Ejemplo 2 is a valid B-spline");
+    let (lo, hi) = (f.domain().0.clone(), f.domain().1.clone());
+    let piece = piece_on(&f, 4);
+    let mut entries = vec![entry(
+        "domain [t_{p+1}, t_{m+1}]",
+        "[t_4, t_5] (Definición 1.1, m = 4, p = 3)",
+        format!("[{lo}, {hi}], one non-empty span"),
+        [lo.clone(), hi.clone()] == [t[3].clone(), t[4].clone()],
+    )];
+    for k in 1..=4 {
+        let window = &t[k..k + p];
+        let value = curve_blossom(&piece, window);
+        entries.push(entry(
+            format!("d_{k} = f_4(t_{}, .., t_{})", k + 1, k + p),
+            show(&d[k - 1]),
+            format!("f_4({}) = {}", list(window), show(&value)),
+            value == d[k - 1],
+        ));
+    }
+    // Uniform cubic B-spline to Bézier on [t_4, t_5]: the textbook one-third rule.
+    let third = |x: i64, y: i64, z: i64, w: i64, den: i64| -> Vec<Rational> {
+        (0..2)
+            .map(|c| {
+                (Rational::from_int(x) * &d[0][c]
+                    + Rational::from_int(y) * &d[1][c]
+                    + Rational::from_int(z) * &d[2][c]
+                    + Rational::from_int(w) * &d[3][c])
+                    / Rational::from_int(den)
+            })
+            .collect()
+    };
+    let rule = [
+        ("(d_1 + 4 d_2 + d_3)/6", third(1, 4, 1, 0, 6)),
+        ("(2 d_2 + d_3)/3", third(0, 2, 1, 0, 3)),
+        ("(d_2 + 2 d_3)/3", third(0, 1, 2, 0, 3)),
+        ("(d_2 + 4 d_3 + d_4)/6", third(0, 1, 4, 1, 6)),
+    ];
+    let bezier = f.bezier_pieces();
+    let control = bezier[0].curve.control_points();
+    for (i, (formula, want)) in rule.iter().enumerate() {
+        entries.push(entry(
+            format!("Bézier point b_{i} on [3, 4]"),
+            *formula,
+            format!(
+                "{} (from the blossom values of the B-spline's pieces)",
+                show(&control[i])
+            ),
+            control[i] == *want,
+        ));
+    }
+    let at = |x: &Rational| f.eval(x).expect("in the domain");
+    let (start, end) = (at(&lo), at(&hi));
+    let clamped = t[..=p].iter().all(|x| *x == t[0]);
+    entries.push(entry(
+        "Observación 1: d_1 on the curve at t_4",
+        "only when t_1 = .. = t_4",
+        format!(
+            "t_1..t_4 = {} are {}; F(3) = {} (power piece: {}), d_1 = {}",
+            list(&t[..=p]),
+            if clamped { "equal" } else { "distinct" },
+            show(&start),
+            show(&piece.eval(&lo)),
+            show(&d[0])
+        ),
+        !clamped && start != d[0] && start == piece.eval(&lo),
+    ));
+    entries.push(entry(
+        "Observación 2: d_4 on the curve at t_5",
+        "only when t_5 = .. = t_8",
+        format!(
+            "F(4) = {} (power piece: {}), d_4 = {}",
+            show(&end),
+            show(&piece.eval(&hi)),
+            show(&d[3])
+        ),
+        end != d[3] && end == piece.eval(&hi),
+    ));
+    let coefficients: Vec<String> = piece.coefficients().iter().map(|c| show(c)).collect();
+    Section::from_entries(
+        "Ejemplo 2: the cubic B-spline on T = (0, 1, .., 7), computed",
+        format!("{SOURCE}, section 1, Ejemplo 2 (figura 2)"),
+        entries,
+        vec![
+            format!(
+                "F on [3, 4] from the recursive definition of N_i^3 (Definición 1.1), in powers of u: coefficients {}",
+                coefficients.join(", ")
+            ),
+            "the printed d_1..d_4 are the blossom values of that one piece at the knot windows (1, 2, 3), (2, 3, 4), \
+             (3, 4, 5), (4, 5, 6), as Theorem 2.2 says; the curve starts at (d_1 + 4 d_2 + d_3)/6 and ends at \
+             (d_2 + 4 d_3 + d_4)/6, not at d_1 and d_4, since T is not clamped"
+                .into(),
+        ],
+        Status::Unexplained,
+    )
+}
+
 /// The sections of seed 002.
 pub fn sections() -> Vec<Section> {
     vec![
         knot_vectors(),
+        ejemplo_2(),
         observations(),
         theorem_2_2(),
         de_boor_example(),
