@@ -548,18 +548,23 @@ impl<T: Field> RationalTriangularPatch<T> {
         &self.weights
     }
 
-    /// The point with barycentric coordinates (r, s, t) of the corners (a, b, c), or `None`
-    /// where the denominator vanishes.
-    pub fn eval(&self, bary: &[T; 3]) -> Option<Point<T>> {
-        debug_assert_eq!(self.points.len(), triangle_len(self.degree));
+    /// The homogeneous net (w_ijk b_ijk, w_ijk), a polynomial triangular patch of dimension
+    /// D + 1.
+    pub fn homogeneous(&self) -> TriangularPatch<T> {
         let h: Vec<Point<T>> = self
             .points
             .iter()
             .zip(&self.weights)
             .map(|(b, w)| lift(b, w))
             .collect();
-        let patch = TriangularPatch::new(self.degree, h).ok()?;
-        let mut p = patch.eval(bary);
+        TriangularPatch::new(self.degree, h).expect("a full net of one dimension")
+    }
+
+    /// The point with barycentric coordinates (r, s, t) of the corners (a, b, c), or `None`
+    /// where the denominator vanishes.
+    pub fn eval(&self, bary: &[T; 3]) -> Option<Point<T>> {
+        debug_assert_eq!(self.points.len(), triangle_len(self.degree));
+        let mut p = self.homogeneous().eval(bary);
         let w = p.pop()?;
         divide_point(p, &w)
     }

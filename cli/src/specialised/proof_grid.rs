@@ -4,9 +4,12 @@ use super::Shape;
 use crate::proofs::{symbolic_curve, symbolic_surface, symbolic_triangle};
 use blossom::{curve_control_points_from_samples, tensor_control_points_from_samples};
 use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method};
+use blossom::{restrict_power_triangle, PowerTriangle};
 use blossom::{triangle_control_points_from_samples, Poly, PowerCurve, Ring};
 use blossom_grid::{
-    restrict_bezier_curve_specialised, restrict_curve_specialised, restrict_tensor_specialised,
+    restrict_bezier_curve_specialised, restrict_bezier_tensor_specialised,
+    restrict_bezier_triangle_specialised, restrict_curve_specialised,
+    restrict_power_triangle_specialised, restrict_tensor_specialised,
     restrict_triangle_specialised,
 };
 use std::cell::RefCell;
@@ -173,9 +176,118 @@ pub fn prove_bezier_curve(n: usize) -> ProofRow {
     }
 }
 
+/// A symbolic triangular array of total degree N: c_i_j for i + j <= N, one coordinate.
+fn symbolic_power_triangle(big_n: usize) -> PowerTriangle<Poly> {
+    PowerTriangle::new(
+        (0..=big_n)
+            .map(|i| {
+                (0..=big_n - i)
+                    .map(|j| vec![Poly::var(&format!("c{i}_{j}"))])
+                    .collect()
+            })
+            .collect(),
+    )
+    .expect("a triangular array")
+}
+
+/// The point of a triangular array at symbolic (u, v), with the powers formed once.
+fn power_triangle_point(surface: &PowerTriangle<Poly>, u: &Poly, v: &Poly) -> Vec<Poly> {
+    let big_n = surface.degree();
+    let pu: Vec<Poly> = std::iter::successors(Some(Poly::one()), |p| Some(p.mul(u)))
+        .take(big_n + 1)
+        .collect();
+    let pv: Vec<Poly> = std::iter::successors(Some(Poly::one()), |p| Some(p.mul(v)))
+        .take(big_n + 1)
+        .collect();
+    vec![surface
+        .terms()
+        .map(|(i, j, c)| c[0].mul(&pu[i].mul(&pv[j])))
+        .sum()]
+}
+
+/// The inverse formula (23) of seed 004 on `tri`, from points of `surface`.
+fn power_triangle_by_polarisation(
+    surface: &PowerTriangle<Poly>,
+    tri: &[[Poly; 2]; 3],
+) -> Vec<Vec<Poly>> {
+    let sample = memoised(|(u, v): &(Poly, Poly)| power_triangle_point(surface, u, v));
+    triangle_control_points_from_samples(surface.degree(), tri, &|u, v| {
+        sample(&(u.clone(), v.clone()))
+    })
+}
+
+/// Proves the carried evaluator of triangular arrays of total degree `big_n` symbolically:
+/// coefficients c_i_j (i + j <= N) and the corners are variables.
+pub fn prove_triangle_total(big_n: usize) -> ProofRow {
+    let s = symbolic_power_triangle(big_n);
+    let tri = symbolic_triangle();
+    let q = restrict_power_triangle_specialised(&s, &tri).expect("a carried total degree");
+    ProofRow {
+        shape: Shape::TriangleTotal(big_n),
+        terms: count_terms(q.control_points()),
+        definition: q == restrict_power_triangle(&s, &tri, Method::Definition),
+        polarisation: q.control_points() == power_triangle_by_polarisation(&s, &tri).as_slice(),
+    }
+}
+
+/// Proves the carried Bézier tensor evaluator of bidegree `(n, m)` symbolically: the net is
+/// the Bernstein form of the symbolic surface (b = M c along u and along v, an exact and
+/// invertible change of basis, as for [`prove_bezier_curve`]); the checks are the definition
+/// (8) of that surface and two passes of the inverse formula (22) on its points.
+pub fn prove_bezier_tensor(n: usize, m: usize) -> ProofRow {
+    let s = symbolic_surface(n, m);
+    let rows: Vec<Vec<Vec<Poly>>> = s
+        .coefficients()
+        .iter()
+        .map(|row| blossom::power_to_bernstein(row))
+        .collect();
+    let columns: Vec<Vec<Vec<Poly>>> = (0..=m)
+        .map(|j| {
+            let column: Vec<Vec<Poly>> = rows.iter().map(|r| r[j].clone()).collect();
+            blossom::power_to_bernstein(&column)
+        })
+        .collect();
+    let net: Vec<Vec<Vec<Poly>>> = (0..=n)
+        .map(|i| columns.iter().map(|c| c[i].clone()).collect())
+        .collect();
+    let patch = blossom::TensorPatch::new(net).expect("a rectangular net");
+    let rect = ["a", "b", "c", "d"].map(Poly::var);
+    let p = restrict_bezier_tensor_specialised(&patch, &rect).expect("a carried bidegree");
+    let sample = memoised(|(u, v): &(Poly, Poly)| surface_point(&s, u, v));
+    let by_polarisation =
+        tensor_control_points_from_samples((n, m), &rect, &|u, v| sample(&(u.clone(), v.clone())));
+    ProofRow {
+        shape: Shape::BezierTensor(n, m),
+        terms: count_terms(p.control_points().iter().flatten()),
+        definition: p == restrict_tensor(&s, &rect, Method::Definition),
+        polarisation: p.control_points() == by_polarisation.as_slice(),
+    }
+}
+
+/// Proves the carried Bézier triangle evaluator of degree `big_n` symbolically: the net is the
+/// triangular Bernstein form ([`blossom::triangle_power_to_bernstein`], exact and invertible) of
+/// the symbolic array c_i_j in the barycentric coordinates (s, t) of the patch's first two
+/// corners, so the patch's domain is the triangle (1, 0), (0, 1), (0, 0) of the (s, t) plane and
+/// the sub-triangle's corners (a1, a2), (b1, b2), (c1, c2) are variables of that plane. The
+/// checks are the definition (13) of the array and the inverse formula (23) on its points.
+pub fn prove_bezier_triangle(big_n: usize) -> ProofRow {
+    let s = symbolic_power_triangle(big_n);
+    let flat: Vec<Vec<Poly>> = s.rows().iter().flatten().cloned().collect();
+    let patch = blossom::triangle_power_to_bernstein(big_n, &flat);
+    let tri = symbolic_triangle();
+    let q = restrict_bezier_triangle_specialised(&patch, &tri).expect("a carried degree");
+    ProofRow {
+        shape: Shape::BezierTriangle(big_n),
+        terms: count_terms(q.control_points()),
+        definition: q == restrict_power_triangle(&s, &tri, Method::Definition),
+        polarisation: q.control_points() == power_triangle_by_polarisation(&s, &tri).as_slice(),
+    }
+}
+
 /// The proof grid: every evaluator the binary carries, run on symbolic polynomials: curves
 /// 1..=16, tensor patches (n, m) with 0 <= n, m <= 5, triangles with 0 <= n, m <= 4 ((0, 0)
-/// excepted for both), Bézier curves 1..=16.
+/// excepted for both), Bézier curves 1..=16, triangular arrays of total degree 1..=6, Bézier
+/// tensor patches (n, m) with 0 <= n, m <= 4 ((0, 0) excepted) and Bézier triangles 1..=6.
 pub fn proof_table() -> Vec<ProofRow> {
     let mut rows: Vec<ProofRow> = (1..=16).map(prove_curve).collect();
     for n in 0..=5 {
@@ -193,6 +305,15 @@ pub fn proof_table() -> Vec<ProofRow> {
         }
     }
     rows.extend((1..=16).map(prove_bezier_curve));
+    rows.extend((1..=6).map(prove_triangle_total));
+    for n in 0..=4 {
+        for m in 0..=4 {
+            if (n, m) != (0, 0) {
+                rows.push(prove_bezier_tensor(n, m));
+            }
+        }
+    }
+    rows.extend((1..=6).map(prove_bezier_triangle));
     rows
 }
 

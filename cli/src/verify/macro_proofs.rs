@@ -5,7 +5,8 @@ use super::report::{Section, Status};
 use crate::specialised::{proof_table, proof_table_text};
 
 /// Every generated evaluator the binary carries (curves 1..=16, tensor patches (0..=5)^2,
-/// triangles (0..=4)^2, (0, 0) excepted, Bézier curves 1..=16), run on symbolic polynomials,
+/// triangles (0..=4)^2, (0, 0) excepted, Bézier curves 1..=16, triangular arrays 1..=6, Bézier
+/// tensor patches (0..=4)^2 and Bézier triangles 1..=6), run on symbolic polynomials,
 /// against the definition of the blossom and the polarisation formula; one line per evaluator.
 pub fn section() -> Section {
     let rows = proof_table();
@@ -18,9 +19,10 @@ pub fn section() -> Section {
             rows.len()
         ),
         "for the Bézier-input evaluators the symbolic net is the Bernstein form b = M c of the \
-         symbolic power curve (M = power_to_bernstein, exact and invertible, so an identity in c is \
-         one in b: every net is b = M c for c = M^-1 b); the checks are the definition (2) of that \
-         curve and (22) applied to its points; symbolic nets of independent b_i would make every \
+         symbolic power curve, surface or triangular array (M = power_to_bernstein along each \
+         variable, or triangle_power_to_bernstein: exact and invertible, so an identity in c is \
+         one in b: every net is b = M c for c = M^-1 b); the checks are the definition (2), (8) \
+         or (13) of that polynomial and (22) or (23) applied to its points; symbolic nets of independent b_i would make every \
          sample n times larger (degree 16 took 52 s that way) for the same proof"
             .to_string(),
         "the polarisation column evaluates each distinct sample point once (the point \
