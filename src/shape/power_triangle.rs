@@ -31,8 +31,8 @@ impl<T: Ring> PowerTriangle<T> {
     /// ```
     /// use blossom::PowerTriangle;
     /// // u + v at total degree 1: rows [c_00, c_01], [c_10].
-    /// let s = PowerTriangle::new(vec![vec![vec![0], vec![1]], vec![vec![1]]])?;
-    /// assert_eq!((s.degree(), s.eval(&2, &3)), (1, vec![5]));
+    /// let s = PowerTriangle::new(vec![vec![vec![0.0], vec![1.0]], vec![vec![1.0]]])?;
+    /// assert_eq!((s.degree(), s.eval(&2.0, &3.0)), (1, vec![5.0]));
     /// # Ok::<(), blossom::Error>(())
     /// ```
     pub fn new(rows: Vec<Vec<Point<T>>>) -> Result<Self> {
