@@ -177,13 +177,7 @@ pub fn bezier_tensor_derivative<T: Ring>(
     check_order(order[0], n, "order[0]")?;
     check_order(order[1], m, "order[1]")?;
     let dim = patch.control_points()[0][0].len();
-    let flat: Vec<T> = patch
-        .control_points()
-        .iter()
-        .flatten()
-        .flatten()
-        .cloned()
-        .collect();
+    let flat: Vec<T> = patch.flat_coordinates();
     let one = T::one();
     let mut flat = fix_tensor(flat, m + 1, dim, BernsteinVectorStep(&one), order);
     let k = falling_factorial(n, order[0]) * falling_factorial(m, order[1]);

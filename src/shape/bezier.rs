@@ -123,6 +123,16 @@ impl<T: Ring> TensorPatch<T> {
         self.control_points
     }
 
+    /// Every coordinate of the net in one run, row after row (the layout of the engine).
+    pub(crate) fn flat_coordinates(&self) -> Vec<T> {
+        self.control_points
+            .iter()
+            .flatten()
+            .flatten()
+            .cloned()
+            .collect()
+    }
+
     /// The point at `(s, t)` (two passes of de Casteljau).
     pub fn eval(&self, s: &T, t: &T) -> Point<T> {
         let (n, m) = self.degree();

@@ -55,13 +55,7 @@ pub fn restrict_bezier_curve<T: Ring>(curve: &BezierCurve<T>, a: &T, b: &T) -> B
 pub fn restrict_bezier_tensor<T: Ring>(patch: &TensorPatch<T>, rect: &[T; 4]) -> TensorPatch<T> {
     let dim = patch.control_points()[0][0].len();
     let cols = patch.control_points()[0].len();
-    let flat: Vec<T> = patch
-        .control_points()
-        .iter()
-        .flatten()
-        .flatten()
-        .cloned()
-        .collect();
+    let flat: Vec<T> = patch.flat_coordinates();
     let mut out = vec![T::zero(); flat.len()];
     let steps = rect.each_ref().map(BernsteinStep);
     tensor_net(
