@@ -59,6 +59,7 @@ mod shape;
 
 // Numbers.
 pub use num::binomial::{binomial, multinomial};
+pub use num::bounded::BoundedF64;
 pub use num::linalg::{solve_rational_system, Field};
 pub use num::poly::Poly;
 pub use num::ring::{rational_to_f64, Rational, Ring};

@@ -40,7 +40,7 @@
 //! Error messages here name no field: the caller prefixes the path of the offending value.
 
 use blossom::rational_to_f64;
-use blossom::Rational;
+use blossom::{BoundedF64, Rational};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
@@ -88,6 +88,82 @@ impl JsonNumber for f64 {
     fn to_json(&self) -> Result<Value, String> {
         f64_to_json(*self)
     }
+}
+
+/// `--arithmetic f64` with error bounds: the doubles of plain `f64` arithmetic (read by the
+/// same rules, bit for bit the same values), each carrying a rigorous bound on its distance
+/// to the exact result of the same operations on the same input doubles. An answer written
+/// from these numbers holds each as [`bounded_json`] marks it; [`take_error_bound`] turns the
+/// marks back into plain JSON numbers and returns the largest bound, the answer's
+/// `"error_bound"`.
+impl JsonNumber for BoundedF64 {
+    const ARITHMETIC: &'static str = "f64";
+
+    /// The nearest double, with the exact distance to the number as written as its bound (so
+    /// that an answer's bound covers its distance to the exact answer of the job as written,
+    /// and a fortiori to that of the input doubles: every bound is monotone in the inputs').
+    fn from_json(value: &Value) -> Result<Self, String> {
+        let double = f64_from_json(value)?;
+        let written = match value {
+            Value::Number(n) => parse_rational(&number_text(n)),
+            Value::String(s) => parse_rational(s),
+            other => Err(not_a_number(other)),
+        };
+        Ok(match written {
+            Ok(q) => BoundedF64::rounded_from(&q, double),
+            // A spelling exact reading refuses (an exponent over its limit) whose double is
+            // correctly rounded: within half an ulp, u |x|, or below the least subnormal.
+            Err(_) => BoundedF64::with_bound(double, f64::EPSILON / 2.0 * double.abs() + 5e-324),
+        })
+    }
+
+    fn to_json(&self) -> Result<Value, String> {
+        bounded_json(self)
+    }
+}
+
+/// The key of the one-entry object that stands for a bounded double in an answer under
+/// construction (a control character, so no field of an answer can have it).
+const BOUND_MARK: &str = "\u{1}bounded";
+
+/// A bounded double as `{MARK: [value, bound]}`, until [`take_error_bound`] unmarks it.
+fn bounded_json(x: &BoundedF64) -> Result<Value, String> {
+    let value = f64_to_json(x.value())?;
+    let bound = serde_json::Number::from_f64(x.error_bound())
+        .map(Value::Number)
+        .unwrap_or(Value::Null);
+    let mut mark = serde_json::Map::new();
+    mark.insert(BOUND_MARK.into(), Value::Array(vec![value, bound]));
+    Ok(Value::Object(mark))
+}
+
+/// Replaces every bounded double in `answer` (written by [`BoundedF64`]'s
+/// [`JsonNumber::to_json`]) by its plain JSON number and returns the largest bound over them:
+/// `Some(0.0)` when there is none, `None` when one of them has no finite bound.
+pub fn take_error_bound(answer: &mut Value) -> Option<f64> {
+    fn walk(value: &mut Value, largest: &mut Option<f64>) {
+        match value {
+            Value::Array(items) => items.iter_mut().for_each(|v| walk(v, largest)),
+            Value::Object(map) => {
+                if map.len() == 1 {
+                    if let Some(Value::Array(pair)) = map.get_mut(BOUND_MARK) {
+                        let bound = pair.get(1).and_then(Value::as_f64);
+                        *largest = match (*largest, bound) {
+                            (Some(a), Some(b)) => Some(a.max(b)),
+                            _ => None,
+                        };
+                        *value = pair.first().cloned().unwrap_or(Value::Null);
+                        return;
+                    }
+                }
+                map.values_mut().for_each(|v| walk(v, largest));
+            }
+            _ => {}
+        }
+    }
+    let mut largest = Some(0.0);
+    walk(answer, &mut largest);
+    largest
 }
 
 /// The shape of a number written as text, after checking the grammar, with its pieces.

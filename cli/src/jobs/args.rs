@@ -61,6 +61,8 @@ pub struct RestrictOptions {
     pub arithmetic: Arithmetic,
     /// `--method`, default closed-form.
     pub method: MethodChoice,
+    /// `--max-work` and `--max-input` ([`super::budget`]).
+    pub limits: super::budget::Limits,
 }
 
 /// What the command line asks for.
@@ -102,6 +104,7 @@ pub const RESTRICT_HELP: &str = "\
 blossom restrict: the Bezier form of a polynomial curve or surface on a new domain
 
 Usage: blossom restrict [--input FILE] [--arithmetic exact|f64] [--method METHOD]
+                        [--max-work UNITS] [--max-input BYTES]
 
 Options:
   --input FILE         read the job from FILE (default, or `-`: standard input)
@@ -116,6 +119,9 @@ Options:
       specialised      the compile-time evaluator generated for the job's degree
       bulk             all control points at once by changes of variable and basis
                        (an extension of the contract: the fast path of the library)
+  --max-work UNITS     refuse a job whose estimated work is over UNITS (default 1e9, about
+                       a second; see Limits below)
+  --max-input BYTES    refuse an input longer than BYTES (default 1048576, 1 MiB)
   -h, --help           print this help
 
 Jobs (JSON objects; fields not listed are ignored):
@@ -153,8 +159,16 @@ entry, the grids of the rational jobs) are at most 200. The methods apply to cur
 and bezier-triangle; the other jobs have one algorithm each and answer the same under every
 method.
 
+Limits: before computing, every job's work is estimated from its sizes, degrees, the bit
+length of its numbers, the method and the arithmetic, in units of about a nanosecond; a job
+over --max-work is refused with `error: FIELD: the job's estimated work is ...`, FIELD naming
+the sizes (coefficients, control_points, pieces, at, ...) or the field with the longest number
+when the numbers' length is what makes it expensive. The input is read up to --max-input bytes.
+
 Output: the answer as one line of JSON on standard output, exit code 0; on bad input one line
-`error: FIELD: ...` on standard error, nothing on standard output, exit code 2.
+`error: FIELD: ...` on standard error, nothing on standard output, exit code 2. Under f64 the
+answer also has \"error_bound\": a rigorous bound on the distance of every number of the
+answer to the exact answer for the same input doubles (null when no finite bound is known).
 ";
 
 /// Help for `blossom expand`.
@@ -293,6 +307,8 @@ fn parse_restrict(args: &[OsString]) -> Result<Command, Error> {
     let mut input: Option<Option<PathBuf>> = None;
     let mut arithmetic: Option<Arithmetic> = None;
     let mut method: Option<MethodChoice> = None;
+    let mut max_work: Option<u64> = None;
+    let mut max_input: Option<u64> = None;
     let mut rest = args.iter();
     while let Some(arg) = rest.next() {
         let (flag, inline) = split_flag(arg);
@@ -342,10 +358,26 @@ fn parse_restrict(args: &[OsString]) -> Result<Command, Error> {
                 };
                 method = Some(*choice);
             }
+            "--max-work" | "--max-input" => {
+                let name = if flag == "--max-work" {
+                    "--max-work"
+                } else {
+                    "--max-input"
+                };
+                let slot = if name == "--max-work" {
+                    &mut max_work
+                } else {
+                    &mut max_input
+                };
+                once(slot.is_some(), name)?;
+                let value = take_value(name, inline, &mut rest)?;
+                *slot = Some(limit_value(name, &value.to_string_lossy())?);
+            }
             f if f.starts_with('-') && f.len() > 1 => {
                 return Err(Error::new(
                     f,
-                    "unknown option for restrict (expected --input, --arithmetic or --method)",
+                    "unknown option for restrict (expected --input, --arithmetic, --method, \
+                     --max-work or --max-input)",
                 ))
             }
             f => {
@@ -360,7 +392,38 @@ fn parse_restrict(args: &[OsString]) -> Result<Command, Error> {
         input: input.unwrap_or(None),
         arithmetic: arithmetic.unwrap_or(Arithmetic::Exact),
         method: method.unwrap_or(MethodChoice::Library(Method::ClosedForm)),
+        limits: super::budget::Limits {
+            max_work: max_work.unwrap_or(super::budget::DEFAULT_MAX_WORK),
+            max_input: max_input.unwrap_or(super::budget::DEFAULT_MAX_INPUT),
+        },
     }))
+}
+
+/// The value of `--max-work` or `--max-input`: a non-negative integer, written in digits or in
+/// scientific notation (`1e12`), at most 2^64 - 1.
+fn limit_value(flag: &str, text: &str) -> Result<u64, Error> {
+    let well_formed = !text.is_empty()
+        && text
+            .bytes()
+            .all(|b| b.is_ascii_digit() || matches!(b, b'e' | b'E' | b'.' | b'+'));
+    match text.parse::<f64>() {
+        Ok(x)
+            if well_formed
+                && x.is_finite()
+                && x >= 0.0
+                && x <= u64::MAX as f64
+                && x.fract() == 0.0 =>
+        {
+            Ok(x as u64)
+        }
+        _ => Err(Error::new(
+            flag,
+            format!(
+                "expected a non-negative integer such as 1000000000 or 1e12, found {}",
+                quoted(text)
+            ),
+        )),
+    }
 }
 
 fn once(seen: bool, flag: &str) -> Result<(), Error> {

@@ -18,6 +18,7 @@
 
 pub mod answer;
 pub mod args;
+pub mod budget;
 pub mod job;
 pub mod patch_jobs;
 pub mod specialised;
@@ -25,7 +26,7 @@ pub mod spline_jobs;
 
 use crate::number::JsonNumber;
 use args::{Arithmetic, Command, MethodChoice, RestrictOptions};
-use blossom::{Error, Rational};
+use blossom::{BoundedF64, Error, Rational};
 use serde_json::Value;
 use std::ffi::OsString;
 use std::io::{Read, Write};
@@ -119,9 +120,15 @@ fn restrict(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<String, E
     }
     let bytes = read_input(options, stdin)?;
     let document = parse_json(&bytes)?;
+    budget::check(
+        &document,
+        options.method,
+        options.arithmetic,
+        &options.limits,
+    )?;
     let answer = match options.arithmetic {
         Arithmetic::Exact => solve::<Rational>(&document, options.method)?,
-        Arithmetic::F64 => solve::<f64>(&document, options.method)?,
+        Arithmetic::F64 => with_error_bound(solve::<BoundedF64>(&document, options.method)?),
     };
     let mut text = serde_json::to_string(&answer)
         .map_err(|e| Error::new("internal", format!("cannot write the answer: {e}")))?;
@@ -129,23 +136,55 @@ fn restrict(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<String, E
     Ok(text)
 }
 
-/// The bytes of the job: the `--input` file, or standard input.
+/// An `f64` answer computed in [`BoundedF64`] as plain JSON numbers, with the field
+/// `"error_bound"`: the largest bound over the answer's numbers on their distance to the exact
+/// answer for the same input doubles (`null` when some number has no finite bound).
+fn with_error_bound(mut answer: Value) -> Value {
+    let bound = crate::number::take_error_bound(&mut answer);
+    if let Value::Object(map) = &mut answer {
+        let bound = bound
+            .and_then(serde_json::Number::from_f64)
+            .map_or(Value::Null, Value::Number);
+        map.insert("error_bound".into(), bound);
+    }
+    answer
+}
+
+/// The bytes of the job: the `--input` file, or standard input, at most
+/// `options.limits.max_input` of them (a longer input is refused, never truncated).
 fn read_input(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<Vec<u8>, Error> {
-    let mut bytes = Vec::new();
-    match &options.input {
+    let limit = options.limits.max_input;
+    let (field, mut source): (&str, Box<dyn Read + '_>) = match &options.input {
         Some(path) => {
-            bytes = std::fs::read(path).map_err(|e| {
+            let file = std::fs::File::open(path).map_err(|e| {
                 Error::new(
                     "--input",
                     format!("cannot read {:?}: {e}", path.display().to_string()),
                 )
             })?;
+            ("--input", Box::new(file))
         }
-        None => {
-            stdin
-                .read_to_end(&mut bytes)
-                .map_err(|e| Error::new("input", format!("cannot read standard input: {e}")))?;
-        }
+        None => ("input", Box::new(stdin)),
+    };
+    let mut bytes = Vec::new();
+    source
+        .by_ref()
+        .take(limit.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(|e| match &options.input {
+            Some(path) => Error::new(
+                "--input",
+                format!("cannot read {:?}: {e}", path.display().to_string()),
+            ),
+            None => Error::new("input", format!("cannot read standard input: {e}")),
+        })?;
+    if bytes.len() as u64 > limit {
+        return Err(Error::new(
+            field,
+            format!(
+                "the input is longer than the limit of {limit} bytes (raise it with --max-input)"
+            ),
+        ));
     }
     Ok(bytes)
 }

@@ -79,7 +79,7 @@ pub fn solve<T: JsonNumber + Field>(
         "derivative" => derivative::<T>(job, &mut out)?,
         "rational-tensor" => {
             rational_tensor_input::<T>(job)?;
-            let (patch, degree) = rational_tensor_exact(&exact_spelling(job))?;
+            let (patch, degree) = rational_tensor_exact(&exact_spelling::<T>(job))?;
             out.insert("degree".into(), Value::from(vec![degree.0, degree.1]));
             let points: Vec<Vec<Point<T>>> = patch
                 .points()
@@ -105,7 +105,7 @@ pub fn solve<T: JsonNumber + Field>(
         }
         "rational-triangle" => {
             rational_triangle_input::<T>(job)?;
-            let patch = rational_triangle_exact(&exact_spelling(job))?;
+            let patch = rational_triangle_exact(&exact_spelling::<T>(job))?;
             let points: Vec<Point<T>> = patch.points().iter().map(|p| rounded(p)).collect();
             let weights: Vec<T> = rounded(patch.weights());
             check_rounded_weights(

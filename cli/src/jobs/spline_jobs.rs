@@ -40,12 +40,13 @@
 //! the numbers as written (a JSON number such as `0.1` as the decimal 1/10, a string such as
 //! `"1/3"` as the fraction), compute exactly, and round each number of the answer once to the
 //! nearest double. The numbers are also read as doubles first, so that the errors of `f64`
-//! input (a value out of range, say) are the same as for every other job.
+//! input (a value out of range, say) are the same as for every other job, and a number whose
+//! double is zero (`"1e-999999"`) is zero here too ([`exact_spelling`]).
 
 use super::answer::{point_json, Answer};
 use super::args::MethodChoice;
 use super::job::{array, degree_value, field, number, numbers, points, Job};
-use crate::number::{json_type, JsonNumber};
+use crate::number::{f64_from_json, format_rational, json_type, rational_from_json, JsonNumber};
 use crate::repeated;
 use blossom::bezier_curve_blossom;
 use blossom::curve_control_points_from_samples;
@@ -80,12 +81,12 @@ pub fn solve<T: JsonNumber + Field>(
         "bezier-curve" => bezier_curve::<T>(job, method, &mut out)?,
         "bspline" => {
             bspline_input::<T>(job)?;
-            bspline_answer::<T>(bspline_exact(&exact_spelling(job))?, &mut out)?;
+            bspline_answer::<T>(bspline_exact(&exact_spelling::<T>(job))?, &mut out)?;
         }
         "bspline-eval" => bspline_eval::<T>(job, &mut out)?,
         "rational-curve" => {
             rational_input::<T>(job)?;
-            rational_answer::<T>(rational_exact(&exact_spelling(job))?, &mut out)?;
+            rational_answer::<T>(rational_exact(&exact_spelling::<T>(job))?, &mut out)?;
         }
         "elevate" => {
             let curve = control_points::<T>(job)?;
@@ -258,18 +259,37 @@ pub(super) fn rounded<T: JsonNumber>(xs: &[Rational]) -> Vec<T> {
     xs.iter().map(T::from_rational).collect()
 }
 
-/// The job with every JSON number that has a fraction part or an exponent (`0.1`, `1e-3`)
-/// replaced by the string of its spelling, so that exact reading takes it as the decimal
-/// written instead of refusing it (see the module documentation).
-pub(super) fn exact_spelling(job: &Map<String, Value>) -> Map<String, Value> {
+/// The job as exact reading should see it under the arithmetic `T` (see the module
+/// documentation): unchanged under `exact`; under `f64`, every number as written (a JSON number
+/// with a fraction part or an exponent, `0.1`, becomes the string of its spelling, which exact
+/// reading takes as the decimal written), except that a number whose nearest double is zero is
+/// zero, as it is in every other `f64` job (`"1e-999999"` underflows), and a number that exact
+/// reading cannot take (an exponent beyond [`crate::number::MAX_EXPONENT`] in a long spelling)
+/// is its double's exact value.
+pub(super) fn exact_spelling<T: JsonNumber + Field>(
+    job: &Map<String, Value>,
+) -> Map<String, Value> {
     fn convert(value: &Value) -> Value {
         match value {
-            Value::Number(n) => {
-                let text = n.to_string();
-                if text.contains(['.', 'e', 'E']) {
-                    Value::String(text)
+            Value::Number(_) | Value::String(_) => {
+                let Ok(double) = f64_from_json(value) else {
+                    // Not a number (a name such as a `method`), or refused by the first reading.
+                    return value.clone();
+                };
+                let spelling = match value {
+                    Value::Number(n) => Value::String(n.to_string()),
+                    other => other.clone(),
+                };
+                if double == 0.0 {
+                    Value::from(0)
+                } else if rational_from_json(&spelling).is_ok() {
+                    spelling
                 } else {
-                    value.clone()
+                    Value::String(
+                        Rational::from_float(double)
+                            .and_then(|q| format_rational(&q).ok())
+                            .unwrap_or_else(|| String::from("0")),
+                    )
                 }
             }
             Value::Array(items) => Value::Array(items.iter().map(convert).collect()),
@@ -278,6 +298,9 @@ pub(super) fn exact_spelling(job: &Map<String, Value>) -> Map<String, Value> {
             }
             other => other.clone(),
         }
+    }
+    if T::EXACT {
+        return job.clone();
     }
     job.iter().map(|(k, v)| (k.clone(), convert(v))).collect()
 }

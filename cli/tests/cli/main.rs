@@ -4,6 +4,8 @@ mod binary;
 #[path = "../../../tests/common/mod.rs"]
 mod common;
 
+mod cli_budget;
+mod cli_error_bounds;
 mod cli_patch_jobs;
 mod cli_restrict;
 mod cli_spline_jobs;
