@@ -227,7 +227,10 @@ fn close(exact: &Value, float: &Value) {
             e.iter().zip(f).for_each(|(x, y)| close(x, y));
         }
         (Value::Object(e), Value::Object(f)) => {
-            assert_eq!(e.len(), f.len(), "{exact} vs {float}");
+            // An f64 answer has one more field, its "error_bound".
+            let extra =
+                usize::from(f.contains_key("error_bound") && !e.contains_key("error_bound"));
+            assert_eq!(e.len() + extra, f.len(), "{exact} vs {float}");
             for (k, x) in e {
                 close(x, &f[k]);
             }
@@ -273,16 +276,28 @@ fn f64_decisions_are_exact() {
         );
     }
     // A weight that is not zero exactly but underflows in f64 is refused there (its rounded
-    // control point would be meaningless), and answered exactly.
-    let tiny = json!({"kind": "rational-curve", "numerator": [["1e-300"]],
-        "denominator": ["1e-330"], "interval": [0, 1]});
+    // control point would be meaningless), and answered exactly: w(t) = 1e-200 t on
+    // [1e-200, 2e-200] has weights 1e-400 and 2e-400.
+    let tiny = json!({"kind": "rational-curve", "numerator": [[1]],
+        "denominator": [0, "1e-200"], "interval": ["1e-200", "2e-200"]});
     let e = error_with(&["--arithmetic", "f64"], &tiny);
     assert!(
         e.starts_with("error: weights[0]: the weight is not zero but rounds to zero"),
         "{e}"
     );
-    let weight = format!("1/1{}", "0".repeat(330));
-    assert_eq!(answer(&tiny)["weights"], json!([weight]));
+    let weight = format!("1/1{}", "0".repeat(400));
+    assert_eq!(answer(&tiny)["weights"][0], json!(weight));
+    // A number whose nearest double is zero is zero under f64, as in every other job: the
+    // weight 1e-330 is then zero (and exactly 10^-330 under exact).
+    let underflow = json!({"kind": "rational-curve", "numerator": [["1e-300"]],
+        "denominator": ["1e-330"], "interval": [0, 1]});
+    let e = error_with(&["--arithmetic", "f64"], &underflow);
+    assert!(e.starts_with("error: denominator: "), "{e}");
+    assert!(e.contains("zero"), "{e}");
+    assert_eq!(
+        answer(&underflow)["weights"],
+        json!([format!("1/1{}", "0".repeat(330))])
+    );
     // Out-of-range doubles are refused as in every other f64 job.
     let big = json!({"kind": "bspline", "degree": 0, "pieces": [
         {"interval": [0, "1e400"], "coefficients": [[0]]}]});
