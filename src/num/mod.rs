@@ -3,6 +3,7 @@
 //! algebra. This layer imports nothing else of the crate but the error type.
 
 pub(crate) mod binomial;
+pub(crate) mod limits;
 pub(crate) mod linalg;
 pub(crate) mod poly;
 pub(crate) mod ring;
