@@ -211,7 +211,7 @@ fn de_boor_points<T: Field>(
             ));
         }
         for k in s - p..=s {
-            let value = curve_blossom(&curves[piece], &t[k + 1..=k + p]);
+            let value = curve_blossom(&curves[piece], &t[k + 1..=k + p])?;
             match &points[k] {
                 None => points[k] = Some((piece, value)),
                 Some((other, v)) if check_agreement && *v != value => {

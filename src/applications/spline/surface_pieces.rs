@@ -291,7 +291,7 @@ pub fn bspline_surface_from_pieces<T: Field>(
                             &surface,
                             &t[k + 1..=k + p],
                             &s[l + 1..=l + q],
-                        ));
+                        )?);
                     }
                 }
             }
