@@ -850,7 +850,7 @@ mod tests {
 
     #[test]
     fn checked_scratch_lengths_agree_with_their_definitions() {
-        for n in 0..40 {
+        for n in 0usize..40 {
             for dim in [1, 3, 1536] {
                 let (mut r, mut curve) = (n + 1, 0);
                 while r > 4 {

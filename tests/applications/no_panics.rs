@@ -129,7 +129,7 @@ fn pyramid_blossoms_with_the_wrong_number_of_arguments() {
 
 #[test]
 fn triangle_power_to_bernstein_with_a_short_list() {
-    let e = triangle_power_to_bernstein(2, &[vec![1.0]; 5]).unwrap_err();
+    let e = triangle_power_to_bernstein(2, &vec![vec![1.0]; 5]).unwrap_err();
     assert_eq!(what(e), kind_field(ErrorKind::Shape, "d"));
     let e = triangle_power_to_bernstein(usize::MAX, &[vec![1.0]]).unwrap_err();
     assert_eq!(what(e), kind_field(ErrorKind::TooLarge, "n"));
