@@ -25,10 +25,10 @@ use crate::num::limits::{check_entries, checked_product};
 use crate::num::linalg::check_finite;
 use crate::shape::bezier::BezierCurve;
 use crate::shape::halving::{
-    curve_net, tensor_net, triangle_net, BernsteinPairStep, BernsteinStep,
+    checked_curve_scratch_len, checked_tensor_scratch_len, checked_triangle_scratch_len,
 };
 use crate::shape::halving::{
-    checked_curve_scratch_len, checked_tensor_scratch_len, checked_triangle_scratch_len,
+    curve_net, tensor_net, triangle_net, BernsteinPairStep, BernsteinStep,
 };
 use crate::shape::simplex::checked_triangle_len;
 

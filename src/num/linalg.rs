@@ -132,7 +132,11 @@ pub fn inverse(matrix: &[Vec<Rational>], field: &str) -> Result<Vec<Vec<Rational
 
 /// `matrix * rhs` for a rational matrix and a column of points (any [`Ring`]), every point of
 /// `dim` coordinates (callers check; a shorter point would be zero-padded).
-pub(crate) fn apply<T: Ring>(matrix: &[Vec<Rational>], rhs: &[Point<T>], dim: usize) -> Vec<Point<T>> {
+pub(crate) fn apply<T: Ring>(
+    matrix: &[Vec<Rational>],
+    rhs: &[Point<T>],
+    dim: usize,
+) -> Vec<Point<T>> {
     matrix
         .iter()
         .map(|row| {

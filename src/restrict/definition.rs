@@ -113,7 +113,10 @@ pub fn power_triangle_blossom<T: Ring>(
 }
 
 /// [`power_triangle_blossom`] with `args.len()` known to be the degree.
-fn power_triangle_blossom_unchecked<T: Ring>(surface: &PowerTriangle<T>, args: &[[T; 2]]) -> Point<T> {
+fn power_triangle_blossom_unchecked<T: Ring>(
+    surface: &PowerTriangle<T>,
+    args: &[[T; 2]],
+) -> Point<T> {
     let big_n = surface.degree();
     let n = surface.rows().len() - 1;
     let m = surface.rows().iter().map(Vec::len).max().unwrap_or(1) - 1;

@@ -29,9 +29,9 @@
 //! inverse formula, Examples 2 and 3 of 004). The closures are only called at averages of the
 //! arguments, so they need only be defined on the convex hull of the arguments.
 
-use crate::error::{check_arity, Result};
 #[cfg(doc)]
 use crate::error::ErrorKind;
+use crate::error::{check_arity, Result};
 use crate::num::binomial::binomial;
 use crate::restrict::nets::{repeated, tensor_net, triangle_net};
 use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};

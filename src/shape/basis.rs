@@ -16,8 +16,8 @@
 //! * [`triangle_bernstein_to_power`]: the inverse of [`triangle_power_to_bernstein`],
 //!   c_ij = N! / (i! j! (N-i-j)!) Δ_1^i Δ_2^j b_(0,0,N), O(N^3).
 
-use crate::num::binomial::multinomial;
 use crate::error::Result;
+use crate::num::binomial::multinomial;
 use crate::shape::bezier::{check_triangle_net, TriangularPatch};
 use crate::shape::point::Point;
 use crate::shape::simplex::{triangle_index, triangle_len};

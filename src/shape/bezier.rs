@@ -12,10 +12,10 @@
 //!   for barycentric arguments (u_r, v_r, w_r).
 
 use crate::error::{check_arity, Error, ErrorKind, Result};
+use crate::num::limits::check_entries;
 use crate::shape::point::lerp;
 use crate::shape::point::Point;
 use crate::shape::power::check_dims;
-use crate::num::limits::check_entries;
 use crate::shape::simplex::{checked_triangle_len, triangle_index, triangle_len};
 use crate::Ring;
 
@@ -43,7 +43,11 @@ fn check_polygon<T>(points: &[Point<T>], field: &str) -> Result<()> {
 /// non-zero length, all points of one dimension D >= 1.
 fn check_net<T>(net: &[Vec<Point<T>>], field: &str) -> Result<()> {
     let Some(first) = net.first() else {
-        return Err(Error::of(ErrorKind::Empty, field, "expected at least one row"));
+        return Err(Error::of(
+            ErrorKind::Empty,
+            field,
+            "expected at least one row",
+        ));
     };
     let cols = first.len();
     if cols == 0 || first[0].is_empty() {

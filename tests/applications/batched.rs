@@ -70,7 +70,8 @@ fn curve_batches_equal_each_curve_restricted_exactly() {
             let exact_net: Vec<Vec<Rational>> = exact_points(net);
             for j in 0..=n {
                 let want =
-                    bezier_curve_blossom(&exact_net, &repeated(&exact(a), n - j, &exact(b), j)).unwrap();
+                    bezier_curve_blossom(&exact_net, &repeated(&exact(a), n - j, &exact(b), j))
+                        .unwrap();
                 for (x, w) in want.iter().enumerate() {
                     close(out.get(k, j, x), w);
                 }
@@ -105,7 +106,8 @@ fn tensor_and_triangle_batches_equal_the_pyramid() {
                     &grid,
                     &repeated(&a, n - nu, &b, nu),
                     &repeated(&c, m - mu, &d, mu),
-                ).unwrap();
+                )
+                .unwrap();
                 for (x, w) in want.iter().enumerate() {
                     close(out.get(k, nu * (m + 1) + mu, x), w);
                 }

@@ -34,7 +34,12 @@ fn bspline() -> BSpline<f64> {
     BSpline::new(
         2,
         vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0],
-        vec![vec![1.0, 1.0], vec![2.0, 3.0], vec![4.0, 3.0], vec![3.0, 1.0]],
+        vec![
+            vec![1.0, 1.0],
+            vec![2.0, 3.0],
+            vec![4.0, 3.0],
+            vec![3.0, 1.0],
+        ],
     )
     .unwrap()
 }
@@ -52,7 +57,12 @@ fn triangular_patch_of_a_huge_degree_is_too_large() {
     assert_eq!(what(e), kind_field(ErrorKind::TooLarge, "degree"));
     assert_eq!(checked_triangle_len(usize::MAX), None);
     // Valid input is unchanged.
-    assert_eq!(TriangularPatch::new(1, vec![vec![1.0]; 3]).unwrap().degree(), 1);
+    assert_eq!(
+        TriangularPatch::new(1, vec![vec![1.0]; 3])
+            .unwrap()
+            .degree(),
+        1
+    );
 }
 
 #[test]
@@ -101,7 +111,10 @@ fn polarisation_with_the_wrong_number_or_dimension_of_arguments() {
     assert_eq!(what(e), kind_field(ErrorKind::Arity, "args"));
     let e = polar_form(2, &[vec![1.0], vec![]], 1, &q).unwrap_err();
     assert_eq!(what(e), kind_field(ErrorKind::Dimension, "args[1]"));
-    assert_eq!(polar_form(2, &[vec![3.0], vec![5.0]], 1, &q).unwrap(), vec![15.0]);
+    assert_eq!(
+        polar_form(2, &[vec![3.0], vec![5.0]], 1, &q).unwrap(),
+        vec![15.0]
+    );
 }
 
 #[test]
@@ -124,7 +137,10 @@ fn pyramid_blossoms_with_the_wrong_number_of_arguments() {
     let t = TriangularPatch::new(1, vec![vec![1.0], vec![2.0], vec![3.0]]).unwrap();
     let e = bezier_triangle_blossom(&t, &[]).unwrap_err();
     assert_eq!(what(e), kind_field(ErrorKind::Arity, "args"));
-    assert_eq!(bezier_triangle_blossom(&t, &[[1.0, 0.0, 0.0]]).unwrap(), vec![3.0]);
+    assert_eq!(
+        bezier_triangle_blossom(&t, &[[1.0, 0.0, 0.0]]).unwrap(),
+        vec![3.0]
+    );
 }
 
 #[test]
@@ -135,19 +151,33 @@ fn triangle_power_to_bernstein_with_a_short_list() {
     assert_eq!(what(e), kind_field(ErrorKind::TooLarge, "n"));
     let e = triangle_power_to_bernstein(1, &[vec![1.0], vec![1.0, 2.0], vec![3.0]]).unwrap_err();
     assert_eq!(what(e), kind_field(ErrorKind::Dimension, "d[1]"));
-    assert_eq!(triangle_power_to_bernstein(0, &[vec![7.0]]).unwrap().get(0, 0), &vec![7.0]);
+    assert_eq!(
+        triangle_power_to_bernstein(0, &[vec![7.0]])
+            .unwrap()
+            .get(0, 0),
+        &vec![7.0]
+    );
 }
 
 #[test]
 fn bspline_eval_at_nan_and_infinities() {
     let f = bspline();
     for t in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
-        assert_eq!(what(f.eval(&t).unwrap_err()), kind_field(ErrorKind::NotFinite, "t"));
-        assert_eq!(what(f.de_boor(&t).unwrap_err()), kind_field(ErrorKind::NotFinite, "t"));
+        assert_eq!(
+            what(f.eval(&t).unwrap_err()),
+            kind_field(ErrorKind::NotFinite, "t")
+        );
+        assert_eq!(
+            what(f.de_boor(&t).unwrap_err()),
+            kind_field(ErrorKind::NotFinite, "t")
+        );
         let e = f.insert_knot(&t).unwrap_err();
         assert_eq!(what(e), kind_field(ErrorKind::NotFinite, "x"));
     }
-    assert_eq!(what(f.eval(&3.0).unwrap_err()), kind_field(ErrorKind::Domain, "t"));
+    assert_eq!(
+        what(f.eval(&3.0).unwrap_err()),
+        kind_field(ErrorKind::Domain, "t")
+    );
     assert!(f.eval(&2.0).is_ok());
 }
 
@@ -176,7 +206,12 @@ fn knot_vectors_containing_nan_or_infinities() {
     assert_eq!(what(e), kind_field(ErrorKind::Domain, "s"));
     let e = bspline_basis_on_span(&[0.0, 1.0], usize::MAX, usize::MAX).unwrap_err();
     assert_eq!(what(e), kind_field(ErrorKind::Domain, "s"));
-    assert_eq!(bspline_basis_on_span(&[0.0, 0.0, 1.0, 1.0], 1, 1).unwrap().len(), 2);
+    assert_eq!(
+        bspline_basis_on_span(&[0.0, 0.0, 1.0, 1.0], 1, 1)
+            .unwrap()
+            .len(),
+        2
+    );
 }
 
 #[test]
@@ -194,7 +229,10 @@ fn pieces_of_a_huge_degree_are_too_large() {
 #[test]
 fn batch_zeros_with_an_overflowing_product() {
     let e = Batch::zeros(usize::MAX, 2, 1).unwrap_err();
-    assert_eq!(what(e), kind_field(ErrorKind::TooLarge, "points * dim * len"));
+    assert_eq!(
+        what(e),
+        kind_field(ErrorKind::TooLarge, "points * dim * len")
+    );
     let e = Batch::zeros(1 << 20, 1 << 20, 1 << 20).unwrap_err();
     assert_eq!(e.kind, ErrorKind::TooLarge);
     let e = Batch::zeros(4, 3, usize::MAX).unwrap_err();
@@ -202,7 +240,10 @@ fn batch_zeros_with_an_overflowing_product() {
     let e = Batch::zeros(MAX_ENTRIES, 1, 1).unwrap_err();
     assert_eq!(e.kind, ErrorKind::TooLarge);
     let b = Batch::zeros(4, 3, 10).unwrap();
-    assert_eq!((b.len(), b.as_slice().len()), (10, 4 * 3 * blossom::BATCH_LANES));
+    assert_eq!(
+        (b.len(), b.as_slice().len()),
+        (10, 4 * 3 * blossom::BATCH_LANES)
+    );
 }
 
 #[test]
@@ -237,7 +278,10 @@ fn solve_rational_system_with_points_of_the_wrong_dimension() {
     let m = vec![vec![one.clone()]];
     let e = solve_rational_system(&m, &[vec![1.0, 2.0]], 1, "m").unwrap_err();
     assert_eq!(what(e), kind_field(ErrorKind::Dimension, "rhs[0]"));
-    assert_eq!(solve_rational_system(&m, &[vec![2.0]], 1, "m").unwrap(), vec![vec![2.0]]);
+    assert_eq!(
+        solve_rational_system(&m, &[vec![2.0]], 1, "m").unwrap(),
+        vec![vec![2.0]]
+    );
 }
 
 /// A random size: small, around the limits, or huge.

@@ -80,7 +80,8 @@ pub fn tensor_by_pyramid<T: Ring>(patch: &TensorPatch<T>, rect: &[T; 4]) -> Vec<
                         patch.control_points(),
                         &repeated(a, n - nu, b, nu),
                         &repeated(c, m - mu, d, mu),
-                    ).unwrap()
+                    )
+                    .unwrap()
                 })
                 .collect()
         })

@@ -135,7 +135,8 @@ pub fn curve_cross_check(max_n: usize) -> (bool, bool) {
     let symbolic = (0..=max_n).all(|n| {
         let c = symbolic_curve(n);
         let ts: Vec<Poly> = (1..=n).map(|k| Poly::var(&format!("t{k}"))).collect();
-        homogeneous_curve_blossom(&c, &ts).expect("n arguments") == curve_blossom(&c, &ts).expect("n arguments")
+        homogeneous_curve_blossom(&c, &ts).expect("n arguments")
+            == curve_blossom(&c, &ts).expect("n arguments")
     });
     let q = |a: i64, b: i64| Rational::new(a.into(), b.into());
     let homogeneous = (1..=max_n).all(|n| {
@@ -155,7 +156,7 @@ pub fn curve_cross_check(max_n: usize) -> (bool, bool) {
         let f = multilinear_polar_form(n, &args, 2, &|x| {
             blossom::homogeneous_curve(&c, x.try_into().expect("two coordinates"))
         })
-            .expect("n arguments");
+        .expect("n arguments");
         let ratios: Vec<Rational> = pts.iter().map(|(t, s)| t / s).collect();
         let scale: Rational = pts.iter().map(|(_, s)| s.clone()).product();
         let want: Vec<Rational> = curve_blossom(&c, &ratios)

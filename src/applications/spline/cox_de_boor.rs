@@ -35,11 +35,7 @@ fn times_linear<T: Field>(f: &[T], a: &T, b: &T, len: usize) -> Coeffs<T> {
 /// [`ErrorKind::Domain`] on `s` unless p <= s and s + p + 1 < `knots.len()` (the knots
 /// t_(s-p)..t_(s+p+1) the recursion reads); [`ErrorKind::NotFinite`] on `knots[i]` for a NaN
 /// or an infinity (a zero test on knot differences decides each term).
-pub fn bspline_basis_on_span<T: Field>(
-    knots: &[T],
-    p: usize,
-    s: usize,
-) -> Result<Vec<Coeffs<T>>> {
+pub fn bspline_basis_on_span<T: Field>(knots: &[T], p: usize, s: usize) -> Result<Vec<Coeffs<T>>> {
     let fits = s >= p && s.checked_add(p).and_then(|k| k.checked_add(1)) < Some(knots.len());
     if !fits {
         return Err(Error::of(

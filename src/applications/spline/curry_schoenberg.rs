@@ -40,7 +40,11 @@ fn normalise<T: Field>(p: usize, pieces: &[Piece<T>]) -> Result<Vec<PowerCurve<T
         ));
     };
     let dim = first.curve.dim();
-    let len = check_entries(p.checked_add(1), "degree", "the number p + 1 of coefficients")?;
+    let len = check_entries(
+        p.checked_add(1),
+        "degree",
+        "the number p + 1 of coefficients",
+    )?;
     checked_product(
         &[pieces.len(), len, dim],
         "degree",
