@@ -6,10 +6,11 @@
 
 use crate::error::{Error, ErrorKind, Result};
 
-/// The most entries a caller-sized allocation may hold: 2^28 (2 GiB of `f64`). Degrees,
+/// The most entries a caller-sized allocation may hold: 2^25 (256 MiB of `f64`). Degrees,
 /// batch sizes and knot counts whose storage or scratch would exceed it are refused with
-/// [`ErrorKind::TooLarge`].
-pub const MAX_ENTRIES: usize = 1 << 28;
+/// [`ErrorKind::TooLarge`]: for instance a [`RestrictionMap`](crate::RestrictionMap) of a curve
+/// of degree 20000, whose engine scratch for one block is about 4 x 20000 x 512 numbers.
+pub const MAX_ENTRIES: usize = 1 << 25;
 
 /// The refusal of a size about `field`: above [`MAX_ENTRIES`] or overflowing.
 fn too_large(field: &str, what: &str) -> Error {

@@ -36,7 +36,8 @@ fn times_linear<T: Field>(f: &[T], a: &T, b: &T, len: usize) -> Coeffs<T> {
 /// t_(s-p)..t_(s+p+1) the recursion reads); [`ErrorKind::NotFinite`] on `knots[i]` for a NaN
 /// or an infinity (a zero test on knot differences decides each term).
 pub fn bspline_basis_on_span<T: Field>(knots: &[T], p: usize, s: usize) -> Result<Vec<Coeffs<T>>> {
-    let fits = s >= p && s.checked_add(p).and_then(|k| k.checked_add(1)) < Some(knots.len());
+    let end = s.checked_add(p).and_then(|k| k.checked_add(1));
+    let fits = s >= p && end.is_some_and(|k| k < knots.len());
     if !fits {
         return Err(Error::of(
             ErrorKind::Domain,
