@@ -64,6 +64,7 @@ fn curves(c: &mut Criterion) {
                             black_box(curve).control_points(),
                             &repeated(A, n - j, B, j),
                         )
+                        .expect("the arguments of the degree")
                     })
                     .collect::<Vec<_>>()
             })
@@ -106,11 +107,14 @@ fn tensors(c: &mut Criterion) {
                 let mut out = Vec::new();
                 for nu in 0..=n {
                     for mu in 0..=n {
-                        out.push(bezier_tensor_blossom(
-                            black_box(patch).control_points(),
-                            &repeated(a, n - nu, b, nu),
-                            &repeated(cc, n - mu, d, mu),
-                        ));
+                        out.push(
+                            bezier_tensor_blossom(
+                                black_box(patch).control_points(),
+                                &repeated(a, n - nu, b, nu),
+                                &repeated(cc, n - mu, d, mu),
+                            )
+                            .expect("the arguments of the degree"),
+                        );
                     }
                 }
                 out
@@ -174,6 +178,7 @@ fn triangles(c: &mut Criterion) {
                                 .chain(std::iter::repeat_n(bary[2], la))
                                 .collect();
                             bezier_triangle_blossom(patch, &args)
+                                .expect("the arguments of the degree")
                         })
                         .collect::<Vec<_>>()
                 })

@@ -189,7 +189,7 @@ const CURVES: usize = 1_000_000;
 
 fn batch(c: &mut Criterion) {
     let mut rng = Rng(7);
-    let mut input = Batch::zeros(4, 3, CURVES);
+    let mut input = Batch::zeros(4, 3, CURVES).expect("12 million numbers, below MAX_ENTRIES");
     for k in 0..CURVES {
         for p in 0..4 {
             for x in 0..3 {
@@ -198,7 +198,7 @@ fn batch(c: &mut Criterion) {
         }
     }
     let map = RestrictionMap::curve(3, 0.25, 0.75).expect("a finite interval");
-    let mut out = Batch::zeros(4, 3, CURVES);
+    let mut out = Batch::zeros(4, 3, CURVES).expect("12 million numbers, below MAX_ENTRIES");
     let bytes = 2 * std::mem::size_of_val(input.as_slice()) as u64; // read + write
     let mut group = c.benchmark_group("batch");
     group.throughput(Throughput::Bytes(bytes));

@@ -25,6 +25,9 @@ pub enum ErrorKind {
     ZeroWeight,
     /// A number that is not finite (NaN or an infinity) where a finite one is needed.
     NotFinite,
+    /// A size (a degree, a number of objects, of knots or of points) whose storage would exceed
+    /// [`MAX_ENTRIES`](crate::MAX_ENTRIES) entries, or whose computation overflows `usize`.
+    TooLarge,
     /// A linear system without a unique solution.
     Singular,
     /// A name that is not one of the known ones (a method, a reduction).
@@ -84,6 +87,20 @@ impl fmt::Display for Error {
 }
 
 impl std::error::Error for Error {}
+
+/// `Ok(())` when a blossom of degree `degree` got `found` arguments (in `field`), else an
+/// [`ErrorKind::Arity`] error: the one arity check of every blossom of the crate.
+pub(crate) fn check_arity(field: &str, found: usize, degree: usize) -> Result<()> {
+    if found == degree {
+        Ok(())
+    } else {
+        Err(Error::of(
+            ErrorKind::Arity,
+            field,
+            format!("a blossom of degree {degree} takes {degree} arguments, found {found}"),
+        ))
+    }
+}
 
 /// Shorthand for results of this crate.
 pub(crate) type Result<T> = std::result::Result<T, Error>;

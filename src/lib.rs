@@ -60,6 +60,7 @@ mod shape;
 // Numbers.
 pub use num::binomial::{binomial, multinomial};
 pub use num::bounded::BoundedF64;
+pub use num::limits::MAX_ENTRIES;
 pub use num::linalg::{solve_rational_system, Field};
 pub use num::poly::Poly;
 pub use num::ring::{rational_to_f64, Rational, Ring};
@@ -87,7 +88,7 @@ pub use shape::halving::{
 pub use shape::point::Point;
 pub use shape::power::{PowerCurve, PowerSurface};
 pub use shape::power_triangle::PowerTriangle;
-pub use shape::simplex::{triangle_index, triangle_len};
+pub use shape::simplex::{checked_triangle_len, triangle_index, triangle_len};
 pub use shape::traits::{Evaluate, Restrict};
 
 // Restriction.

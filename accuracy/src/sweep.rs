@@ -290,7 +290,7 @@ pub fn bezier_curves(degrees: &[usize], samples: usize, seed: u64) -> Vec<Row> {
                 )
                 .expect("two curves of one shape");
                 let map = RestrictionMap::curve(n, a, b).expect("finite");
-                let mut out = Batch::zeros(n + 1, 3, 2);
+                let mut out = Batch::zeros(n + 1, 3, 2).expect("a small batch");
                 batch.restrict_into(&map, &mut out).expect("fitting shapes");
                 for (k, ctrl) in curves.iter().enumerate() {
                     let want = Bezier::new(exact_points::<Dyadic>(ctrl))
@@ -388,7 +388,7 @@ pub fn bezier_tensors(degrees: &[(usize, usize)], samples: usize, seed: u64) -> 
                 )
                 .expect("one net");
                 let map = RestrictionMap::tensor((n, m), rect).expect("finite");
-                let mut out = Batch::zeros(net.len(), 3, 1);
+                let mut out = Batch::zeros(net.len(), 3, 1).expect("a small batch");
                 batch.restrict_into(&map, &mut out).expect("fitting shapes");
                 let lanes: Vec<[f64; 3]> = (0..net.len())
                     .map(|p| std::array::from_fn(|x| out.get(0, p, x)))
@@ -492,7 +492,7 @@ pub fn bezier_triangles(degrees: &[usize], samples: usize, seed: u64) -> Vec<Row
                 )
                 .expect("one net");
                 let map = RestrictionMap::triangle(n, tri).expect("finite");
-                let mut out = Batch::zeros(len, 3, 1);
+                let mut out = Batch::zeros(len, 3, 1).expect("a small batch");
                 batch.restrict_into(&map, &mut out).expect("fitting shapes");
                 let lanes: Vec<[f64; 3]> = (0..len)
                     .map(|p| std::array::from_fn(|x| out.get(0, p, x)))

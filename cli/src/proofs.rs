@@ -324,7 +324,7 @@ pub fn bernstein_triangle<T: Ring>(surface: &PowerSurface<T>) -> TriangularPatch
             d[triangle_index(big_n, i, j)] = c.clone();
         }
     }
-    triangle_power_to_bernstein(big_n, &d)
+    triangle_power_to_bernstein(big_n, &d).expect("a full net of the surface's dimension")
 }
 
 /// The name of the Bézier-input proofs in [`prove_bezier_input`].

@@ -21,26 +21,26 @@
 //! block is padded with zeros.
 
 use crate::error::{Error, ErrorKind, Result};
+use crate::num::limits::{check_entries, checked_product};
+use crate::num::linalg::check_finite;
 use crate::shape::bezier::BezierCurve;
+use crate::shape::halving::{
+    checked_curve_scratch_len, checked_tensor_scratch_len, checked_triangle_scratch_len,
+};
 use crate::shape::halving::{
     curve_net, tensor_net, triangle_net, BernsteinPairStep, BernsteinStep,
 };
-use crate::shape::simplex::triangle_len;
+use crate::shape::simplex::checked_triangle_len;
+
+/// What the degree of a [`RestrictionMap`] counts, for its errors.
+const POINTS: &str = "the number of control points";
 
 /// Objects per block of a [`Batch`] (measured: see the module docs).
 pub const BATCH_LANES: usize = 512;
 
 /// The f64 value `x`, or an error naming `field` when it is not finite.
 fn finite(x: f64, field: &str) -> Result<f64> {
-    if x.is_finite() {
-        Ok(x)
-    } else {
-        Err(Error::of(
-            ErrorKind::NotFinite,
-            field,
-            format!("expected a finite number, found {x}"),
-        ))
-    }
+    check_finite(&x, field).map(|()| x)
 }
 
 /// The domain of a [`RestrictionMap`].
@@ -70,34 +70,29 @@ impl RestrictionMap {
     /// Bézier curves of degree `degree` over [0, 1] restricted to [a, b].
     ///
     /// # Errors
-    /// `a` or `b` when not finite.
+    /// [`ErrorKind::NotFinite`] on `a` or `b` when not finite; [`ErrorKind::TooLarge`] on
+    /// `degree` when a block of one-dimensional curves, or the engine's scratch for it, would
+    /// exceed [`MAX_ENTRIES`](crate::MAX_ENTRIES).
     pub fn curve(degree: usize, a: f64, b: f64) -> Result<Self> {
         let domain = Domain::Curve([finite(a, "a")?, finite(b, "b")?]);
-        Ok(RestrictionMap {
-            inputs: degree + 1,
-            outputs: degree + 1,
-            domain,
-        })
+        let len = check_entries(degree.checked_add(1), "degree", POINTS)?;
+        RestrictionMap::sized(len, domain)
     }
 
     /// Tensor patches of bidegree `degree` over [0, 1]^2 restricted to `rect = [a, b, c, d]`;
     /// control points are numbered row by row, `p = nu * (m + 1) + mu`.
     ///
     /// # Errors
-    /// `rect[k]` when not finite.
+    /// [`ErrorKind::NotFinite`] on `rect[k]` when not finite; [`ErrorKind::TooLarge`] on
+    /// `degree` as for [`RestrictionMap::curve`].
     pub fn tensor(degree: (usize, usize), rect: [f64; 4]) -> Result<Self> {
         for (k, &x) in rect.iter().enumerate() {
             finite(x, &format!("rect[{k}]"))?;
         }
-        let len = (degree.0 + 1) * (degree.1 + 1);
-        Ok(RestrictionMap {
-            inputs: len,
-            outputs: len,
-            domain: Domain::Tensor {
-                cols: degree.1 + 1,
-                rect,
-            },
-        })
+        let rows = check_entries(degree.0.checked_add(1), "degree", POINTS)?;
+        let cols = check_entries(degree.1.checked_add(1), "degree", POINTS)?;
+        let len = checked_product(&[rows, cols], "degree", POINTS)?;
+        RestrictionMap::sized(len, Domain::Tensor { cols, rect })
     }
 
     /// Triangular patches of degree `degree` restricted to the sub-triangle whose corners have
@@ -105,19 +100,43 @@ impl RestrictionMap {
     /// control points in the order of [`crate::TriangularPatch`].
     ///
     /// # Errors
-    /// `corners[k][l]` when not finite.
+    /// [`ErrorKind::NotFinite`] on `corners[k][l]` when not finite; [`ErrorKind::TooLarge`] on
+    /// `degree` as for [`RestrictionMap::curve`].
     pub fn triangle(degree: usize, corners: [[f64; 2]; 3]) -> Result<Self> {
         for (k, corner) in corners.iter().enumerate() {
             for (l, &x) in corner.iter().enumerate() {
                 finite(x, &format!("corners[{k}][{l}]"))?;
             }
         }
-        let len = triangle_len(degree);
-        Ok(RestrictionMap {
+        let len = check_entries(checked_triangle_len(degree), "degree", POINTS)?;
+        RestrictionMap::sized(len, Domain::Triangle { degree, corners })
+    }
+
+    /// The map of `len` points per object on `domain`, refused (about `degree`) when a block
+    /// of one-dimensional objects or its scratch exceeds [`MAX_ENTRIES`](crate::MAX_ENTRIES).
+    fn sized(len: usize, domain: Domain) -> Result<Self> {
+        let map = RestrictionMap {
             inputs: len,
             outputs: len,
-            domain: Domain::Triangle { degree, corners },
-        })
+            domain,
+        };
+        checked_product(&[len, BATCH_LANES], "degree", "a block of objects")?;
+        map.check_scratch(1, "degree")?;
+        Ok(map)
+    }
+
+    /// The scratch of the engine for one block of `dim`-dimensional objects, refused (about
+    /// `field`) when it overflows or exceeds [`MAX_ENTRIES`](crate::MAX_ENTRIES).
+    fn check_scratch(&self, dim: usize, field: &str) -> Result<usize> {
+        let lanes = dim.checked_mul(BATCH_LANES);
+        let len = lanes.and_then(|lanes| match &self.domain {
+            Domain::Curve(_) => checked_curve_scratch_len(self.inputs - 1, lanes),
+            Domain::Tensor { cols, .. } => {
+                checked_tensor_scratch_len(self.inputs / cols - 1, cols - 1, lanes)
+            }
+            Domain::Triangle { degree, .. } => checked_triangle_scratch_len(*degree, lanes),
+        });
+        check_entries(len, field, "the scratch of the restriction engine")
     }
 
     /// Control points per object taken in.
@@ -171,14 +190,23 @@ pub struct Batch {
 
 impl Batch {
     /// `len` objects with every coordinate zero.
-    pub fn zeros(points: usize, dim: usize, len: usize) -> Self {
+    ///
+    /// # Errors
+    /// [`ErrorKind::TooLarge`] on `points * dim * len` when the storage (whole blocks of
+    /// [`BATCH_LANES`] objects) overflows or exceeds [`MAX_ENTRIES`](crate::MAX_ENTRIES).
+    pub fn zeros(points: usize, dim: usize, len: usize) -> Result<Self> {
         let blocks = len.div_ceil(BATCH_LANES);
-        Batch {
+        let size = checked_product(
+            &[blocks, points, dim, BATCH_LANES],
+            "points * dim * len",
+            "the storage of the batch",
+        )?;
+        Ok(Batch {
             points,
             dim,
             len,
-            data: vec![0.0; blocks * points * dim * BATCH_LANES],
-        }
+            data: vec![0.0; size],
+        })
     }
 
     /// The batch of `nets`, each a list of `points` control points of dimension `dim`
@@ -186,9 +214,9 @@ impl Batch {
     ///
     /// # Errors
     /// `nets[k]` when net k has another number of points, `nets[k][p]` when a point has
-    /// another dimension.
+    /// another dimension; as [`Batch::zeros`] when the storage is too large.
     pub fn from_nets(points: usize, dim: usize, nets: &[&[Vec<f64>]]) -> Result<Self> {
-        let mut batch = Batch::zeros(points, dim, nets.len());
+        let mut batch = Batch::zeros(points, dim, nets.len())?;
         for (k, net) in nets.iter().enumerate() {
             if net.len() != points {
                 return Err(Error::of(
@@ -233,8 +261,11 @@ impl Batch {
 
     /// The batch of objects given as plain arrays of `K` points of `D` coordinates (a curve's
     /// polygon, a tensor net row by row, a triangular net in its order).
-    pub fn from_arrays<const K: usize, const D: usize>(objects: &[[[f64; D]; K]]) -> Self {
-        let mut batch = Batch::zeros(K, D, objects.len());
+    ///
+    /// # Errors
+    /// As [`Batch::zeros`] when the storage is too large.
+    pub fn from_arrays<const K: usize, const D: usize>(objects: &[[[f64; D]; K]]) -> Result<Self> {
+        let mut batch = Batch::zeros(K, D, objects.len())?;
         for (k, object) in objects.iter().enumerate() {
             for (p, point) in object.iter().enumerate() {
                 for (x, &value) in point.iter().enumerate() {
@@ -243,7 +274,7 @@ impl Batch {
                 }
             }
         }
-        batch
+        Ok(batch)
     }
 
     /// The objects as plain arrays of `K` points of `D` coordinates.
@@ -354,6 +385,7 @@ impl Batch {
                 ),
             ));
         }
+        map.check_scratch(self.dim, "map")?;
         Ok(())
     }
 
@@ -369,7 +401,9 @@ impl Batch {
     /// allocation per call (the engine's scratch, shared by all blocks).
     ///
     /// # Errors
-    /// `map` or `out` when their shapes do not fit this batch.
+    /// `map` or `out` when their shapes do not fit this batch; [`ErrorKind::TooLarge`] on `map`
+    /// when the engine's scratch for a block of this dimension exceeds
+    /// [`MAX_ENTRIES`](crate::MAX_ENTRIES).
     pub fn restrict_into(&self, map: &RestrictionMap, out: &mut Batch) -> Result<()> {
         self.check(map, out)?;
         let (bin, bout) = self.block_lens(out);

@@ -21,7 +21,7 @@ use crate::restrict::polarisation::{
     curve_blossom_from_samples, curve_control_points_from_samples,
     tensor_control_points_from_samples, triangle_control_points_from_samples,
 };
-use crate::shape::bezier::{bezier_curve_blossom, bezier_tensor_blossom};
+use crate::shape::bezier::{curve_blossom_unchecked, tensor_blossom_unchecked};
 use crate::shape::point::Point;
 use crate::shape::power::{PowerCurve, PowerSurface};
 use crate::shape::power_triangle::PowerTriangle;
@@ -315,7 +315,7 @@ impl<T: Field> RationalBezierCurve<T> {
     /// The point at t (de Casteljau on the homogeneous points, then projection), or `None`
     /// where the denominator vanishes.
     pub fn eval(&self, t: &T) -> Option<Point<T>> {
-        let mut h = bezier_curve_blossom(&self.homogeneous(), &vec![t.clone(); self.degree()]);
+        let mut h = curve_blossom_unchecked(&self.homogeneous(), &vec![t.clone(); self.degree()]);
         let w = h.pop()?;
         divide_point(h, &w)
     }
@@ -518,7 +518,7 @@ impl<T: Field> RationalTensorPatch<T> {
             .map(|(pr, wr)| pr.iter().zip(wr).map(|(b, w)| lift(b, w)).collect())
             .collect();
         let (n, m) = (net.len() - 1, net[0].len() - 1);
-        let mut h = bezier_tensor_blossom(&net, &vec![s.clone(); n], &vec![t.clone(); m]);
+        let mut h = tensor_blossom_unchecked(&net, &vec![s.clone(); n], &vec![t.clone(); m]);
         let w = h.pop()?;
         divide_point(h, &w)
     }

@@ -308,6 +308,10 @@ impl Ring for BoundedF64 {
 
 impl Field for BoundedF64 {
     const EXACT: bool = false;
+    /// Whether the value is finite (the bound may be infinite: the value still decides).
+    fn is_finite(&self) -> bool {
+        self.value.is_finite()
+    }
     /// `self / rhs` as `f64` computes it; no finite bound when `rhs`'s bound reaches its value.
     fn divide(&self, rhs: &Self) -> Self {
         let value = self.value / rhs.value;

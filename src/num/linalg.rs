@@ -7,21 +7,33 @@ use crate::error::{Error, ErrorKind, Result};
 use crate::shape::point::{self, Point};
 use crate::{Rational, Ring};
 
-/// A [`Ring`] with division by non-zero elements, a total order on the values the crate meets
-/// and a printed form (for error messages): [`Rational`] (exact) and `f64`/`f32` (rounded; NaN
-/// is never produced from finite input by the algorithms of this crate).
+/// A [`Ring`] with division by non-zero elements, a total order on the finite values the crate
+/// meets and a printed form (for error messages): [`Rational`] (exact) and `f64`/`f32`
+/// (rounded; NaN is never produced from finite input by the algorithms of this crate).
+///
+/// The order is total on finite values only: every public function whose control flow a
+/// comparison decides (knot order, span search, interval and domain checks) first refuses
+/// values that are not [`Field::is_finite`] with [`ErrorKind::NotFinite`]. `Ring`-only code
+/// (the restriction algorithms) never compares values, so it takes NaN and infinities as they
+/// are and propagates them by IEEE arithmetic.
 pub trait Field: Ring + PartialOrd + std::fmt::Display {
     /// Whether the arithmetic is exact, so that equality of computed values is meaningful
     /// (`true` for [`Rational`], `false` for floats).
     const EXACT: bool;
     /// `self / rhs`; `rhs` must be non-zero (callers check, and return an error otherwise).
     fn divide(&self, rhs: &Self) -> Self;
+    /// Whether the value is finite (neither NaN nor an infinity): always for [`Rational`],
+    /// `f64::is_finite` for floats.
+    fn is_finite(&self) -> bool;
 }
 
 impl Field for Rational {
     const EXACT: bool = true;
     fn divide(&self, rhs: &Self) -> Self {
         self / rhs
+    }
+    fn is_finite(&self) -> bool {
+        true
     }
 }
 
@@ -30,6 +42,9 @@ impl Field for f64 {
     fn divide(&self, rhs: &Self) -> Self {
         self / rhs
     }
+    fn is_finite(&self) -> bool {
+        f64::is_finite(*self)
+    }
 }
 
 impl Field for f32 {
@@ -37,6 +52,31 @@ impl Field for f32 {
     fn divide(&self, rhs: &Self) -> Self {
         self / rhs
     }
+    fn is_finite(&self) -> bool {
+        f32::is_finite(*self)
+    }
+}
+
+/// `Ok(())` when `x` is finite, else an [`ErrorKind::NotFinite`] error about `field`: the one
+/// finiteness check of the crate.
+pub(crate) fn check_finite<T: Field>(x: &T, field: &str) -> Result<()> {
+    if x.is_finite() {
+        Ok(())
+    } else {
+        Err(Error::of(
+            ErrorKind::NotFinite,
+            field,
+            format!("expected a finite number, found {x}"),
+        ))
+    }
+}
+
+/// [`check_finite`] on every entry of `xs`, naming the first bad one `field[i]`.
+pub(crate) fn check_all_finite<T: Field>(xs: &[T], field: &str) -> Result<()> {
+    for (i, x) in xs.iter().enumerate() {
+        check_finite(x, &format!("{field}[{i}]"))?;
+    }
+    Ok(())
 }
 
 /// The inverse of a square matrix with exact rational entries, by Gauss-Jordan elimination
@@ -90,8 +130,13 @@ pub fn inverse(matrix: &[Vec<Rational>], field: &str) -> Result<Vec<Vec<Rational
     Ok(inv)
 }
 
-/// `matrix * rhs` for a rational matrix and a column of points (any [`Ring`]).
-pub fn apply<T: Ring>(matrix: &[Vec<Rational>], rhs: &[Point<T>], dim: usize) -> Vec<Point<T>> {
+/// `matrix * rhs` for a rational matrix and a column of points (any [`Ring`]), every point of
+/// `dim` coordinates (callers check; a shorter point would be zero-padded).
+pub(crate) fn apply<T: Ring>(
+    matrix: &[Vec<Rational>],
+    rhs: &[Point<T>],
+    dim: usize,
+) -> Vec<Point<T>> {
     matrix
         .iter()
         .map(|row| {
@@ -106,6 +151,11 @@ pub fn apply<T: Ring>(matrix: &[Vec<Rational>], rhs: &[Point<T>], dim: usize) ->
 
 /// Solves `matrix * x = rhs` for a column `x` of points of dimension `dim`, exactly: the
 /// matrix is rational, the points may be of any [`Ring`] (rationals, floats, symbolic).
+///
+/// # Errors
+/// [`ErrorKind::Shape`] about `field` when `rhs` does not have one point per row or the matrix
+/// is not square, [`ErrorKind::Dimension`] on `rhs[i]` when a point does not have `dim`
+/// coordinates, [`ErrorKind::Singular`] when the matrix is singular.
 pub fn solve_rational_system<T: Ring>(
     matrix: &[Vec<Rational>],
     rhs: &[Point<T>],
@@ -123,6 +173,7 @@ pub fn solve_rational_system<T: Ring>(
             ),
         ));
     }
+    point::check_dims(rhs, dim, "rhs")?;
     Ok(apply(&inverse(matrix, field)?, rhs, dim))
 }
 

@@ -4,6 +4,7 @@
 
 pub(crate) mod binomial;
 pub(crate) mod bounded;
+pub(crate) mod limits;
 pub(crate) mod linalg;
 pub(crate) mod poly;
 pub(crate) mod ring;

@@ -14,6 +14,7 @@
 //! Every subset is counted exactly once, with no closed-form counting of the kind used by
 //! Theorems 1-3, at O(n^2) (curve) and O(N n m) (triangle) ring operations per blossom value.
 
+use crate::error::{check_arity, Result};
 use crate::num::binomial::{binomial, multinomial};
 use crate::restrict::nets::{repeated, tensor_net, triangle_net};
 use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
@@ -35,10 +36,18 @@ pub fn subset_sums<T: Ring>(args: &[T]) -> Vec<T> {
     e
 }
 
-/// The blossom b(u_1..u_n) of the curve, eq. (2); `args.len()` must equal the degree.
-pub fn curve_blossom<T: Ring>(curve: &PowerCurve<T>, args: &[T]) -> Point<T> {
+/// The blossom b(u_1..u_n) of the curve, eq. (2).
+///
+/// # Errors
+/// [`ErrorKind::Arity`](crate::ErrorKind::Arity) on `args` when `args.len()` is not the degree.
+pub fn curve_blossom<T: Ring>(curve: &PowerCurve<T>, args: &[T]) -> Result<Point<T>> {
+    check_arity("args", args.len(), curve.degree())?;
+    Ok(curve_blossom_unchecked(curve, args))
+}
+
+/// [`curve_blossom`] with `args.len()` known to be the degree.
+fn curve_blossom_unchecked<T: Ring>(curve: &PowerCurve<T>, args: &[T]) -> Point<T> {
     let n = curve.degree();
-    assert_eq!(args.len(), n, "a blossom of degree n takes n arguments");
     let e = subset_sums(args);
     let mut acc = point::zero(curve.dim());
     for (i, c) in curve.coefficients().iter().enumerate() {
@@ -49,13 +58,20 @@ pub fn curve_blossom<T: Ring>(curve: &PowerCurve<T>, args: &[T]) -> Point<T> {
 }
 
 /// The blossom b(u_1..u_n; v_1..v_m) of the tensor patch, eqs. (7)-(8).
-pub fn tensor_blossom<T: Ring>(surface: &PowerSurface<T>, us: &[T], vs: &[T]) -> Point<T> {
+///
+/// # Errors
+/// [`ErrorKind::Arity`](crate::ErrorKind::Arity) on `us` (`vs`) when it does not hold n (m)
+/// arguments for bidegree (n, m).
+pub fn tensor_blossom<T: Ring>(surface: &PowerSurface<T>, us: &[T], vs: &[T]) -> Result<Point<T>> {
     let (n, m) = surface.degree();
-    assert_eq!(
-        (us.len(), vs.len()),
-        (n, m),
-        "a blossom of bidegree (n, m) takes n + m arguments"
-    );
+    check_arity("us", us.len(), n)?;
+    check_arity("vs", vs.len(), m)?;
+    Ok(tensor_blossom_unchecked(surface, us, vs))
+}
+
+/// [`tensor_blossom`] with n + m arguments known to fit the bidegree (n, m).
+fn tensor_blossom_unchecked<T: Ring>(surface: &PowerSurface<T>, us: &[T], vs: &[T]) -> Point<T> {
+    let (n, m) = surface.degree();
     let eu = subset_sums(us);
     let ev = subset_sums(vs);
     let mut acc = point::zero(surface.dim());
@@ -73,7 +89,10 @@ pub fn tensor_blossom<T: Ring>(surface: &PowerSurface<T>, us: &[T], vs: &[T]) ->
 
 /// The blossom b((u_1, v_1)..(u_N, v_N)) of the surface as a triangular patch of total degree
 /// N = n + m, eq. (13).
-pub fn triangle_blossom<T: Ring>(surface: &PowerSurface<T>, args: &[[T; 2]]) -> Point<T> {
+///
+/// # Errors
+/// [`ErrorKind::Arity`](crate::ErrorKind::Arity) on `args` when `args.len()` is not n + m.
+pub fn triangle_blossom<T: Ring>(surface: &PowerSurface<T>, args: &[[T; 2]]) -> Result<Point<T>> {
     power_triangle_blossom(&PowerTriangle::from_surface(surface), args)
 }
 
@@ -82,9 +101,23 @@ pub fn triangle_blossom<T: Ring>(surface: &PowerSurface<T>, args: &[[T; 2]]) -> 
 /// (|I| = i, |J| = j) of prod_{k in I} u_k prod_{l in J} v_l and M(N; i, j) = N! / (i! j! (N-i-j)!)
 /// counts them. The paper states it for a grid (i <= n, j <= m, N = n + m); the sum is the same
 /// for any array with i + j <= N.
-pub fn power_triangle_blossom<T: Ring>(surface: &PowerTriangle<T>, args: &[[T; 2]]) -> Point<T> {
+///
+/// # Errors
+/// [`ErrorKind::Arity`](crate::ErrorKind::Arity) on `args` when `args.len()` is not N.
+pub fn power_triangle_blossom<T: Ring>(
+    surface: &PowerTriangle<T>,
+    args: &[[T; 2]],
+) -> Result<Point<T>> {
+    check_arity("args", args.len(), surface.degree())?;
+    Ok(power_triangle_blossom_unchecked(surface, args))
+}
+
+/// [`power_triangle_blossom`] with `args.len()` known to be the degree.
+fn power_triangle_blossom_unchecked<T: Ring>(
+    surface: &PowerTriangle<T>,
+    args: &[[T; 2]],
+) -> Point<T> {
     let big_n = surface.degree();
-    assert_eq!(args.len(), big_n, "a blossom of degree N takes N arguments");
     let n = surface.rows().len() - 1;
     let m = surface.rows().iter().map(Vec::len).max().unwrap_or(1) - 1;
     // e[i][j] = E_ij over the arguments seen so far, truncated to the array's rows and columns.
@@ -116,7 +149,7 @@ pub fn power_triangle_blossom<T: Ring>(surface: &PowerTriangle<T>, args: &[[T; 2
 pub fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCurve<T> {
     let n = curve.degree();
     let points = (0..=n)
-        .map(|v| curve_blossom(curve, &repeated(b, v, a, n - v)))
+        .map(|v| curve_blossom_unchecked(curve, &repeated(b, v, a, n - v)))
         .collect();
     BezierCurve::new(points).expect("n + 1 points of one dimension")
 }
@@ -124,7 +157,7 @@ pub fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCur
 /// Control points p_{nu mu} = b(b^nu, a^(n-nu); d^mu, c^(m-mu)), eq. (6) with (7)-(8).
 pub fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> TensorPatch<T> {
     let points = tensor_net(surface.degree(), rect, |us, vs| {
-        tensor_blossom(surface, us, vs)
+        tensor_blossom_unchecked(surface, us, vs)
     });
     TensorPatch::new(points).expect("a rectangular net")
 }
@@ -135,7 +168,9 @@ pub fn restrict_triangle<T: Ring>(
     tri: &[[T; 2]; 3],
 ) -> TriangularPatch<T> {
     let big_n = surface.degree();
-    let points = triangle_net(big_n, tri, |args| power_triangle_blossom(surface, args));
+    let points = triangle_net(big_n, tri, |args| {
+        power_triangle_blossom_unchecked(surface, args)
+    });
     TriangularPatch::new(big_n, points).expect("a full triangular net")
 }
 

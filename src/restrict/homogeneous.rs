@@ -19,12 +19,17 @@
 //! Every non-empty subset is visited once (2^n - 1 values of q), with no grouping of repeated
 //! arguments: this module is the literal formula, kept apart from the grouped, affine (19).
 
-use crate::error::{Error, ErrorKind, Result};
+use crate::error::{check_arity, Error, ErrorKind, Result};
 use crate::num::binomial::binomial;
 use crate::shape::point::{self, Point};
-use crate::shape::power::{PowerCurve, PowerSurface};
+use crate::shape::power::{check_dims, PowerCurve, PowerSurface};
 use crate::{Rational, Ring};
 use num_bigint::BigInt;
+
+/// Why the points given to `q` have the length of the homogenised space:
+/// [`multilinear_polar_form`] checks the dimension of its arguments, and calls `q` only at
+/// sums of them.
+const TWO_OR_THREE: &str = "sums of arguments of the checked dimension";
 
 /// The largest degree (18) is evaluated at: 2^n - 1 values of q.
 pub const MAX_MULTILINEAR_DEGREE: usize = 24;
@@ -59,23 +64,8 @@ pub fn multilinear_polar_form<T: Ring>(
             format!("eq. (18) visits 2^n - 1 subsets; n must be at most {MAX_MULTILINEAR_DEGREE}, found {n}"),
         ));
     }
-    if args.len() != n {
-        return Err(Error::of(
-            ErrorKind::Arity,
-            "args",
-            format!(
-                "a form of degree {n} takes {n} arguments, found {}",
-                args.len()
-            ),
-        ));
-    }
-    if let Some(k) = args.iter().position(|x| x.len() != dim) {
-        return Err(Error::of(
-            ErrorKind::Dimension,
-            format!("args[{k}]"),
-            format!("expected {dim} coordinates, found {}", args[k].len()),
-        ));
-    }
+    check_arity("args", args.len(), n)?;
+    check_dims(args, dim, "args")?;
     if n == 0 {
         return Ok(q(&vec![T::zero(); dim]));
     }
@@ -101,9 +91,8 @@ pub fn multilinear_polar_form<T: Ring>(
 }
 
 /// The homogenisation Q(t, s) = s^n C(t / s) = sum c_i t^i s^(n-i) of the curve of degree n,
-/// at `x = [t, s]`; `x` must have two coordinates.
-pub fn homogeneous_curve<T: Ring>(curve: &PowerCurve<T>, x: &[T]) -> Point<T> {
-    assert_eq!(x.len(), 2, "the homogenised curve lives on R^2");
+/// at `x = [t, s]`.
+pub fn homogeneous_curve<T: Ring>(curve: &PowerCurve<T>, x: &[T; 2]) -> Point<T> {
     let n = curve.degree();
     let mut acc = point::zero(curve.dim());
     for (i, c) in curve.coefficients().iter().enumerate() {
@@ -114,9 +103,8 @@ pub fn homogeneous_curve<T: Ring>(curve: &PowerCurve<T>, x: &[T]) -> Point<T> {
 }
 
 /// The homogenisation Q(u, v, w) = sum c_ij u^i v^j w^(N-i-j) of the surface as a triangular
-/// patch of total degree N = n + m, at `x = [u, v, w]`; `x` must have three coordinates.
-pub fn homogeneous_surface<T: Ring>(surface: &PowerSurface<T>, x: &[T]) -> Point<T> {
-    assert_eq!(x.len(), 3, "the homogenised surface lives on R^3");
+/// patch of total degree N = n + m, at `x = [u, v, w]`.
+pub fn homogeneous_surface<T: Ring>(surface: &PowerSurface<T>, x: &[T; 3]) -> Point<T> {
     let (n, m) = surface.degree();
     let mut acc = point::zero(surface.dim());
     for (i, row) in surface.coefficients().iter().enumerate() {
@@ -135,7 +123,9 @@ pub fn homogeneous_surface<T: Ring>(surface: &PowerSurface<T>, x: &[T]) -> Point
 /// form (18) of its homogenisation [`homogeneous_curve`]; `args.len()` must be the degree.
 pub fn homogeneous_curve_blossom<T: Ring>(curve: &PowerCurve<T>, args: &[T]) -> Result<Point<T>> {
     let pts: Vec<Point<T>> = args.iter().map(|t| vec![t.clone(), T::one()]).collect();
-    multilinear_polar_form(curve.degree(), &pts, 2, &|x| homogeneous_curve(curve, x))
+    multilinear_polar_form(curve.degree(), &pts, 2, &|x| {
+        homogeneous_curve(curve, x.try_into().expect(TWO_OR_THREE))
+    })
 }
 
 /// The blossom b((u_1, v_1)..(u_N, v_N)) of the surface as a triangular patch of total degree
@@ -150,7 +140,9 @@ pub fn homogeneous_triangle_blossom<T: Ring>(
         .iter()
         .map(|[u, v]| vec![u.clone(), v.clone(), T::one()])
         .collect();
-    multilinear_polar_form(n + m, &pts, 3, &|x| homogeneous_surface(surface, x))
+    multilinear_polar_form(n + m, &pts, 3, &|x| {
+        homogeneous_surface(surface, x.try_into().expect(TWO_OR_THREE))
+    })
 }
 
 /// The count of (18)'s terms that hold a given sub-multiset: every subset of size N is one term,

@@ -29,12 +29,14 @@
 //! inverse formula, Examples 2 and 3 of 004). The closures are only called at averages of the
 //! arguments, so they need only be defined on the convex hull of the arguments.
 
-use crate::error::{Error, ErrorKind, Result};
+#[cfg(doc)]
+use crate::error::ErrorKind;
+use crate::error::{check_arity, Result};
 use crate::num::binomial::binomial;
 use crate::restrict::nets::{repeated, tensor_net, triangle_net};
 use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
 use crate::shape::point::{self, Point};
-use crate::shape::power::{PowerCurve, PowerSurface};
+use crate::shape::power::{check_dims, PowerCurve, PowerSurface};
 use crate::shape::power_triangle::PowerTriangle;
 use crate::{Rational, Ring};
 use num_bigint::BigInt;
@@ -75,13 +77,29 @@ fn for_each_sub_multiset(mult: &[usize], visit: &mut dyn FnMut(&[usize])) {
 ///
 /// `q` is only ever called at averages of the arguments. For `n = 0` the form is the constant
 /// `q(x)` for any x; it is evaluated at the origin.
+///
+/// # Errors
+/// [`ErrorKind::Arity`] on `args` when `args.len() != n`; [`ErrorKind::Dimension`] on
+/// `args[k]` when an argument does not have `dim` coordinates.
 pub fn polar_form<T: Ring>(
     n: usize,
     args: &[Point<T>],
     dim: usize,
     q: &dyn Fn(&[T]) -> Point<T>,
+) -> Result<Point<T>> {
+    check_arity("args", args.len(), n)?;
+    check_dims(args, dim, "args")?;
+    Ok(polar_form_unchecked(n, args, dim, q))
+}
+
+/// [`polar_form`] on `n` arguments of `dim` coordinates each.
+fn polar_form_unchecked<T: Ring>(
+    n: usize,
+    args: &[Point<T>],
+    dim: usize,
+    q: &dyn Fn(&[T]) -> Point<T>,
 ) -> Point<T> {
-    assert_eq!(args.len(), n, "a polar form of degree n takes n arguments");
+    debug_assert_eq!(args.len(), n);
     if n == 0 {
         return q(&vec![T::zero(); dim]);
     }
@@ -122,18 +140,6 @@ pub fn polar_form<T: Ring>(
     acc.expect("n >= 1 gives at least one term")
 }
 
-fn check_count(field: &str, found: usize, degree: usize) -> Result<()> {
-    if found == degree {
-        Ok(())
-    } else {
-        Err(Error::of(
-            ErrorKind::Arity,
-            field,
-            format!("a blossom of degree {degree} takes {degree} arguments, found {found}"),
-        ))
-    }
-}
-
 /// The blossom b[t_1..t_n] of the curve `b` of degree `n = args.len()`, eq. (20).
 ///
 /// ```
@@ -150,9 +156,9 @@ pub fn curve_blossom_from_samples<T: Ring>(
     args: &[T],
     b: &dyn Fn(&T) -> Point<T>,
 ) -> Result<Point<T>> {
-    check_count("args", args.len(), degree)?;
+    check_arity("args", args.len(), degree)?;
     let pts: Vec<Point<T>> = args.iter().map(|x| vec![x.clone()]).collect();
-    Ok(polar_form(degree, &pts, 1, &|u| b(&u[0])))
+    Ok(polar_form_unchecked(degree, &pts, 1, &|u| b(&u[0])))
 }
 
 /// The control points b_i = b[alpha^(n-i), beta^i], i = 0..n, of the curve `b` on
@@ -167,7 +173,7 @@ pub fn curve_control_points_from_samples<T: Ring>(
         .map(|i| {
             let args: Vec<Point<T>> =
                 repeated(&vec![alpha.clone()], degree - i, &vec![beta.clone()], i);
-            polar_form(degree, &args, 1, &|u| b(&u[0]))
+            polar_form_unchecked(degree, &args, 1, &|u| b(&u[0]))
         })
         .collect()
 }
@@ -181,8 +187,8 @@ pub fn tensor_blossom_from_samples<T: Ring>(
     vs: &[T],
     s: &dyn Fn(&T, &T) -> Point<T>,
 ) -> Result<Point<T>> {
-    check_count("us", us.len(), degree.0)?;
-    check_count("vs", vs.len(), degree.1)?;
+    check_arity("us", us.len(), degree.0)?;
+    check_arity("vs", vs.len(), degree.1)?;
     Ok(tensor_blossom_unchecked(degree, us, vs, s))
 }
 
@@ -194,8 +200,8 @@ fn tensor_blossom_unchecked<T: Ring>(
 ) -> Point<T> {
     let ups: Vec<Point<T>> = us.iter().map(|x| vec![x.clone()]).collect();
     let vps: Vec<Point<T>> = vs.iter().map(|x| vec![x.clone()]).collect();
-    let inner = |u: &[T]| polar_form(m, &vps, 1, &|v| s(&u[0], &v[0]));
-    polar_form(n, &ups, 1, &inner)
+    let inner = |u: &[T]| polar_form_unchecked(m, &vps, 1, &|v| s(&u[0], &v[0]));
+    polar_form_unchecked(n, &ups, 1, &inner)
 }
 
 /// The control net `[nu][mu]` = b[a^(n-nu) b^nu; c^(m-mu) d^mu] of the surface `s` on
@@ -220,9 +226,9 @@ pub fn triangle_blossom_from_samples<T: Ring>(
     args: &[[T; 2]],
     s: &dyn Fn(&T, &T) -> Point<T>,
 ) -> Result<Point<T>> {
-    check_count("args", args.len(), degree)?;
+    check_arity("args", args.len(), degree)?;
     let pts: Vec<Point<T>> = args.iter().map(|p| p.to_vec()).collect();
-    Ok(polar_form(degree, &pts, 2, &|x| s(&x[0], &x[1])))
+    Ok(polar_form_unchecked(degree, &pts, 2, &|x| s(&x[0], &x[1])))
 }
 
 /// The control points b_ijk = b[a^i, b^j, c^k], i + j + k = N, of the surface `s` on the
@@ -235,7 +241,7 @@ pub fn triangle_control_points_from_samples<T: Ring>(
 ) -> Vec<Point<T>> {
     let corners: [Point<T>; 3] = tri.each_ref().map(|p| p.to_vec());
     triangle_net(degree, &corners, |args| {
-        polar_form(degree, args, 2, &|x| s(&x[0], &x[1]))
+        polar_form_unchecked(degree, args, 2, &|x| s(&x[0], &x[1]))
     })
 }
 

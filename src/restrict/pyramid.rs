@@ -28,8 +28,8 @@
 use crate::restrict::nets::{repeated, tensor_net, triangle_net};
 use crate::shape::basis::{bernstein_by_horner, triangle_bernstein_by_horner};
 use crate::shape::bezier::{
-    bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom, BezierCurve, TensorPatch,
-    TriangularPatch,
+    curve_blossom_unchecked, tensor_blossom_unchecked, triangle_blossom_unchecked, BezierCurve,
+    TensorPatch, TriangularPatch,
 };
 use crate::shape::point::{flatten, unflatten};
 use crate::shape::power::{PowerCurve, PowerSurface};
@@ -67,7 +67,7 @@ pub fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCur
     let control = bernstein_by_horner(curve.coefficients(), &ra, &rb);
     let [ta, tb] = local_ends::<T>(n);
     let points = (0..=n)
-        .map(|v| bezier_curve_blossom(&control, &repeated(&tb, v, &ta, n - v)))
+        .map(|v| curve_blossom_unchecked(&control, &repeated(&tb, v, &ta, n - v)))
         .collect();
     BezierCurve::new(points).expect("n + 1 points of one dimension")
 }
@@ -93,7 +93,7 @@ pub fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> Ten
     let [ta, tb] = local_ends::<T>(n);
     let [tc, td] = local_ends::<T>(m);
     let points = tensor_net((n, m), &[ta, tb, tc, td], |us, vs| {
-        bezier_tensor_blossom(net, us, vs)
+        tensor_blossom_unchecked(net, us, vs)
     });
     TensorPatch::new(points).expect("a rectangular net")
 }
@@ -128,7 +128,7 @@ pub fn restrict_triangle<T: Ring>(
         [minor.clone(), minor, major],
     ];
     let points = triangle_net(big_n, &local, |args| {
-        bezier_triangle_blossom(&reference, args)
+        triangle_blossom_unchecked(&reference, args)
     });
     TriangularPatch::new(big_n, points).expect("a full triangular net")
 }

@@ -143,4 +143,5 @@ pub(crate) fn bulk_triangle_grid<T: Ring>(
     }
     // 3. Bernstein form on the triangle (s <-> a, t <-> b, 1 - s - t <-> c).
     triangle_power_to_bernstein(big_n, &d)
+        .expect("a full triangular net of the surface's dimension")
 }

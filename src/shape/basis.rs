@@ -16,8 +16,9 @@
 //! * [`triangle_bernstein_to_power`]: the inverse of [`triangle_power_to_bernstein`],
 //!   c_ij = N! / (i! j! (N-i-j)!) Δ_1^i Δ_2^j b_(0,0,N), O(N^3).
 
+use crate::error::Result;
 use crate::num::binomial::multinomial;
-use crate::shape::bezier::TriangularPatch;
+use crate::shape::bezier::{check_triangle_net, TriangularPatch};
 use crate::shape::point::Point;
 use crate::shape::simplex::{triangle_index, triangle_len};
 use crate::{Rational, Ring};
@@ -139,8 +140,16 @@ enum Binomial<T> {
 ///
 /// Divides by the multinomials once, then applies the binomial transform along t for every
 /// power of s and along s for every index of t: O(N^3) additions.
-pub fn triangle_power_to_bernstein<T: Ring>(n: usize, d: &[Point<T>]) -> TriangularPatch<T> {
-    assert_eq!(d.len(), triangle_len(n), "triangle coefficient count");
+///
+/// # Errors
+/// As [`TriangularPatch::new`] for a net of degree `n` (about `n` and `d`): a degree whose
+/// count of coefficients overflows or exceeds [`MAX_ENTRIES`](crate::MAX_ENTRIES), a list
+/// `d` of another length, points of no or of different dimensions.
+pub fn triangle_power_to_bernstein<T: Ring>(
+    n: usize,
+    d: &[Point<T>],
+) -> Result<TriangularPatch<T>> {
+    check_triangle_net(n, d, "n", "d")?;
     let ni = n as i64;
     // h[i][mu] = sum_{j <= mu} C(mu, j) e_ij for mu <= n - i.
     let mut h: Vec<Vec<Point<T>>> = (0..=n)
@@ -174,7 +183,7 @@ pub fn triangle_power_to_bernstein<T: Ring>(n: usize, d: &[Point<T>]) -> Triangu
         .into_iter()
         .map(|q| q.expect("every index is filled"))
         .collect();
-    TriangularPatch::new(n, points).expect("a net of the right size")
+    Ok(TriangularPatch::new(n, points).expect("a net of the right size"))
 }
 
 /// `out[k]` = Δ^k p_0, the forward differences of `points` (n(n+1)/2 subtractions per
@@ -506,7 +515,7 @@ mod tests {
         // s t in degree 2 is B_{110}^2 / 2: only q_{110} = 1/2 is non-zero.
         let mut d = vec![vec![q(0)]; triangle_len(2)];
         d[triangle_index(2, 1, 1)] = vec![q(1)];
-        let patch = triangle_power_to_bernstein(2, &d);
+        let patch = triangle_power_to_bernstein(2, &d).unwrap();
         for (nu, mu, _, p) in patch.entries() {
             let want = if (nu, mu) == (1, 1) {
                 Rational::new(1.into(), 2.into())

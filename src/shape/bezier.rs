@@ -11,12 +11,92 @@
 //! * triangle: b^r_{ijk} = u_r b^{r-1}_{i+1,j,k} + v_r b^{r-1}_{i,j+1,k} + w_r b^{r-1}_{i,j,k+1}
 //!   for barycentric arguments (u_r, v_r, w_r).
 
-use crate::error::{Error, ErrorKind, Result};
+use crate::error::{check_arity, Error, ErrorKind, Result};
+use crate::num::limits::check_entries;
 use crate::shape::point::lerp;
 use crate::shape::point::Point;
 use crate::shape::power::check_dims;
-use crate::shape::simplex::{triangle_index, triangle_len};
+use crate::shape::simplex::{checked_triangle_len, triangle_index, triangle_len};
 use crate::Ring;
+
+/// Checks a control polygon `points` (about `field`): at least one point, all of one
+/// dimension D >= 1.
+fn check_polygon<T>(points: &[Point<T>], field: &str) -> Result<()> {
+    let Some(first) = points.first() else {
+        return Err(Error::of(
+            ErrorKind::Empty,
+            field,
+            "expected at least one point",
+        ));
+    };
+    if first.is_empty() {
+        return Err(Error::of(
+            ErrorKind::Dimension,
+            format!("{field}[0]"),
+            "expected at least 1 coordinate",
+        ));
+    }
+    check_dims(points, first.len(), field)
+}
+
+/// Checks a control net `net[nu][mu]` (about `field`): at least one row, all rows of one
+/// non-zero length, all points of one dimension D >= 1.
+fn check_net<T>(net: &[Vec<Point<T>>], field: &str) -> Result<()> {
+    let Some(first) = net.first() else {
+        return Err(Error::of(
+            ErrorKind::Empty,
+            field,
+            "expected at least one row",
+        ));
+    };
+    let cols = first.len();
+    if cols == 0 || first[0].is_empty() {
+        return Err(Error::of(
+            ErrorKind::Empty,
+            format!("{field}[0]"),
+            "expected a non-empty row of points",
+        ));
+    }
+    let dim = first[0].len();
+    for (i, row) in net.iter().enumerate() {
+        if row.len() != cols {
+            return Err(Error::of(
+                ErrorKind::Shape,
+                format!("{field}[{i}]"),
+                format!("expected {cols} points, found {}", row.len()),
+            ));
+        }
+        check_dims(row, dim, &format!("{field}[{i}]"))?;
+    }
+    Ok(())
+}
+
+/// Checks a triangular net `points` of degree `degree` (about `degree_field` and
+/// `points_field`): (N + 1)(N + 2) / 2 points, a count that must not overflow nor exceed
+/// [`MAX_ENTRIES`](crate::MAX_ENTRIES), all of one dimension D >= 1.
+pub(crate) fn check_triangle_net<T>(
+    degree: usize,
+    points: &[Point<T>],
+    degree_field: &str,
+    points_field: &str,
+) -> Result<()> {
+    let want = check_entries(
+        checked_triangle_len(degree),
+        degree_field,
+        "the number of control points (N + 1)(N + 2) / 2",
+    )?;
+    if points.len() != want {
+        return Err(Error::of(
+            ErrorKind::Shape,
+            points_field,
+            format!(
+                "a triangular patch of degree {degree} has {want} points, found {}",
+                points.len()
+            ),
+        ));
+    }
+    check_polygon(points, points_field)
+}
 
 /// A Bézier curve sum_v w_v B_v^n(t) over t in [0, 1].
 #[derive(Clone, Debug, PartialEq)]
@@ -27,21 +107,7 @@ pub struct BezierCurve<T> {
 impl<T: Ring> BezierCurve<T> {
     /// A curve from its control points `w_0, ..., w_n`, all of one dimension `D >= 1`.
     pub fn new(control_points: Vec<Point<T>>) -> Result<Self> {
-        let Some(first) = control_points.first() else {
-            return Err(Error::of(
-                ErrorKind::Empty,
-                "control_points",
-                "expected at least one point",
-            ));
-        };
-        if first.is_empty() {
-            return Err(Error::of(
-                ErrorKind::Dimension,
-                "control_points[0]",
-                "expected at least 1 coordinate",
-            ));
-        }
-        check_dims(&control_points, first.len(), "control_points")?;
+        check_polygon(&control_points, "control_points")?;
         Ok(BezierCurve { control_points })
     }
 
@@ -62,7 +128,7 @@ impl<T: Ring> BezierCurve<T> {
 
     /// The point at parameter `t` (de Casteljau).
     pub fn eval(&self, t: &T) -> Point<T> {
-        bezier_curve_blossom(&self.control_points, &vec![t.clone(); self.degree()])
+        curve_blossom_unchecked(&self.control_points, &vec![t.clone(); self.degree()])
     }
 }
 
@@ -76,32 +142,7 @@ impl<T: Ring> TensorPatch<T> {
     /// A patch from its control net, `net[nu][mu]` = `p_{nu mu}`: `n + 1` rows of `m + 1`
     /// points, all of one dimension.
     pub fn new(control_points: Vec<Vec<Point<T>>>) -> Result<Self> {
-        let Some(first) = control_points.first() else {
-            return Err(Error::of(
-                ErrorKind::Empty,
-                "control_points",
-                "expected at least one row",
-            ));
-        };
-        let cols = first.len();
-        if cols == 0 || first[0].is_empty() {
-            return Err(Error::of(
-                ErrorKind::Empty,
-                "control_points[0]",
-                "expected a non-empty row of points",
-            ));
-        }
-        let dim = first[0].len();
-        for (i, row) in control_points.iter().enumerate() {
-            if row.len() != cols {
-                return Err(Error::of(
-                    ErrorKind::Shape,
-                    format!("control_points[{i}]"),
-                    format!("expected {cols} points, found {}", row.len()),
-                ));
-            }
-            check_dims(row, dim, &format!("control_points[{i}]"))?;
-        }
+        check_net(&control_points, "control_points")?;
         Ok(TensorPatch { control_points })
     }
 
@@ -136,7 +177,7 @@ impl<T: Ring> TensorPatch<T> {
     /// The point at `(s, t)` (two passes of de Casteljau).
     pub fn eval(&self, s: &T, t: &T) -> Point<T> {
         let (n, m) = self.degree();
-        bezier_tensor_blossom(
+        tensor_blossom_unchecked(
             &self.control_points,
             &vec![s.clone(); n],
             &vec![t.clone(); m],
@@ -159,26 +200,14 @@ pub struct TriangularPatch<T> {
 impl<T: Ring> TriangularPatch<T> {
     /// A patch of degree `degree` from its control points in lexicographic order of
     /// `(nu, mu)`: `(0, 0), (0, 1), ..., (0, N), (1, 0), ..., (N, 0)`.
+    ///
+    /// # Errors
+    /// [`ErrorKind::TooLarge`] on `degree` when (N + 1)(N + 2) / 2 overflows or exceeds
+    /// [`MAX_ENTRIES`](crate::MAX_ENTRIES); [`ErrorKind::Shape`] on `control_points` when there
+    /// are not that many points; [`ErrorKind::Dimension`] when a point has no coordinate or
+    /// another dimension than the first.
     pub fn new(degree: usize, control_points: Vec<Point<T>>) -> Result<Self> {
-        let want = triangle_len(degree);
-        if control_points.len() != want {
-            return Err(Error::of(
-                ErrorKind::Shape,
-                "control_points",
-                format!(
-                    "a triangular patch of degree {degree} has {want} points, found {}",
-                    control_points.len()
-                ),
-            ));
-        }
-        if control_points[0].is_empty() {
-            return Err(Error::of(
-                ErrorKind::Dimension,
-                "control_points[0]",
-                "expected at least 1 coordinate",
-            ));
-        }
-        check_dims(&control_points, control_points[0].len(), "control_points")?;
+        check_triangle_net(degree, &control_points, "degree", "control_points")?;
         Ok(TriangularPatch {
             degree,
             control_points,
@@ -191,8 +220,24 @@ impl<T: Ring> TriangularPatch<T> {
     }
 
     /// The control point `q_{nu mu lambda}` with `lambda = N - nu - mu`.
+    ///
+    /// # Panics
+    /// When `nu + mu > N`, as slice indexing does; [`TriangularPatch::try_get`] returns `None`
+    /// instead.
     pub fn get(&self, nu: usize, mu: usize) -> &Point<T> {
-        &self.control_points[triangle_index(self.degree, nu, mu)]
+        self.try_get(nu, mu).unwrap_or_else(|| {
+            panic!(
+                "index (nu, mu) = ({nu}, {mu}) out of range for a triangular patch of degree {}",
+                self.degree
+            )
+        })
+    }
+
+    /// The control point `q_{nu mu lambda}` with `lambda = N - nu - mu`, or `None` when
+    /// `nu + mu > N`.
+    pub fn try_get(&self, nu: usize, mu: usize) -> Option<&Point<T>> {
+        let in_range = nu.checked_add(mu).is_some_and(|s| s <= self.degree);
+        in_range.then(|| &self.control_points[triangle_index(self.degree, nu, mu)])
     }
 
     /// All control points in lexicographic order of `(nu, mu)`.
@@ -211,7 +256,7 @@ impl<T: Ring> TriangularPatch<T> {
 
     /// The point with barycentric coordinates `(s, t, r)` (`s + t + r = 1`), by de Casteljau.
     pub fn eval(&self, bary: &[T; 3]) -> Point<T> {
-        bezier_triangle_blossom(self, &vec![bary.clone(); self.degree])
+        triangle_blossom_unchecked(self, &vec![bary.clone(); self.degree])
     }
 }
 
@@ -220,12 +265,20 @@ impl<T: Ring> TriangularPatch<T> {
 
 /// The blossom b[t_1, ..., t_n] of the Bézier curve with control points `control` (degree
 /// `n = control.len() - 1 = args.len()`), eq. (2) of seed 004.
-pub fn bezier_curve_blossom<T: Ring>(control: &[Point<T>], args: &[T]) -> Point<T> {
-    assert_eq!(
-        args.len() + 1,
-        control.len(),
-        "a blossom of degree n takes n arguments"
-    );
+///
+/// # Errors
+/// [`ErrorKind::Empty`] or [`ErrorKind::Dimension`] on `control` as [`BezierCurve::new`];
+/// [`ErrorKind::Arity`] on `args` when `args.len() + 1 != control.len()`.
+pub fn bezier_curve_blossom<T: Ring>(control: &[Point<T>], args: &[T]) -> Result<Point<T>> {
+    check_polygon(control, "control")?;
+    check_arity("args", args.len(), control.len() - 1)?;
+    Ok(curve_blossom_unchecked(control, args))
+}
+
+/// [`bezier_curve_blossom`] on input known to fit: a non-empty polygon of one dimension and
+/// `args.len() + 1 == control.len()`.
+pub(crate) fn curve_blossom_unchecked<T: Ring>(control: &[Point<T>], args: &[T]) -> Point<T> {
+    debug_assert_eq!(args.len() + 1, control.len());
     let mut level: Vec<Point<T>> = control.to_vec();
     for t in args {
         level = level.windows(2).map(|w| lerp(&w[0], &w[1], t)).collect();
@@ -235,19 +288,55 @@ pub fn bezier_curve_blossom<T: Ring>(control: &[Point<T>], args: &[T]) -> Point<
 
 /// The blossom b[u_1..u_n; v_1..v_m] of the tensor patch with net `net[nu][mu]`, in two passes
 /// (eq. (9) of seed 004): along v for every row, then along u.
-pub fn bezier_tensor_blossom<T: Ring>(net: &[Vec<Point<T>>], us: &[T], vs: &[T]) -> Point<T> {
+///
+/// # Errors
+/// [`ErrorKind::Empty`], [`ErrorKind::Shape`] or [`ErrorKind::Dimension`] on `net` as
+/// [`TensorPatch::new`]; [`ErrorKind::Arity`] on `us` (`vs`) when it does not hold n (m)
+/// arguments for n + 1 rows (m + 1 columns).
+pub fn bezier_tensor_blossom<T: Ring>(
+    net: &[Vec<Point<T>>],
+    us: &[T],
+    vs: &[T],
+) -> Result<Point<T>> {
+    check_net(net, "net")?;
+    check_arity("us", us.len(), net.len() - 1)?;
+    check_arity("vs", vs.len(), net[0].len() - 1)?;
+    Ok(tensor_blossom_unchecked(net, us, vs))
+}
+
+/// [`bezier_tensor_blossom`] on input known to fit.
+pub(crate) fn tensor_blossom_unchecked<T: Ring>(
+    net: &[Vec<Point<T>>],
+    us: &[T],
+    vs: &[T],
+) -> Point<T> {
     let column: Vec<Point<T>> = net
         .iter()
-        .map(|row| bezier_curve_blossom(row, vs))
+        .map(|row| curve_blossom_unchecked(row, vs))
         .collect();
-    bezier_curve_blossom(&column, us)
+    curve_blossom_unchecked(&column, us)
 }
 
 /// The blossom of a triangular patch at barycentric arguments (u_r, v_r, w_r) (weights of the
 /// patch's corners a, b, c), by the triangular pyramid.
-pub fn bezier_triangle_blossom<T: Ring>(patch: &TriangularPatch<T>, args: &[[T; 3]]) -> Point<T> {
+///
+/// # Errors
+/// [`ErrorKind::Arity`] on `args` when it does not hold N arguments for a patch of degree N.
+pub fn bezier_triangle_blossom<T: Ring>(
+    patch: &TriangularPatch<T>,
+    args: &[[T; 3]],
+) -> Result<Point<T>> {
+    check_arity("args", args.len(), patch.degree())?;
+    Ok(triangle_blossom_unchecked(patch, args))
+}
+
+/// [`bezier_triangle_blossom`] with `args.len()` known to be the degree.
+pub(crate) fn triangle_blossom_unchecked<T: Ring>(
+    patch: &TriangularPatch<T>,
+    args: &[[T; 3]],
+) -> Point<T> {
     let n = patch.degree();
-    assert_eq!(args.len(), n, "a blossom of degree N takes N arguments");
+    debug_assert_eq!(args.len(), n);
     let mut level: Vec<Point<T>> = patch.control_points().to_vec();
     for (r, [u, v, w]) in args.iter().enumerate() {
         let d = n - r - 1;

@@ -267,13 +267,23 @@ fn chain<'s, T, S: CurveStep<T>>(
 
 /// The scratch length (in numbers) that [`curve_net`] needs for degree `n` and `dim`: two
 /// levels per depth of the halving.
+///
+/// # Panics
+/// When the length overflows `usize` ([`checked_curve_scratch_len`] returns `None` instead).
 pub fn curve_scratch_len(n: usize, dim: usize) -> usize {
-    let (mut r, mut len) = (n + 1, 0);
+    checked_curve_scratch_len(n, dim).expect(SCRATCH_OVERFLOWS)
+}
+
+const SCRATCH_OVERFLOWS: &str = "the scratch length overflows usize";
+
+/// [`curve_scratch_len`], or `None` when it overflows `usize`.
+pub(crate) fn checked_curve_scratch_len(n: usize, dim: usize) -> Option<usize> {
+    let (mut r, mut len) = (n.checked_add(1)?, 0usize);
     while r > 4 {
-        len += 2 * (r - 1) * dim;
+        len = len.checked_add((r - 1).checked_mul(dim)?.checked_mul(2)?)?;
         r = r.div_ceil(2);
     }
-    len
+    Some(len)
 }
 
 /// Restricts the curve-like form with coefficients `src` (n + 1 points of `dim` numbers) to the
@@ -387,8 +397,19 @@ fn small_node<T: Ring, S: CurveStep<T>, W: Width, const R: usize>(
 
 /// The scratch length that [`tensor_net`] needs for bidegree (n, m) and `dim`: the net after
 /// the pass along u, and the halving's levels of either pass.
+///
+/// # Panics
+/// When the length overflows `usize` ([`checked_tensor_scratch_len`] returns `None` instead).
 pub fn tensor_scratch_len(n: usize, m: usize, dim: usize) -> usize {
-    (n + 1) * (m + 1) * dim + curve_scratch_len(n, (m + 1) * dim).max(curve_scratch_len(m, dim))
+    checked_tensor_scratch_len(n, m, dim).expect(SCRATCH_OVERFLOWS)
+}
+
+/// [`tensor_scratch_len`], or `None` when it overflows `usize`.
+pub(crate) fn checked_tensor_scratch_len(n: usize, m: usize, dim: usize) -> Option<usize> {
+    let row = m.checked_add(1)?.checked_mul(dim)?;
+    let net = n.checked_add(1)?.checked_mul(row)?;
+    let levels = checked_curve_scratch_len(n, row)?.max(checked_curve_scratch_len(m, dim)?);
+    net.checked_add(levels)
 }
 
 /// Restricts the tensor-product form with coefficients `src` (rows of m + 1 points, row by row,
@@ -421,8 +442,24 @@ pub fn tensor_net<T: Ring, S: CurveStep<T>>(
 
 /// The scratch length that [`triangle_net`] needs for degree `n` and `dim`: two levels for each
 /// of the degrees n - 1, ..., 0, the most a path of the recursion can hold at once.
+///
+/// # Panics
+/// When the length overflows `usize` ([`checked_triangle_scratch_len`] returns `None`
+/// instead).
 pub fn triangle_scratch_len(n: usize, dim: usize) -> usize {
-    2 * (0..n).map(triangle_len).sum::<usize>() * dim
+    checked_triangle_scratch_len(n, dim).expect(SCRATCH_OVERFLOWS)
+}
+
+/// [`triangle_scratch_len`], or `None` when it overflows `usize`: 2 sum_{k < n} (k + 1)(k + 2)
+/// / 2 = n (n + 1) (n + 2) / 3 numbers per coordinate.
+pub(crate) fn checked_triangle_scratch_len(n: usize, dim: usize) -> Option<usize> {
+    // Above 2^40 the cube alone exceeds any usize; below, it fits u128.
+    if n > 1 << 40 {
+        return None;
+    }
+    let n = n as u128;
+    let per_coordinate = usize::try_from(n * (n + 1) * (n + 2) / 3).ok()?;
+    per_coordinate.checked_mul(dim)
 }
 
 /// Restricts the triangular form with coefficients `src` (degree `n`, (n + 1)(n + 2) / 2
@@ -810,6 +847,34 @@ pub(crate) fn curve_split<T: Ring>(src: &[T], dim: usize, t: &T, left: &mut [T],
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn checked_scratch_lengths_agree_with_their_definitions() {
+        for n in 0usize..40 {
+            for dim in [1, 3, 1536] {
+                let (mut r, mut curve) = (n + 1, 0);
+                while r > 4 {
+                    curve += 2 * (r - 1) * dim;
+                    r = r.div_ceil(2);
+                }
+                assert_eq!(checked_curve_scratch_len(n, dim), Some(curve));
+                let triangle = 2 * (0..n).map(triangle_len).sum::<usize>() * dim;
+                assert_eq!(checked_triangle_scratch_len(n, dim), Some(triangle));
+                let m = n % 5;
+                let tensor = (n + 1) * (m + 1) * dim
+                    + checked_curve_scratch_len(n, (m + 1) * dim)
+                        .unwrap()
+                        .max(checked_curve_scratch_len(m, dim).unwrap());
+                assert_eq!(checked_tensor_scratch_len(n, m, dim), Some(tensor));
+            }
+        }
+        assert_eq!(checked_curve_scratch_len(usize::MAX, 1), None);
+        assert_eq!(checked_curve_scratch_len(1 << 40, 1 << 30), None);
+        assert_eq!(checked_triangle_scratch_len(1 << 22, 1), None);
+        assert_eq!(checked_triangle_scratch_len(usize::MAX, 1), None);
+        assert_eq!(checked_tensor_scratch_len(usize::MAX, 1, 1), None);
+        assert_eq!(checked_tensor_scratch_len(1 << 20, 1 << 20, 1 << 30), None);
+    }
     use crate::shape::bezier::bezier_curve_blossom;
     use crate::Rational;
 
@@ -841,7 +906,7 @@ mod tests {
                     .collect();
                 assert_eq!(
                     out[j * 2..j * 2 + 2],
-                    bezier_curve_blossom(&ctrl, &args)[..]
+                    bezier_curve_blossom(&ctrl, &args).unwrap()[..]
                 );
             }
         }

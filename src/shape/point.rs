@@ -1,6 +1,7 @@
 //! Points of any dimension as plain vectors of ring elements, and the few affine operations the
 //! algorithms need on them.
 
+use crate::error::{Error, ErrorKind, Result};
 use crate::Ring;
 
 /// A point (or vector) with `D >= 1` coordinates.
@@ -60,4 +61,18 @@ pub(crate) fn unflatten<T: Clone>(long: Vec<Point<T>>, dim: usize) -> Vec<Vec<Po
     long.into_iter()
         .map(|p| p.chunks(dim).map(<[T]>::to_vec).collect())
         .collect()
+}
+
+/// Checks that every point of `points` has `dim` coordinates, naming the first that does not.
+pub(crate) fn check_dims<T>(points: &[Point<T>], dim: usize, field: &str) -> Result<()> {
+    for (i, p) in points.iter().enumerate() {
+        if p.len() != dim {
+            return Err(Error::of(
+                ErrorKind::Dimension,
+                format!("{field}[{i}]"),
+                format!("expected {dim} coordinates, found {}", p.len()),
+            ));
+        }
+    }
+    Ok(())
 }

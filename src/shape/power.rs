@@ -5,19 +5,7 @@ use crate::error::{Error, ErrorKind, Result};
 use crate::shape::point::{self, Point};
 use crate::Ring;
 
-/// Checks that every point of `points` has `dim` coordinates, naming the first that does not.
-pub(crate) fn check_dims<T>(points: &[Point<T>], dim: usize, field: &str) -> Result<()> {
-    for (i, p) in points.iter().enumerate() {
-        if p.len() != dim {
-            return Err(Error::of(
-                ErrorKind::Dimension,
-                format!("{field}[{i}]"),
-                format!("expected {dim} coordinates, found {}", p.len()),
-            ));
-        }
-    }
-    Ok(())
-}
+pub(crate) use crate::shape::point::check_dims;
 
 /// A polynomial curve C(u) = sum_{i=0..n} c_i u^i of degree `n` (the paper's problem (1)).
 ///

@@ -38,9 +38,9 @@ fn every_object_gets_the_answer_of_the_engine_on_it_alone() {
     let curves: Vec<[[f64; 3]; 6]> = (0..count)
         .map(|_| std::array::from_fn(|_| std::array::from_fn(|_| unit(&mut rng))))
         .collect();
-    let batch = Batch::from_arrays(&curves);
+    let batch = Batch::from_arrays(&curves).unwrap();
     let map = RestrictionMap::curve(5, -0.75, 2.5).unwrap();
-    let mut out = Batch::zeros(6, 3, count);
+    let mut out = Batch::zeros(6, 3, count).unwrap();
     batch.restrict_into(&map, &mut out).unwrap();
     let got: Vec<[[f64; 3]; 6]> = out.to_arrays().unwrap();
     for (curve, got) in curves.iter().zip(&got) {
@@ -64,13 +64,14 @@ fn curve_batches_equal_each_curve_restricted_exactly() {
             .collect();
         let batch = Batch::from_curves(&curves).unwrap();
         let map = RestrictionMap::curve(n, a, b).unwrap();
-        let mut out = Batch::zeros(n + 1, dim, count);
+        let mut out = Batch::zeros(n + 1, dim, count).unwrap();
         batch.restrict_into(&map, &mut out).unwrap();
         for (k, net) in nets.iter().enumerate() {
             let exact_net: Vec<Vec<Rational>> = exact_points(net);
             for j in 0..=n {
                 let want =
-                    bezier_curve_blossom(&exact_net, &repeated(&exact(a), n - j, &exact(b), j));
+                    bezier_curve_blossom(&exact_net, &repeated(&exact(a), n - j, &exact(b), j))
+                        .unwrap();
                 for (x, w) in want.iter().enumerate() {
                     close(out.get(k, j, x), w);
                 }
@@ -94,7 +95,7 @@ fn tensor_and_triangle_batches_equal_the_pyramid() {
     let refs: Vec<&[Vec<f64>]> = nets.iter().map(Vec::as_slice).collect();
     let batch = Batch::from_nets((n + 1) * (m + 1), dim, &refs).unwrap();
     let map = RestrictionMap::tensor((n, m), rect).unwrap();
-    let mut out = Batch::zeros(map.outputs(), dim, count);
+    let mut out = Batch::zeros(map.outputs(), dim, count).unwrap();
     batch.restrict_into(&map, &mut out).unwrap();
     let [a, b, c, d] = rect.map(exact);
     for (k, net) in nets.iter().enumerate().step_by(37) {
@@ -105,7 +106,8 @@ fn tensor_and_triangle_batches_equal_the_pyramid() {
                     &grid,
                     &repeated(&a, n - nu, &b, nu),
                     &repeated(&c, m - mu, &d, mu),
-                );
+                )
+                .unwrap();
                 for (x, w) in want.iter().enumerate() {
                     close(out.get(k, nu * (m + 1) + mu, x), w);
                 }
@@ -120,7 +122,7 @@ fn tensor_and_triangle_batches_equal_the_pyramid() {
     let refs: Vec<&[Vec<f64>]> = nets.iter().map(Vec::as_slice).collect();
     let batch = Batch::from_nets(len, dim, &refs).unwrap();
     let map = RestrictionMap::triangle(big_n, corners).unwrap();
-    let mut out = Batch::zeros(len, dim, count);
+    let mut out = Batch::zeros(len, dim, count).unwrap();
     batch.restrict_into(&map, &mut out).unwrap();
     let bary = corners.map(|[s, t]| [exact(s), exact(t), exact(1.0 - s - t)]);
     for (k, net) in nets.iter().enumerate().step_by(41) {
@@ -130,7 +132,7 @@ fn tensor_and_triangle_batches_equal_the_pyramid() {
                 .chain(std::iter::repeat_n(bary[1].clone(), mu))
                 .chain(std::iter::repeat_n(bary[2].clone(), la))
                 .collect();
-            let want = bezier_triangle_blossom(&patch, &args);
+            let want = bezier_triangle_blossom(&patch, &args).unwrap();
             for (x, w) in want.iter().enumerate() {
                 close(out.get(k, idx, x), w);
             }
@@ -147,8 +149,8 @@ fn parallel_equals_serial_bit_for_bit() {
     let refs: Vec<&[Vec<f64>]> = nets.iter().map(Vec::as_slice).collect();
     let batch = Batch::from_nets(4, 3, &refs).unwrap();
     let map = RestrictionMap::curve(3, 0.125, 0.8).unwrap();
-    let mut serial = Batch::zeros(4, 3, count);
-    let mut parallel = Batch::zeros(4, 3, count);
+    let mut serial = Batch::zeros(4, 3, count).unwrap();
+    let mut parallel = Batch::zeros(4, 3, count).unwrap();
     batch.restrict_into(&map, &mut serial).unwrap();
     batch.par_restrict_into(&map, &mut parallel).unwrap();
     assert_eq!(serial, parallel);
@@ -157,19 +159,19 @@ fn parallel_equals_serial_bit_for_bit() {
 #[test]
 fn shapes_that_do_not_fit_are_errors() {
     let map = RestrictionMap::curve(3, 0.0, 0.5).unwrap();
-    let batch = Batch::zeros(3, 2, 10); // quadratics
-    let mut out = Batch::zeros(4, 2, 10);
+    let batch = Batch::zeros(3, 2, 10).unwrap(); // quadratics
+    let mut out = Batch::zeros(4, 2, 10).unwrap();
     assert_eq!(
         batch.restrict_into(&map, &mut out).unwrap_err().field,
         "map"
     );
-    let batch = Batch::zeros(4, 2, 10);
-    let mut out = Batch::zeros(4, 3, 10);
+    let batch = Batch::zeros(4, 2, 10).unwrap();
+    let mut out = Batch::zeros(4, 3, 10).unwrap();
     assert_eq!(
         batch.restrict_into(&map, &mut out).unwrap_err().field,
         "out"
     );
-    let mut out = Batch::zeros(4, 2, 11);
+    let mut out = Batch::zeros(4, 2, 11).unwrap();
     assert_eq!(
         batch.restrict_into(&map, &mut out).unwrap_err().field,
         "out"

@@ -9,6 +9,7 @@ mod batched;
 mod degree_change;
 mod derivatives;
 mod inverse_closures;
+mod no_panics;
 mod nurbs_rational;
 mod patch_degree;
 mod spline_bspline;

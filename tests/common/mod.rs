@@ -64,7 +64,7 @@ pub fn repeated<X: Clone>(x: &X, k: usize, y: &X, l: usize) -> Vec<X> {
 pub fn curve_by_pyramid<T: Ring>(curve: &BezierCurve<T>, a: &T, b: &T) -> Vec<Vec<T>> {
     let n = curve.degree();
     (0..=n)
-        .map(|j| bezier_curve_blossom(curve.control_points(), &repeated(a, n - j, b, j)))
+        .map(|j| bezier_curve_blossom(curve.control_points(), &repeated(a, n - j, b, j)).unwrap())
         .collect()
 }
 
@@ -81,6 +81,7 @@ pub fn tensor_by_pyramid<T: Ring>(patch: &TensorPatch<T>, rect: &[T; 4]) -> Vec<
                         &repeated(a, n - nu, b, nu),
                         &repeated(c, m - mu, d, mu),
                     )
+                    .unwrap()
                 })
                 .collect()
         })
@@ -99,7 +100,7 @@ pub fn triangle_by_pyramid<T: Ring>(
                 .chain(std::iter::repeat_n(corners[1].clone(), mu))
                 .chain(std::iter::repeat_n(corners[2].clone(), la))
                 .collect();
-            bezier_triangle_blossom(patch, &args)
+            bezier_triangle_blossom(patch, &args).unwrap()
         })
         .collect()
 }

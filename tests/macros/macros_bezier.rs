@@ -47,7 +47,7 @@ fn prove_curve<const L: usize>(f: CurveFn<L>) -> Row {
     let net: Vec<Vec<Poly>> = ctrl.iter().map(|p| p.to_vec()).collect();
     let pyramid = (0..=n).all(|v| {
         let args = repeated(&a, n - v, &b, v);
-        w[v].to_vec() == bezier_curve_blossom(&net, &args)
+        w[v].to_vec() == bezier_curve_blossom(&net, &args).unwrap()
     });
     let curve = BezierCurve::new(net.clone()).unwrap();
     let sampled = curve_control_points_from_samples(n, &a, &b, &|t: &Poly| curve.eval(t));
@@ -76,7 +76,7 @@ fn prove_tensor<const R: usize, const C: usize>(f: TensorFn<R, C>) -> Row {
         (0..=m).all(|mu| {
             let us = repeated(a, n - nu, b, nu);
             let vs = repeated(c, m - mu, d, mu);
-            p[nu][mu].to_vec() == bezier_tensor_blossom(&net, &us, &vs)
+            p[nu][mu].to_vec() == bezier_tensor_blossom(&net, &us, &vs).unwrap()
         })
     });
     let patch = TensorPatch::new(net).unwrap();
@@ -107,7 +107,7 @@ fn prove_triangle<const L: usize>(n: usize, f: TriangleFn<L>) -> Row {
             .chain(std::iter::repeat_n(corners[1].clone(), mu))
             .chain(std::iter::repeat_n(corners[2].clone(), la))
             .collect();
-        pyramid &= q[k].to_vec() == bezier_triangle_blossom(&patch, &args);
+        pyramid &= q[k].to_vec() == bezier_triangle_blossom(&patch, &args).unwrap();
     }
     let sampled = triangle_control_points_from_samples(n, &tri, &|u: &Poly, v: &Poly| {
         patch.eval(&bary(&[u.clone(), v.clone()]))
@@ -190,7 +190,7 @@ fn bezier_cubic_in_f64_and_exact() {
     let net: Vec<Vec<Rational>> = exact_ctrl.iter().map(|p| p.to_vec()).collect();
     for (v, wv) in w.iter().enumerate() {
         let args = repeated(&a, 3 - v, &b, v);
-        assert_eq!(wv.to_vec(), bezier_curve_blossom(&net, &args));
+        assert_eq!(wv.to_vec(), bezier_curve_blossom(&net, &args).unwrap());
     }
     let float_ctrl = pts.map(|p| p.map(|x| x as f64));
     let wf = cubic(&float_ctrl, &0.25, &0.75);

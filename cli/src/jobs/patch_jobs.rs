@@ -182,9 +182,9 @@ fn bezier_tensor<T: JsonNumber + Field>(
                             &repeated(c, m - mu, d, mu),
                         )
                     })
-                    .collect()
+                    .collect::<Result<_, _>>()
             })
-            .collect(),
+            .collect::<Result<_, _>>()?,
         MethodChoice::Library(Method::Polarisation) => {
             tensor_control_points_from_samples((n, m), &rect, &|u, v| patch.eval(u, v))
         }
@@ -383,7 +383,7 @@ fn bezier_triangle<T: JsonNumber + Field>(
                         .collect();
                     bezier_triangle_blossom(&patch, &args)
                 })
-                .collect();
+                .collect::<Result<_, _>>()?;
             TriangularPatch::new(big_n, points)?
         }
         MethodChoice::Library(Method::Polarisation) => {

@@ -156,7 +156,7 @@ fn bezier_curve<T: JsonNumber + Field>(
     let restricted: Vec<Point<T>> = match method {
         MethodChoice::Library(Method::Pyramid) => (0..=n)
             .map(|v| bezier_curve_blossom(curve.control_points(), &repeated(&a, n - v, &b, v)))
-            .collect(),
+            .collect::<Result<_, _>>()?,
         MethodChoice::Library(Method::Polarisation) => {
             curve_control_points_from_samples(n, &a, &b, &|t| curve.eval(t))
         }

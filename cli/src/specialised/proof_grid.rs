@@ -273,7 +273,8 @@ pub fn prove_bezier_tensor(n: usize, m: usize) -> ProofRow {
 pub fn prove_bezier_triangle(big_n: usize) -> ProofRow {
     let s = symbolic_power_triangle(big_n);
     let flat: Vec<Vec<Poly>> = s.rows().iter().flatten().cloned().collect();
-    let patch = blossom::triangle_power_to_bernstein(big_n, &flat);
+    let patch = blossom::triangle_power_to_bernstein(big_n, &flat)
+        .expect("the rows of a power triangle of degree N: a full net of one dimension");
     let tri = symbolic_triangle();
     let q = restrict_bezier_triangle_specialised(&patch, &tri).expect("a carried degree");
     ProofRow {

@@ -156,6 +156,7 @@ fn polarise(
                 }
                 polarise(w, rest, others, &b)
             })
+            .expect("one argument per copy of the slot")
         }
     }
 }
@@ -301,7 +302,7 @@ pub fn curve_rows(n: usize) -> Vec<AxiomRow> {
     let blossoms: Vec<(&str, Boxed)> = vec![
         (
             "definition (2)",
-            form(|args| curve_blossom(&c, &scalars(args))),
+            form(|args| curve_blossom(&c, &scalars(args)).expect("n arguments")),
         ),
         (
             "polarisation (20)",
@@ -315,7 +316,7 @@ pub fn curve_rows(n: usize) -> Vec<AxiomRow> {
         ),
         (
             "pyramid on the Bernstein net",
-            form(|args| bezier_curve_blossom(&net, &scalars(args))),
+            form(|args| bezier_curve_blossom(&net, &scalars(args)).expect("n arguments")),
         ),
     ];
     let mut rows: Vec<AxiomRow> = blossoms
@@ -360,7 +361,7 @@ pub fn tensor_rows(n: usize, m: usize) -> Vec<AxiomRow> {
             "definition (8)",
             form(|args| {
                 let (us, vs) = split(args);
-                tensor_blossom(&s, &us, &vs)
+                tensor_blossom(&s, &us, &vs).expect("arguments")
             }),
         ),
         (
@@ -375,7 +376,7 @@ pub fn tensor_rows(n: usize, m: usize) -> Vec<AxiomRow> {
             "pyramid on the Bernstein net",
             form(|args| {
                 let (us, vs) = split(args);
-                bezier_tensor_blossom(net.control_points(), &us, &vs)
+                bezier_tensor_blossom(net.control_points(), &us, &vs).expect("arguments")
             }),
         ),
     ];
@@ -443,7 +444,7 @@ pub fn triangle_rows(n: usize, m: usize) -> Vec<AxiomRow> {
     let blossoms: Vec<(&str, Boxed)> = vec![
         (
             "definition (13)",
-            form(|args| triangle_blossom(&s, &pairs(args))),
+            form(|args| triangle_blossom(&s, &pairs(args)).expect("N arguments")),
         ),
         (
             "polarisation (21)",
@@ -469,7 +470,7 @@ pub fn triangle_rows(n: usize, m: usize) -> Vec<AxiomRow> {
                         ]
                     })
                     .collect();
-                bezier_triangle_blossom(&patch, &bary)
+                bezier_triangle_blossom(&patch, &bary).expect("N arguments")
             }),
         ),
     ];

@@ -118,7 +118,8 @@ pub fn becomes_19(max_n: usize) -> bool {
         let affine: Vec<Vec<Poly>> = ts.iter().map(|t| vec![t.clone()]).collect();
         let by_19 = polar_form(n, &affine, 1, &|x| {
             vec![Poly::var(&sample_name(&[x[0].clone()]))]
-        });
+        })
+        .expect("n arguments");
         by_18 == by_19
     })
 }
@@ -134,7 +135,8 @@ pub fn curve_cross_check(max_n: usize) -> (bool, bool) {
     let symbolic = (0..=max_n).all(|n| {
         let c = symbolic_curve(n);
         let ts: Vec<Poly> = (1..=n).map(|k| Poly::var(&format!("t{k}"))).collect();
-        homogeneous_curve_blossom(&c, &ts).expect("n arguments") == curve_blossom(&c, &ts)
+        homogeneous_curve_blossom(&c, &ts).expect("n arguments")
+            == curve_blossom(&c, &ts).expect("n arguments")
     });
     let q = |a: i64, b: i64| Rational::new(a.into(), b.into());
     let homogeneous = (1..=max_n).all(|n| {
@@ -151,11 +153,14 @@ pub fn curve_cross_check(max_n: usize) -> (bool, bool) {
             .iter()
             .map(|(t, s)| vec![t.clone(), s.clone()])
             .collect();
-        let f = multilinear_polar_form(n, &args, 2, &|x| blossom::homogeneous_curve(&c, x))
-            .expect("n arguments");
+        let f = multilinear_polar_form(n, &args, 2, &|x| {
+            blossom::homogeneous_curve(&c, x.try_into().expect("two coordinates"))
+        })
+        .expect("n arguments");
         let ratios: Vec<Rational> = pts.iter().map(|(t, s)| t / s).collect();
         let scale: Rational = pts.iter().map(|(_, s)| s.clone()).product();
         let want: Vec<Rational> = curve_blossom(&c, &ratios)
+            .expect("n arguments")
             .iter()
             .map(|x| x * &scale)
             .collect();
@@ -174,7 +179,7 @@ pub fn triangle_cross_check(max_total: usize) -> bool {
                 .map(|k| [Poly::var(&format!("u{k}")), Poly::var(&format!("v{k}"))])
                 .collect();
             homogeneous_triangle_blossom(&s, &args).expect("N arguments")
-                == triangle_blossom(&s, &args)
+                == triangle_blossom(&s, &args).expect("N arguments")
         })
     })
 }

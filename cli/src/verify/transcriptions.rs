@@ -156,8 +156,10 @@ pub fn triangle_reduces_to_curves(max_n: usize) -> bool {
             let sv = PowerSurface::new(vec![(0..=big_n).map(unit).collect()]).expect("grid");
             let us: Vec<Poly> = pts.iter().map(|p| p[0].clone()).collect();
             let vs: Vec<Poly> = pts.iter().map(|p| p[1].clone()).collect();
-            triangle_blossom(&su, &pts) == curve_blossom(&curve, &us)
-                && triangle_blossom(&sv, &pts) == curve_blossom(&curve, &vs)
+            triangle_blossom(&su, &pts).expect("N arguments")
+                == curve_blossom(&curve, &us).expect("n arguments")
+                && triangle_blossom(&sv, &pts).expect("N arguments")
+                    == curve_blossom(&curve, &vs).expect("n arguments")
         })
     })
 }

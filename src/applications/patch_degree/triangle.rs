@@ -33,7 +33,7 @@ use crate::num::binomial::multinomial;
 use crate::num::linalg;
 use crate::restrict::polarisation::triangle_control_points_from_samples;
 use crate::shape::bezier::TriangularPatch;
-use crate::shape::simplex::triangle_index;
+use crate::shape::simplex::{checked_triangle_len, triangle_index};
 use crate::{Rational, Ring};
 use num_bigint::BigInt;
 
@@ -49,12 +49,7 @@ fn multi(n: usize, a1: i64, a2: i64) -> BigInt {
 
 /// The number of control points of degree `n`, (n + 1)(n + 2)/2, checked.
 fn net_len(n: usize) -> Result<usize> {
-    check_count(
-        n.checked_add(1)
-            .zip(n.checked_add(2))
-            .and_then(|(a, b)| a.checked_mul(b))
-            .map(|c| c / 2),
-    )
+    check_count(checked_triangle_len(n))
 }
 
 /// The matrix `[g][a]` = [N!/a!] [(M-N)!/(g-a)!] / [M!/g!] of elevation from degree `n` = N to

@@ -42,6 +42,12 @@ impl<T: Field> BSpline<T> {
     /// The B-spline of degree `degree` with knots `knots` (m + p + 1 of them) and de Boor points
     /// `control_points` (m of them, all of one dimension D >= 1).
     ///
+    /// # Errors
+    /// [`ErrorKind::Empty`] or [`ErrorKind::Dimension`] on `control_points` as
+    /// [`BezierCurve::new`]; [`ErrorKind::Shape`] on `control_points` when m < p + 1 and on
+    /// `knots` when there are not m + p + 1; otherwise as [`KnotVector::new`] (knots that are
+    /// not finite, out of order or of too high a multiplicity).
+    ///
     /// ```
     /// use blossom::BSpline;
     /// // The de Boor algorithm example of seed 002: F(0.8) = (2.6, 2.92).
@@ -58,12 +64,12 @@ impl<T: Field> BSpline<T> {
         // The same points as a Bézier polygon: at least one, all of one dimension D >= 1.
         let control_points = BezierCurve::new(control_points)?.into_control_points();
         let m = control_points.len();
-        if m < degree + 1 {
+        if m <= degree {
             return Err(Error::of(ErrorKind::Shape,
                 "control_points",
                 format!(
                     "a B-spline of degree {degree} needs at least p + 1 = {} de Boor points (Theorem 2.3, ii), found {m}",
-                    degree + 1
+                    degree as u128 + 1
                 ),
             ));
         }
@@ -165,8 +171,12 @@ impl<T: Field> BSpline<T> {
         Ok((k, self.de_boor_table(k, &vec![t.clone(); self.degree()])))
     }
 
-    /// F(t) by de Boor's algorithm (Theorem 2.3); an error naming `t` outside the domain. At
-    /// the right end of the domain the last span is used.
+    /// F(t) by de Boor's algorithm (Theorem 2.3). At the right end of the domain the last span
+    /// is used.
+    ///
+    /// # Errors
+    /// As [`KnotVector::span`]: [`ErrorKind::NotFinite`] on `t` for a NaN or an infinity,
+    /// [`ErrorKind::Domain`] on `t` outside the domain.
     pub fn eval(&self, t: &T) -> Result<Point<T>> {
         let k = self.knots.span(t)?;
         Ok(self.blossom_unchecked(k, &vec![t.clone(); self.degree()]))

@@ -8,8 +8,8 @@
 //! cross-check for both: F_s = sum_k d_k N_k^p on the span s, written in the power basis of u.
 
 use super::bspline::BSpline;
-use crate::error::Result;
-use crate::num::linalg::Field;
+use crate::error::{Error, ErrorKind, Result};
+use crate::num::linalg::{check_all_finite, Field};
 use crate::shape::point::{self, Point};
 use crate::shape::power::PowerCurve;
 
@@ -29,8 +29,31 @@ fn times_linear<T: Field>(f: &[T], a: &T, b: &T, len: usize) -> Coeffs<T> {
 }
 
 /// The polynomials N_i^p restricted to the span `[knots[s], knots[s+1])`, for i = s - p..=s
-/// (0-based), in the power basis of u. Requires s >= p and s + p + 1 < knots.len().
-pub fn bspline_basis_on_span<T: Field>(knots: &[T], p: usize, s: usize) -> Vec<Coeffs<T>> {
+/// (0-based), in the power basis of u.
+///
+/// # Errors
+/// [`ErrorKind::Domain`] on `s` unless p <= s and s + p + 1 < `knots.len()` (the knots
+/// t_(s-p)..t_(s+p+1) the recursion reads); [`ErrorKind::NotFinite`] on `knots[i]` for a NaN
+/// or an infinity (a zero test on knot differences decides each term).
+pub fn bspline_basis_on_span<T: Field>(knots: &[T], p: usize, s: usize) -> Result<Vec<Coeffs<T>>> {
+    let end = s.checked_add(p).and_then(|k| k.checked_add(1));
+    let fits = s >= p && end.is_some_and(|k| k < knots.len());
+    if !fits {
+        return Err(Error::of(
+            ErrorKind::Domain,
+            "s",
+            format!(
+                "the span {s} of degree {p} needs p <= s and s + p + 1 < {} knots",
+                knots.len()
+            ),
+        ));
+    }
+    check_all_finite(knots, "knots")?;
+    Ok(basis_on_span(knots, p, s))
+}
+
+/// [`bspline_basis_on_span`] on a span known to fit finite knots.
+fn basis_on_span<T: Field>(knots: &[T], p: usize, s: usize) -> Vec<Coeffs<T>> {
     let len = p + 1;
     // level[i - (s - r)] = N_i^r on the span, for i = s - r..=s.
     let mut level: Vec<Coeffs<T>> = vec![{
@@ -97,7 +120,7 @@ impl<T: Field> BSpline<T> {
             .spans()
             .into_iter()
             .map(|s| {
-                let basis = bspline_basis_on_span(t, p, s);
+                let basis = basis_on_span(t, p, s);
                 let coefficients: Vec<Point<T>> = (0..=p)
                     .map(|e| {
                         let mut c = point::zero::<T>(self.dim());
@@ -130,7 +153,7 @@ mod tests {
     fn bernstein_basis_on_a_clamped_span() {
         // Knots 0,0,0,1,1,1: N_0^2 = (1-u)^2, N_1^2 = 2u(1-u), N_2^2 = u^2.
         let knots = [0, 0, 0, 1, 1, 1].map(q);
-        let b = bspline_basis_on_span(&knots, 2, 2);
+        let b = bspline_basis_on_span(&knots, 2, 2).unwrap();
         assert_eq!(
             b,
             vec![
@@ -145,7 +168,7 @@ mod tests {
     fn partition_of_unity_on_uniform_knots() {
         let knots: Vec<Rational> = (0..10).map(q).collect();
         for s in 3..6 {
-            let b = bspline_basis_on_span(&knots, 3, s);
+            let b = bspline_basis_on_span(&knots, 3, s).unwrap();
             let mut sum = vec![q(0); 4];
             for f in &b {
                 add_into(&mut sum, f);

@@ -13,7 +13,8 @@
 use super::bspline::BSpline;
 use super::knots::KnotVector;
 use crate::error::{Error, ErrorKind, Result};
-use crate::num::linalg::Field;
+use crate::num::limits::{check_entries, checked_product};
+use crate::num::linalg::{check_all_finite, Field};
 use crate::restrict::definition::curve_blossom;
 use crate::shape::basis::taylor_shift;
 use crate::shape::point::Point;
@@ -39,9 +40,20 @@ fn normalise<T: Field>(p: usize, pieces: &[Piece<T>]) -> Result<Vec<PowerCurve<T
         ));
     };
     let dim = first.curve.dim();
+    let len = check_entries(
+        p.checked_add(1),
+        "degree",
+        "the number p + 1 of coefficients",
+    )?;
+    checked_product(
+        &[pieces.len(), len, dim],
+        "degree",
+        "the coefficients of the pieces at degree p",
+    )?;
     let mut out = Vec::with_capacity(pieces.len());
     for (i, piece) in pieces.iter().enumerate() {
         let [a, b] = &piece.interval;
+        check_all_finite(&piece.interval, &format!("pieces[{i}].interval"))?;
         if a >= b {
             return Err(Error::of(
                 ErrorKind::Domain,
@@ -203,7 +215,7 @@ fn de_boor_points<T: Field>(
             ));
         }
         for k in s - p..=s {
-            let value = curve_blossom(&curves[piece], &t[k + 1..=k + p]);
+            let value = curve_blossom(&curves[piece], &t[k + 1..=k + p])?;
             match &points[k] {
                 None => points[k] = Some((piece, value)),
                 Some((other, v)) if check_agreement && *v != value => {

@@ -9,7 +9,8 @@
 //! d_k = f_j(t_{k+1}, ..., t_{k+p}) for k = j - p..=j, Theorem 2.2).
 
 use crate::error::{Error, ErrorKind, Result};
-use crate::num::linalg::Field;
+use crate::num::limits::check_entries;
+use crate::num::linalg::{check_all_finite, check_finite, Field};
 
 /// A knot vector checked for a given degree.
 #[derive(Clone, Debug, PartialEq)]
@@ -22,6 +23,13 @@ impl<T: Field> KnotVector<T> {
     /// Checks `knots` for degree `degree`: at least 2p + 2 knots (so m >= p + 1),
     /// non-decreasing, every multiplicity at most p + 1, and a non-empty domain.
     ///
+    /// # Errors
+    /// [`ErrorKind::TooLarge`] on `degree` when 2p + 2 overflows or exceeds
+    /// [`MAX_ENTRIES`](crate::MAX_ENTRIES); [`ErrorKind::Shape`] on `knots` when there are
+    /// fewer than 2p + 2; [`ErrorKind::NotFinite`] on `knots[i]` for a NaN or an infinity (the
+    /// order of the knots decides every span search); [`ErrorKind::Domain`] on `knots[i]` or
+    /// `knots` when they decrease, repeat more than p + 1 times or leave an empty domain.
+    ///
     /// ```
     /// use blossom::KnotVector;
     /// assert!(KnotVector::new(2, vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0]).is_ok());
@@ -30,16 +38,21 @@ impl<T: Field> KnotVector<T> {
     /// ```
     pub fn new(degree: usize, knots: Vec<T>) -> Result<Self> {
         let p = degree;
-        if knots.len() < 2 * p + 2 {
+        let least = check_entries(
+            p.checked_mul(2).and_then(|k| k.checked_add(2)),
+            "degree",
+            "the number of knots 2p + 2",
+        )?;
+        if knots.len() < least {
             return Err(Error::of(ErrorKind::Shape,
                 "knots",
                 format!(
-                    "a B-spline of degree {p} needs at least {} knots (p + 1 <= m de Boor points), found {}",
-                    2 * p + 2,
+                    "a B-spline of degree {p} needs at least {least} knots (p + 1 <= m de Boor points), found {}",
                     knots.len()
                 ),
             ));
         }
+        check_all_finite(&knots, "knots")?;
         for i in 1..knots.len() {
             if knots[i] < knots[i - 1] {
                 return Err(Error::of(
@@ -116,8 +129,13 @@ impl<T: Field> KnotVector<T> {
     }
 
     /// The span s with `knots[s] <= t < knots[s+1]` (the last non-empty span at the right end of
-    /// the domain), or an error naming `t` when t is outside the domain.
+    /// the domain).
+    ///
+    /// # Errors
+    /// [`ErrorKind::NotFinite`] on `t` for a NaN or an infinity, [`ErrorKind::Domain`] on `t`
+    /// when t is outside the domain.
     pub fn span(&self, t: &T) -> Result<usize> {
+        check_finite(t, "t")?;
         let (a, b) = self.domain();
         if t < a || t > b {
             return Err(Error::of(

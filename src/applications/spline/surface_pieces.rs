@@ -24,7 +24,7 @@
 use super::curry_schoenberg::continuity_at;
 use super::surface::BSplineSurface;
 use crate::error::{Error, ErrorKind, Result};
-use crate::num::linalg::Field;
+use crate::num::linalg::{check_all_finite, Field};
 use crate::restrict::definition::tensor_blossom;
 use crate::shape::point::{flatten, Point};
 use crate::shape::power::{PowerCurve, PowerSurface};
@@ -67,6 +67,7 @@ fn normalise<T: Field>(
     let mut out = Vec::with_capacity(pieces.len());
     for (k, piece) in pieces.iter().enumerate() {
         let [a, b, c, d] = &piece.rect;
+        check_all_finite(&piece.rect, &format!("pieces[{k}].rect"))?;
         if !(a < b && c < d) {
             return Err(Error::of(
                 ErrorKind::Domain,
@@ -290,7 +291,7 @@ pub fn bspline_surface_from_pieces<T: Field>(
                             &surface,
                             &t[k + 1..=k + p],
                             &s[l + 1..=l + q],
-                        ));
+                        )?);
                     }
                 }
             }

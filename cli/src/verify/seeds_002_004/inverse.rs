@@ -257,7 +257,8 @@ fn bernstein() -> Section {
     let n = 3usize;
     let t = Poly::var("t");
     let b: Vec<Vec<Poly>> = (0..=n).map(|i| vec![Poly::var(&format!("b{i}"))]).collect();
-    let de_casteljau = bezier_curve_blossom(&b, &vec![t.clone(); n])[0].clone();
+    let de_casteljau =
+        bezier_curve_blossom(&b, &vec![t.clone(); n]).expect("n arguments")[0].clone();
     let one_minus_t = Poly::one().sub(&t);
     let sum = |first: &Poly, second: &Poly| {
         (0..=n).fold(Poly::zero(), |acc, i| {

@@ -171,7 +171,7 @@ fn theorem_2_2() -> Section {
         let printed_args = knots(args);
         let window: Vec<Rational> = t[k..k + p].to_vec(); // t_{k+1}..t_{k+p}, 1-based
         let piece = piece_on(&f, j);
-        let value = curve_blossom(&piece, &printed_args);
+        let value = curve_blossom(&piece, &printed_args).expect("p arguments");
         let ok = window == printed_args && value == d[k - 1] && (j - p..=j).contains(&k);
         entries.push(entry(
             format!("d_{k}"),
@@ -191,7 +191,7 @@ fn theorem_2_2() -> Section {
     for j in [5usize, 6, 7] {
         let piece = piece_on(&f, j);
         for k in j - p..=j {
-            others &= curve_blossom(&piece, &t[k..k + p]) == d[k - 1];
+            others &= curve_blossom(&piece, &t[k..k + p]).expect("p arguments") == d[k - 1];
         }
     }
     let mut samples = true;
@@ -322,7 +322,7 @@ fn de_boor_example() -> Section {
         let mut args: Vec<Rational> = t[i..k].to_vec();
         args.extend(std::iter::repeat_n(x.clone(), r));
         args.extend_from_slice(&t[k..i + p - r]);
-        let blossom = curve_blossom(&piece, &args);
+        let blossom = curve_blossom(&piece, &args).expect("p arguments");
         entries.push(entry(
             format!("{label} = f_3(...) (claim (1))"),
             format!("f_3({})", list(&args)),
@@ -442,7 +442,7 @@ fn curry_schoenberg() -> Section {
                 .collect(),
         )
         .expect("valid");
-        let computed = curve_blossom(&sym, &args);
+        let computed = curve_blossom(&sym, &args).expect("p arguments");
         let want: Vec<Poly> = printed.iter().map(|s| parse(s)).collect();
         entries.push(entry(
             format!("f_{j}(t1, t2, t3)"),
@@ -458,7 +458,7 @@ fn curry_schoenberg() -> Section {
             .position(|&x| x == j)
             .expect("printed span");
         let printed_args = knots(args);
-        let by_blossom = curve_blossom(&padded(piece), &printed_args);
+        let by_blossom = curve_blossom(&padded(piece), &printed_args).expect("p arguments");
         let window = t[k..k + p].to_vec();
         let ok = by_blossom == point(value)
             && window == printed_args
@@ -479,7 +479,7 @@ fn curry_schoenberg() -> Section {
     // The printed range "9 - 2 <= i <= 9" of the last span; Theorem 2.2 gives 9 - 3 <= i <= 9.
     let extra: Vec<String> = (6..=7)
         .map(|k| {
-            let v = curve_blossom(&padded(2), &t[k..k + p]);
+            let v = curve_blossom(&padded(2), &t[k..k + p]).expect("p arguments");
             format!(
                 "d_{k} = f_9({}) = {} (from f_7: {})",
                 list(&t[k..k + p]),
@@ -533,7 +533,7 @@ fn ejemplo_2() -> Section {
     )];
     for k in 1..=4 {
         let window = &t[k..k + p];
-        let value = curve_blossom(&piece, window);
+        let value = curve_blossom(&piece, window).expect("p arguments");
         entries.push(entry(
             format!("d_{k} = f_4(t_{}, .., t_{})", k + 1, k + p),
             show(&d[k - 1]),
