@@ -104,10 +104,17 @@ impl JsonNumber for BoundedF64 {
     /// and a fortiori to that of the input doubles: every bound is monotone in the inputs').
     fn from_json(value: &Value) -> Result<Self, String> {
         let double = f64_from_json(value)?;
-        let written = match value {
-            Value::Number(n) => parse_rational(&number_text(n)),
-            Value::String(s) => parse_rational(s),
-            other => Err(not_a_number(other)),
+        let text = match value {
+            Value::Number(n) => number_text(n),
+            Value::String(s) => s.clone(),
+            other => return Err(not_a_number(other)),
+        };
+        // A long decimal, or one far out of the range of doubles, is not read exactly (its
+        // gcd would be quadratic in its length): the standard parser rounds it correctly.
+        let written = if !text.contains('/') && (text.len() > 64 || decimal_exponent(&text) > 400) {
+            Err(String::new())
+        } else {
+            parse_rational(&text)
         };
         Ok(match written {
             Ok(q) => BoundedF64::rounded_from(&q, double),
@@ -120,6 +127,18 @@ impl JsonNumber for BoundedF64 {
     fn to_json(&self) -> Result<Value, String> {
         bounded_json(self)
     }
+}
+
+/// The magnitude of the decimal exponent of a decimal's text (saturating; 0 without one).
+fn decimal_exponent(text: &str) -> u64 {
+    text.find(['e', 'E']).map_or(0, |k| {
+        text[k + 1..]
+            .trim_start_matches(['+', '-'])
+            .bytes()
+            .take(8)
+            .filter(u8::is_ascii_digit)
+            .fold(0, |acc, d| acc * 10 + u64::from(d - b'0'))
+    })
 }
 
 /// The key of the one-entry object that stands for a bounded double in an answer under

@@ -121,77 +121,100 @@ impl Numbers {
     }
 }
 
-/// The bit length of the exact value of a number written as `text` (an upper estimate; 64 for
-/// a text that is not a number, which reading refuses anyway).
-fn text_bits(text: &str) -> f64 {
-    let body = text.trim_start_matches(['+', '-']);
-    let digits = |s: &str| s.bytes().filter(u8::is_ascii_digit).count() as f64;
-    let bits = if let Some((p, q)) = body.split_once('/') {
-        digits(p) + digits(q)
-    } else {
-        let (mantissa, exponent) = match body.find(['e', 'E']) {
-            Some(k) => (&body[..k], &body[k + 1..]),
-            None => (body, ""),
-        };
-        let frac = mantissa.split_once('.').map_or(0.0, |(_, f)| digits(f));
-        // The exponent's magnitude, saturating (reading refuses what is over its own limit).
-        let e = exponent
-            .trim_start_matches(['+', '-'])
-            .bytes()
-            .take(12)
-            .filter(u8::is_ascii_digit)
-            .fold(0.0, |acc, d| acc * 10.0 + f64::from(d - b'0'));
-        let e = e.min(crate::number::MAX_EXPONENT as f64 + 1.0);
-        if mantissa.bytes().all(|b| !(b'1'..=b'9').contains(&b)) {
-            // Zero digits are zero whatever the exponent.
-            0.0
-        } else {
-            digits(mantissa) + frac + e
-        }
-    };
-    (bits * BITS_PER_DIGIT).max(1.0) + 1.0
+/// How a job reads its numbers, for the estimate.
+#[derive(Clone, Copy, Debug)]
+struct Reading {
+    /// As if every number had at most 64 bits (the estimate of the same job with short
+    /// numbers, which decides which field a refusal names).
+    short: bool,
+    /// Under `--arithmetic f64`: a decimal whose exponent puts it beyond the range of doubles
+    /// (zero, or an error) costs nothing to read.
+    f64: bool,
+    /// Under `f64` in a job that computes in doubles: a decimal is read by the standard parser
+    /// (its exact error is computed only for short spellings, see `BoundedF64`'s reading), so
+    /// only fractions cost a big-number reading.
+    doubles: bool,
 }
 
-/// The cost of reading one number of `bits` bits into a big rational.
+/// The pieces of a number written as `text`: the bit length of its exact value (an upper
+/// estimate; 1 for zero digits, whatever the exponent) and, for a decimal, the magnitude of its
+/// decimal exponent minus its number of digits (how far it is from the range of doubles).
+fn text_parts(text: &str) -> (f64, Option<f64>) {
+    let body = text.trim_start_matches(['+', '-']);
+    let digits = |s: &str| s.bytes().filter(u8::is_ascii_digit).count() as f64;
+    if let Some((p, q)) = body.split_once('/') {
+        return ((digits(p) + digits(q)) * BITS_PER_DIGIT + 1.0, None);
+    }
+    let (mantissa, exponent) = match body.find(['e', 'E']) {
+        Some(k) => (&body[..k], &body[k + 1..]),
+        None => (body, ""),
+    };
+    let frac = mantissa.split_once('.').map_or(0.0, |(_, f)| digits(f));
+    // The exponent's magnitude, saturating (reading refuses what is over its own limit).
+    let e = exponent
+        .trim_start_matches(['+', '-'])
+        .bytes()
+        .take(12)
+        .filter(u8::is_ascii_digit)
+        .fold(0.0, |acc, d| acc * 10.0 + f64::from(d - b'0'));
+    let e = e.min(crate::number::MAX_EXPONENT as f64 + 1.0);
+    if mantissa.bytes().all(|b| !(b'1'..=b'9').contains(&b)) {
+        return (1.0, Some(0.0));
+    }
+    let bits = (digits(mantissa) + frac + e) * BITS_PER_DIGIT + 1.0;
+    (bits, Some(e - digits(mantissa)))
+}
+
+/// The cost of reading one number of `bits` bits into a big rational (the gcd that reduces it
+/// is quadratic).
 fn reading_cost(bits: f64) -> f64 {
-    100.0 + 2.0 * LIMB_PAIR * (bits / 64.0).powi(2)
+    100.0 + 64.0 * LIMB_PAIR * (bits / 64.0).powi(2)
+}
+
+/// One number's bit length and reading cost.
+fn leaf(text: &str, reading: Reading) -> Numbers {
+    let (bits, beyond) = text_parts(text);
+    let cheap = Numbers {
+        count: 1.0,
+        max_bits: 1.0,
+        reading: reading_cost(64.0),
+    };
+    match beyond {
+        // Zero or out of the range of doubles under f64; any decimal in a job of doubles.
+        Some(b) if reading.f64 && (b > 400.0 || reading.doubles) => cheap,
+        _ if reading.short => Numbers {
+            count: 1.0,
+            max_bits: bits.min(64.0),
+            reading: reading_cost(64.0),
+        },
+        _ => Numbers {
+            count: 1.0,
+            max_bits: bits,
+            reading: reading_cost(bits),
+        },
+    }
 }
 
 /// The numbers anywhere in `value`.
-fn numbers(value: &Value) -> Numbers {
-    let leaf = |bits: f64| Numbers {
-        count: 1.0,
-        max_bits: bits,
-        reading: reading_cost(bits),
-    };
+fn numbers(value: &Value, reading: Reading) -> Numbers {
     match value {
-        Value::Number(n) => leaf(text_bits(&n.to_string())),
-        Value::String(s) => leaf(text_bits(s)),
+        Value::Number(n) => leaf(&n.to_string(), reading),
+        Value::String(s) => leaf(s, reading),
         Value::Array(items) => items
             .iter()
-            .map(numbers)
+            .map(|v| numbers(v, reading))
             .fold(Numbers::default(), Numbers::and),
         Value::Object(map) => map
             .values()
-            .map(numbers)
+            .map(|v| numbers(v, reading))
             .fold(Numbers::default(), Numbers::and),
         _ => Numbers::default(),
     }
 }
 
-/// The numbers of `value`, or, when `short`, as if each had at most 64 bits (the estimate of
-/// the same job with short numbers, which decides which field a refusal names).
-fn numbers_in(value: Option<&Value>, short: bool) -> Numbers {
-    let found = value.map(numbers).unwrap_or_default();
-    if short {
-        Numbers {
-            count: found.count,
-            max_bits: found.max_bits.min(64.0),
-            reading: found.count * reading_cost(64.0),
-        }
-    } else {
-        found
-    }
+/// The numbers of a field (none when it is missing).
+fn numbers_in(value: Option<&Value>, reading: Reading) -> Numbers {
+    value.map(|v| numbers(v, reading)).unwrap_or_default()
 }
 
 /// The length of an array (0 for anything else).
@@ -404,14 +427,23 @@ fn work_of(
     let arith = Arith {
         exact: arithmetic == Arithmetic::Exact,
     };
+    let exact_decisions = matches!(
+        kind,
+        "bspline" | "rational-curve" | "rational-tensor" | "rational-triangle"
+    );
+    let reading = Reading {
+        short,
+        f64: arithmetic == Arithmetic::F64,
+        doubles: arithmetic == Arithmetic::F64 && !exact_decisions,
+    };
     let exact = Arith { exact: true };
     let g = |name: &str| job.get(name);
     // (work of the algorithm, reading, the field of the sizes, the field of the numbers)
     let (work, reading, size_field, _numbers): (f64, f64, &'static str, Numbers) = match kind {
         "curve" => {
             let (c, i) = (
-                numbers_in(g("coefficients"), short),
-                numbers_in(g("interval"), short),
+                numbers_in(g("coefficients"), reading),
+                numbers_in(g("interval"), reading),
             );
             let n = (len(g("coefficients")) - 1.0).max(0.0);
             let bits = grown_bits(c.max_bits, i.max_bits, n);
@@ -425,8 +457,8 @@ fn work_of(
         }
         "bezier-curve" => {
             let (c, i) = (
-                numbers_in(g("control_points"), short),
-                numbers_in(g("interval"), short),
+                numbers_in(g("control_points"), reading),
+                numbers_in(g("interval"), reading),
             );
             let n = (len(g("control_points")) - 1.0).max(0.0);
             let d = dimension(g("control_points"));
@@ -440,7 +472,7 @@ fn work_of(
             )
         }
         "derivative" => {
-            let c = numbers_in(g("control_points"), short);
+            let c = numbers_in(g("control_points"), reading);
             let n = (len(g("control_points")) - 1.0).max(0.0);
             let d = dimension(g("control_points"));
             let bits = grown_bits(c.max_bits, 0.0, n);
@@ -454,8 +486,8 @@ fn work_of(
                 "control_points"
             };
             let (c, r) = (
-                numbers_in(g(grid), short),
-                numbers_in(g("rectangle"), short),
+                numbers_in(g(grid), reading),
+                numbers_in(g("rectangle"), reading),
             );
             let n = (len(g(grid)) - 1.0).max(0.0);
             let m = (first_len(g(grid)) - 1.0).max(0.0);
@@ -476,7 +508,7 @@ fn work_of(
             } else {
                 "control_points"
             };
-            let (c, t) = (numbers_in(g(grid), short), numbers_in(g("triangle"), short));
+            let (c, t) = (numbers_in(g(grid), reading), numbers_in(g("triangle"), reading));
             let d = dimension(g(grid));
             let (big_n, terms) = if kind == "bezier-triangle" {
                 let entries = len(g(grid));
@@ -502,7 +534,7 @@ fn work_of(
             )
         }
         "elevate" => {
-            let c = numbers_in(g("control_points"), short);
+            let c = numbers_in(g("control_points"), reading);
             let n = (len(g("control_points")) - 1.0).max(0.0);
             let m = degree_of(g("to_degree")).max(n);
             let d = dimension(g("control_points"));
@@ -511,7 +543,7 @@ fn work_of(
             (ops * arith.operation(bits), c.reading, "to_degree", c)
         }
         "reduce" => {
-            let c = numbers_in(g("control_points"), short);
+            let c = numbers_in(g("control_points"), reading);
             let n = (len(g("control_points")) - 1.0).max(0.0);
             let m = degree_of(g("to_degree")).min(n);
             let d = dimension(g("control_points"));
@@ -528,7 +560,7 @@ fn work_of(
             let pieces = g("pieces");
             let p = degree_of(g("degree"));
             let k = len(pieces);
-            let c = numbers_in(pieces, short);
+            let c = numbers_in(pieces, reading);
             let d = match pieces {
                 Some(Value::Array(items)) => match items.first() {
                     Some(Value::Object(piece)) => dimension(piece.get("coefficients")),
@@ -543,9 +575,9 @@ fn work_of(
         }
         "bspline-eval" => {
             let (k, c, t) = (
-                numbers_in(g("knots"), short),
-                numbers_in(g("control_points"), short),
-                numbers_in(g("at"), short),
+                numbers_in(g("knots"), reading),
+                numbers_in(g("control_points"), reading),
+                numbers_in(g("at"), reading),
             );
             let p = degree_of(g("degree"));
             let d = dimension(g("control_points"));
@@ -560,9 +592,9 @@ fn work_of(
         }
         "rational-curve" => {
             let (nu, de, i) = (
-                numbers_in(g("numerator"), short),
-                numbers_in(g("denominator"), short),
-                numbers_in(g("interval"), short),
+                numbers_in(g("numerator"), reading),
+                numbers_in(g("denominator"), reading),
+                numbers_in(g("interval"), reading),
             );
             let longest = len(g("numerator")).max(len(g("denominator")));
             let n = degree_of(g("degree")).max((longest - 1.0).max(0.0));
@@ -574,15 +606,15 @@ fn work_of(
         }
         "rational-tensor" | "rational-triangle" => {
             let (nu, de) = (
-                numbers_in(g("numerator"), short),
-                numbers_in(g("denominator"), short),
+                numbers_in(g("numerator"), reading),
+                numbers_in(g("denominator"), reading),
             );
             let domain_name = if kind == "rational-tensor" {
                 "rectangle"
             } else {
                 "triangle"
             };
-            let domain = numbers_in(g(domain_name), short);
+            let domain = numbers_in(g(domain_name), reading);
             let all = nu.and(de).and(domain);
             let d = dimension(g("numerator")) + 1.0;
             let rows = len(g("numerator")).max(len(g("denominator")));
@@ -640,11 +672,18 @@ fn work_of(
     ))
 }
 
+/// Reading every number exactly, at its full length.
+const EXACT_READING: Reading = Reading {
+    short: false,
+    f64: false,
+    doubles: false,
+};
+
 /// The top-level field of `job` that holds the number with the most bits.
 fn longest_number_field(job: &Map<String, Value>) -> String {
     job.iter()
         .filter(|(name, _)| name.as_str() != "kind")
-        .map(|(name, value)| (name, numbers(value).max_bits))
+        .map(|(name, value)| (name, numbers(value, EXACT_READING).max_bits))
         .fold((String::from("input"), 0.0), |best, (name, bits)| {
             if bits > best.1 {
                 (name.clone(), bits)
