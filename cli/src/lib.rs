@@ -1,5 +1,6 @@
 //! The application behind the `blossom` binary, apart from the library `blossom`:
 //!
+//! * [`fuzzing`]: the fuzz targets of `fuzz/` as functions of bytes, replayed by the tests;
 //! * [`jobs`]: the command line and the JSON restriction jobs of the CLI contract
 //!   (`docs/cli.md`);
 //! * [`number`]: the JSON number layer (exact reading of decimals and fractions, output);
@@ -9,6 +10,7 @@
 //!   dispatch and proofs, and `blossom expand`;
 #![forbid(unsafe_code)]
 
+pub mod fuzzing;
 pub mod jobs;
 pub mod number;
 pub mod proofs;

@@ -9,3 +9,4 @@ mod cli_error_bounds;
 mod cli_patch_jobs;
 mod cli_restrict;
 mod cli_spline_jobs;
+mod fuzz_corpus;

@@ -1,0 +1,5 @@
+//! `blossom_cli::fuzzing::number_entry`: the whole target and its contracts live there, so that the
+//! replay test of the corpus runs the same code.
+#![no_main]
+
+libfuzzer_sys::fuzz_target!(|data: &[u8]| blossom_cli::fuzzing::number_entry(data));
