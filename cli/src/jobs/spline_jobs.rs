@@ -386,20 +386,20 @@ fn rational_answer<T: JsonNumber>(
     out: &mut Map<String, Value>,
 ) -> Result<(), Error> {
     out.insert("degree".into(), Value::from(bez.degree()));
-    let points: Vec<Point<T>> = bez.points().iter().map(|p| rounded(p)).collect();
-    out.insert(
-        "control_points".into(),
-        points_json(&points, "control_points")?,
-    );
     let weights = rounded::<T>(bez.weights());
     // The weights are non-zero exactly (checked before); one that rounds to zero would make
-    // its rounded control point meaningless.
+    // its rounded control point meaningless (checked first: that point may overflow).
     if let Some(k) = weights.iter().position(blossom::Ring::is_zero) {
         return Err(Error::new(
             format!("weights[{k}]"),
             "the weight is not zero but rounds to zero in f64 (underflow)",
         ));
     }
+    let points: Vec<Point<T>> = bez.points().iter().map(|p| rounded(p)).collect();
+    out.insert(
+        "control_points".into(),
+        points_json(&points, "control_points")?,
+    );
     out.insert("weights".into(), numbers_json(&weights, "weights")?);
     Ok(())
 }

@@ -260,3 +260,70 @@ fn exact_answers_have_no_bound_and_f64_answers_always_have_one() {
     let float = answer(&["--arithmetic", "f64", "--method", "bulk"], &dyadic).unwrap();
     assert!(float["error_bound"].as_f64().unwrap() < 1e-15);
 }
+
+/// Which methods lose digits where: for curves in the power basis and Bézier curves of degree
+/// 10 to 40, inside [0, 1] and far from the origin, the largest exact error of each method's
+/// f64 answer next to its `"error_bound"` and the size of the answer. Printed, not asserted
+/// beyond the bound (the figures are in `docs/error_bounds.md`).
+/// Run: `cargo test --release -p blossom-cli --test cli digits_lost -- --ignored --nocapture`.
+#[test]
+#[ignore = "a table for the documentation; about a minute"]
+fn digits_lost() {
+    let methods = [
+        "closed-form",
+        "definition",
+        "pyramid",
+        "polarisation",
+        "bulk",
+        "taylor-shift",
+    ];
+    let mut r = Random(7);
+    println!("kind         method        degree interval     max|x|    max error error_bound");
+    for kind in ["curve", "bezier-curve"] {
+        for method in methods {
+            for n in [10usize, 20, 30, 40] {
+                for interval in [["1/4", "3/4"], ["10", "11"], ["-2", "3"]] {
+                    let points: Vec<Value> = (0..=n)
+                        .map(|_| {
+                            if kind == "curve" {
+                                json!([format!(
+                                    "{}/{}",
+                                    r.below(201) as i64 - 100,
+                                    r.below(50) + 1
+                                )])
+                            } else {
+                                json!([format!("{}/100", r.below(101))])
+                            }
+                        })
+                        .collect();
+                    let field = if kind == "curve" {
+                        "coefficients"
+                    } else {
+                        "control_points"
+                    };
+                    let job = json!({"kind": kind, field: points, "interval": interval});
+                    let budget = ["--max-work", "1e15", "--method", method];
+                    let exact = answer(&budget, &job).expect("exact");
+                    let mut float = answer(&[&budget[..], &["--arithmetic", "f64"]].concat(), &job)
+                        .expect("f64");
+                    let bound = float["error_bound"].as_f64().unwrap_or(f64::INFINITY);
+                    float.as_object_mut().unwrap().remove("error_bound");
+                    let mut pairs = Vec::new();
+                    numbers(&exact, &float, &mut pairs);
+                    let (mut size, mut worst) = (0.0f64, 0.0f64);
+                    for (x, y) in pairs {
+                        let error =
+                            blossom::rational_to_f64(&(&x - Rational::from_f64(y).unwrap()).abs());
+                        assert!(error <= bound, "{kind} {method} {n}: {error} > {bound}");
+                        size = size.max(blossom::rational_to_f64(&x).abs());
+                        worst = worst.max(error);
+                    }
+                    println!(
+                        "{kind:12} {method:13} {n:6} [{:>3}, {:>3}] {size:9.2e} {worst:9.2e} {bound:9.2e}",
+                        interval[0], interval[1]
+                    );
+                }
+            }
+        }
+    }
+}
