@@ -203,7 +203,7 @@ fn the_exact_error_never_exceeds_the_bound() {
         "taylor-shift",
         "specialised",
     ];
-    let mut r = Random(0x5EED_B10_550);
+    let mut r = Random(0x005E_EDB1_0550);
     let (mut checked, mut largest) = (0usize, (0.0f64, String::new()));
     for (kind, has_methods) in kinds {
         let methods: &[&str] = if has_methods { &methods } else { &methods[..1] };
