@@ -103,8 +103,6 @@ pub fn check(
 /// Bit lengths of the numbers of one part of a job.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 struct Numbers {
-    /// How many numbers.
-    count: f64,
     /// The largest bit length of one number (numerator and denominator together).
     max_bits: f64,
     /// The cost of reading them all, in work units.
@@ -114,7 +112,6 @@ struct Numbers {
 impl Numbers {
     fn and(self, other: Numbers) -> Numbers {
         Numbers {
-            count: self.count + other.count,
             max_bits: self.max_bits.max(other.max_bits),
             reading: self.reading + other.reading,
         }
@@ -178,7 +175,6 @@ fn reading_cost(bits: f64) -> f64 {
 fn leaf(text: &str, reading: Reading) -> Numbers {
     let (bits, beyond) = text_parts(text);
     let cheap = Numbers {
-        count: 1.0,
         max_bits: 1.0,
         reading: reading_cost(64.0),
     };
@@ -186,12 +182,10 @@ fn leaf(text: &str, reading: Reading) -> Numbers {
         // Zero or out of the range of doubles under f64; any decimal in a job of doubles.
         Some(b) if reading.f64 && (b > 400.0 || reading.doubles) => cheap,
         _ if reading.short => Numbers {
-            count: 1.0,
             max_bits: bits.min(64.0),
             reading: reading_cost(64.0),
         },
         _ => Numbers {
-            count: 1.0,
             max_bits: bits,
             reading: reading_cost(bits),
         },

@@ -286,15 +286,7 @@ fn budget_sweep() {
         "rational-tensor",
         "rational-triangle",
     ];
-    let methods = [
-        "closed-form",
-        "definition",
-        "pyramid",
-        "polarisation",
-        "bulk",
-        "taylor-shift",
-        "specialised",
-    ];
+    let methods = blossom_cli::jobs::args::METHOD_NAMES.map(|(name, _)| name);
     for kind in kinds {
         let mut slowest = (Duration::ZERO, String::new());
         for method in methods {

@@ -8,16 +8,15 @@ use num_traits::{FromPrimitive, Signed};
 use serde_json::{json, Value};
 use std::ffi::OsString;
 
-/// A small deterministic generator (SplitMix64), so that a failure can be replayed.
-struct Random(u64);
+use crate::common::Rng;
+use blossom_cli::jobs::args::{MethodChoice, METHOD_NAMES};
+
+/// The tests' deterministic generator (`tests/common`), with the job numbers drawn here.
+struct Random(Rng);
 
 impl Random {
     fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
+        self.0.next()
     }
     fn below(&mut self, n: u64) -> u64 {
         self.next() % n
@@ -178,6 +177,28 @@ fn numbers(exact: &Value, float: &Value, out: &mut Vec<(Rational, f64)>) {
     }
 }
 
+/// Every method's name, in the order of `--method`'s help.
+fn method_names() -> Vec<&'static str> {
+    METHOD_NAMES.iter().map(|(name, _)| *name).collect()
+}
+
+/// The job answered exactly and in f64 under `args`: every number of the f64 answer with the
+/// exact number at its place, and the f64 answer's `"error_bound"` (+∞ for `null`); `None` when
+/// exact arithmetic refuses the job.
+fn exact_and_f64(args: &[&str], job: &Value) -> Option<(Vec<(Rational, f64)>, f64)> {
+    let exact = answer(args, job)?;
+    let mut float = answer(&[args, &["--arithmetic", "f64"]].concat(), job)
+        .unwrap_or_else(|| panic!("{args:?}: f64 refused what exact answers: {job}"));
+    let bound = float["error_bound"].as_f64().unwrap_or(f64::INFINITY);
+    float
+        .as_object_mut()
+        .expect("an object")
+        .remove("error_bound");
+    let mut pairs = Vec::new();
+    numbers(&exact, &float, &mut pairs);
+    Some((pairs, bound))
+}
+
 #[test]
 fn the_exact_error_never_exceeds_the_bound() {
     let kinds = [
@@ -194,32 +215,17 @@ fn the_exact_error_never_exceeds_the_bound() {
         ("bspline-eval", false),
         ("rational-curve", false),
     ];
-    let methods = [
-        "closed-form",
-        "definition",
-        "pyramid",
-        "polarisation",
-        "bulk",
-        "taylor-shift",
-        "specialised",
-    ];
-    let mut r = Random(0x005E_EDB1_0550);
+    let methods = method_names();
+    let mut r = Random(Rng(0x005E_EDB1_0550));
     let (mut checked, mut largest) = (0usize, (0.0f64, String::new()));
     for (kind, has_methods) in kinds {
         let methods: &[&str] = if has_methods { &methods } else { &methods[..1] };
         for method in methods {
             for _ in 0..12 {
                 let job = job(kind, &mut r);
-                let Some(exact) = answer(&["--method", method], &job) else {
+                let Some((pairs, bound)) = exact_and_f64(&["--method", method], &job) else {
                     continue;
                 };
-                let float = answer(&["--method", method, "--arithmetic", "f64"], &job)
-                    .unwrap_or_else(|| panic!("{method}: f64 refused what exact answers: {job}"));
-                let bound = float["error_bound"].as_f64().unwrap_or(f64::INFINITY);
-                let mut float = float;
-                float.as_object_mut().unwrap().remove("error_bound");
-                let mut pairs = Vec::new();
-                numbers(&exact, &float, &mut pairs);
                 let bound_q = Rational::from_f64(bound);
                 for (x, y) in pairs {
                     let error = (&x - Rational::from_f64(y).expect("finite")).abs();
@@ -269,18 +275,15 @@ fn exact_answers_have_no_bound_and_f64_answers_always_have_one() {
 #[test]
 #[ignore = "a table for the documentation; about a minute"]
 fn digits_lost() {
-    let methods = [
-        "closed-form",
-        "definition",
-        "pyramid",
-        "polarisation",
-        "bulk",
-        "taylor-shift",
-    ];
-    let mut r = Random(7);
+    let methods: Vec<&str> = METHOD_NAMES
+        .iter()
+        .filter(|(_, choice)| *choice != MethodChoice::Specialised)
+        .map(|(name, _)| *name)
+        .collect();
+    let mut r = Random(Rng(7));
     println!("kind         method        degree interval     max|x|    max error error_bound");
     for kind in ["curve", "bezier-curve"] {
-        for method in methods {
+        for method in &methods {
             for n in [10usize, 20, 30, 40] {
                 for interval in [["1/4", "3/4"], ["10", "11"], ["-2", "3"]] {
                     let points: Vec<Value> = (0..=n)
@@ -303,13 +306,7 @@ fn digits_lost() {
                     };
                     let job = json!({"kind": kind, field: points, "interval": interval});
                     let budget = ["--max-work", "1e15", "--method", method];
-                    let exact = answer(&budget, &job).expect("exact");
-                    let mut float = answer(&[&budget[..], &["--arithmetic", "f64"]].concat(), &job)
-                        .expect("f64");
-                    let bound = float["error_bound"].as_f64().unwrap_or(f64::INFINITY);
-                    float.as_object_mut().unwrap().remove("error_bound");
-                    let mut pairs = Vec::new();
-                    numbers(&exact, &float, &mut pairs);
+                    let (pairs, bound) = exact_and_f64(&budget, &job).expect("exact");
                     let (mut size, mut worst) = (0.0f64, 0.0f64);
                     for (x, y) in pairs {
                         let error =
