@@ -1,5 +1,7 @@
 //! The application behind the `blossom` binary, apart from the library `blossom`:
 //!
+//! * [`check`]: `blossom check`, the exact error of another program's f64 answer;
+//! * [`figures`]: `blossom figures`, the papers' pictures drawn from computed values;
 //! * [`fuzzing`]: the fuzz targets of `fuzz/` as functions of bytes, replayed by the tests;
 //! * [`jobs`]: the command line and the JSON restriction jobs of the CLI contract
 //!   (`docs/cli.md`);
@@ -10,6 +12,8 @@
 //!   dispatch and proofs, and `blossom expand`;
 #![forbid(unsafe_code)]
 
+pub mod check;
+pub mod figures;
 pub mod fuzzing;
 pub mod jobs;
 pub mod number;

@@ -5,8 +5,11 @@
 //!
 //! ```text
 //! blossom                                   same as `blossom verify`
-//! blossom verify [--json]
+//! blossom verify [--json] [--verbose]
 //! blossom restrict [--input FILE] [--arithmetic exact|f64] [--method METHOD]
+//!                  [--max-work UNITS] [--max-input BYTES]
+//! blossom check [--input FILE] [--per-point] [--max-work UNITS] [--max-input BYTES]
+//! blossom figures [--out DIR]
 //! blossom expand curve N | tensor N M | triangle N M | triangle-total N | bezier-curve N
 //!                | bezier-tensor N M | bezier-triangle N
 //! blossom [SUBCOMMAND] --help | -h          help (also `blossom help`)
@@ -16,6 +19,19 @@
 //! `--input -` reads standard input, as does leaving `--input` out. A value that starts with
 //! `--` is taken for a forgotten value (`--input --method pyramid`); write `--input=--odd-name`
 //! for a file whose name starts with `--`.
+//!
+//! A mistyped subcommand, option or method gets the nearest accepted name in its message
+//! (`did you mean "restrict"?`, [`suggest`]).
+//!
+//! # Why not clap
+//!
+//! The contract (`docs/cli.md`) wants every failure as one line `error: FIELD: message` naming
+//! the argument, exit 2; a forgotten value (`--input --method pyramid`) reported as such; file
+//! names that are not UTF-8 kept intact. With clap's derive every error kind would have to be
+//! taken apart and re-rendered into that line, and `--input --method` would be read as a file
+//! named `--method`; the grammar here is five subcommands with a few flags each. This parser is
+//! 300 lines, tested per error (`tests` below and `bad_arguments` in `cli/tests/cli/cli_restrict.rs`), and costs no
+//! compile time on a CI budget the test command already fills.
 
 use blossom::Error;
 use blossom::Method;
@@ -65,16 +81,40 @@ pub struct RestrictOptions {
     pub limits: super::budget::Limits,
 }
 
+/// Options of `blossom check`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CheckOptions {
+    /// The file holding the job and the answer; `None` for standard input.
+    pub input: Option<PathBuf>,
+    /// `--per-point`: the error of every control point, besides the largest.
+    pub per_point: bool,
+    /// `--max-work` and `--max-input` ([`super::budget`]), applied to the job.
+    pub limits: super::budget::Limits,
+}
+
+/// The subcommands, in the order the help lists them.
+pub const SUBCOMMANDS: [&str; 6] = ["verify", "restrict", "check", "figures", "expand", "help"];
+
 /// What the command line asks for.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Command {
-    /// `blossom` or `blossom verify [--json]`.
+    /// `blossom` or `blossom verify [--json] [--verbose]`.
     Verify {
         /// `--json`: the report as JSON.
         json: bool,
+        /// `--verbose`: every section with its entries and findings, instead of the verdict
+        /// and the table of sections.
+        verbose: bool,
     },
     /// `blossom restrict ...`.
     Restrict(RestrictOptions),
+    /// `blossom check ...`: the exact error of another program's f64 answer.
+    Check(CheckOptions),
+    /// `blossom figures [--out DIR]`: the pictures, written as SVG files into the directory.
+    Figures {
+        /// `--out`, default `figures`.
+        out: PathBuf,
+    },
     /// `blossom expand SHAPE DEGREES...`: the words after `expand` (checked when run).
     Expand(Vec<String>),
     /// `--help`: print this text and succeed.
@@ -92,6 +132,9 @@ Usage:
   blossom verify [--json]      re-derive the tables and worked examples of the seed papers;
                                exit 0 when everything is reproduced or explained, 1 otherwise
   blossom restrict [OPTIONS]   restrict a curve or surface given as JSON (see `restrict --help`)
+  blossom check [OPTIONS]      the exact error of another program's f64 answer to a restrict
+                               job (see `check --help`)
+  blossom figures [--out DIR]  draw the papers' figures and examples as SVG files
   blossom expand SHAPE DEGREE  print the function the proc-macro generates for a fixed degree
                                (see `expand --help`)
   blossom --help | --version
@@ -191,13 +234,50 @@ Limits (those of the macro): curves N <= 24, tensor patches N, M <= 10, triangle
 pub const VERIFY_HELP: &str = "\
 blossom verify: re-derive every table and worked example of the seed papers exactly
 
-Usage: blossom verify [--json]
+Usage: blossom verify [--json] [--verbose]
+
+By default the report opens with its verdict and then lists the sections, one line each:
+section, source, entries matched, status. Mismatches and findings are in the full report.
 
 Options:
-  --json      print the report as JSON
+  --verbose   the full report: every section with its findings and every entry
+  --json      the full report as JSON
   -h, --help  print this help
 
 Exit code 0 when every printed value was reproduced or explained, 1 otherwise.
+";
+
+/// Help for `blossom figures`.
+pub const FIGURES_HELP: &str = "\
+blossom figures: the papers' figures and examples drawn from the library's results
+
+Usage: blossom figures [--out DIR]
+
+Writes SVG files into DIR (default `figures`, created if missing) and lists them on standard
+output, one per line.
+
+Options:
+  --out DIR   the directory of the pictures
+  -h, --help  print this help
+";
+
+/// Help for `blossom check`.
+pub const CHECK_HELP: &str = "\
+blossom check: the exact error of somebody else's f64 answer to a restriction job
+
+Usage: blossom check [--input FILE] [--per-point] [--max-work UNITS] [--max-input BYTES]
+
+Reads {\"job\": JOB, \"answer\": ANSWER}: JOB is a job of `blossom restrict`, its numbers
+doubles; ANSWER has the job's answer shape (\"control_points\" as `restrict` prints them) in
+doubles. The exact answer for the exact values of the job's doubles is computed and compared
+with ANSWER; the errors are exact rationals and their nearest doubles (see docs/cli.md).
+
+Options:
+  --input FILE       read from FILE (default, or `-`: standard input)
+  --per-point        also the error of every control point
+  --max-work UNITS   the work budget of the exact job (as for restrict)
+  --max-input BYTES  the longest input read (as for restrict)
+  -h, --help         print this help
 ";
 
 fn is_help(arg: &str) -> bool {
@@ -231,44 +311,174 @@ fn os_suffix(arg: &OsStr, skip: usize) -> OsString {
 /// Parses the arguments after the program name.
 pub fn parse(args: &[OsString]) -> Result<Command, Error> {
     let Some(first) = args.first() else {
-        return Ok(Command::Verify { json: false });
+        return Ok(Command::Verify {
+            json: false,
+            verbose: false,
+        });
     };
     let first = first.to_string_lossy();
     let rest = &args[1..];
     match first.as_ref() {
         "verify" => parse_verify(rest),
         "restrict" => parse_restrict(rest),
+        "check" => parse_check(rest),
+        "figures" => parse_figures(rest),
         "expand" => parse_expand(rest),
         "help" => Ok(Command::Help(HELP)),
         "--version" | "-V" => Ok(Command::Version),
         arg if is_help(arg) => Ok(Command::Help(HELP)),
         arg if arg.starts_with('-') => Err(Error::new(
             arg,
-            "unknown option (expected a subcommand: restrict, verify or expand; see blossom --help)",
+            format!(
+                "unknown option (expected a subcommand: {}; see blossom --help){}",
+                listed(&SUBCOMMANDS),
+                did_you_mean(arg, &["--help", "--version"])
+            ),
         )),
         arg => Err(Error::new(
             arg,
-            "unknown subcommand (expected restrict, verify or expand; see blossom --help)",
+            format!(
+                "unknown subcommand{} (expected {}; see blossom --help)",
+                did_you_mean(arg, &SUBCOMMANDS),
+                listed(&SUBCOMMANDS)
+            ),
         )),
     }
 }
 
+/// `names` as `a, b or c`.
+fn listed(names: &[&str]) -> String {
+    match names {
+        [] => String::new(),
+        [one] => one.to_string(),
+        [init @ .., last] => format!("{} or {last}", init.join(", ")),
+    }
+}
+
+/// The accepted name nearest to `word`, if it is near enough to be a typing slip: at most a
+/// third of the longer word's letters inserted, deleted, replaced or swapped (the optimal
+/// string alignment distance), at least one; ties go to the first name in `names`. A name
+/// that starts with `word` (three letters or more) counts as near.
+pub fn suggest<'a>(word: &str, names: &[&'a str]) -> Option<&'a str> {
+    let word_lower = word.to_lowercase();
+    let mut best: Option<(usize, &'a str)> = None;
+    for &name in names {
+        let distance = if word_lower.len() >= 3 && name.starts_with(&word_lower) {
+            1
+        } else {
+            edit_distance(&word_lower, name)
+        };
+        let allowed = (word.chars().count().max(name.chars().count()) / 3).max(1);
+        if distance <= allowed && best.is_none_or(|(d, _)| distance < d) {
+            best = Some((distance, name));
+        }
+    }
+    best.map(|(_, name)| name)
+}
+
+/// ` (did you mean "NAME"?)` after a message, or nothing.
+fn did_you_mean(word: &str, names: &[&str]) -> String {
+    suggest(word, names)
+        .filter(|name| *name != word)
+        .map(|name| format!(" (did you mean {}?)", quoted(name)))
+        .unwrap_or_default()
+}
+
+/// The optimal string alignment distance of `a` and `b`: the fewest insertions, deletions,
+/// replacements and swaps of adjacent characters that turn one into the other.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let a: Vec<char> = a.chars().collect();
+    let b: Vec<char> = b.chars().collect();
+    // rows[i][j]: the distance of a[..i] and b[..j]; three rows suffice for the swaps.
+    let width = b.len() + 1;
+    let mut before: Vec<usize> = vec![0; width];
+    let mut previous: Vec<usize> = (0..width).collect();
+    let mut current: Vec<usize> = vec![0; width];
+    for i in 1..=a.len() {
+        current[0] = i;
+        for j in 1..=b.len() {
+            let replace = previous[j - 1] + usize::from(a[i - 1] != b[j - 1]);
+            let mut d = replace.min(previous[j] + 1).min(current[j - 1] + 1);
+            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
+                d = d.min(before[j - 2] + 1);
+            }
+            current[j] = d;
+        }
+        std::mem::swap(&mut before, &mut previous);
+        std::mem::swap(&mut previous, &mut current);
+    }
+    previous[b.len()]
+}
+
+/// `error: FLAG: unknown option for SUBCOMMAND (expected ...)`, with a suggestion.
+fn unknown_option(flag: &str, subcommand: &str, flags: &[&str]) -> Error {
+    Error::new(
+        flag,
+        format!(
+            "unknown option for {subcommand}{} (expected {})",
+            did_you_mean(flag, flags),
+            listed(flags)
+        ),
+    )
+}
+
 fn parse_verify(args: &[OsString]) -> Result<Command, Error> {
     let mut json = false;
+    let mut verbose = false;
     for arg in args {
         let (flag, value) = split_flag(arg);
         match (flag.as_str(), value) {
             (f, None) if is_help(f) => return Ok(Command::Help(VERIFY_HELP)),
-            ("--json", None) if json => return Err(Error::new("--json", "given more than once")),
-            ("--json", None) => json = true,
-            ("--json", Some(_)) => return Err(Error::new("--json", "takes no value")),
+            ("--json", None) => switch(&mut json, "--json")?,
+            ("--verbose", None) => switch(&mut verbose, "--verbose")?,
+            (f @ ("--json" | "--verbose"), Some(_)) => {
+                return Err(Error::new(f, "takes no value"))
+            }
             (f, _) if f.starts_with('-') => {
-                return Err(Error::new(f, "unknown option for verify (expected --json)"))
+                return Err(unknown_option(f, "verify", &["--json", "--verbose"]))
             }
             (f, _) => return Err(Error::new(f, "unexpected argument for verify")),
         }
     }
-    Ok(Command::Verify { json })
+    Ok(Command::Verify { json, verbose })
+}
+
+/// Sets a flag that takes no value, refusing it a second time.
+fn switch(slot: &mut bool, flag: &str) -> Result<(), Error> {
+    once(*slot, flag)?;
+    *slot = true;
+    Ok(())
+}
+
+fn parse_figures(args: &[OsString]) -> Result<Command, Error> {
+    let mut out: Option<PathBuf> = None;
+    let mut rest = args.iter();
+    while let Some(arg) = rest.next() {
+        let (flag, inline) = split_flag(arg);
+        match flag.as_str() {
+            f if is_help(f) && inline.is_none() => return Ok(Command::Help(FIGURES_HELP)),
+            "--out" => {
+                once(out.is_some(), "--out")?;
+                let value = take_value("--out", inline, &mut rest)?;
+                if value.is_empty() {
+                    return Err(Error::new("--out", "empty directory name"));
+                }
+                out = Some(PathBuf::from(value));
+            }
+            f if f.starts_with('-') && f.len() > 1 => {
+                return Err(unknown_option(f, "figures", &["--out"]))
+            }
+            f => {
+                return Err(Error::new(
+                    f,
+                    "unexpected argument for figures (give the directory as --out DIR)",
+                ))
+            }
+        }
+    }
+    Ok(Command::Figures {
+        out: out.unwrap_or_else(|| PathBuf::from("figures")),
+    })
 }
 
 fn parse_expand(args: &[OsString]) -> Result<Command, Error> {
@@ -303,26 +513,76 @@ fn take_value(
     }
 }
 
-fn parse_restrict(args: &[OsString]) -> Result<Command, Error> {
-    let mut input: Option<Option<PathBuf>> = None;
-    let mut arithmetic: Option<Arithmetic> = None;
-    let mut method: Option<MethodChoice> = None;
-    let mut max_work: Option<u64> = None;
-    let mut max_input: Option<u64> = None;
-    let mut rest = args.iter();
-    while let Some(arg) = rest.next() {
-        let (flag, inline) = split_flag(arg);
-        match flag.as_str() {
-            f if is_help(f) && inline.is_none() => return Ok(Command::Help(RESTRICT_HELP)),
+/// The flags `restrict` and `check` share: `--input`, `--max-work`, `--max-input`.
+#[derive(Default)]
+struct Common {
+    input: Option<Option<PathBuf>>,
+    max_work: Option<u64>,
+    max_input: Option<u64>,
+}
+
+impl Common {
+    /// Takes `flag` if it is one of the shared flags; `Ok(false)` if it is not.
+    fn take(
+        &mut self,
+        flag: &str,
+        inline: Option<OsString>,
+        rest: &mut std::slice::Iter<'_, OsString>,
+    ) -> Result<bool, Error> {
+        match flag {
             "--input" => {
-                once(input.is_some(), "--input")?;
-                let value = take_value("--input", inline, &mut rest)?;
-                input = Some(match value.to_str() {
+                once(self.input.is_some(), "--input")?;
+                let value = take_value("--input", inline, rest)?;
+                self.input = Some(match value.to_str() {
                     Some("-") => None,
                     Some("") => return Err(Error::new("--input", "empty file name")),
                     _ => Some(PathBuf::from(value)),
                 });
             }
+            "--max-work" => {
+                once(self.max_work.is_some(), "--max-work")?;
+                let value = take_value("--max-work", inline, rest)?;
+                self.max_work = Some(limit_value("--max-work", &value.to_string_lossy())?);
+            }
+            "--max-input" => {
+                once(self.max_input.is_some(), "--max-input")?;
+                let value = take_value("--max-input", inline, rest)?;
+                self.max_input = Some(limit_value("--max-input", &value.to_string_lossy())?);
+            }
+            _ => return Ok(false),
+        }
+        Ok(true)
+    }
+
+    fn limits(&self) -> super::budget::Limits {
+        super::budget::Limits {
+            max_work: self.max_work.unwrap_or(super::budget::DEFAULT_MAX_WORK),
+            max_input: self.max_input.unwrap_or(super::budget::DEFAULT_MAX_INPUT),
+        }
+    }
+}
+
+/// The flags of `restrict`, for messages and suggestions.
+const RESTRICT_FLAGS: [&str; 5] = [
+    "--input",
+    "--arithmetic",
+    "--method",
+    "--max-work",
+    "--max-input",
+];
+
+/// The flags of `check`, for messages and suggestions.
+const CHECK_FLAGS: [&str; 4] = ["--input", "--per-point", "--max-work", "--max-input"];
+
+fn parse_restrict(args: &[OsString]) -> Result<Command, Error> {
+    let mut common = Common::default();
+    let mut arithmetic: Option<Arithmetic> = None;
+    let mut method: Option<MethodChoice> = None;
+    let mut rest = args.iter();
+    while let Some(arg) = rest.next() {
+        let (flag, inline) = split_flag(arg);
+        match flag.as_str() {
+            f if is_help(f) && inline.is_none() => return Ok(Command::Help(RESTRICT_HELP)),
             "--arithmetic" => {
                 once(arithmetic.is_some(), "--arithmetic")?;
                 let value = take_value("--arithmetic", inline, &mut rest)?;
@@ -333,8 +593,9 @@ fn parse_restrict(args: &[OsString]) -> Result<Command, Error> {
                         return Err(Error::new(
                             "--arithmetic",
                             format!(
-                                "unknown arithmetic {} (expected exact or f64)",
-                                quoted(other)
+                                "unknown arithmetic {}{} (expected exact or f64)",
+                                quoted(other),
+                                did_you_mean(other, &["exact", "f64"])
                             ),
                         ))
                     }
@@ -349,53 +610,65 @@ fn parse_restrict(args: &[OsString]) -> Result<Command, Error> {
                     return Err(Error::new(
                         "--method",
                         format!(
-                            "unknown method {} (expected {} or {})",
+                            "unknown method {}{} (expected {})",
                             quoted(&name),
-                            names[..names.len() - 1].join(", "),
-                            names[names.len() - 1]
+                            did_you_mean(&name, &names),
+                            listed(&names)
                         ),
                     ));
                 };
                 method = Some(*choice);
             }
-            "--max-work" | "--max-input" => {
-                let name = if flag == "--max-work" {
-                    "--max-work"
-                } else {
-                    "--max-input"
-                };
-                let slot = if name == "--max-work" {
-                    &mut max_work
-                } else {
-                    &mut max_input
-                };
-                once(slot.is_some(), name)?;
-                let value = take_value(name, inline, &mut rest)?;
-                *slot = Some(limit_value(name, &value.to_string_lossy())?);
-            }
-            f if f.starts_with('-') && f.len() > 1 => {
-                return Err(Error::new(
-                    f,
-                    "unknown option for restrict (expected --input, --arithmetic, --method, \
-                     --max-work or --max-input)",
-                ))
-            }
             f => {
+                if common.take(f, inline, &mut rest)? {
+                    continue;
+                }
+                if f.starts_with('-') && f.len() > 1 {
+                    return Err(unknown_option(f, "restrict", &RESTRICT_FLAGS));
+                }
                 return Err(Error::new(
                     f,
                     "unexpected argument for restrict (give the job file as --input FILE)",
-                ))
+                ));
             }
         }
     }
     Ok(Command::Restrict(RestrictOptions {
-        input: input.unwrap_or(None),
+        input: common.input.clone().unwrap_or(None),
         arithmetic: arithmetic.unwrap_or(Arithmetic::Exact),
         method: method.unwrap_or(MethodChoice::Library(Method::ClosedForm)),
-        limits: super::budget::Limits {
-            max_work: max_work.unwrap_or(super::budget::DEFAULT_MAX_WORK),
-            max_input: max_input.unwrap_or(super::budget::DEFAULT_MAX_INPUT),
-        },
+        limits: common.limits(),
+    }))
+}
+
+fn parse_check(args: &[OsString]) -> Result<Command, Error> {
+    let mut common = Common::default();
+    let mut per_point = false;
+    let mut rest = args.iter();
+    while let Some(arg) = rest.next() {
+        let (flag, inline) = split_flag(arg);
+        match (flag.as_str(), inline) {
+            (f, None) if is_help(f) => return Ok(Command::Help(CHECK_HELP)),
+            ("--per-point", None) => switch(&mut per_point, "--per-point")?,
+            ("--per-point", Some(_)) => return Err(Error::new("--per-point", "takes no value")),
+            (f, inline) => {
+                if common.take(f, inline, &mut rest)? {
+                    continue;
+                }
+                if f.starts_with('-') && f.len() > 1 {
+                    return Err(unknown_option(f, "check", &CHECK_FLAGS));
+                }
+                return Err(Error::new(
+                    f,
+                    "unexpected argument for check (give the file as --input FILE)",
+                ));
+            }
+        }
+    }
+    Ok(Command::Check(CheckOptions {
+        input: common.input.clone().unwrap_or(None),
+        per_point,
+        limits: common.limits(),
     }))
 }
 
@@ -450,11 +723,31 @@ mod tests {
 
     #[test]
     fn defaults_and_values() {
-        assert_eq!(parse_strs(&[]).unwrap(), Command::Verify { json: false });
+        let verify = |json, verbose| Command::Verify { json, verbose };
+        assert_eq!(parse_strs(&[]).unwrap(), verify(false, false));
+        assert_eq!(parse_strs(&["verify", "--json"]).unwrap(), verify(true, false));
         assert_eq!(
-            parse_strs(&["verify", "--json"]).unwrap(),
-            Command::Verify { json: true }
+            parse_strs(&["verify", "--verbose", "--json"]).unwrap(),
+            verify(true, true)
         );
+        assert_eq!(
+            parse_strs(&["figures"]).unwrap(),
+            Command::Figures {
+                out: PathBuf::from("figures")
+            }
+        );
+        assert_eq!(
+            parse_strs(&["figures", "--out=pics"]).unwrap(),
+            Command::Figures {
+                out: PathBuf::from("pics")
+            }
+        );
+        let Command::Check(c) = parse_strs(&["check", "--per-point", "--max-work", "1e6"]).unwrap()
+        else {
+            panic!("check")
+        };
+        assert!(c.per_point);
+        assert_eq!((c.input, c.limits.max_work), (None, 1_000_000));
         let Command::Restrict(o) = parse_strs(&["restrict"]).unwrap() else {
             panic!("restrict")
         };
@@ -496,6 +789,45 @@ mod tests {
         assert_eq!(field(&["restrict", "extra"]), "extra");
         assert_eq!(field(&["verify", "--jsn"]), "--jsn");
         assert_eq!(field(&["expand", "curve", "--x"]), "--x");
+        assert_eq!(field(&["check", "--per-point", "--per-point"]), "--per-point");
+        assert_eq!(field(&["check", "--method", "bulk"]), "--method");
+        assert_eq!(field(&["figures", "--out"]), "--out");
+        assert_eq!(field(&["figures", "--out="]), "--out");
+        assert_eq!(field(&["figures", "x"]), "x");
+        assert_eq!(field(&["verify", "--verbose=1"]), "--verbose");
+    }
+
+    #[test]
+    fn mistypes_get_the_nearest_name() {
+        let message = |args: &[&str]| parse_strs(args).unwrap_err().to_string();
+        assert!(message(&["restirct"]).contains("did you mean \"restrict\"?"));
+        assert!(message(&["verfy"]).contains("did you mean \"verify\"?"));
+        assert!(message(&["figure"]).contains("did you mean \"figures\"?"));
+        assert!(message(&["chek"]).contains("did you mean \"check\"?"));
+        assert!(message(&["restrict", "--method", "pyramd"])
+            .contains("did you mean \"pyramid\"?"));
+        assert!(message(&["restrict", "--method", "closed_form"])
+            .contains("did you mean \"closed-form\"?"));
+        assert!(message(&["restrict", "--method", "taylor"])
+            .contains("did you mean \"taylor-shift\"?"));
+        assert!(message(&["restrict", "--arithmetic", "F64"]).contains("did you mean \"f64\"?"));
+        assert!(message(&["restrict", "--metod", "bulk"]).contains("did you mean \"--method\"?"));
+        assert!(message(&["verify", "--jsno"]).contains("did you mean \"--json\"?"));
+        // Nothing near: no suggestion, the list of names only.
+        let far = message(&["restrict", "--method", "newton"]);
+        assert!(!far.contains("did you mean"), "{far}");
+        assert!(far.contains("closed-form, definition"), "{far}");
+        assert!(!message(&["xyz"]).contains("did you mean"));
+    }
+
+    #[test]
+    fn edit_distance_counts_slips() {
+        assert_eq!(edit_distance("", ""), 0);
+        assert_eq!(edit_distance("abc", ""), 3);
+        assert_eq!(edit_distance("pyramid", "pyramid"), 0);
+        assert_eq!(edit_distance("pyramd", "pyramid"), 1);
+        assert_eq!(edit_distance("pyarmid", "pyramid"), 1);
+        assert_eq!(edit_distance("kitten", "sitting"), 3);
     }
 
     #[test]

@@ -94,8 +94,8 @@ pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
         Ok(Command::Version) => {
             Outcome::success(format!("blossom {}\n", env!("CARGO_PKG_VERSION")))
         }
-        Ok(Command::Verify { json }) => {
-            let (report, ok) = crate::verify::run_report(json);
+        Ok(Command::Verify { json, verbose }) => {
+            let (report, ok) = crate::verify::run_report(json, verbose);
             Outcome {
                 code: if ok { 0 } else { 1 },
                 stdout: with_newline(report),
@@ -104,6 +104,24 @@ pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
         }
         Ok(Command::Restrict(options)) => match restrict(&options, stdin) {
             Ok(text) => Outcome::success(text),
+            Err(error) => Outcome::failure(&error),
+        },
+        Ok(Command::Check(options)) => {
+            match read_input(options.input.as_deref(), &options.limits, stdin)
+                .and_then(|bytes| parse_json(&bytes))
+                .and_then(|document| crate::check::check_command(&document, &options))
+            {
+                Ok(text) => Outcome::success(with_newline(text)),
+                Err(error) => Outcome::failure(&error),
+            }
+        }
+        Ok(Command::Figures { out }) => match crate::figures::write_figures(&out) {
+            Ok(written) => Outcome::success(
+                written
+                    .iter()
+                    .map(|path| format!("{}\n", path.display()))
+                    .collect(),
+            ),
             Err(error) => Outcome::failure(&error),
         },
         Ok(Command::Expand(words)) => match crate::specialised::expand_command(&words) {
@@ -118,7 +136,7 @@ fn restrict(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<String, E
     if options.method == MethodChoice::Specialised && !specialised::BUILT_IN {
         return Err(Error::new("--method", specialised::NOT_BUILT_IN));
     }
-    let bytes = read_input(options, stdin)?;
+    let bytes = read_input(options.input.as_deref(), &options.limits, stdin)?;
     let document = parse_json(&bytes)?;
     budget::check(
         &document,
@@ -150,11 +168,15 @@ fn with_error_bound(mut answer: Value) -> Value {
     answer
 }
 
-/// The bytes of the job: the `--input` file, or standard input, at most
-/// `options.limits.max_input` of them (a longer input is refused, never truncated).
-fn read_input(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<Vec<u8>, Error> {
-    let limit = options.limits.max_input;
-    let (field, mut source): (&str, Box<dyn Read + '_>) = match &options.input {
+/// The bytes of the job: the `--input` file, or standard input when `input` is `None`, at most
+/// `limits.max_input` of them (a longer input is refused, never truncated).
+pub(crate) fn read_input(
+    input: Option<&std::path::Path>,
+    limits: &budget::Limits,
+    stdin: &mut dyn Read,
+) -> Result<Vec<u8>, Error> {
+    let limit = limits.max_input;
+    let (field, mut source): (&str, Box<dyn Read + '_>) = match input {
         Some(path) => {
             let file = std::fs::File::open(path).map_err(|e| {
                 Error::new(
@@ -171,7 +193,7 @@ fn read_input(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<Vec<u8>
         .by_ref()
         .take(limit.saturating_add(1))
         .read_to_end(&mut bytes)
-        .map_err(|e| match &options.input {
+        .map_err(|e| match input {
             Some(path) => Error::new(
                 "--input",
                 format!("cannot read {:?}: {e}", path.display().to_string()),
@@ -190,7 +212,7 @@ fn read_input(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<Vec<u8>
 }
 
 /// Parses the input as one JSON document (a leading UTF-8 byte-order mark is skipped).
-fn parse_json(bytes: &[u8]) -> Result<Value, Error> {
+pub(crate) fn parse_json(bytes: &[u8]) -> Result<Value, Error> {
     let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
     serde_json::from_slice(bytes).map_err(|e| {
         let full = e.to_string();

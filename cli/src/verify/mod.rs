@@ -53,12 +53,12 @@ pub fn build_report() -> Report {
 
 /// Runs the whole report; returns the text (or JSON when `json`) and whether every printed
 /// value was reproduced or explained.
-pub fn run_report(json: bool) -> (String, bool) {
+pub fn run_report(json: bool, verbose: bool) -> (String, bool) {
     let report = build_report();
     let text = if json {
         serde_json::to_string_pretty(&report.to_json()).expect("JSON values serialise") + "\n"
     } else {
-        report.to_text()
+        report.to_text(verbose)
     };
     (text, report.all_explained())
 }

@@ -94,8 +94,83 @@ impl Report {
             .all(|s| s.status != Status::Unexplained)
     }
 
-    /// The human-readable rendering.
-    pub fn to_text(&self) -> String {
+    /// How many sections have status `status`.
+    fn count(&self, status: Status) -> usize {
+        self.sections.iter().filter(|s| s.status == status).count()
+    }
+
+    /// The verdict: whether everything is reproduced or explained, with the counts.
+    pub fn verdict(&self) -> String {
+        let head = if self.all_explained() {
+            "every printed value reproduced or explained"
+        } else {
+            "NOT everything reproduced or explained"
+        };
+        format!(
+            "verdict: {head} ({} sections: {} reproduced, {} explained, {} unexplained)",
+            self.sections.len(),
+            self.count(Status::Reproduced),
+            self.count(Status::Explained),
+            self.count(Status::Unexplained)
+        )
+    }
+
+    /// The human-readable rendering: the verdict and one line per section, or with `verbose`
+    /// the full report (every section's findings and entries, the summary last).
+    pub fn to_text(&self, verbose: bool) -> String {
+        if verbose {
+            self.to_full_text()
+        } else {
+            self.to_short_text()
+        }
+    }
+
+    /// The verdict, then a table of the sections: title, source, entries matched, status.
+    /// Columns are cut to keep lines within 100 characters (`--verbose` has them whole).
+    fn to_short_text(&self) -> String {
+        const TITLE: usize = 38;
+        const SOURCE: usize = 40;
+        let mut out = String::new();
+        let _ = writeln!(out, "blossom verify: {}", self.verdict());
+        let _ = writeln!(
+            out,
+            "(the seed papers' tables and examples, re-derived exactly; \
+             `blossom verify --verbose` shows every entry and finding)\n"
+        );
+        let _ = writeln!(
+            out,
+            "{:TITLE$}  {:SOURCE$}  {:>7}  status",
+            "section", "source", "entries"
+        );
+        for s in &self.sections {
+            let entries = if s.entries.is_empty() {
+                String::from("-")
+            } else {
+                let matched = s.entries.iter().filter(|e| e.matches).count();
+                format!("{matched}/{}", s.entries.len())
+            };
+            let _ = writeln!(
+                out,
+                "{:TITLE$}  {:SOURCE$}  {entries:>7}  {}",
+                cut(&s.title, TITLE),
+                cut(&s.source, SOURCE),
+                s.status.name()
+            );
+        }
+        let unexplained: Vec<&str> = self
+            .sections
+            .iter()
+            .filter(|s| s.status == Status::Unexplained)
+            .map(|s| s.title.as_str())
+            .collect();
+        if !unexplained.is_empty() {
+            let _ = writeln!(out, "\nunexplained: {}", unexplained.join("; "));
+        }
+        out
+    }
+
+    /// Today's full report: every section with its findings and entries, the summary last.
+    fn to_full_text(&self) -> String {
         let mut out = String::new();
         out.push_str("blossom verify: the seed papers' tables and examples, re-derived exactly\n");
         for s in &self.sections {
@@ -121,14 +196,13 @@ impl Report {
                 }
             }
         }
-        let count = |st: Status| self.sections.iter().filter(|s| s.status == st).count();
         let _ = writeln!(
             out,
             "\nsummary: {} sections: {} reproduced, {} explained, {} unexplained",
             self.sections.len(),
-            count(Status::Reproduced),
-            count(Status::Explained),
-            count(Status::Unexplained)
+            self.count(Status::Reproduced),
+            self.count(Status::Explained),
+            self.count(Status::Unexplained)
         );
         out
     }
@@ -154,5 +228,81 @@ impl Report {
             })
             .collect();
         json!({ "all_explained": self.all_explained(), "sections": sections })
+    }
+}
+
+/// `text` in at most `width` characters: cut with `~` at the end when longer.
+fn cut(text: &str, width: usize) -> String {
+    if text.chars().count() <= width {
+        text.to_string()
+    } else {
+        let mut short: String = text.chars().take(width.saturating_sub(1)).collect();
+        short.push('~');
+        short
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn entry(label: &str, matches: bool) -> Entry {
+        Entry {
+            label: label.into(),
+            printed: "1".into(),
+            computed: if matches { "1" } else { "2" }.into(),
+            matches,
+        }
+    }
+
+    fn report() -> Report {
+        Report {
+            sections: vec![
+                Section::from_entries(
+                    "Table 1, S_1",
+                    "seed 000, Table 1",
+                    vec![entry("p_00", true), entry("p_01", true)],
+                    vec![],
+                    Status::Unexplained,
+                ),
+                Section::from_entries(
+                    "A title far longer than the column it is printed in, by a lot",
+                    "seed 004",
+                    vec![entry("w_1", false)],
+                    vec!["an index convention".into()],
+                    Status::Explained,
+                ),
+            ],
+        }
+    }
+
+    #[test]
+    fn the_short_report_opens_with_its_verdict_and_lists_each_section_once() {
+        let text = report().to_text(false);
+        let lines: Vec<&str> = text.lines().collect();
+        assert!(lines[0].starts_with("blossom verify: verdict: every printed value reproduced or explained (2 sections: 1 reproduced, 1 explained, 0 unexplained)"), "{text}");
+        assert!(lines.iter().all(|l| l.chars().count() <= 100), "{text}");
+        let rows: Vec<&&str> = lines.iter().filter(|l| l.contains("seed 00")).collect();
+        assert_eq!(rows.len(), 2, "{text}");
+        assert!(rows[0].contains("2/2") && rows[0].ends_with("reproduced"));
+        assert!(rows[1].contains("0/1") && rows[1].ends_with("explained"));
+        assert!(rows[1].contains("by a~"), "{text}");
+        assert!(!text.contains("MISMATCH") && !text.contains("an index convention"));
+    }
+
+    #[test]
+    fn the_verbose_report_has_entries_and_findings() {
+        let text = report().to_text(true);
+        assert!(text.contains("MISMATCH") && text.contains("an index convention"));
+        assert!(text.trim_end().ends_with("1 reproduced, 1 explained, 0 unexplained"));
+    }
+
+    #[test]
+    fn an_unexplained_section_changes_the_verdict_and_is_named() {
+        let mut r = report();
+        r.sections[1].status = Status::Unexplained;
+        let text = r.to_text(false);
+        assert!(text.starts_with("blossom verify: verdict: NOT everything"), "{text}");
+        assert!(text.contains("\nunexplained: A title far longer"), "{text}");
     }
 }

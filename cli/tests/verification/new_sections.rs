@@ -77,6 +77,6 @@ fn ejemplo_2_and_the_rational_surfaces_are_reproduced() {
     report.sections.push(theorem_1::section());
     report.sections.extend(surfaces);
     insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/../snapshots"), prepend_module_to_snapshot => false}, {
-        insta::assert_snapshot!("verify_new_sections", report.to_text());
+        insta::assert_snapshot!("verify_new_sections", report.to_text(true));
     });
 }
