@@ -431,9 +431,7 @@ fn parse_verify(args: &[OsString]) -> Result<Command, Error> {
             (f, None) if is_help(f) => return Ok(Command::Help(VERIFY_HELP)),
             ("--json", None) => switch(&mut json, "--json")?,
             ("--verbose", None) => switch(&mut verbose, "--verbose")?,
-            (f @ ("--json" | "--verbose"), Some(_)) => {
-                return Err(Error::new(f, "takes no value"))
-            }
+            (f @ ("--json" | "--verbose"), Some(_)) => return Err(Error::new(f, "takes no value")),
             (f, _) if f.starts_with('-') => {
                 return Err(unknown_option(f, "verify", &["--json", "--verbose"]))
             }
@@ -725,7 +723,10 @@ mod tests {
     fn defaults_and_values() {
         let verify = |json, verbose| Command::Verify { json, verbose };
         assert_eq!(parse_strs(&[]).unwrap(), verify(false, false));
-        assert_eq!(parse_strs(&["verify", "--json"]).unwrap(), verify(true, false));
+        assert_eq!(
+            parse_strs(&["verify", "--json"]).unwrap(),
+            verify(true, false)
+        );
         assert_eq!(
             parse_strs(&["verify", "--verbose", "--json"]).unwrap(),
             verify(true, true)
@@ -789,7 +790,10 @@ mod tests {
         assert_eq!(field(&["restrict", "extra"]), "extra");
         assert_eq!(field(&["verify", "--jsn"]), "--jsn");
         assert_eq!(field(&["expand", "curve", "--x"]), "--x");
-        assert_eq!(field(&["check", "--per-point", "--per-point"]), "--per-point");
+        assert_eq!(
+            field(&["check", "--per-point", "--per-point"]),
+            "--per-point"
+        );
         assert_eq!(field(&["check", "--method", "bulk"]), "--method");
         assert_eq!(field(&["figures", "--out"]), "--out");
         assert_eq!(field(&["figures", "--out="]), "--out");
@@ -804,12 +808,12 @@ mod tests {
         assert!(message(&["verfy"]).contains("did you mean \"verify\"?"));
         assert!(message(&["figure"]).contains("did you mean \"figures\"?"));
         assert!(message(&["chek"]).contains("did you mean \"check\"?"));
-        assert!(message(&["restrict", "--method", "pyramd"])
-            .contains("did you mean \"pyramid\"?"));
+        assert!(message(&["restrict", "--method", "pyramd"]).contains("did you mean \"pyramid\"?"));
         assert!(message(&["restrict", "--method", "closed_form"])
             .contains("did you mean \"closed-form\"?"));
-        assert!(message(&["restrict", "--method", "taylor"])
-            .contains("did you mean \"taylor-shift\"?"));
+        assert!(
+            message(&["restrict", "--method", "taylor"]).contains("did you mean \"taylor-shift\"?")
+        );
         assert!(message(&["restrict", "--arithmetic", "F64"]).contains("did you mean \"f64\"?"));
         assert!(message(&["restrict", "--metod", "bulk"]).contains("did you mean \"--method\"?"));
         assert!(message(&["verify", "--jsno"]).contains("did you mean \"--json\"?"));

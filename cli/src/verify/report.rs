@@ -294,7 +294,9 @@ mod tests {
     fn the_verbose_report_has_entries_and_findings() {
         let text = report().to_text(true);
         assert!(text.contains("MISMATCH") && text.contains("an index convention"));
-        assert!(text.trim_end().ends_with("1 reproduced, 1 explained, 0 unexplained"));
+        assert!(text
+            .trim_end()
+            .ends_with("1 reproduced, 1 explained, 0 unexplained"));
     }
 
     #[test]
@@ -302,7 +304,10 @@ mod tests {
         let mut r = report();
         r.sections[1].status = Status::Unexplained;
         let text = r.to_text(false);
-        assert!(text.starts_with("blossom verify: verdict: NOT everything"), "{text}");
+        assert!(
+            text.starts_with("blossom verify: verdict: NOT everything"),
+            "{text}"
+        );
         assert!(text.contains("\nunexplained: A title far longer"), "{text}");
     }
 }

@@ -54,8 +54,15 @@ fn report_explains_everything_and_finds_the_table_2_convention() {
     snapshot!("verify_report", report.to_text(true));
     // What `blossom verify` prints by default: the verdict first, one line per section.
     let short = report.to_text(false);
-    assert!(short.starts_with("blossom verify: verdict: every printed value"), "{short}");
-    assert!(short.lines().count() <= 40, "{} lines:\n{short}", short.lines().count());
+    assert!(
+        short.starts_with("blossom verify: verdict: every printed value"),
+        "{short}"
+    );
+    assert!(
+        short.lines().count() <= 40,
+        "{} lines:\n{short}",
+        short.lines().count()
+    );
     assert!(short.lines().all(|l| l.chars().count() <= 100), "{short}");
     snapshot!("verify_summary", short);
 }
