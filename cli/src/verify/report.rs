@@ -99,15 +99,19 @@ impl Report {
         self.sections.iter().filter(|s| s.status == status).count()
     }
 
-    /// The verdict: whether everything is reproduced or explained, with the counts.
-    pub fn verdict(&self) -> String {
-        let head = if self.all_explained() {
+    /// The verdict: whether everything is reproduced or explained.
+    pub fn verdict(&self) -> &'static str {
+        if self.all_explained() {
             "every printed value reproduced or explained"
         } else {
             "NOT everything reproduced or explained"
-        };
+        }
+    }
+
+    /// `N sections: R reproduced, E explained, U unexplained`.
+    fn counts(&self) -> String {
         format!(
-            "verdict: {head} ({} sections: {} reproduced, {} explained, {} unexplained)",
+            "{} sections: {} reproduced, {} explained, {} unexplained",
             self.sections.len(),
             self.count(Status::Reproduced),
             self.count(Status::Explained),
@@ -126,35 +130,35 @@ impl Report {
     }
 
     /// The verdict, then a table of the sections: title, source, entries matched, status.
-    /// Columns are cut to keep lines within 100 characters (`--verbose` has them whole).
+    /// Consecutive sections on formulae as printed (titles `Formula ...`) share one row, the
+    /// worst of their statuses; columns are cut to keep lines within 100 characters.
+    /// `--verbose` has everything whole.
     fn to_short_text(&self) -> String {
-        const TITLE: usize = 38;
+        const TITLE: usize = 36;
         const SOURCE: usize = 40;
         let mut out = String::new();
         let _ = writeln!(out, "blossom verify: {}", self.verdict());
         let _ = writeln!(
             out,
-            "(the seed papers' tables and examples, re-derived exactly; \
-             `blossom verify --verbose` shows every entry and finding)\n"
+            "{}; `--verbose` shows every entry and finding",
+            self.counts()
         );
         let _ = writeln!(
             out,
-            "{:TITLE$}  {:SOURCE$}  {:>7}  status",
+            "\n{:TITLE$}  {:SOURCE$}  {:>7}  status",
             "section", "source", "entries"
         );
-        for s in &self.sections {
-            let entries = if s.entries.is_empty() {
-                String::from("-")
-            } else {
-                let matched = s.entries.iter().filter(|e| e.matches).count();
-                format!("{matched}/{}", s.entries.len())
+        for row in self.rows() {
+            let entries = match row.entries {
+                None => String::from("-"),
+                Some((matched, total)) => format!("{matched}/{total}"),
             };
             let _ = writeln!(
                 out,
-                "{:TITLE$}  {:SOURCE$}  {entries:>7}  {}",
-                cut(&s.title, TITLE),
-                cut(&s.source, SOURCE),
-                s.status.name()
+                "{}  {}  {entries:>7}  {}",
+                cut(&row.title, TITLE),
+                cut(&row.source, SOURCE),
+                row.status.name()
             );
         }
         let unexplained: Vec<&str> = self
@@ -167,6 +171,31 @@ impl Report {
             let _ = writeln!(out, "\nunexplained: {}", unexplained.join("; "));
         }
         out
+    }
+
+    /// The rows of the short table: one per section, except that a run of consecutive
+    /// `Formula ...` sections is one row.
+    fn rows(&self) -> Vec<Row> {
+        let mut rows: Vec<Row> = Vec::new();
+        let mut formulae: Vec<&Section> = Vec::new();
+        let flush = |formulae: &mut Vec<&Section>, rows: &mut Vec<Row>| {
+            match formulae.as_slice() {
+                [] => {}
+                [one] => rows.push(Row::of(one)),
+                many => rows.push(Row::of_formulae(many)),
+            }
+            formulae.clear();
+        };
+        for s in &self.sections {
+            if s.title.starts_with("Formula") {
+                formulae.push(s);
+            } else {
+                flush(&mut formulae, &mut rows);
+                rows.push(Row::of(s));
+            }
+        }
+        flush(&mut formulae, &mut rows);
+        rows
     }
 
     /// Today's full report: every section with its findings and entries, the summary last.
@@ -196,14 +225,7 @@ impl Report {
                 }
             }
         }
-        let _ = writeln!(
-            out,
-            "\nsummary: {} sections: {} reproduced, {} explained, {} unexplained",
-            self.sections.len(),
-            self.count(Status::Reproduced),
-            self.count(Status::Explained),
-            self.count(Status::Unexplained)
-        );
+        let _ = writeln!(out, "\nsummary: {}", self.counts());
         out
     }
 
@@ -231,15 +253,68 @@ impl Report {
     }
 }
 
-/// `text` in at most `width` characters: cut with `~` at the end when longer.
+/// One row of the short table.
+struct Row {
+    title: String,
+    source: String,
+    /// Entries matched and in all, if any section of the row has entries.
+    entries: Option<(usize, usize)>,
+    status: Status,
+}
+
+impl Row {
+    fn of(s: &Section) -> Row {
+        Row::of_formulae(std::slice::from_ref(&s)).titled(&s.title, &s.source)
+    }
+
+    /// One row for the sections `group`: entries added up, the worst status.
+    fn of_formulae(group: &[&Section]) -> Row {
+        let with_entries: Vec<&&Section> = group.iter().filter(|s| !s.entries.is_empty()).collect();
+        let entries = (!with_entries.is_empty()).then(|| {
+            with_entries.iter().fold((0, 0), |(m, t), s| {
+                (
+                    m + s.entries.iter().filter(|e| e.matches).count(),
+                    t + s.entries.len(),
+                )
+            })
+        });
+        let status = group
+            .iter()
+            .map(|s| s.status)
+            .max_by_key(|st| match st {
+                Status::Reproduced => 0,
+                Status::Explained => 1,
+                Status::Unexplained => 2,
+            })
+            .unwrap_or(Status::Reproduced);
+        Row {
+            title: format!("{} formulae as printed", group.len()),
+            source: String::from("seeds 000/001, Theorems 2, 3, proofs"),
+            entries,
+            status,
+        }
+    }
+
+    fn titled(mut self, title: &str, source: &str) -> Row {
+        self.title = title.to_string();
+        self.source = source.to_string();
+        self
+    }
+}
+
+/// `text` in exactly `width` characters: cut with `~` at the end when longer, padded with
+/// spaces when shorter (counting characters, not bytes).
 fn cut(text: &str, width: usize) -> String {
-    if text.chars().count() <= width {
+    let mut short: String = if text.chars().count() <= width {
         text.to_string()
     } else {
         let mut short: String = text.chars().take(width.saturating_sub(1)).collect();
         short.push('~');
         short
-    }
+    };
+    let pad = width.saturating_sub(short.chars().count());
+    short.extend(std::iter::repeat_n(' ', pad));
+    short
 }
 
 #[cfg(test)]
@@ -280,7 +355,11 @@ mod tests {
     fn the_short_report_opens_with_its_verdict_and_lists_each_section_once() {
         let text = report().to_text(false);
         let lines: Vec<&str> = text.lines().collect();
-        assert!(lines[0].starts_with("blossom verify: verdict: every printed value reproduced or explained (2 sections: 1 reproduced, 1 explained, 0 unexplained)"), "{text}");
+        assert_eq!(
+            lines[0],
+            "blossom verify: every printed value reproduced or explained"
+        );
+        assert!(lines[1].starts_with("2 sections: 1 reproduced, 1 explained, 0 unexplained"));
         assert!(lines.iter().all(|l| l.chars().count() <= 100), "{text}");
         let rows: Vec<&&str> = lines.iter().filter(|l| l.contains("seed 00")).collect();
         assert_eq!(rows.len(), 2, "{text}");
@@ -288,6 +367,30 @@ mod tests {
         assert!(rows[1].contains("0/1") && rows[1].ends_with("explained"));
         assert!(rows[1].contains("by a~"), "{text}");
         assert!(!text.contains("MISMATCH") && !text.contains("an index convention"));
+    }
+
+    #[test]
+    fn consecutive_formula_sections_share_a_row_with_the_worst_status() {
+        let mut r = report();
+        let formula = |title: &str, status| Section {
+            title: title.into(),
+            source: "seed 000".into(),
+            status,
+            entries: vec![entry("x", status == Status::Reproduced)],
+            findings: vec![],
+        };
+        r.sections.push(formula("Formula (1)", Status::Reproduced));
+        r.sections.push(formula("Formula (2)", Status::Unexplained));
+        r.sections.push(formula("Formula (3)", Status::Explained));
+        let text = r.to_text(false);
+        let row: Vec<&str> = text.lines().filter(|l| l.contains("formulae")).collect();
+        assert_eq!(row.len(), 1, "{text}");
+        assert!(row[0].starts_with("3 formulae as printed"), "{text}");
+        assert!(
+            row[0].contains("1/3") && row[0].ends_with("unexplained"),
+            "{text}"
+        );
+        assert!(text.contains("unexplained: Formula (2)"), "{text}");
     }
 
     #[test]
@@ -304,10 +407,7 @@ mod tests {
         let mut r = report();
         r.sections[1].status = Status::Unexplained;
         let text = r.to_text(false);
-        assert!(
-            text.starts_with("blossom verify: verdict: NOT everything"),
-            "{text}"
-        );
+        assert!(text.starts_with("blossom verify: NOT everything"), "{text}");
         assert!(text.contains("\nunexplained: A title far longer"), "{text}");
     }
 }

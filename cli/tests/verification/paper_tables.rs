@@ -55,7 +55,7 @@ fn report_explains_everything_and_finds_the_table_2_convention() {
     // What `blossom verify` prints by default: the verdict first, one line per section.
     let short = report.to_text(false);
     assert!(
-        short.starts_with("blossom verify: verdict: every printed value"),
+        short.starts_with("blossom verify: every printed value"),
         "{short}"
     );
     assert!(
