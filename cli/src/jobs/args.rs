@@ -377,7 +377,7 @@ pub fn suggest<'a>(word: &str, names: &[&'a str]) -> Option<&'a str> {
 }
 
 /// ` (did you mean "NAME"?)` after a message, or nothing.
-fn did_you_mean(word: &str, names: &[&str]) -> String {
+pub(crate) fn did_you_mean(word: &str, names: &[&str]) -> String {
     suggest(word, names)
         .filter(|name| *name != word)
         .map(|name| format!(" (did you mean {}?)", quoted(name)))
@@ -822,6 +822,10 @@ mod tests {
         assert!(!far.contains("did you mean"), "{far}");
         assert!(far.contains("closed-form, definition"), "{far}");
         assert!(!message(&["xyz"]).contains("did you mean"));
+        assert_eq!(
+            did_you_mean("bezier_curve", &["curve", "bezier-curve"]),
+            " (did you mean \"bezier-curve\"?)"
+        );
     }
 
     #[test]

@@ -128,20 +128,23 @@ pub fn parse_job<T: JsonNumber>(document: &Value) -> Result<Job<T>, Error> {
             "kind",
             format!("{} is not supported by this version", quoted(later)),
         )),
-        unknown => Err(Error::new(
-            "kind",
-            format!(
-                "unknown kind {} (expected one of {})",
-                quoted(unknown),
-                KINDS
-                    .iter()
-                    .chain(&LATER_KINDS)
-                    .chain(&PATCH_KINDS)
-                    .copied()
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ),
-        )),
+        unknown => {
+            let kinds: Vec<&str> = KINDS
+                .iter()
+                .chain(&LATER_KINDS)
+                .chain(&PATCH_KINDS)
+                .copied()
+                .collect();
+            Err(Error::new(
+                "kind",
+                format!(
+                    "unknown kind {}{} (expected one of {})",
+                    quoted(unknown),
+                    super::args::did_you_mean(unknown, &kinds),
+                    kinds.join(", ")
+                ),
+            ))
+        }
     }
 }
 

@@ -365,7 +365,10 @@ mod tests {
         assert_eq!(rows.len(), 2, "{text}");
         assert!(rows[0].contains("2/2") && rows[0].ends_with("reproduced"));
         assert!(rows[1].contains("0/1") && rows[1].ends_with("explained"));
-        assert!(rows[1].contains("~") && !rows[1].contains("by a lot"), "{text}");
+        assert!(
+            rows[1].contains("~") && !rows[1].contains("by a lot"),
+            "{text}"
+        );
         assert!(!text.contains("MISMATCH") && !text.contains("an index convention"));
     }
 
