@@ -114,6 +114,7 @@ pub use restrict::{
 
 // Applications.
 pub use applications::batch::{Batch, RestrictionMap, BATCH_LANES};
+pub use applications::check::{check_bezier_restriction, exact_error, AnswerError, PointError};
 pub use applications::degree::{
     bernstein_gram, elevate, elevation_matrix, least_squares_matrix, reduce, squared_l2_distance,
     Reduction,

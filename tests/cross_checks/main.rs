@@ -4,4 +4,5 @@
 mod common;
 
 mod cross_check_exact;
+mod peers;
 mod total_degree;

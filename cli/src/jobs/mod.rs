@@ -230,7 +230,7 @@ pub(crate) fn parse_json(bytes: &[u8]) -> Result<Value, Error> {
 }
 
 /// Reads, computes and writes the job in `document` in the arithmetic `T`.
-fn solve<T: JsonNumber + blossom::Field>(
+pub(crate) fn solve<T: JsonNumber + blossom::Field>(
     document: &Value,
     method: MethodChoice,
 ) -> Result<Value, Error> {

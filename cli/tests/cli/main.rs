@@ -5,6 +5,7 @@ mod binary;
 mod common;
 
 mod cli_budget;
+mod cli_check;
 mod cli_error_bounds;
 mod cli_patch_jobs;
 mod cli_restrict;
