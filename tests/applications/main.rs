@@ -8,6 +8,7 @@ mod json;
 mod batched;
 mod degree_change;
 mod derivatives;
+mod examples_run;
 mod f32_accuracy;
 mod interop;
 mod inverse_closures;
