@@ -32,10 +32,50 @@
 //!    [`TriangularPatch`], their evaluation (Horner, de Casteljau) and the changes of basis;
 //! 3. **restriction** (`restrict/`): one file per algorithm, the dispatch on [`Method`];
 //! 4. **applications** (`applications/`): Bézier input, batches, B-splines, rational forms,
-//!    degree change, derivatives.
+//!    degree change, derivatives;
+//! 5. **interoperation** (`interop/`, optional): conversions to and from mint and kurbo types
+//!    and serde support ([Features](#features)); nothing else imports it.
 //!
 //! The `blossom` binary (the papers' report, the JSON jobs, the carried grid of generated
 //! evaluators and their proofs) is the separate crate `blossom-cli`.
+//!
+//! # Features
+//!
+//! None is on by default; each adds an optional dependency (without its default features
+//! where it has any) and changes nothing else.
+//!
+//! * `rayon`: `Batch::par_restrict_into`, the blocks of a batch spread over threads.
+//! * `mint` (mint 0.5): mint's `Point2`, `Point3`, `Vector2`, `Vector3` convert to and from the
+//!   library's points through `ForeignPoint` (`Point<T>` is `Vec<T>`, so the orphan rule
+//!   leaves no room for `From` between the two), and to and from Bézier curves:
+//!   `BezierCurve::try_from(Vec<mint::Point2<T>>)` (an error only for an empty list) and
+//!   `Vec::<mint::Point2<T>>::try_from(&curve)` ([`ErrorKind::Dimension`] on
+//!   `control_points[i]` when the curve is not 2-D). The fixed-dimension shapes ([`Bezier`],
+//!   ...) store `[T; D]`, which mint converts itself.
+//! * `kurbo` (kurbo 0.11, with its `std` feature): kurbo's `Point` and `Vec2` as
+//!   `ForeignPoint`s; `Line`, `QuadBez`, `CubicBez` and `PathSeg` into
+//!   [`BezierCurve<f64>`](BezierCurve) and [`Bezier<f64, 2>`](Bezier) by `From` (the same
+//!   control points in the same order: the same curve over [0, 1]), and back by `TryFrom`,
+//!   which fails with [`ErrorKind::Degree`] on `control_points` (`points`) when the degree is
+//!   not the segment's and with [`ErrorKind::Dimension`] on `control_points[i]` when a point is
+//!   not 2-D.
+//! * `serde` (serde 1, with `alloc` and `derive` only): `Serialize` and `Deserialize` for the
+//!   geometry types, generic over the number type. A type with private fields is written as the
+//!   arguments of its checked constructor under their names (`{"control_points": [...]}`,
+//!   `{"degree": 2, "knots": [...], "control_points": [...]}`, ...) and read back through that
+//!   constructor, so a document that breaks an invariant is a deserialisation error naming the
+//!   field inside the document (`control_points[1]: expected 2 coordinates, found 1`), never an
+//!   invalid value. [`Rational`] is written as num-rational writes it, `[numerator,
+//!   denominator]` of num-bigint integers `[sign, [u32 digits]]` (1/3 is
+//!   `[[1, [1]], [1, [3]]]`): the feature turns on the `serde` features of num-rational and
+//!   num-bigint for that. The rational Bézier patches that only restriction produces
+//!   ([`RationalTensorPatch`], [`RationalTriangularPatch`], [`RationalBezierCell`]) are written
+//!   but not read: they have no public constructor to check a document against.
+//!
+//! `cargo test -p blossom --features mint,kurbo,serde` runs the tests of these features alone
+//! (`tests/applications/interop.rs`); `cargo test --workspace` runs them too, because the
+//! application crate's dev-dependency on this crate turns the three features on and Cargo
+//! builds one `blossom` for the whole workspace.
 //!
 //! # References
 //!
@@ -56,6 +96,8 @@ mod error;
 mod num;
 mod restrict;
 mod shape;
+// Conversions and serialisation behind the features `mint`, `kurbo` and `serde`.
+mod interop;
 
 // Numbers.
 pub use num::binomial::{binomial, multinomial};
@@ -148,6 +190,10 @@ pub use shape::subdivide::{
 
 // The compile-time expansion of formulae (3), (9), (14).
 pub use blossom_macros::restriction;
+
+// Interoperation (features `mint`, `kurbo`).
+#[cfg(any(feature = "mint", feature = "kurbo"))]
+pub use interop::points::ForeignPoint;
 
 /// The README's examples, compiled and run as doc tests.
 #[doc = include_str!("../README.md")]

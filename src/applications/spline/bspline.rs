@@ -31,6 +31,17 @@ pub struct BSpline<T> {
 /// One polynomial piece of a spline, in Bézier form over [0, 1] for the parameter
 /// (u - a) / (b - a) of its interval [a, b].
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(
+        deny_unknown_fields,
+        bound(
+            serialize = "T: crate::Ring + serde::Serialize",
+            deserialize = "T: crate::Ring + serde::Deserialize<'de>"
+        )
+    )
+)]
 pub struct BezierPiece<T> {
     /// The interval [a, b] of the global parameter.
     pub interval: [T; 2],

@@ -102,6 +102,17 @@ fn add_into<T: Field>(acc: &mut [T], f: &[T]) {
 
 /// One polynomial piece of a spline in the power basis of the global parameter u.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(
+        deny_unknown_fields,
+        bound(
+            serialize = "T: crate::Ring + serde::Serialize",
+            deserialize = "T: crate::Ring + serde::Deserialize<'de>"
+        )
+    )
+)]
 pub struct PowerPiece<T> {
     /// The interval [a, b] where the piece is the curve.
     pub interval: [T; 2],

@@ -23,6 +23,17 @@ use crate::shape::power::PowerCurve;
 /// One piece of a piecewise polynomial: `curve` on the interval [e_0, e_1] of the global
 /// parameter u (power basis of u).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(
+        deny_unknown_fields,
+        bound(
+            serialize = "T: crate::Ring + serde::Serialize",
+            deserialize = "T: crate::Ring + serde::Deserialize<'de>"
+        )
+    )
+)]
 pub struct Piece<T> {
     /// The interval [e_0, e_1], e_0 < e_1.
     pub interval: [T; 2],

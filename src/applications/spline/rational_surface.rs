@@ -25,6 +25,11 @@ pub struct RationalBSplineSurface<T> {
 
 /// The rational Bézier patch of a NURBS surface on one non-empty cell [a, b] x [c, d].
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize),
+    serde(bound(serialize = "T: crate::Field + serde::Serialize"))
+)]
 pub struct RationalBezierCell<T> {
     /// The cell as `[a, b, c, d]`.
     pub rect: [T; 4],

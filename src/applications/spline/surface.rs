@@ -39,6 +39,17 @@ pub struct BSplineSurface<T> {
 /// The Bézier patch of a surface on one non-empty cell [a, b] x [c, d], over [0, 1]^2 in the
 /// local parameters ((u - a) / (b - a), (v - c) / (d - c)).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(
+        deny_unknown_fields,
+        bound(
+            serialize = "T: crate::Ring + serde::Serialize",
+            deserialize = "T: crate::Ring + serde::Deserialize<'de>"
+        )
+    )
+)]
 pub struct BezierCell<T> {
     /// The cell as `[a, b, c, d]`.
     pub rect: [T; 4],

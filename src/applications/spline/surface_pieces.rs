@@ -34,6 +34,17 @@ use std::collections::BTreeMap;
 /// One piece of a piecewise polynomial surface: `surface` on the cell `rect` = [a, b] x [c, d]
 /// of the global parameters (u, v) (power basis of u and v).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(
+        deny_unknown_fields,
+        bound(
+            serialize = "T: crate::Ring + serde::Serialize",
+            deserialize = "T: crate::Ring + serde::Deserialize<'de>"
+        )
+    )
+)]
 pub struct SurfacePiece<T> {
     /// The cell as `[a, b, c, d]`, a < b and c < d.
     pub rect: [T; 4],
