@@ -15,14 +15,14 @@ const SOURCE: &str = "seed 002";
 
 /// Ejemplo 1 as printed: the knots and the 8 de Boor points of a cubic.
 const EXAMPLE_1_KNOTS: &str = "0, 0, 0, 0, 1, 2, 4, 5, 6, 6, 6, 6, 6";
-const EXAMPLE_1_POINTS: [&str; 8] = [
+pub const EXAMPLE_1_POINTS: [&str; 8] = [
     "(6, 3)", "(7, 8)", "(12, 5)", "(9, 0)", "(1, 0)", "(0, 6)", "(3, 8)", "(4, 4)",
 ];
 /// Ejemplo 2 as printed.
 const EXAMPLE_2_KNOTS: &str = "0, 1, 2, 3, 4, 5, 6, 7";
 const EXAMPLE_2_POINTS: [&str; 4] = ["(0, 0)", "(3, 9)", "(6, 3)", "(9, 6)"];
 /// The knot vector of the application of Theorem 2.2.
-const THEOREM_2_2_KNOTS: &str = "0, 0, 0, 0, 1, 2, 4, 5, 6, 6, 6, 6";
+pub const THEOREM_2_2_KNOTS: &str = "0, 0, 0, 0, 1, 2, 4, 5, 6, 6, 6, 6";
 /// The printed d_k = f_j(args) of that application: (k, j, args).
 const THEOREM_2_2_POINTS: [(usize, usize, &str); 8] = [
     (1, 4, "0, 0, 0"),
