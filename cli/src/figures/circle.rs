@@ -9,7 +9,7 @@
 //! The picture draws the rational curve from those points and weights (labelled), over the exact
 //! arc (cos theta, sin theta).
 
-use super::mesh::{point3, point3_f64, sample, to_f64};
+use super::mesh::{curve_against_reference, point3, point3_f64, sample, to_f64};
 use super::palette::{CURVE, DOTS, NET, REFERENCE, TEXT};
 use super::scene::{Figure, Layer, Point3, View};
 use blossom::{rational_to_f64, Error, Rational, RationalBezierCurve, RationalCurve, Ring};
@@ -43,38 +43,17 @@ pub fn figure(file: &'static str, n: usize) -> Result<Figure, Error> {
         Some([a.cos(), a.sin(), 0.0])
     });
     let polygon: Vec<Point3> = exact.points().iter().map(|p| point3(p)).collect();
-    let layers = vec![
-        Layer::Lines {
-            lines: vec![circle],
-            colour: REFERENCE,
-            width: 6,
-        },
-        Layer::Lines {
-            lines: vec![curve],
-            colour: CURVE,
-            width: 2,
-        },
-        Layer::Lines {
-            lines: vec![polygon.clone()],
-            colour: NET,
-            width: 1,
-        },
-        Layer::Dots {
-            points: polygon.clone(),
-            colour: DOTS,
-            radius: 5,
-        },
-        Layer::Labels {
-            items: polygon
-                .iter()
-                .zip(exact.weights())
-                .enumerate()
-                .map(|(i, (p, w))| (*p, format!("w_{i} = {w}")))
-                .collect(),
-            colour: TEXT,
-            offset: (9, -22),
-        },
-    ];
+    let mut layers = curve_against_reference(circle, curve, polygon.clone());
+    layers.extend([Layer::Labels {
+        items: polygon
+            .iter()
+            .zip(exact.weights())
+            .enumerate()
+            .map(|(i, (p, w))| (*p, format!("w_{i} = {w}")))
+            .collect(),
+        colour: TEXT,
+        offset: (9, -22),
+    }]);
     let name = if n == 2 { "quadratic" } else { "quartic" };
     Ok(Figure {
         file,

@@ -7,7 +7,7 @@
 //! Two pictures: the cubic with its control polygon against ln t, and the error of the cubic,
 //! y(s) - ln x(s) along its parameter s (x(s) = t exactly, so this is the vertical distance).
 
-use super::mesh::{point3, point3_f64, sample};
+use super::mesh::{curve_against_reference, point3, point3_f64, sample};
 use super::palette::{CURVE, DOTS, NET, REFERENCE};
 use super::scene::{Figure, Layer, Point3, View};
 use crate::verify::seeds_002_004::logarithm::{cubic, value};
@@ -41,28 +41,7 @@ pub fn figure() -> Result<Figure, Error> {
     let (polygon, fast) = bezier()?;
     let curve = sample(0.0, 1.0, SAMPLES, |s| Some(point3_f64(&fast.eval(&s))));
     let ln = sample(0.5, 1.0, SAMPLES, |t| Some([t, t.ln(), 0.0]));
-    let layers = vec![
-        Layer::Lines {
-            lines: vec![ln],
-            colour: REFERENCE,
-            width: 6,
-        },
-        Layer::Lines {
-            lines: vec![curve],
-            colour: CURVE,
-            width: 2,
-        },
-        Layer::Lines {
-            lines: vec![polygon.clone()],
-            colour: NET,
-            width: 1,
-        },
-        Layer::Dots {
-            points: polygon,
-            colour: DOTS,
-            radius: 5,
-        },
-    ];
+    let layers = curve_against_reference(ln, curve, polygon);
     Ok(Figure {
         file: "ln_cubic.svg",
         title: "Seed 004, Example 3: ln t on [1/2, 1] and the cubic of formula (22)".into(),

@@ -2,7 +2,7 @@
 //! lines of a patch, evaluated by the library's de Casteljau ([`TensorPatch::eval`],
 //! [`TriangularPatch::eval`]), and the lines of its control net.
 
-use super::scene::Point3;
+use super::scene::{Layer, Point3};
 use blossom::{rational_to_f64, Error, Point, Rational, TensorPatch, TriangularPatch};
 
 /// Iso-parameter lines per direction of a patch.
@@ -144,4 +144,36 @@ pub fn sample(a: f64, b: f64, count: usize, f: impl Fn(f64) -> Option<Point3>) -
     (0..=count)
         .filter_map(|k| f(a + (b - a) * fraction(k, count)))
         .collect()
+}
+
+/// The layers of a curve drawn against the curve it approximates: the reference thick
+/// underneath, the curve, its control polygon and the control points on top.
+pub fn curve_against_reference(
+    reference: Vec<Point3>,
+    curve: Vec<Point3>,
+    polygon: Vec<Point3>,
+) -> Vec<Layer> {
+    use super::palette::{CURVE, DOTS, NET, REFERENCE};
+    vec![
+        Layer::Lines {
+            lines: vec![reference],
+            colour: REFERENCE,
+            width: 6,
+        },
+        Layer::Lines {
+            lines: vec![curve],
+            colour: CURVE,
+            width: 2,
+        },
+        Layer::Lines {
+            lines: vec![polygon.clone()],
+            colour: NET,
+            width: 1,
+        },
+        Layer::Dots {
+            points: polygon,
+            colour: DOTS,
+            radius: 5,
+        },
+    ]
 }
