@@ -16,7 +16,7 @@ use crate::shape::halving::{
     curve_blossom_in_place, curve_net, curve_split, tensor_net, triangle_blossom_in_place,
     triangle_net, BernsteinPairStep, BernsteinStep, Fixed,
 };
-use crate::shape::simplex::{triangle_index, triangle_len};
+use crate::shape::simplex::{checked_triangle_len, triangle_index};
 use crate::shape::unrolled::restrict_curve_unrolled;
 use crate::Ring;
 use std::ops::Range;
@@ -30,6 +30,15 @@ fn empty_dimension<const D: usize>() -> Result<()> {
         ));
     }
     Ok(())
+}
+
+/// The error of a degree whose number of points overflows `usize`.
+fn too_large(field: &str) -> Error {
+    Error::of(
+        ErrorKind::TooLarge,
+        field,
+        "the number of control points overflows usize",
+    )
 }
 
 fn check_out(field: &str, want: usize, found: usize) -> Result<()> {
@@ -222,11 +231,17 @@ impl<T: Ring, const D: usize> BezierTensor<T, D> {
     /// The patch of bidegree `degree` = (n, m) with the (n + 1)(m + 1) points `points`.
     ///
     /// # Errors
-    /// `points` when their number is not (n + 1)(m + 1), `D` when `D == 0`.
+    /// `points` when their number is not (n + 1)(m + 1), `D` when `D == 0`,
+    /// [`ErrorKind::TooLarge`] at `degree` when (n + 1)(m + 1) overflows `usize`.
     pub fn new(degree: (usize, usize), points: Vec<[T; D]>) -> Result<Self> {
         empty_dimension::<D>()?;
-        let (rows, cols) = (degree.0 + 1, degree.1 + 1);
-        check_out("points", rows * cols, points.len())?;
+        let (rows, cols) = (degree.0.checked_add(1), degree.1.checked_add(1));
+        let (cols, want) = match (rows, cols) {
+            (Some(rows), Some(cols)) => (cols, rows.checked_mul(cols)),
+            _ => (0, None),
+        };
+        let want = want.ok_or_else(|| too_large("degree"))?;
+        check_out("points", want, points.len())?;
         Ok(BezierTensor { cols, points })
     }
 
@@ -311,10 +326,12 @@ impl<T: Ring, const D: usize> BezierTriangle<T, D> {
     /// The patch of degree `degree` with the (N + 1)(N + 2) / 2 points `points`.
     ///
     /// # Errors
-    /// `points` when their number is wrong, `D` when `D == 0`.
+    /// `points` when their number is wrong, `D` when `D == 0`, [`ErrorKind::TooLarge`] at
+    /// `degree` when (N + 1)(N + 2) / 2 overflows `usize`.
     pub fn new(degree: usize, points: Vec<[T; D]>) -> Result<Self> {
         empty_dimension::<D>()?;
-        check_out("points", triangle_len(degree), points.len())?;
+        let want = checked_triangle_len(degree).ok_or_else(|| too_large("degree"))?;
+        check_out("points", want, points.len())?;
         Ok(BezierTriangle { degree, points })
     }
 

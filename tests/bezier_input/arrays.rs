@@ -86,6 +86,21 @@ fn blossoms_and_shapes_are_checked() {
     assert_eq!((e.kind(), e.field.as_str()), (ErrorKind::Shape, "points"));
     let e = BezierTriangle::<f64, 1>::new(2, vec![[0.0]; 5]).unwrap_err();
     assert_eq!((e.kind(), e.field.as_str()), (ErrorKind::Shape, "points"));
+    // Degrees whose number of points overflows usize are refused, not a panic.
+    for degree in [(usize::MAX, 0), (0, usize::MAX), (1 << 40, 1 << 40)] {
+        let e = BezierTensor::<f64, 1>::new(degree, vec![[0.0]; 4]).unwrap_err();
+        assert_eq!(
+            (e.kind(), e.field.as_str()),
+            (ErrorKind::TooLarge, "degree")
+        );
+    }
+    for degree in [usize::MAX, 1 << 40] {
+        let e = BezierTriangle::<f64, 1>::new(degree, vec![[0.0]; 3]).unwrap_err();
+        assert_eq!(
+            (e.kind(), e.field.as_str()),
+            (ErrorKind::TooLarge, "degree")
+        );
+    }
 }
 
 #[test]
