@@ -164,12 +164,13 @@ fn checked<V>(read: impl FnOnce() -> Result<V>) -> Result<V> {
     read()
 }
 
-/// `Serialize` for `$ty<T>` (with `T: $bound`) writing the document `$write` built from
-/// `$this`, and `Deserialize` reading the document type `$doc` into `$this` and returning
+/// `Serialize` for `$ty<T>` or, for the fixed-dimension shapes, `$ty<T, D>` (with
+/// `T: $bound`) writing the document `$write` built from `$this`, and `Deserialize` reading the document type `$doc` into `$this` and returning
 /// `$read`, a `Result` of the checked constructor whose error becomes the deserializer's.
 macro_rules! through_constructor {
-    ($ty:ident<T: $bound:ident>, |$this:ident| $write:expr, |$doc:ident: $doc_ty:ty| $read:expr) => {
-        impl<T: $bound + Serialize> Serialize for $ty<T> {
+    ($ty:ident<T: $bound:ident $(, const $d:ident: usize)?>,
+     |$this:ident| $write:expr, |$doc:ident: $doc_ty:ty| $read:expr) => {
+        impl<T: $bound + Serialize $(, const $d: usize)?> Serialize for $ty<T $(, $d)?> {
             fn serialize<S: Serializer>(
                 &self,
                 serializer: S,
@@ -179,36 +180,14 @@ macro_rules! through_constructor {
             }
         }
 
-        impl<'de, T: $bound + Deserialize<'de>> Deserialize<'de> for $ty<T> {
-            fn deserialize<D: Deserializer<'de>>(
-                deserializer: D,
-            ) -> std::result::Result<Self, D::Error> {
+        impl<'de, T: $bound + Deserialize<'de> $(, const $d: usize)?> Deserialize<'de>
+            for $ty<T $(, $d)?>
+        {
+            fn deserialize<De: Deserializer<'de>>(
+                deserializer: De,
+            ) -> std::result::Result<Self, De::Error> {
                 let $doc = <$doc_ty>::deserialize(deserializer)?;
-                checked(|| $read).map_err(D::Error::custom)
-            }
-        }
-    };
-}
-
-/// The same for a fixed-dimension shape `$ty<T, D>`.
-macro_rules! fixed_through_constructor {
-    ($ty:ident, |$this:ident| $write:expr, |$doc:ident: $doc_ty:ty| $read:expr) => {
-        impl<T: Ring + Serialize, const D: usize> Serialize for $ty<T, D> {
-            fn serialize<S: Serializer>(
-                &self,
-                serializer: S,
-            ) -> std::result::Result<S::Ok, S::Error> {
-                let $this = self;
-                $write.serialize(serializer)
-            }
-        }
-
-        impl<'de, T: Ring + Deserialize<'de>, const D: usize> Deserialize<'de> for $ty<T, D> {
-            fn deserialize<D2: Deserializer<'de>>(
-                deserializer: D2,
-            ) -> std::result::Result<Self, D2::Error> {
-                let $doc = <$doc_ty>::deserialize(deserializer)?;
-                checked(|| $read).map_err(D2::Error::custom)
+                checked(|| $read).map_err(De::Error::custom)
             }
         }
     };
@@ -319,16 +298,16 @@ fn tensor_len((n, m): (usize, usize)) -> Result<usize> {
     checked_product(&[rows, cols], "degree", what)
 }
 
-fixed_through_constructor!(
-    Bezier,
+through_constructor!(
+    Bezier<T: Ring, const D: usize>,
     |c| Points {
         points: slices(c.points())
     },
     |doc: Points<Vec<Vec<T>>>| Bezier::new(arrays(doc.points)?)
 );
 
-fixed_through_constructor!(
-    BezierTensor,
+through_constructor!(
+    BezierTensor<T: Ring, const D: usize>,
     |p| DegreePoints {
         degree: p.degree(),
         points: slices(p.points())
@@ -339,8 +318,8 @@ fixed_through_constructor!(
     }
 );
 
-fixed_through_constructor!(
-    BezierTriangle,
+through_constructor!(
+    BezierTriangle<T: Ring, const D: usize>,
     |p| DegreePoints {
         degree: p.degree(),
         points: slices(p.points())
