@@ -1,4 +1,5 @@
-//! The `blossom` binary driven as a process: `blossom restrict` and the spline jobs.
+//! The `blossom` binary driven as a process: `blossom restrict`, the spline jobs, `blossom check`
+//! and `blossom figures` (its SVGs rendered to pixels).
 
 mod binary;
 #[path = "../../../tests/common/mod.rs"]
@@ -10,4 +11,5 @@ mod cli_error_bounds;
 mod cli_patch_jobs;
 mod cli_restrict;
 mod cli_spline_jobs;
+mod figures;
 mod fuzz_corpus;

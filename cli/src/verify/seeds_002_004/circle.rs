@@ -73,9 +73,11 @@ const QUARTIC: Printed = (
         ),
     ],
 );
-/// The printed polygons and weights for alpha = 0, beta = 1.
-const UNIT_QUADRATIC: ([&str; 3], [&str; 3]) = (["(1, 0)", "(1, 1)", "(0, 1)"], ["1", "1", "2"]);
-const UNIT_QUARTIC: ([&str; 5], [&str; 5]) = (
+/// The printed polygon and weights of the quadratic for alpha = 0, beta = 1.
+pub const UNIT_QUADRATIC: ([&str; 3], [&str; 3]) =
+    (["(1, 0)", "(1, 1)", "(0, 1)"], ["1", "1", "2"]);
+/// The printed polygon and weights of the quartic for alpha = 0, beta = 1.
+pub const UNIT_QUARTIC: ([&str; 5], [&str; 5]) = (
     ["(1, 0)", "(1, 1/2)", "(5/7, 6/7)", "(1/3, 1)", "(0, 1)"],
     ["1", "1", "7/6", "3/2", "2"],
 );

@@ -1,0 +1,280 @@
+//! `blossom figures`: every SVG rendered to pixels (resvg), checked to be a picture, and each
+//! control point looked up on the page.
+//!
+//! The expected control points do not come from the figures' own computation: the patches'
+//! nets are the values printed in Tables 1 and 2 (compared as sets, since Table 2's labels
+//! follow an index convention of their own), the arcs' polygons are the printed ones of seed
+//! 004, the ln t cubic's polygon is the printed expression in ln 2, ln 3, ln 5, the de Boor
+//! points are the printed ones and the knot images F(t_j) are evaluated here by the Cox-de
+//! Boor recurrence of the basis functions (the figure uses the library's de Boor algorithm).
+//! Each expected point must be one of the figure's dots (to 1e-12), and the pixel at its page
+//! position, computed through the chart the drawing uses ([`figures::pixels`]), must have the
+//! colour of the dot drawn last over it. Text is not rendered (resvg without fonts), so labels
+//! cannot cover a dot.
+
+use crate::binary::run_binary;
+use blossom::{rational_to_f64, Rational};
+use blossom_cli::figures::{self, palette, Figure, Point3, Rgb, SIZE};
+use blossom_cli::verify::paper_data::{Labelled, TABLE_1_S1, TABLE_1_S2, TABLE_2_S3, TABLE_2_S4};
+use blossom_cli::verify::seeds_002_004::circle::{UNIT_QUADRATIC, UNIT_QUARTIC};
+use blossom_cli::verify::seeds_002_004::expr::parse;
+use blossom_cli::verify::seeds_002_004::logarithm::{value, POLYGON};
+use blossom_cli::verify::seeds_002_004::splines::{EXAMPLE_1_POINTS, THEOREM_2_2_KNOTS};
+use blossom_cli::verify::seeds_002_004::{num, point};
+use resvg::{tiny_skia, usvg};
+
+/// A figure rendered at its page size.
+fn render(figure: &Figure) -> tiny_skia::Pixmap {
+    let text = figures::svg(figure).expect("the figure draws");
+    let tree = usvg::Tree::from_str(&text, &usvg::Options::default()).expect("valid SVG");
+    let size = tree.size().to_int_size();
+    assert_eq!((size.width(), size.height()), SIZE, "{}", figure.file);
+    let mut pixmap = tiny_skia::Pixmap::new(SIZE.0, SIZE.1).expect("a page");
+    resvg::render(&tree, tiny_skia::Transform::default(), &mut pixmap.as_mut());
+    pixmap
+}
+
+fn colour_at(pixmap: &tiny_skia::Pixmap, (x, y): (i32, i32)) -> Option<Rgb> {
+    let c = pixmap.pixel(u32::try_from(x).ok()?, u32::try_from(y).ok()?)?;
+    let c = c.demultiply();
+    Some(Rgb(c.red(), c.green(), c.blue()))
+}
+
+fn close(a: Rgb, b: Rgb) -> bool {
+    let d = |x: u8, y: u8| (i32::from(x) - i32::from(y)).abs();
+    d(a.0, b.0) <= 8 && d(a.1, b.1) <= 8 && d(a.2, b.2) <= 8
+}
+
+fn f64_point(p: &[Rational]) -> Point3 {
+    let mut out = [0.0; 3];
+    for (o, x) in out.iter_mut().zip(p) {
+        *o = rational_to_f64(x);
+    }
+    out
+}
+
+fn printed_net(table: &[Labelled]) -> Vec<Point3> {
+    table
+        .iter()
+        .map(|(_, xyz)| f64_point(&xyz.map(num)))
+        .collect()
+}
+
+/// N_{k,d}(t) on `knots` by the Cox-de Boor recurrence; the last non-empty span is closed on
+/// the right so that F(t_max) is the end point.
+fn basis(knots: &[f64], k: usize, d: usize, t: f64) -> f64 {
+    if d == 0 {
+        let (a, b) = (knots[k], knots[k + 1]);
+        let last = knots[knots.len() - 1];
+        let inside = (a <= t && t < b) || (t == last && a < b && b == last);
+        return if inside { 1.0 } else { 0.0 };
+    }
+    let term = |num: f64, den: f64, n: f64| if den == 0.0 { 0.0 } else { num / den * n };
+    term(
+        t - knots[k],
+        knots[k + d] - knots[k],
+        basis(knots, k, d - 1, t),
+    ) + term(
+        knots[k + d + 1] - t,
+        knots[k + d + 1] - knots[k + 1],
+        basis(knots, k + 1, d - 1, t),
+    )
+}
+
+fn knot_images() -> Vec<Point3> {
+    let knots: Vec<f64> = THEOREM_2_2_KNOTS
+        .split(',')
+        .map(|t| t.trim().parse().expect("an integer knot"))
+        .collect();
+    let points: Vec<Point3> = EXAMPLE_1_POINTS
+        .iter()
+        .map(|p| f64_point(&point(p)))
+        .collect();
+    let mut distinct = knots.clone();
+    distinct.dedup();
+    distinct
+        .iter()
+        .map(|&t| {
+            let mut f = [0.0; 3];
+            for (k, d) in points.iter().enumerate() {
+                let n = basis(&knots, k, 3, t);
+                for j in 0..3 {
+                    f[j] += n * d[j];
+                }
+            }
+            f
+        })
+        .collect()
+}
+
+fn printed_polygon(polygon: &[&str]) -> Vec<Point3> {
+    polygon.iter().map(|p| f64_point(&point(p))).collect()
+}
+
+fn ln_polygon() -> Vec<Point3> {
+    POLYGON
+        .iter()
+        .map(|[x, y]| f64_point(&[value(&parse(x)), value(&parse(y))]))
+        .collect()
+}
+
+/// The expected dots of each figure, by file name: (dot colour, points).
+fn expected(file: &str) -> Vec<(Rgb, Vec<Point3>)> {
+    let (first, second, marks) = (palette::DOTS, palette::DOTS_2, palette::DOTS_3);
+    match file {
+        "figure1a_s1_net.svg" => vec![(first, printed_net(&TABLE_1_S1))],
+        "figure1b_s1_s2.svg" => vec![
+            (first, printed_net(&TABLE_1_S1)),
+            (second, printed_net(&TABLE_1_S2)),
+        ],
+        "figure2a_s3_net.svg" => vec![(first, printed_net(&TABLE_2_S3))],
+        "figure2b_s1_s3.svg" => vec![(second, printed_net(&TABLE_2_S3))],
+        "figure2c_s4_net.svg" => vec![(first, printed_net(&TABLE_2_S4))],
+        "figure2d_s3_s4.svg" => vec![(second, printed_net(&TABLE_2_S4))],
+        "bspline_de_boor.svg" => vec![
+            (first, printed_polygon(&EXAMPLE_1_POINTS)),
+            (marks, knot_images()),
+        ],
+        "circle_quadratic.svg" => vec![(first, printed_polygon(&UNIT_QUADRATIC.0))],
+        "circle_quartic.svg" => vec![(first, printed_polygon(&UNIT_QUARTIC.0))],
+        "ln_cubic.svg" => vec![(first, ln_polygon())],
+        "ln_cubic_error.svg" => vec![],
+        other => panic!("a figure this test does not know: {other}"),
+    }
+}
+
+fn near(a: &Point3, b: &Point3) -> bool {
+    a.iter()
+        .zip(b)
+        .all(|(x, y)| (x - y).abs() <= 1e-12 * (1.0 + y.abs()))
+}
+
+/// The colour of the dot drawn last whose disc holds the pixel `at` of `figure`.
+fn topmost_dot(figure: &Figure, at: (i32, i32)) -> Option<Rgb> {
+    let mut top = None;
+    for (points, colour, radius) in figure.dots() {
+        let placed = figures::pixels(figure, points).expect("page positions");
+        let r = f64::from(radius) - 1.0;
+        if placed
+            .iter()
+            .any(|&(x, y)| f64::from(x - at.0).hypot(f64::from(y - at.1)) <= r)
+        {
+            top = Some(colour);
+        }
+    }
+    top
+}
+
+#[test]
+fn every_figure_is_a_picture_with_its_control_points_in_place() {
+    let all = figures::figures().expect("the figures compute");
+    assert_eq!(all.len(), 11);
+    for figure in &all {
+        let pixmap = render(figure);
+        let background = palette::BACKGROUND;
+        let inked = (0..SIZE.1)
+            .flat_map(|y| (0..SIZE.0).map(move |x| (x as i32, y as i32)))
+            .filter(|&p| colour_at(&pixmap, p).is_some_and(|c| !close(c, background)))
+            .count();
+        let share = inked as f64 / f64::from(SIZE.0 * SIZE.1);
+        assert!(
+            share > 0.01,
+            "{}: only {inked} pixels are drawn",
+            figure.file
+        );
+        let wanted = expected(figure.file);
+        let drawn = figure.dots();
+        assert_eq!(drawn.len(), wanted.len(), "{}: dot layers", figure.file);
+        for ((colour, points), (dots, dot_colour, _)) in wanted.iter().zip(&drawn) {
+            assert_eq!(colour, dot_colour, "{}", figure.file);
+            assert_eq!(points.len(), dots.len(), "{}: control points", figure.file);
+            for p in points {
+                assert!(
+                    dots.iter().any(|d| near(d, p)),
+                    "{}: the printed point {p:?} is not among the drawn ones {dots:?}",
+                    figure.file
+                );
+            }
+            let placed = figures::pixels(figure, points).expect("page positions");
+            for (p, &at) in points.iter().zip(&placed) {
+                let top = topmost_dot(figure, at).expect("a dot is drawn there");
+                let seen = colour_at(&pixmap, at);
+                assert!(
+                    seen.is_some_and(|c| close(c, top)),
+                    "{}: at pixel {at:?} of {p:?} the colour is {seen:?}, not the dot's {top:?}",
+                    figure.file
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn the_page_positions_follow_the_chart() {
+    // A dot's page position moves with the point: in a plane figure, a larger x is further
+    // right and a larger y higher up (smaller row), so the test above cannot pass by looking
+    // at one spot.
+    let all = figures::figures().expect("the figures compute");
+    let circle = all
+        .iter()
+        .find(|f| f.file == "circle_quadratic.svg")
+        .expect("the quadratic arc");
+    let placed = figures::pixels(circle, &[[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
+        .expect("page positions");
+    assert!(placed[1].0 > placed[0].0 + 100, "{placed:?}");
+    assert_eq!(placed[1].1, placed[0].1);
+    assert!(placed[2].1 < placed[0].1 - 100, "{placed:?}");
+    let pixmap = render(circle);
+    assert!(colour_at(&pixmap, placed[0]).is_some_and(|c| !close(c, palette::DOTS)));
+}
+
+#[test]
+fn figures_writes_every_svg_and_refuses_a_file_as_directory() {
+    let dir = std::env::temp_dir().join(format!("blossom-figures-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = dir.join("new").join("pictures");
+    let arg = out.to_str().expect("a UTF-8 temporary path");
+    let run = run_binary(&["figures", "--out", arg], b"");
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let mut files: Vec<String> = std::fs::read_dir(&out)
+        .expect("the directory is made")
+        .map(|e| {
+            e.expect("an entry")
+                .file_name()
+                .to_string_lossy()
+                .into_owned()
+        })
+        .collect();
+    files.sort();
+    assert_eq!(files.len(), 11, "{files:?}");
+    assert!(files.iter().all(|f| f.ends_with(".svg")));
+    assert_eq!(run.stdout.lines().count(), 11, "{}", run.stdout);
+
+    let file = dir.join("a_file");
+    std::fs::write(&file, "not a directory").expect("a scratch file");
+    let run = run_binary(&["figures", "--out", file.to_str().expect("UTF-8")], b"");
+    assert_eq!(run.code, 2);
+    assert!(run.stdout.is_empty(), "{}", run.stdout);
+    assert!(run.stderr.starts_with("error: --out: "), "{}", run.stderr);
+    assert_eq!(run.stderr.lines().count(), 1);
+    assert_eq!(
+        std::fs::read_to_string(&file).expect("still there"),
+        "not a directory"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn the_pictures_in_docs_are_what_the_binary_draws() {
+    // docs/figures holds every picture (the README shows two); they must not drift from the
+    // code.
+    let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/figures");
+    for figure in figures::figures().expect("the figures compute") {
+        let kept = std::fs::read_to_string(docs.join(figure.file)).expect("a kept picture");
+        assert!(
+            kept == figures::svg(&figure).expect("the figure draws"),
+            "docs/figures/{} is stale: run `cargo run --release -- figures --out docs/figures`",
+            figure.file
+        );
+    }
+}
