@@ -256,7 +256,16 @@ impl<T: Ring, const D: usize> BezierTensor<T, D> {
     }
 
     /// The control point p_(ν μ).
+    ///
+    /// # Panics
+    /// When ν > n or μ > m, as slice indexing does (an index past a row would otherwise name
+    /// a point of the next row).
     pub fn get(&self, nu: usize, mu: usize) -> &[T; D] {
+        let (n, m) = self.degree();
+        assert!(
+            nu <= n && mu <= m,
+            "control point ({nu}, {mu}) of a patch of bidegree ({n}, {m})"
+        );
         &self.points[nu * self.cols + mu]
     }
 
@@ -346,8 +355,17 @@ impl<T: Ring, const D: usize> BezierTriangle<T, D> {
     }
 
     /// The control point q_(ν μ λ), λ = N - ν - μ.
+    ///
+    /// # Panics
+    /// When ν + μ > N, as slice indexing does (the listing's position of such a pair would
+    /// name another point).
     pub fn get(&self, nu: usize, mu: usize) -> &[T; D] {
-        &self.points[triangle_index(self.degree, nu, mu)]
+        let n = self.degree;
+        assert!(
+            nu.checked_add(mu).is_some_and(|s| s <= n),
+            "control point ({nu}, {mu}) of a triangle of degree {n}"
+        );
+        &self.points[triangle_index(n, nu, mu)]
     }
 
     /// The point at the affine coordinates (s, t) (barycentric (s, t, 1 - s - t)).

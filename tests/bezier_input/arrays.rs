@@ -87,14 +87,15 @@ fn blossoms_and_shapes_are_checked() {
     let e = BezierTriangle::<f64, 1>::new(2, vec![[0.0]; 5]).unwrap_err();
     assert_eq!((e.kind(), e.field.as_str()), (ErrorKind::Shape, "points"));
     // Degrees whose number of points overflows usize are refused, not a panic.
-    for degree in [(usize::MAX, 0), (0, usize::MAX), (1 << 40, 1 << 40)] {
+    let half = usize::MAX / 2;
+    for degree in [(usize::MAX, 0), (0, usize::MAX), (half, 1), (1, half)] {
         let e = BezierTensor::<f64, 1>::new(degree, vec![[0.0]; 4]).unwrap_err();
         assert_eq!(
             (e.kind(), e.field.as_str()),
             (ErrorKind::TooLarge, "degree")
         );
     }
-    for degree in [usize::MAX, 1 << 40] {
+    for degree in [usize::MAX, half, 1 << (usize::BITS / 2 + 1)] {
         let e = BezierTriangle::<f64, 1>::new(degree, vec![[0.0]; 3]).unwrap_err();
         assert_eq!(
             (e.kind(), e.field.as_str()),
@@ -154,4 +155,18 @@ fn triangle_restriction_is_the_blossom_at_every_control_point() {
         );
         assert_eq!(patch.eval(&corners[1])[..], reference.eval(&bary[1])[..]);
     }
+}
+
+#[test]
+#[should_panic(expected = "control point (0, 3) of a triangle of degree 2")]
+fn a_triangle_point_outside_the_simplex_is_not_another_point() {
+    let t = BezierTriangle::<f64, 1>::new(2, vec![[0.0]; 6]).unwrap();
+    let _ = t.get(0, 3);
+}
+
+#[test]
+#[should_panic(expected = "control point (0, 3) of a patch of bidegree (1, 2)")]
+fn a_tensor_point_past_its_row_is_not_the_next_row() {
+    let p = BezierTensor::<f64, 1>::new((1, 2), vec![[0.0]; 6]).unwrap();
+    let _ = p.get(0, 3);
 }
