@@ -4,13 +4,19 @@
 //! The expected control points do not come from the figures' own computation: the patches'
 //! nets are the values printed in Tables 1 and 2 (compared as sets, since Table 2's labels
 //! follow an index convention of their own), the arcs' polygons are the printed ones of seed
-//! 004, the ln t cubic's polygon is the printed expression in ln 2, ln 3, ln 5, the de Boor
-//! points are the printed ones and the knot images F(t_j) are evaluated here by the Cox-de
-//! Boor recurrence of the basis functions (the figure uses the library's de Boor algorithm).
+//! 004, the ln t cubic's polygon is the printed expression in ln 2, ln 3, ln 5 (the figure
+//! computes it by the inverse formula (22); both sides evaluate ln p by the same series of
+//! `verify`), and the knot images F(t_j) of the B-spline are evaluated here by the Cox-de Boor
+//! recurrence of the basis functions (the figure uses the library's de Boor algorithm). The de
+//! Boor points are the figure's input itself, so for them only the page position is tested.
+//! The error curve of the ln t cubic is recomputed here from the printed polygon by Bernstein
+//! sums.
+//!
 //! Each expected point must be one of the figure's dots (to 1e-12), and the pixel at its page
-//! position, computed through the chart the drawing uses ([`figures::pixels`]), must have the
-//! colour of the dot drawn last over it. Text is not rendered (resvg without fonts), so labels
-//! cannot cover a dot.
+//! position, computed through the chart the drawing uses ([`figures::pixels`]: this checks
+//! that the rendered dot is where the chart puts the value; `the_page_positions_follow_the_chart`
+//! checks the chart's orientation), must have the colour of the dot drawn last over it. Text is
+//! not rendered (resvg without fonts), so labels cannot cover a dot.
 
 use crate::binary::run_binary;
 use blossom::{rational_to_f64, Rational};
@@ -40,9 +46,15 @@ fn colour_at(pixmap: &tiny_skia::Pixmap, (x, y): (i32, i32)) -> Option<Rgb> {
     Some(Rgb(c.red(), c.green(), c.blue()))
 }
 
-fn close(a: Rgb, b: Rgb) -> bool {
+/// Whether every channel of `a` is within `tolerance` of `b`'s.
+fn within(a: Rgb, b: Rgb, tolerance: i32) -> bool {
     let d = |x: u8, y: u8| (i32::from(x) - i32::from(y)).abs();
-    d(a.0, b.0) <= 8 && d(a.1, b.1) <= 8 && d(a.2, b.2) <= 8
+    d(a.0, b.0) <= tolerance && d(a.1, b.1) <= tolerance && d(a.2, b.2) <= tolerance
+}
+
+/// The colour of a disc's centre: `b` up to rounding of the rendering.
+fn close(a: Rgb, b: Rgb) -> bool {
+    within(a, b, 8)
 }
 
 fn f64_point(p: &[Rational]) -> Point3 {
@@ -209,6 +221,72 @@ fn every_figure_is_a_picture_with_its_control_points_in_place() {
     }
 }
 
+/// The cubic sum_i b_i B_i^3(s) of the printed polygon of seed 004, Example 3.
+fn printed_cubic(s: f64) -> [f64; 2] {
+    let b = ln_polygon();
+    let w = [
+        (1.0 - s).powi(3),
+        3.0 * s * (1.0 - s).powi(2),
+        3.0 * s * s * (1.0 - s),
+        s.powi(3),
+    ];
+    let mut out = [0.0; 2];
+    for (p, wi) in b.iter().zip(w) {
+        out[0] += wi * p[0];
+        out[1] += wi * p[1];
+    }
+    out
+}
+
+#[test]
+fn the_ln_error_curve_is_the_printed_cubic_minus_ln() {
+    let all = figures::figures().expect("the figures compute");
+    let figure = all
+        .iter()
+        .find(|f| f.file == "ln_cubic_error.svg")
+        .expect("the error picture");
+    let curve = figure
+        .layers
+        .iter()
+        .find_map(|layer| match layer {
+            figures::Layer::Lines { lines, colour, .. } if *colour == palette::CURVE => {
+                lines.first()
+            }
+            _ => None,
+        })
+        .expect("the error curve");
+    assert!(curve.len() >= 100, "{} samples", curve.len());
+    let mut largest: f64 = 0.0;
+    for p in curve {
+        // x(s) = 1/2 + s/2 exactly (the printed x's are 1/2, 2/3, 5/6, 1), so s = 2x - 1.
+        let [x, y] = printed_cubic(2.0 * p[0] - 1.0);
+        assert!((x - p[0]).abs() <= 1e-14, "{p:?}");
+        let error = y - x.ln();
+        assert!(
+            (error - p[1]).abs() <= 1e-12,
+            "at x = {}: {} not {error}",
+            p[0],
+            p[1]
+        );
+        largest = largest.max(error.abs());
+    }
+    // The cubic interpolates ln at both ends and is close in between (seed 004's squared L2
+    // error is about 2e-7): a picture of zero or of a wild curve fails here.
+    assert!(largest > 1e-5 && largest < 1e-2, "largest error {largest}");
+    let pixmap = render(figure);
+    let placed = figures::pixels(figure, &curve[40..60]).expect("page positions");
+    for at in placed {
+        let near_line = (-1..=1).any(|dx| {
+            (-1..=1).any(|dy| {
+                // A 2-pixel line is anti-aliased: near its colour, not exactly it.
+                colour_at(&pixmap, (at.0 + dx, at.1 + dy))
+                    .is_some_and(|c| within(c, palette::CURVE, 40))
+            })
+        });
+        assert!(near_line, "no curve colour near pixel {at:?}");
+    }
+}
+
 #[test]
 fn the_page_positions_follow_the_chart() {
     // A dot's page position moves with the point: in a plane figure, a larger x is further
@@ -269,7 +347,24 @@ fn the_pictures_in_docs_are_what_the_binary_draws() {
     // docs/figures holds every picture (the README shows two); they must not drift from the
     // code.
     let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/figures");
-    for figure in figures::figures().expect("the figures compute") {
+    let all = figures::figures().expect("the figures compute");
+    let mut kept: Vec<String> = std::fs::read_dir(&docs)
+        .expect("docs/figures")
+        .map(|e| {
+            e.expect("an entry")
+                .file_name()
+                .to_string_lossy()
+                .into_owned()
+        })
+        .collect();
+    kept.sort();
+    let mut drawn: Vec<String> = all.iter().map(|f| f.file.to_string()).collect();
+    drawn.sort();
+    assert_eq!(
+        kept, drawn,
+        "docs/figures holds exactly the pictures the binary draws"
+    );
+    for figure in all {
         let kept = std::fs::read_to_string(docs.join(figure.file)).expect("a kept picture");
         assert!(
             kept == figures::svg(&figure).expect("the figure draws"),
