@@ -165,8 +165,9 @@ fn checked<V>(read: impl FnOnce() -> Result<V>) -> Result<V> {
 }
 
 /// `Serialize` for `$ty<T>` or, for the fixed-dimension shapes, `$ty<T, D>` (with
-/// `T: $bound`) writing the document `$write` built from `$this`, and `Deserialize` reading the document type `$doc` into `$this` and returning
-/// `$read`, a `Result` of the checked constructor whose error becomes the deserializer's.
+/// `T: $bound`) writing the document `$write` built from `$this`, and `Deserialize` reading
+/// the document type `$doc` into `$this` and returning `$read`, a `Result` of the checked
+/// constructor whose error becomes the deserializer's.
 macro_rules! through_constructor {
     ($ty:ident<T: $bound:ident $(, const $d:ident: usize)?>,
      |$this:ident| $write:expr, |$doc:ident: $doc_ty:ty| $read:expr) => {
