@@ -177,6 +177,30 @@ fn topmost_dot(figure: &Figure, at: (i32, i32)) -> Option<Rgb> {
     top
 }
 
+/// The figure written to `file`.
+fn figure_named(file: &str) -> Figure {
+    figures::figures()
+        .expect("the figures compute")
+        .into_iter()
+        .find(|f| f.file == file)
+        .expect("a figure of that name")
+}
+
+/// The sorted file names in `dir`.
+fn file_names(dir: &std::path::Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .expect("a readable directory")
+        .map(|e| {
+            e.expect("an entry")
+                .file_name()
+                .to_string_lossy()
+                .into_owned()
+        })
+        .collect();
+    names.sort();
+    names
+}
+
 #[test]
 fn every_figure_is_a_picture_with_its_control_points_in_place() {
     let all = figures::figures().expect("the figures compute");
@@ -240,11 +264,7 @@ fn printed_cubic(s: f64) -> [f64; 2] {
 
 #[test]
 fn the_ln_error_curve_is_the_printed_cubic_minus_ln() {
-    let all = figures::figures().expect("the figures compute");
-    let figure = all
-        .iter()
-        .find(|f| f.file == "ln_cubic_error.svg")
-        .expect("the error picture");
+    let figure = &figure_named("ln_cubic_error.svg");
     let curve = figure
         .layers
         .iter()
@@ -292,11 +312,7 @@ fn the_page_positions_follow_the_chart() {
     // A dot's page position moves with the point: in a plane figure, a larger x is further
     // right and a larger y higher up (smaller row), so the test above cannot pass by looking
     // at one spot.
-    let all = figures::figures().expect("the figures compute");
-    let circle = all
-        .iter()
-        .find(|f| f.file == "circle_quadratic.svg")
-        .expect("the quadratic arc");
+    let circle = &figure_named("circle_quadratic.svg");
     let placed = figures::pixels(circle, &[[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
         .expect("page positions");
     assert!(placed[1].0 > placed[0].0 + 100, "{placed:?}");
@@ -314,16 +330,7 @@ fn figures_writes_every_svg_and_refuses_a_file_as_directory() {
     let arg = out.to_str().expect("a UTF-8 temporary path");
     let run = run_binary(&["figures", "--out", arg], b"");
     assert_eq!(run.code, 0, "{}", run.stderr);
-    let mut files: Vec<String> = std::fs::read_dir(&out)
-        .expect("the directory is made")
-        .map(|e| {
-            e.expect("an entry")
-                .file_name()
-                .to_string_lossy()
-                .into_owned()
-        })
-        .collect();
-    files.sort();
+    let files = file_names(&out);
     assert_eq!(files.len(), 11, "{files:?}");
     assert!(files.iter().all(|f| f.ends_with(".svg")));
     assert_eq!(run.stdout.lines().count(), 11, "{}", run.stdout);
@@ -348,16 +355,7 @@ fn the_pictures_in_docs_are_what_the_binary_draws() {
     // code.
     let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/figures");
     let all = figures::figures().expect("the figures compute");
-    let mut kept: Vec<String> = std::fs::read_dir(&docs)
-        .expect("docs/figures")
-        .map(|e| {
-            e.expect("an entry")
-                .file_name()
-                .to_string_lossy()
-                .into_owned()
-        })
-        .collect();
-    kept.sort();
+    let kept = file_names(&docs);
     let mut drawn: Vec<String> = all.iter().map(|f| f.file.to_string()).collect();
     drawn.sort();
     assert_eq!(
