@@ -1,7 +1,7 @@
 //! The accuracy harness of blossom (a crate of its own, outside the binary's build): measured
 //! error of floating-point restriction against the exact answer: the
 //! power-input methods one at a time (this file), and the sweep of every f64 path against
-//! the exact answer and a stable reference on the same inputs ([`sweep`], [`reference`]).
+//! the exact answer and a stable reference on the same inputs ([`sweep`], [`mod@reference`]).
 //!
 //! The input is exact; it is rounded once to f64, restricted in f64 by a method, and each
 //! coordinate of the result is compared with the exact restriction of the exact input. The

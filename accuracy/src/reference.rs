@@ -2,7 +2,7 @@
 //! control point, written here from the textbook (x' = (1 - t) x + t y), sharing no code with
 //! the library's engine.
 
-/// The blossom b[args] of the Bézier curve `ctrl` by the textbook pyramid.
+/// The blossom b\[args\] of the Bézier curve `ctrl` by the textbook pyramid.
 pub fn curve_point<const D: usize>(ctrl: &[[f64; D]], args: &[f64]) -> [f64; D] {
     let mut level = ctrl.to_vec();
     for (r, &t) in args.iter().enumerate() {

@@ -5,8 +5,8 @@
 //! doubles the other program had: every number of JOB is read as its nearest double (the
 //! reading of `--arithmetic f64`, [`f64_from_json`]) and that double is then taken exactly
 //! ([`exact_doubles`]); the job so rewritten goes through the budget check and the exact solver
-//! of `blossom restrict` ([`crate::jobs::solve`] in [`Rational`], method `closed-form`). The
-//! answer's `control_points` are walked against the exact ones ([`walk`]) and the points
+//! of `blossom restrict` (`jobs::solve` in [`Rational`], method `closed-form`). The
+//! answer's `control_points` are walked against the exact ones (`walk`) and the points
 //! compared by [`blossom::exact_error`], whose definitions the output follows.
 
 use crate::jobs::args::{Arithmetic, CheckOptions, MethodChoice};

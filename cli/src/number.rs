@@ -93,7 +93,7 @@ impl JsonNumber for f64 {
 /// `--arithmetic f64` with error bounds: the doubles of plain `f64` arithmetic (read by the
 /// same rules, bit for bit the same values), each carrying a rigorous bound on its distance
 /// to the exact result of the same operations on the same input doubles. An answer written
-/// from these numbers holds each as [`bounded_json`] marks it; [`take_error_bound`] turns the
+/// from these numbers holds each as `bounded_json` marks it; [`take_error_bound`] turns the
 /// marks back into plain JSON numbers and returns the largest bound, the answer's
 /// `"error_bound"`.
 impl JsonNumber for BoundedF64 {

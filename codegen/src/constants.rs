@@ -1,7 +1,7 @@
 //! Exact combinatorial constants, folded at expansion time into reduced rational literals.
 //!
 //! Everything is computed in `u128` with checked arithmetic: a constant that does not fit is an
-//! error (never a silent wrap), and the degree limits of [`crate::limits`] keep every constant
+//! error (never a silent wrap), and the degree limits ([`crate::MAX_CURVE_DEGREE`] and the others of [`crate::model`]) keep every constant
 //! far below that bound.
 
 /// `C(n, k)`, exactly; `Some(0)` when `k > n`, `None` on overflow.

@@ -10,9 +10,12 @@
 //!
 //! The pipeline, one module per step:
 //!
-//! 1. [`parse`]: tokens to a plain [`RawInput`] of `key = value` entries;
-//! 2. [`validate`]: to a [`Spec`], every error a `syn::Error` spanning the offending tokens;
-//! 3. [`expand`]: to a `proc_macro2::TokenStream`, by one module per formula.
+//! 1. [`parse()`] (module [`mod@parse`]): tokens to a plain [`RawInput`] of `key = value`
+//!    entries;
+//! 2. [`validate()`] (module [`mod@validate`]): to a [`Spec`], every error a `syn::Error`
+//!    spanning the offending tokens;
+//! 3. [`expand()`] (module [`mod@expand`]): to a `proc_macro2::TokenStream`, by one module per
+//!    formula.
 //!
 //! ```
 //! # #[cfg(feature = "pretty")] {
@@ -56,7 +59,7 @@ pub fn restriction(input: TokenStream) -> TokenStream {
 /// Formats generated tokens as Rust source with prettyplease (feature `pretty`).
 ///
 /// # Panics
-/// If `tokens` is not a sequence of items (never for the output of [`expand`]).
+/// If `tokens` is not a sequence of items (never for the output of [`expand()`]).
 #[cfg(feature = "pretty")]
 pub fn format_items(tokens: TokenStream) -> String {
     let file: syn::File = syn::parse2(tokens).expect("the expansion is a list of items");

@@ -23,7 +23,7 @@
 //! work (the cubic Bézier of `benches/peers.rs`: 8.5 ns called, 6.6 ns inlined).
 //!
 //! Keys may come in any order; each is given once. The generated signatures (`D`, the number of
-//! coordinates of a point, is a const generic; `T` is any [`blossom::Ring`]):
+//! coordinates of a point, is a const generic; `T` is any `blossom::Ring`):
 //!
 //! | shape | degree | signature |
 //! |---|---|---|
@@ -60,7 +60,7 @@
 //!
 //! The body is fully unrolled: no loop over a degree index and no binomial at run time. Every
 //! combinatorial constant is folded at expansion time (exact `u128` arithmetic) into a reduced
-//! fraction passed to [`blossom::Ring::scale_frac`] (skipped when it is 1); each power or product
+//! fraction passed to `blossom::Ring::scale_frac` (skipped when it is 1); each power or product
 //! of the domain parameters is bound once by a `let` and shared; no zero term is emitted. The
 //! one iteration left is `core::array::from_fn` over the `D` coordinates of each point, after
 //! the scalar weights have been computed once for all coordinates.

@@ -7,19 +7,7 @@
 //! doubles, also taken exactly. The errors are exact rationals, with their nearest doubles
 //! ([`rational_to_f64`]) for display.
 //!
-//! # Definitions
-//!
-//! For control point i with exact coordinates w_ik and answer coordinates ŵ_ik:
-//!
-//! * the **absolute error** is e_i = max_k |ŵ_ik - w_ik|;
-//! * the **scale** of the point is s_i = max_k |w_ik|, and S = max_i s_i that of the answer;
-//! * the **relative error** is r_i = e_i / s_i when s_i > 0. When the exact point is 0
-//!   (s_i = 0), r_i = 0 if e_i = 0, and otherwise e_i / S, measured against the largest exact
-//!   coordinate of all control points (and against 1 when every exact coordinate is 0, so that
-//!   r_i = e_i then).
-//!
-//! [`AnswerError`] holds e_i and r_i for every point, their maxima and the first index at which
-//! each maximum occurs.
+//! The definitions of the errors are those of [`AnswerError`].
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::num::ring::{rational_to_f64, Rational};
@@ -28,8 +16,8 @@ use crate::shape::point::Point;
 use crate::shape::subdivide::restrict_bezier_curve;
 use num_traits::{Signed, Zero};
 
-/// The error of one control point of an answer: absolute e_i and relative r_i (see the
-/// [module documentation](self) for the definitions).
+/// The error of one control point of an answer: absolute e_i and relative r_i (definitions
+/// at [`AnswerError`]).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct PointError {
     /// e_i = max_k |ŵ_ik - w_ik|, exactly.
@@ -52,6 +40,17 @@ impl PointError {
 
 /// The exact error of an `f64` answer against the exact control points: per point, and the
 /// largest absolute and relative errors with the (first) index of the point where each occurs.
+///
+/// # Definitions
+///
+/// For control point i with exact coordinates w_ik and answer coordinates ŵ_ik:
+///
+/// * the **absolute error** is e_i = max_k |ŵ_ik - w_ik|;
+/// * the **scale** of the point is s_i = max_k |w_ik|, and S = max_i s_i that of the answer;
+/// * the **relative error** is r_i = e_i / s_i when s_i > 0. When the exact point is 0
+///   (s_i = 0), r_i = 0 if e_i = 0, and otherwise e_i / S, measured against the largest exact
+///   coordinate of all control points (and against 1 when every exact coordinate is 0, so that
+///   r_i = e_i then).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct AnswerError {
     /// max_i e_i.
@@ -101,8 +100,8 @@ fn first_max<'a>(xs: impl Iterator<Item = &'a Rational>) -> (Rational, usize) {
     best
 }
 
-/// The exact error of `answer` against the exact control points `exact` (definitions in the
-/// [module documentation](self)).
+/// The exact error of `answer` against the exact control points `exact` (definitions at
+/// [`AnswerError`]).
 ///
 /// ```
 /// use blossom::{exact_error, Rational};

@@ -269,7 +269,7 @@ fn chain<'s, T, S: CurveStep<T>>(
 /// levels per depth of the halving.
 ///
 /// # Panics
-/// When the length overflows `usize` ([`checked_curve_scratch_len`] returns `None` instead).
+/// When the length overflows `usize`, which only sizes whose nets could not be stored reach.
 pub fn curve_scratch_len(n: usize, dim: usize) -> usize {
     checked_curve_scratch_len(n, dim).expect(SCRATCH_OVERFLOWS)
 }
@@ -399,7 +399,7 @@ fn small_node<T: Ring, S: CurveStep<T>, W: Width, const R: usize>(
 /// the pass along u, and the halving's levels of either pass.
 ///
 /// # Panics
-/// When the length overflows `usize` ([`checked_tensor_scratch_len`] returns `None` instead).
+/// When the length overflows `usize`, which only sizes whose nets could not be stored reach.
 pub fn tensor_scratch_len(n: usize, m: usize, dim: usize) -> usize {
     checked_tensor_scratch_len(n, m, dim).expect(SCRATCH_OVERFLOWS)
 }
@@ -444,8 +444,7 @@ pub fn tensor_net<T: Ring, S: CurveStep<T>>(
 /// of the degrees n - 1, ..., 0, the most a path of the recursion can hold at once.
 ///
 /// # Panics
-/// When the length overflows `usize` ([`checked_triangle_scratch_len`] returns `None`
-/// instead).
+/// When the length overflows `usize`, which only sizes whose nets could not be stored reach.
 pub fn triangle_scratch_len(n: usize, dim: usize) -> usize {
     checked_triangle_scratch_len(n, dim).expect(SCRATCH_OVERFLOWS)
 }

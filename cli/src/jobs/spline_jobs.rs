@@ -41,7 +41,7 @@
 //! `"1/3"` as the fraction), compute exactly, and round each number of the answer once to the
 //! nearest double. The numbers are also read as doubles first, so that the errors of `f64`
 //! input (a value out of range, say) are the same as for every other job, and a number whose
-//! double is zero (`"1e-999999"`) is zero here too ([`exact_spelling`]).
+//! double is zero (`"1e-999999"`) is zero here too (`exact_spelling`).
 
 use super::answer::{point_json, Answer};
 use super::args::MethodChoice;

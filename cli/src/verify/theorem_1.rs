@@ -99,9 +99,9 @@ pub fn polynomial_identity(max_n: usize, d: usize) -> bool {
 }
 
 /// (18) at x_k = (t_k, 1) for the homogenisation Q(t, s) = s^n b(t / s) of an *arbitrary*
-/// parametrisation b of degree n (every value b(x) an independent symbol b[x]), against (19)
+/// parametrisation b of degree n (every value b(x) an independent symbol b\[x\]), against (19)
 /// with the same symbols: identical combinations of the same samples, for n = 1..=`max_n`.
-/// At a sum of N arguments s = N is a non-zero constant, so Q there is N^n b[t / N].
+/// At a sum of N arguments s = N is a non-zero constant, so Q there is N^n b\[t / N\].
 pub fn becomes_19(max_n: usize) -> bool {
     (1..=max_n).all(|n| {
         let ts: Vec<Poly> = (1..=n).map(|k| Poly::var(&format!("t{k}"))).collect();

@@ -62,7 +62,7 @@ fn power(x: &str, e: usize) -> String {
 }
 
 /// The generated function for a power-basis curve of degree `n`. (Bézier curves have their
-/// own evaluation order, [`halving`](super::halving).)
+/// own evaluation order, [`casteljau`](super::casteljau).)
 pub fn expand(spec: &Spec, n: usize) -> Option<TokenStream> {
     let table = (0..=n)
         .map(|v| {
