@@ -68,16 +68,8 @@ pub fn error_figure() -> Result<Figure, Error> {
     });
     let axis = vec![[0.5, 0.0, 0.0], [1.0, 0.0, 0.0]];
     let layers = vec![
-        Layer::Lines {
-            lines: vec![axis],
-            colour: REFERENCE,
-            width: 2,
-        },
-        Layer::Lines {
-            lines: vec![error],
-            colour: CURVE,
-            width: 2,
-        },
+        Layer::lines(vec![axis], REFERENCE, 2),
+        Layer::lines(vec![error], CURVE, 2),
     ];
     Ok(Figure {
         file: "ln_cubic_error.svg",

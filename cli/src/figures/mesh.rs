@@ -155,25 +155,9 @@ pub fn curve_against_reference(
 ) -> Vec<Layer> {
     use super::palette::{CURVE, DOTS, NET, REFERENCE};
     vec![
-        Layer::Lines {
-            lines: vec![reference],
-            colour: REFERENCE,
-            width: 6,
-        },
-        Layer::Lines {
-            lines: vec![curve],
-            colour: CURVE,
-            width: 2,
-        },
-        Layer::Lines {
-            lines: vec![polygon.clone()],
-            colour: NET,
-            width: 1,
-        },
-        Layer::Dots {
-            points: polygon,
-            colour: DOTS,
-            radius: 5,
-        },
+        Layer::lines(vec![reference], REFERENCE, 6),
+        Layer::lines(vec![curve], CURVE, 2),
+        Layer::lines(vec![polygon.clone()], NET, 1),
+        Layer::dots(polygon, DOTS, 5),
     ]
 }

@@ -14,7 +14,6 @@
 //! should. Every dot colour ([`palette::DOT_COLOURS`]) is used for dots only.
 
 pub mod circle;
-pub mod exact;
 pub mod logarithm;
 pub mod mesh;
 pub mod palette;

@@ -14,16 +14,17 @@
 //! net, (b) S_1 and S_3 with the net of S_3, (c) S_4 with its net, (d) S_3 and S_4 with the net
 //! of S_4.
 
-use super::exact::{corners, four, point};
 use super::mesh::{
     tensor_f64, tensor_iso_lines, tensor_net_lines, tensor_points, triangle_f64,
     triangle_iso_lines, triangle_net_lines, triangle_points,
 };
 use super::palette::{DOTS, DOTS_2, MESH, MESH_2, NET, NET_2};
 use super::scene::{Figure, Layer, Rgb, View};
-use crate::verify::paper_data::{TABLE_1_COEFFICIENTS, TABLE_1_RECTANGLES, TABLE_2_TRIANGLES};
+use crate::verify::paper_data::{TABLE_1_RECTANGLES, TABLE_2_TRIANGLES};
+use crate::verify::seeds_002_004::num;
+use crate::verify::subdivision::example_1_surface;
 use blossom::{restrict_tensor, restrict_triangle, Error, Method};
-use blossom::{PowerSurface, Rational, TensorPatch, TriangularPatch};
+use blossom::{Rational, TensorPatch, TriangularPatch};
 
 /// The method the pictures restrict with (the library's default).
 pub const METHOD: Method = Method::Bulk;
@@ -33,32 +34,16 @@ const PITCH: f64 = 0.4;
 /// The radius of a control point's dot.
 const DOT_RADIUS: u32 = 4;
 
-/// The surface S of Example 1 from Table 1's coefficients `c_ij` (labels `c_ij`, i <= 3,
-/// j <= 2).
-pub fn example_1_surface() -> Result<PowerSurface<Rational>, Error> {
-    let mut grid = vec![vec![vec![]; 3]; 4];
-    for (label, coordinates) in TABLE_1_COEFFICIENTS {
-        let digits: Vec<usize> = label
-            .chars()
-            .filter_map(|c| c.to_digit(10))
-            .map(|d| d as usize)
-            .collect();
-        let cell = match digits[..] {
-            [i, j] => grid.get_mut(i).and_then(|row| row.get_mut(j)),
-            _ => None,
-        };
-        let cell = cell.ok_or_else(|| Error::new("figures", format!("label {label}")))?;
-        *cell = point(&format!("({})", coordinates.join(",")))?;
-    }
-    PowerSurface::new(grid)
-}
-
 /// S_1 (`which = 0`) or S_2 (`which = 1`): S on the rectangle of Table 1.
 pub fn tensor_restriction(which: usize) -> Result<TensorPatch<Rational>, Error> {
     let rect = TABLE_1_RECTANGLES
         .get(which)
         .ok_or_else(|| Error::new("figures", "Table 1 has two rectangles"))?;
-    Ok(restrict_tensor(&example_1_surface()?, &four(rect)?, METHOD))
+    Ok(restrict_tensor(
+        &example_1_surface(),
+        &rect.map(num),
+        METHOD,
+    ))
 }
 
 /// S_3 (`which = 0`) or S_4 (`which = 1`): S on the triangle of Table 2, at total degree 5.
@@ -67,8 +52,8 @@ pub fn triangle_restriction(which: usize) -> Result<TriangularPatch<Rational>, E
         .get(which)
         .ok_or_else(|| Error::new("figures", "Table 2 has two triangles"))?;
     Ok(restrict_triangle(
-        &example_1_surface()?,
-        &corners(tri)?,
+        &example_1_surface(),
+        &tri.map(|corner| corner.map(num)),
         METHOD,
     ))
 }
@@ -82,11 +67,11 @@ struct Drawn {
 fn tensor_drawn(patch: &TensorPatch<Rational>, colours: Colours) -> Result<Drawn, Error> {
     let net = tensor_points(patch);
     Ok(Drawn {
-        mesh: lines(tensor_iso_lines(&tensor_f64(patch)?), colours.mesh, 1),
+        mesh: Layer::lines(tensor_iso_lines(&tensor_f64(patch)?), colours.mesh, 1),
         net: colours.net.map(|(line, dot)| {
             (
-                lines(tensor_net_lines(&net), line, 1),
-                dots(net.concat(), dot),
+                Layer::lines(tensor_net_lines(&net), line, 1),
+                Layer::dots(net.concat(), dot, DOT_RADIUS),
             )
         }),
     })
@@ -94,11 +79,11 @@ fn tensor_drawn(patch: &TensorPatch<Rational>, colours: Colours) -> Result<Drawn
 
 fn triangle_drawn(patch: &TriangularPatch<Rational>, colours: Colours) -> Result<Drawn, Error> {
     Ok(Drawn {
-        mesh: lines(triangle_iso_lines(&triangle_f64(patch)?), colours.mesh, 1),
+        mesh: Layer::lines(triangle_iso_lines(&triangle_f64(patch)?), colours.mesh, 1),
         net: colours.net.map(|(line, dot)| {
             (
-                lines(triangle_net_lines(patch), line, 1),
-                dots(triangle_points(patch), dot),
+                Layer::lines(triangle_net_lines(patch), line, 1),
+                Layer::dots(triangle_points(patch), dot, DOT_RADIUS),
             )
         }),
     })
@@ -123,22 +108,6 @@ const SECOND: Colours = Colours {
     mesh: MESH_2,
     net: Some((NET_2, DOTS_2)),
 };
-
-fn lines(lines: Vec<Vec<[f64; 3]>>, colour: Rgb, width: u32) -> Layer {
-    Layer::Lines {
-        lines,
-        colour,
-        width,
-    }
-}
-
-fn dots(points: Vec<[f64; 3]>, colour: Rgb) -> Layer {
-    Layer::Dots {
-        points,
-        colour,
-        radius: DOT_RADIUS,
-    }
-}
 
 /// The layers of several patches: all meshes, then all net lines, then all dots, so that no
 /// line covers a control point.

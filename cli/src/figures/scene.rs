@@ -42,6 +42,26 @@ pub enum Layer {
     },
 }
 
+impl Layer {
+    /// [`Layer::Lines`]: `lines` in `colour`, `width` pixels wide.
+    pub fn lines(lines: Vec<Vec<Point3>>, colour: Rgb, width: u32) -> Layer {
+        Layer::Lines {
+            lines,
+            colour,
+            width,
+        }
+    }
+
+    /// [`Layer::Dots`]: discs of `radius` pixels at `points`, filled with `colour`.
+    pub fn dots(points: Vec<Point3>, colour: Rgb, radius: u32) -> Layer {
+        Layer::Dots {
+            points,
+            colour,
+            radius,
+        }
+    }
+}
+
 /// How the picture maps its points to the page.
 #[derive(Clone, Debug, PartialEq)]
 pub enum View {

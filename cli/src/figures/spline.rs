@@ -7,11 +7,10 @@
 //! F(t) = f_s(t, t, t), the blossom of the piece on the span of t); the images F(t_j) of the
 //! distinct knots, where the polynomial pieces join, are marked on it.
 
-use super::exact::{list, point};
 use super::mesh::{point3, point3_f64, sample, to_f64};
 use super::palette::{CURVE, DOTS, DOTS_3, NET, TEXT};
 use super::scene::{Figure, Layer, Point3, View};
-use crate::verify::seeds_002_004::splines::{EXAMPLE_1_POINTS, THEOREM_2_2_KNOTS};
+use crate::verify::seeds_002_004::splines::{knots, points, EXAMPLE_1_POINTS, THEOREM_2_2_KNOTS};
 use blossom::{rational_to_f64, BSpline, Error, Rational};
 
 /// The samples of the drawn curve.
@@ -22,12 +21,7 @@ const BELOW: (i32, i32) = (9, 4);
 
 /// The exact B-spline of Ejemplo 1 on the corrected knot vector.
 pub fn example_1() -> Result<BSpline<Rational>, Error> {
-    let knots = list(THEOREM_2_2_KNOTS)?;
-    let points = EXAMPLE_1_POINTS
-        .iter()
-        .map(|p| point(p))
-        .collect::<Result<Vec<_>, _>>()?;
-    BSpline::new(3, knots, points)
+    BSpline::new(3, knots(THEOREM_2_2_KNOTS), points(&EXAMPLE_1_POINTS))
 }
 
 /// The distinct knots of the domain with F(t_j) by the de Boor algorithm, exactly.
@@ -56,26 +50,10 @@ pub fn figure() -> Result<Figure, Error> {
     let knots = knot_images(&f)?;
     let knot_points: Vec<Point3> = knots.iter().map(|(_, p)| point3(p)).collect();
     let layers = vec![
-        Layer::Lines {
-            lines: vec![polygon.clone()],
-            colour: NET,
-            width: 1,
-        },
-        Layer::Lines {
-            lines: vec![curve],
-            colour: CURVE,
-            width: 2,
-        },
-        Layer::Dots {
-            points: polygon.clone(),
-            colour: DOTS,
-            radius: 5,
-        },
-        Layer::Dots {
-            points: knot_points.clone(),
-            colour: DOTS_3,
-            radius: 4,
-        },
+        Layer::lines(vec![polygon.clone()], NET, 1),
+        Layer::lines(vec![curve], CURVE, 2),
+        Layer::dots(polygon.clone(), DOTS, 5),
+        Layer::dots(knot_points.clone(), DOTS_3, 4),
         Layer::Labels {
             items: polygon
                 .iter()

@@ -6,16 +6,12 @@
 use super::formula_versions::{judge, negative_j_alpha_bound, versions};
 use super::paper_data::*;
 use super::report::{Entry, Section, Status};
+use super::seeds_002_004::num;
 use blossom::{restrict_tensor, restrict_triangle, Method};
 use blossom::{PowerSurface, Rational, TriangularPatch};
-use std::str::FromStr;
-
-fn rational(text: &str) -> Rational {
-    Rational::from_str(text).expect("transcribed data are well-formed fractions")
-}
 
 fn point(texts: &[&str; 3]) -> Vec<Rational> {
-    texts.iter().map(|t| rational(t)).collect()
+    texts.iter().map(|t| num(t)).collect()
 }
 
 /// `(x, y, z)` with every coordinate in lowest terms.
@@ -50,10 +46,10 @@ pub fn example_1_surface() -> PowerSurface<Rational> {
 
 fn coefficients_section() -> Section {
     let surface = example_1_surface();
-    let mut from_text = vec![vec![vec![rational("0"); 3]; 3]; 4];
+    let mut from_text = vec![vec![vec![num("0"); 3]; 3]; 4];
     for (k, (_, terms)) in EXAMPLE_1_FUNCTIONS.iter().enumerate() {
         for (coef, i, j) in terms.iter() {
-            from_text[*i][*j][k] += rational(coef);
+            from_text[*i][*j][k] += num(coef);
         }
     }
     let entries = TABLE_1_COEFFICIENTS
@@ -89,7 +85,7 @@ fn agreement_finding(all_equal: bool) -> String {
 /// A Table 1 net computed on `rect` and compared entry by entry with `table`.
 pub fn tensor_section(title: &str, table: &[Labelled; 12], rect: &[&str; 4]) -> Section {
     let surface = example_1_surface();
-    let rect: [Rational; 4] = rect.map(rational);
+    let rect: [Rational; 4] = rect.map(num);
     let net = restrict_tensor(&surface, &rect, Method::ClosedForm);
     let all_equal = Method::ALL
         .iter()
@@ -205,7 +201,7 @@ fn matches_under(
 /// readings, and the entries compared under the best one.
 pub fn triangle_section(title: &str, table: &[Labelled; 21], tri: &[[&str; 2]; 3]) -> Section {
     let surface = example_1_surface();
-    let tri: [[Rational; 2]; 3] = tri.map(|p| p.map(rational));
+    let tri: [[Rational; 2]; 3] = tri.map(|p| p.map(num));
     let patch = restrict_triangle(&surface, &tri, Method::ClosedForm);
     let all_equal = Method::ALL
         .iter()

@@ -35,11 +35,13 @@ const THEOREM_2_2_POINTS: [(usize, usize, &str); 8] = [
     (8, 8, "6, 6, 6"),
 ];
 
-fn knots(text: &str) -> Vec<Rational> {
+/// Printed knots separated by commas.
+pub fn knots(text: &str) -> Vec<Rational> {
     text.split(',').map(num).collect()
 }
 
-fn points(texts: &[&str]) -> Vec<Vec<Rational>> {
+/// Printed points.
+pub fn points(texts: &[&str]) -> Vec<Vec<Rational>> {
     texts.iter().map(|t| point(t)).collect()
 }
 
