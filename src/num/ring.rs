@@ -144,21 +144,12 @@ float_ring!(
     /// Single precision: every operation rounded once, with unit roundoff u = 2^-24 ≈ 6.0e-8
     /// (`scale` rounds the constant to a double, then to the nearest `f32`).
     ///
-    /// Measured error of restriction in `f32` against the exact answer on the same `f32`
-    /// inputs, max |got - exact| / max |exact| over the control points, worst of random 3-D
-    /// curves with coordinates in [-1, 1] on sub-intervals of [0, 1] and on [-1, 2]
-    /// (`tests/applications/f32_accuracy.rs`, which asserts 150 n u at degree n; the table is
-    /// in `docs/error_bounds.md`, section "f32"):
-    ///
-    /// | degree | power, `Bulk` | power, `Pyramid` | Bézier, engine |
-    /// |---|---|---|---|
-    /// | 3 | 1.8e-7 (3.0 u) | 3.8e-7 (6.4 u) | 2.9e-7 (4.8 u) |
-    /// | 8 | 4.7e-7 (7.9 u) | 1.1e-6 (18 u) | 5.6e-7 (9.4 u) |
-    /// | 16 | 4.9e-7 (8.2 u) | 1.3e-6 (21 u) | 6.1e-7 (10 u) |
-    ///
-    /// That is 6 to 7 correct digits of the answer. In units of its own roundoff it is about
-    /// what `f64` loses on the same inputs (0 to 13 units of 2^-53 in the same runs; `f64` is
-    /// sometimes exact outright on inputs of 24 bits).
+    /// Restriction in `f32` keeps 6 to 7 digits: on random 3-D curves of degree 3 to 16, on
+    /// sub-intervals of [0, 1] and on [-1, 2], the error max |got - exact| / max |exact| against
+    /// the exact answer on the same `f32` inputs stays within 150 n u at degree n (asserted by
+    /// `tests/applications/f32_accuracy.rs`; the measured table is in `docs/error_bounds.md`,
+    /// section "f32", printed by
+    /// `cargo test -p blossom --test applications f32_restriction -- --nocapture`).
     f32
 );
 
