@@ -20,6 +20,15 @@ pub type Rational = BigRational;
 /// not cloned needlessly. Implementations must satisfy the ring axioms exactly (`Rational`,
 /// `Poly`) or up to rounding (`f64`, `f32`).
 pub trait Ring: Clone + PartialEq + Debug {
+    /// Whether the compile-time unrolled evaluators pay for this type: `true` for the
+    /// hardware floats (`f64`, `f32`), whose steps the unrolled code keeps in registers;
+    /// `false` (the default) for every other ring, whose operations (allocation, big-integer
+    /// arithmetic) dwarf what unrolling saves. Code that dispatches to the unrolled
+    /// evaluators tests this constant first, so they are instantiated only for the types
+    /// that set it: the branch is decided when a generic function is instantiated, and the
+    /// unrolled functions are not even compiled for the others (the answer is the same bit
+    /// for bit either way: the unrolled code runs the engine's steps in the engine's order).
+    const UNROLLED: bool = false;
     /// The additive identity.
     fn zero() -> Self;
     /// The multiplicative identity.
@@ -86,6 +95,7 @@ macro_rules! float_ring {
     ($(#[$doc:meta])* $t:ty) => {
         $(#[$doc])*
         impl Ring for $t {
+            const UNROLLED: bool = true;
             #[inline]
             fn zero() -> Self {
                 0.0

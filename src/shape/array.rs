@@ -205,7 +205,7 @@ pub fn subsegment_into<T: Ring, const D: usize>(
         ));
     }
     check_out("out", points.len(), out.len())?;
-    if restrict_curve_unrolled(points, a, b, out) {
+    if T::UNROLLED && restrict_curve_unrolled(points, a, b, out) {
         return Ok(());
     }
     curve_net(

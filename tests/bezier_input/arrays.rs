@@ -5,7 +5,7 @@
 use crate::common::{curve_by_pyramid, q, tensor_by_pyramid, triangle_by_pyramid, Rng};
 use blossom::{
     Bezier, BezierCurve, BezierTensor, BezierTriangle, ErrorKind, Evaluate, Rational, Restrict,
-    TensorPatch, TriangularPatch,
+    Ring, TensorPatch, TriangularPatch,
 };
 
 fn point3(rng: &mut Rng) -> [Rational; 3] {
@@ -169,4 +169,36 @@ fn a_triangle_point_outside_the_simplex_is_not_another_point() {
 fn a_tensor_point_past_its_row_is_not_the_next_row() {
     let p = BezierTensor::<f64, 1>::new((1, 2), vec![[0.0]; 6]).unwrap();
     let _ = p.get(0, 3);
+}
+
+/// `Ring::UNROLLED`: in `f64` (and `f32`) `Bezier::subsegment` runs the unrolled evaluators of
+/// degrees 1..=24, the other rings the engine; the unrolled code takes the engine's steps in the
+/// engine's order, so in floating point it must agree with the runtime-dimension engine
+/// (`restrict_bezier_curve`, which never dispatches to it) to the last bit, inside [0, 1] and
+/// extrapolating. (The exact tests above run the engine since the rationals do not unroll.)
+#[test]
+fn unrolled_f64_path_equals_the_engine_bit_for_bit() {
+    fn check<const D: usize>(rng: &mut Rng, n: usize) {
+        let points: Vec<[f64; D]> = (0..=n)
+            .map(|_| std::array::from_fn(|_| 4.0 * rng.unit() - 2.0))
+            .collect();
+        let runtime = BezierCurve::new(points.iter().map(|p| p.to_vec()).collect()).unwrap();
+        for (a, b) in [(0.25, 0.75), (rng.unit(), rng.unit()), (-1.5, 2.25)] {
+            let unrolled = Bezier::new(points.clone()).unwrap().subsegment(a..b);
+            let engine = blossom::restrict_bezier_curve(&runtime, &a, &b);
+            for (u, e) in unrolled.points().iter().zip(engine.control_points()) {
+                let (u, e): (Vec<u64>, Vec<u64>) = (
+                    u.iter().map(|x| x.to_bits()).collect(),
+                    e.iter().map(|x| x.to_bits()).collect(),
+                );
+                assert_eq!(u, e, "degree {n}, D = {D}, [{a}, {b}]");
+            }
+        }
+    }
+    let mut rng = Rng(29);
+    assert!(f64::UNROLLED && f32::UNROLLED && !Rational::UNROLLED);
+    for n in 1..=24 {
+        check::<2>(&mut rng, n);
+        check::<3>(&mut rng, n);
+    }
 }
