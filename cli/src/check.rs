@@ -11,8 +11,8 @@
 //!
 //! A field of the document other than `job` and `answer`, or one that JOB's kind does not read
 //! ([`check_fields`]), is refused before anything else is read; the fields of ANSWER other than
-//! `control_points` (and an entry's `a`, `b`, `c`, `point`) are ignored, as the contract says:
-//! an answer is another program's output and may carry more.
+//! `control_points` (and those of a triangle's entries other than `a`, `b`, `c`, `point`) are
+//! ignored, as the contract says: an answer is another program's output and may carry more.
 
 use crate::jobs::args::{Arithmetic, CheckOptions, MethodChoice};
 use crate::jobs::job::{check_fields, expect_fields};

@@ -1,10 +1,11 @@
 //! The command-line front end of the `blossom` binary, per the contract in `cli.md`.
 //!
-//! * `blossom` and `blossom verify [--json]` print [`crate::verify::run_report`] and exit 0
-//!   when it is all reproduced or explained, 1 otherwise;
+//! * `blossom` and `blossom verify [--json] [--verbose]` print [`crate::verify::run_report`]
+//!   and exit 0 when it is all reproduced or explained, 1 otherwise;
 //! * `blossom restrict [--input FILE] [--arithmetic exact|f64] [--method METHOD]` reads one job
-//!   ([`job`]), computes it ([`answer`]) and prints the answer as **one line** of compact JSON
-//!   followed by a newline, exit 0.
+//!   ([`job`]; a field its kind does not read is refused, [`job::check_fields`]), computes it
+//!   ([`answer`]; by default with `bulk`, [`args::MethodChoice::default`]) and prints the answer
+//!   as **one line** of compact JSON followed by a newline, exit 0.
 //!
 //! Every failure is one line `error: FIELD: message` on standard error, where FIELD is the
 //! offending argument (`--method`) or the path of the offending JSON field (`coefficients[2]`,

@@ -679,14 +679,14 @@ fn unknown_fields_are_refused() {
     let job = json!({"kind": "bezier-curve", "control_point": [[0], [1]], "interval": [0, 1]});
     assert_eq!(
         bad_job(&job, "control_point"),
-        "error: control_point: unknown field \"control_point\" (did you mean \"control_points\"?)"
+        "control_point: unknown field \"control_point\" (did you mean \"control_points\"?)"
     );
     // A field no kind reads: the accepted ones are listed.
     let job = json!({"kind": "curve", "coefficients": [[1], [1]], "interval": [2, 3],
                      "comment": "x"});
     assert_eq!(
         bad_job(&job, "comment"),
-        "error: comment: unknown field \"comment\" (expected kind, coefficients or interval)"
+        "comment: unknown field \"comment\" (expected kind, coefficients or interval)"
     );
     // A field of another kind is unknown to this one.
     let job = json!({"kind": "curve", "coefficients": [[1]], "interval": [0, 1], "rectangle": [0, 1, 0, 1]});
@@ -807,6 +807,7 @@ fn the_default_method_is_bulk_for_every_restriction() {
     };
     let default = relative_error(&[]);
     let closed_form = relative_error(&["--method", "closed-form"]);
+    println!("degree 24 on [0.4, 0.401] in f64: relative error {default:.1e} (default, bulk), {closed_form:.1e} (closed-form)");
     assert!(default < 1e-14, "the default lost digits: {default:e}");
     assert!(
         closed_form > 1e3 * default,
