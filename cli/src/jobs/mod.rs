@@ -1,10 +1,11 @@
 //! The command-line front end of the `blossom` binary, per the contract in `cli.md`.
 //!
-//! * `blossom` and `blossom verify [--json]` print [`crate::verify::run_report`] and exit 0
-//!   when it is all reproduced or explained, 1 otherwise;
+//! * `blossom` and `blossom verify [--json] [--verbose]` print [`crate::verify::run_report`]
+//!   and exit 0 when it is all reproduced or explained, 1 otherwise;
 //! * `blossom restrict [--input FILE] [--arithmetic exact|f64] [--method METHOD]` reads one job
-//!   ([`job`]), computes it ([`answer`]) and prints the answer as **one line** of compact JSON
-//!   followed by a newline, exit 0.
+//!   ([`job`]; a field its kind does not read is refused, [`job::check_fields`]), computes it
+//!   ([`answer`]; by default with `bulk`, [`args::MethodChoice::default`]) and prints the answer
+//!   as **one line** of compact JSON followed by a newline, exit 0.
 //!
 //! Every failure is one line `error: FIELD: message` on standard error, where FIELD is the
 //! offending argument (`--method`) or the path of the offending JSON field (`coefficients[2]`,
@@ -20,6 +21,7 @@ pub mod answer;
 pub mod args;
 pub mod budget;
 pub mod job;
+pub mod names;
 pub mod patch_jobs;
 pub mod specialised;
 pub mod spline_jobs;
@@ -138,6 +140,7 @@ fn restrict(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<String, E
     }
     let bytes = read_input(options.input.as_deref(), &options.limits, stdin)?;
     let document = parse_json(&bytes)?;
+    job::check_fields(&document)?;
     budget::check(
         &document,
         options.method,
@@ -229,7 +232,8 @@ pub(crate) fn parse_json(bytes: &[u8]) -> Result<Value, Error> {
     })
 }
 
-/// Reads, computes and writes the job in `document` in the arithmetic `T`.
+/// Reads, computes and writes the job in `document` in the arithmetic `T`. The callers refuse
+/// unknown fields first ([`job::check_fields`]), before the budget.
 pub(crate) fn solve<T: JsonNumber + blossom::Field>(
     document: &Value,
     method: MethodChoice,

@@ -16,7 +16,7 @@
 //!
 //! # Methods
 //!
-//! The two Bézier restrictions follow `bezier-curve`: `bulk` runs the restriction engine on the
+//! The two Bézier restrictions follow `bezier-curve`: `bulk` (the default) runs the restriction engine on the
 //! control points themselves (never leaving the Bernstein basis), `pyramid` evaluates the
 //! blossom of the given net by de Casteljau's pyramid for every control point, `polarisation`
 //! samples the patch and applies the inverse formula of seed 004 (two passes of (22), or

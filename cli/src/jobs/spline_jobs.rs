@@ -25,8 +25,8 @@
 //! restriction: `pyramid` runs de Casteljau's pyramid on the blossom of the given control
 //! points (eq. (2) of seed 004), `polarisation` samples the Bézier curve and applies the
 //! inverse formula (22) of seed 004, `specialised` runs the carried Bézier-input evaluator that
-//! `blossom::restriction!(shape = bezier_curve)` generated for the degree (1..=16), `bulk` runs
-//! the restriction engine on the control points (never leaving the Bernstein basis, as
+//! `blossom::restriction!(shape = bezier_curve)` generated for the degree (1..=16), `bulk` (the
+//! default) runs the restriction engine on the control points (never leaving the Bernstein basis, as
 //! accurate in f64 as de Casteljau), and `taylor-shift`, `closed-form` and `definition` write
 //! the curve in the power basis (exactly, the inverse of the Bernstein basis change) and
 //! restrict it like a `curve` job. The other jobs
