@@ -4,7 +4,7 @@
 //! The input is `{"job": JOB, "answer": ANSWER}`. The reference is the exact answer for the
 //! doubles the other program had: every number of JOB is read as its nearest double (the
 //! reading of `--arithmetic f64`, [`f64_from_json`]) and that double is then taken exactly
-//! ([`exact_doubles`]); the job so rewritten goes through the budget check and the exact solver
+//! ([`exact_doubles`]); the job so rewritten goes through the work budget (`budget::budgeted`) and the exact solver
 //! of `blossom restrict` (`jobs::solve` in [`Rational`], method `closed-form`). The
 //! answer's `control_points` are walked against the exact ones (`walk`) and the points
 //! compared by [`blossom::exact_error`], whose definitions the output follows.
@@ -50,8 +50,10 @@ pub fn check_command(document: &Value, options: &CheckOptions) -> Result<String,
         .ok_or_else(|| Error::new("answer.control_points", "missing field"))?;
 
     let job = exact_doubles(job, "job")?;
-    budget::check(&job, METHOD, Arithmetic::Exact, &options.limits).map_err(in_job)?;
-    let exact = solve::<Rational>(&job, METHOD).map_err(in_job)?;
+    let exact = budget::budgeted(&job, METHOD, Arithmetic::Exact, &options.limits, || {
+        solve::<Rational>(&job, METHOD)
+    })
+    .map_err(in_job)?;
     let Some(exact_points) = exact.get("control_points") else {
         return Err(Error::new(
             "job.kind",
