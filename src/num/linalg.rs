@@ -4,7 +4,7 @@
 //! (products, Kronecker products, the constrained normal equations, Gram quadratic forms).
 
 use crate::error::{Error, ErrorKind, Result};
-use crate::num::meter::charge_rational;
+use crate::num::meter::{charge_rational, charge_rational_sum};
 use crate::shape::point::{self, Point};
 use crate::{Rational, Ring};
 
@@ -127,8 +127,8 @@ pub fn inverse(matrix: &[Vec<Rational>], field: &str) -> Result<Vec<Vec<Rational
                 // Two products and two differences of about the same length, charged as such.
                 charge_rational(&a[col][c], &k);
                 charge_rational(&inv[col][c], &k);
-                charge_rational(&a[r][c], &a[col][c]);
-                charge_rational(&inv[r][c], &inv[col][c]);
+                charge_rational_sum(&a[r][c], &a[col][c]);
+                charge_rational_sum(&inv[r][c], &inv[col][c]);
                 let (ac, ic) = (&a[col][c] * &k, &inv[col][c] * &k);
                 a[r][c] -= ac;
                 inv[r][c] -= ic;

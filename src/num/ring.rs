@@ -11,7 +11,7 @@ use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use std::fmt::Debug;
 
-use super::meter::charge_rational;
+use super::meter::{charge_rational, charge_rational_sum};
 
 /// Zero, the second operand of the charge of a one-operand operation.
 const ZERO: Rational = Rational::ZERO;
@@ -168,11 +168,11 @@ impl Ring for Rational {
         One::one()
     }
     fn add(&self, rhs: &Self) -> Self {
-        charge_rational(self, rhs);
+        charge_rational_sum(self, rhs);
         self + rhs
     }
     fn sub(&self, rhs: &Self) -> Self {
-        charge_rational(self, rhs);
+        charge_rational_sum(self, rhs);
         self - rhs
     }
     fn mul(&self, rhs: &Self) -> Self {
@@ -180,7 +180,7 @@ impl Ring for Rational {
         self * rhs
     }
     fn neg(&self) -> Self {
-        charge_rational(self, &ZERO);
+        charge_rational_sum(self, &ZERO);
         -self
     }
     fn scale(&self, k: &Rational) -> Self {
@@ -191,11 +191,11 @@ impl Ring for Rational {
         Zero::is_zero(self)
     }
     fn add_assign(&mut self, rhs: &Self) {
-        charge_rational(self, rhs);
+        charge_rational_sum(self, rhs);
         *self += rhs;
     }
     fn from_rational(k: &Rational) -> Self {
-        charge_rational(k, &ZERO);
+        charge_rational_sum(k, &ZERO);
         k.clone()
     }
 }
