@@ -41,8 +41,8 @@
 //!
 //! # Features
 //!
-//! None is on by default; each adds an optional dependency (without its default features
-//! where it has any) and changes nothing else.
+//! None is on by default; each but `meter` adds an optional dependency (without its default
+//! features where it has any), and none changes anything else.
 //!
 //! * `rayon`: `Batch::par_restrict_into`, the blocks of a batch spread over threads.
 //! * `mint` (mint 0.5): mint's `Point2`, `Point3`, `Vector2`, `Vector3` convert to and from the
@@ -71,6 +71,12 @@
 //!   num-bigint for that. The rational Bézier patches that only restriction produces
 //!   ([`RationalTensorPatch`], [`RationalTriangularPatch`], [`RationalBezierCell`]) are written
 //!   but not read: they have no public constructor to check a document against.
+//!
+//! * `meter` (no dependency): `blossom::meter`, a thread-local budget of work units that the
+//!   arithmetic of [`Rational`] and [`BoundedF64`] charges as it computes, and
+//!   `meter::metered`, which runs a computation under a limit and stops it when the charges
+//!   pass it (the `blossom` binary's work budget). Without the feature the charges compile to
+//!   nothing; with it and no meter started, a charge is one read of a thread-local cell.
 //!
 //! `cargo test -p blossom --features mint,kurbo,serde` runs the tests of these features alone
 //! (`tests/applications/interop.rs`); `cargo test --workspace` runs them too, because the
@@ -109,6 +115,10 @@ pub use num::limits::MAX_ENTRIES;
 pub use num::linalg::{solve_rational_system, Field};
 pub use num::poly::Poly;
 pub use num::ring::{rational_to_f64, Rational, Ring};
+
+// Work metering (feature `meter`): one module, its items under one path each.
+#[cfg(feature = "meter")]
+pub use num::meter;
 
 // Errors.
 pub use error::{Error, ErrorKind};

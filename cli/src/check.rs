@@ -4,8 +4,9 @@
 //! The input is `{"job": JOB, "answer": ANSWER}`. The reference is the exact answer for the
 //! doubles the other program had: every number of JOB is read as its nearest double (the
 //! reading of `--arithmetic f64`, [`f64_from_json`]) and that double is then taken exactly
-//! ([`exact_doubles`]); the job so rewritten goes through the budget check and the exact solver
-//! of `blossom restrict` (`jobs::solve` in [`Rational`], its default method `bulk`). The
+//! ([`exact_doubles`]); the job so rewritten goes through the work budget (`budget::budgeted`)
+//! and the exact solver of `blossom restrict` (`jobs::solve` in [`Rational`], its default
+//! method `bulk`). The
 //! answer's `control_points` are walked against the exact ones (`walk`) and the points
 //! compared by [`blossom::exact_error`], whose definitions the output follows.
 //!
@@ -58,8 +59,10 @@ pub fn check_command(document: &Value, options: &CheckOptions) -> Result<String,
     // The exact reference by the default method of `blossom restrict`, the engine (every method
     // gives the identical exact answer).
     let method = MethodChoice::default();
-    budget::check(&job, method, Arithmetic::Exact, &options.limits).map_err(in_job)?;
-    let exact = solve::<Rational>(&job, method).map_err(in_job)?;
+    let exact = budget::budgeted(&job, method, Arithmetic::Exact, &options.limits, || {
+        solve::<Rational>(&job, method)
+    })
+    .map_err(in_job)?;
     let Some(exact_points) = exact.get("control_points") else {
         return Err(Error::new(
             "job.kind",

@@ -14,6 +14,7 @@ pub fn binomial(n: i64, k: i64) -> BigInt {
         return BigInt::zero();
     }
     let k = k.min(n - k);
+    crate::num::meter::charge_binomial(n, k);
     let mut acc = BigInt::one();
     for i in 0..k {
         // acc = C(n, i) * (n - i) / (i + 1), exact at every step.

@@ -40,6 +40,7 @@
 //! comparison of inputs (a knot span search, a parameter against an interval) decides exactly.
 
 use crate::num::linalg::Field;
+use crate::num::meter::{charge_bounded, charge_bounded_constant};
 use crate::num::ring::{rational_to_f64, Rational, Ring};
 use num_traits::{FromPrimitive, Signed, ToPrimitive, Zero};
 use std::cmp::Ordering;
@@ -240,6 +241,8 @@ impl fmt::Display for BoundedF64 {
     }
 }
 
+/// Every operation but `zero`, `one` and `is_zero` charges the work meter first
+/// ([`meter`](super::meter), a no-op unless a meter runs).
 impl Ring for BoundedF64 {
     fn zero() -> Self {
         Self::exact(0.0)
@@ -248,6 +251,7 @@ impl Ring for BoundedF64 {
         Self::exact(1.0)
     }
     fn add(&self, rhs: &Self) -> Self {
+        charge_bounded();
         let value = self.value + rhs.value;
         BoundedF64 {
             value,
@@ -255,6 +259,7 @@ impl Ring for BoundedF64 {
         }
     }
     fn sub(&self, rhs: &Self) -> Self {
+        charge_bounded();
         let value = self.value - rhs.value;
         BoundedF64 {
             value,
@@ -262,6 +267,7 @@ impl Ring for BoundedF64 {
         }
     }
     fn mul(&self, rhs: &Self) -> Self {
+        charge_bounded();
         let value = self.value * rhs.value;
         let e = self.value.abs() * rhs.bound
             + rhs.value.abs() * self.bound
@@ -273,6 +279,7 @@ impl Ring for BoundedF64 {
         }
     }
     fn neg(&self) -> Self {
+        charge_bounded();
         BoundedF64 {
             value: -self.value,
             bound: self.bound,
@@ -281,12 +288,14 @@ impl Ring for BoundedF64 {
     /// `self * k` as `f64` computes it: times the nearest double to k, whose exact conversion
     /// error joins the bound.
     fn scale(&self, k: &Rational) -> Self {
+        charge_bounded_constant(k);
         let c = rational_to_f64(k);
         self.times_constant(c, rational_error(k, c))
     }
     /// `self * (num as f64 / den as f64)` as `f64` computes it; the constant's error against
     /// the exact num/den joins the bound.
     fn scale_frac(&self, num: i128, den: i128) -> Self {
+        charge_bounded();
         let c = num as f64 / den as f64;
         self.times_constant(c, quotient_error(num, den, c))
     }
@@ -294,10 +303,12 @@ impl Ring for BoundedF64 {
         self.value == 0.0
     }
     fn from_rational(k: &Rational) -> Self {
+        charge_bounded_constant(k);
         // `f64` computes 1.0 * (nearest double to k), which is that double.
         Self::rounded(k)
     }
     fn from_int(k: i64) -> Self {
+        charge_bounded();
         let value = k as f64;
         BoundedF64 {
             value,
@@ -314,6 +325,7 @@ impl Field for BoundedF64 {
     }
     /// `self / rhs` as `f64` computes it; no finite bound when `rhs`'s bound reaches its value.
     fn divide(&self, rhs: &Self) -> Self {
+        charge_bounded();
         let value = self.value / rhs.value;
         let divisor = rhs.value.abs();
         // A lower bound of |ŷ| - e_y (the subtraction may round up by a factor 1 + u).

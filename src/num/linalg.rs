@@ -4,6 +4,7 @@
 //! (products, Kronecker products, the constrained normal equations, Gram quadratic forms).
 
 use crate::error::{Error, ErrorKind, Result};
+use crate::num::meter::{charge_rational, charge_rational_sum};
 use crate::shape::point::{self, Point};
 use crate::{Rational, Ring};
 
@@ -29,7 +30,9 @@ pub trait Field: Ring + PartialOrd + std::fmt::Display {
 
 impl Field for Rational {
     const EXACT: bool = true;
+    /// Charges the work meter first, as the [`Ring`] operations do.
     fn divide(&self, rhs: &Self) -> Self {
+        charge_rational(self, rhs);
         self / rhs
     }
     fn is_finite(&self) -> bool {
@@ -113,7 +116,7 @@ pub fn inverse(matrix: &[Vec<Rational>], field: &str) -> Result<Vec<Vec<Rational
         inv.swap(col, pivot);
         let p = a[col][col].clone();
         for x in a[col].iter_mut().chain(inv[col].iter_mut()) {
-            *x = &*x / &p;
+            *x = Field::divide(&*x, &p);
         }
         for r in 0..n {
             if r == col || Ring::is_zero(&a[r][col]) {
@@ -121,6 +124,11 @@ pub fn inverse(matrix: &[Vec<Rational>], field: &str) -> Result<Vec<Vec<Rational
             }
             let k = a[r][col].clone();
             for c in 0..n {
+                // Two products and two differences of about the same length, charged as such.
+                charge_rational(&a[col][c], &k);
+                charge_rational(&inv[col][c], &k);
+                charge_rational_sum(&a[r][c], &a[col][c]);
+                charge_rational_sum(&inv[r][c], &inv[col][c]);
                 let (ac, ic) = (&a[col][c] * &k, &inv[col][c] * &k);
                 a[r][c] -= ac;
                 inv[r][c] -= ic;
@@ -183,7 +191,15 @@ pub(crate) fn product(a: &[Vec<Rational>], b: &[Vec<Rational>]) -> Vec<Vec<Ratio
     a.iter()
         .map(|row| {
             (0..cols)
-                .map(|c| row.iter().zip(b).map(|(x, r)| x * &r[c]).sum())
+                .map(|c| {
+                    row.iter()
+                        .zip(b)
+                        .map(|(x, r)| {
+                            charge_rational(x, &r[c]);
+                            x * &r[c]
+                        })
+                        .sum()
+                })
                 .collect()
         })
         .collect()
@@ -198,7 +214,12 @@ pub(crate) fn kronecker(a: &[Vec<Rational>], b: &[Vec<Rational>]) -> Vec<Vec<Rat
         for rb in b {
             out.push(
                 ra.iter()
-                    .flat_map(|x| rb.iter().map(move |y| x * y))
+                    .flat_map(|x| {
+                        rb.iter().map(move |y| {
+                            charge_rational(x, y);
+                            x * y
+                        })
+                    })
                     .collect(),
             );
         }

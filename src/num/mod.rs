@@ -6,5 +6,7 @@ pub(crate) mod binomial;
 pub(crate) mod bounded;
 pub(crate) mod limits;
 pub(crate) mod linalg;
+// Public through `blossom::meter` with the feature `meter`.
+pub mod meter;
 pub(crate) mod poly;
 pub(crate) mod ring;

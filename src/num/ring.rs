@@ -11,6 +11,11 @@ use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use std::fmt::Debug;
 
+use super::meter::{charge_rational, charge_rational_sum};
+
+/// Zero, the second operand of the charge of a one-operand operation.
+const ZERO: Rational = Rational::ZERO;
+
 /// Exact rational numbers with unbounded numerator and denominator.
 pub type Rational = BigRational;
 
@@ -163,6 +168,8 @@ float_ring!(
     f32
 );
 
+/// Every operation but `zero`, `one` and `is_zero` charges the work meter first
+/// ([`meter`](super::meter), a no-op unless a meter runs).
 impl Ring for Rational {
     fn zero() -> Self {
         Zero::zero()
@@ -171,27 +178,34 @@ impl Ring for Rational {
         One::one()
     }
     fn add(&self, rhs: &Self) -> Self {
+        charge_rational_sum(self, rhs);
         self + rhs
     }
     fn sub(&self, rhs: &Self) -> Self {
+        charge_rational_sum(self, rhs);
         self - rhs
     }
     fn mul(&self, rhs: &Self) -> Self {
+        charge_rational(self, rhs);
         self * rhs
     }
     fn neg(&self) -> Self {
+        charge_rational_sum(self, &ZERO);
         -self
     }
     fn scale(&self, k: &Rational) -> Self {
+        charge_rational(self, k);
         self * k
     }
     fn is_zero(&self) -> bool {
         Zero::is_zero(self)
     }
     fn add_assign(&mut self, rhs: &Self) {
+        charge_rational_sum(self, rhs);
         *self += rhs;
     }
     fn from_rational(k: &Rational) -> Self {
+        charge_rational_sum(k, &ZERO);
         k.clone()
     }
 }

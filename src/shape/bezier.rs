@@ -13,6 +13,7 @@
 
 use crate::error::{check_arity, Error, ErrorKind, Result};
 use crate::num::limits::check_entries;
+use crate::num::meter::charge_points;
 use crate::shape::point::lerp;
 use crate::shape::point::Point;
 use crate::shape::power::check_dims;
@@ -279,8 +280,10 @@ pub fn bezier_curve_blossom<T: Ring>(control: &[Point<T>], args: &[T]) -> Result
 /// `args.len() + 1 == control.len()`.
 pub(crate) fn curve_blossom_unchecked<T: Ring>(control: &[Point<T>], args: &[T]) -> Point<T> {
     debug_assert_eq!(args.len() + 1, control.len());
+    charge_points(control.len());
     let mut level: Vec<Point<T>> = control.to_vec();
     for t in args {
+        charge_points(level.len());
         level = level.windows(2).map(|w| lerp(&w[0], &w[1], t)).collect();
     }
     level.pop().expect("one point remains")
@@ -337,9 +340,11 @@ pub(crate) fn triangle_blossom_unchecked<T: Ring>(
 ) -> Point<T> {
     let n = patch.degree();
     debug_assert_eq!(args.len(), n);
+    charge_points(patch.control_points().len());
     let mut level: Vec<Point<T>> = patch.control_points().to_vec();
     for (r, [u, v, w]) in args.iter().enumerate() {
         let d = n - r - 1;
+        charge_points(triangle_len(d));
         let mut next = Vec::with_capacity(triangle_len(d));
         for i in 0..=d {
             for j in 0..=d - i {

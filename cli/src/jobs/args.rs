@@ -184,8 +184,8 @@ Options:
                      Bezier input goes through its exact power form under taylor-shift,
                      closed-form and definition; power input through its Bernstein form
                      under pyramid.
-  --max-work UNITS     refuse a job whose estimated work is over UNITS (default 1e9, about
-                       a second; see Limits below)
+  --max-work UNITS     stop a job whose work passes UNITS (default 1e9, about a second;
+                       see Limits below)
   --max-input BYTES    refuse an input longer than BYTES (default 1048576, 1 MiB)
   -h, --help           print this help
 
@@ -224,11 +224,13 @@ entry, the grids of the rational jobs) are at most 200. The methods apply to cur
 and bezier-triangle; the other jobs have one algorithm each and answer the same under every
 method.
 
-Limits: before computing, every job's work is estimated from its sizes, degrees, the bit
-length of its numbers, the method and the arithmetic, in units of about a nanosecond; a job
-over --max-work is refused with `error: FIELD: the job's estimated work is ...`, FIELD naming
-the sizes (coefficients, control_points, pieces, at, ...) or the field with the longest number
-when the numbers' length is what makes it expensive. The input is read up to --max-input bytes.
+Limits: a job's work is metered as it is computed, every arithmetic operation weighted by the
+length of its numbers, in units of about a nanosecond; a job whose work passes --max-work is
+stopped with `error: FIELD: the job's work passed the limit ...`, and one whose work, estimated
+from its sizes before computing, is far over the limit is refused at once (`error: FIELD: the
+job's work is estimated at ...`). FIELD names the sizes (coefficients, control_points, pieces,
+at, ...) or the field with the longest number when the numbers' length is what makes the job
+expensive. The input is read up to --max-input bytes.
 
 Output: the answer as one line of JSON on standard output, exit code 0; on bad input one line
 `error: FIELD: ...` on standard error, nothing on standard output, exit code 2. Under f64 the

@@ -141,16 +141,16 @@ fn restrict(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<String, E
     let bytes = read_input(options.input.as_deref(), &options.limits, stdin)?;
     let document = parse_json(&bytes)?;
     job::check_fields(&document)?;
-    budget::check(
+    let answer = budget::budgeted(
         &document,
         options.method,
         options.arithmetic,
         &options.limits,
+        || match options.arithmetic {
+            Arithmetic::Exact => solve::<Rational>(&document, options.method),
+            Arithmetic::F64 => solve::<BoundedF64>(&document, options.method).map(with_error_bound),
+        },
     )?;
-    let answer = match options.arithmetic {
-        Arithmetic::Exact => solve::<Rational>(&document, options.method)?,
-        Arithmetic::F64 => with_error_bound(solve::<BoundedF64>(&document, options.method)?),
-    };
     let mut text = serde_json::to_string(&answer)
         .map_err(|e| Error::new("internal", format!("cannot write the answer: {e}")))?;
     text.push('\n');

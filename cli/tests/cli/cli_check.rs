@@ -138,7 +138,7 @@ fn bad_input_is_one_line_naming_the_field() {
     // The work budget applies to the job, its field under `job.`.
     let line = check_error(&["--max-work", "10"], &points(json!([])));
     assert!(
-        line.starts_with("error: job.control_points: the job's estimated work"),
+        line.starts_with("error: job.control_points: the job's work"),
         "{line}"
     );
 }
