@@ -88,6 +88,9 @@
 //!   points as blossoms, de Boor's algorithm, piecewise polynomials as B-splines
 //!   (Curry-Schoenberg).
 #![forbid(unsafe_code)]
+// Every example of the docs and of the README (`ReadmeDoctests` below) compiles without a
+// warning: an unused import or variable in an example a user copies fails the doc tests.
+#![doc(test(attr(deny(warnings))))]
 
 extern crate self as blossom;
 

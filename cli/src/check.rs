@@ -5,18 +5,21 @@
 //! doubles the other program had: every number of JOB is read as its nearest double (the
 //! reading of `--arithmetic f64`, [`f64_from_json`]) and that double is then taken exactly
 //! ([`exact_doubles`]); the job so rewritten goes through the budget check and the exact solver
-//! of `blossom restrict` (`jobs::solve` in [`Rational`], method `closed-form`). The
+//! of `blossom restrict` (`jobs::solve` in [`Rational`], its default method `bulk`). The
 //! answer's `control_points` are walked against the exact ones (`walk`) and the points
 //! compared by [`blossom::exact_error`], whose definitions the output follows.
+//!
+//! A field of the document other than `job` and `answer`, or one that JOB's kind does not read
+//! ([`check_fields`]), is refused before anything else is read; the fields of ANSWER other than
+//! `control_points` (and an entry's `a`, `b`, `c`, `point`) are ignored, as the contract says:
+//! an answer is another program's output and may carry more.
 
 use crate::jobs::args::{Arithmetic, CheckOptions, MethodChoice};
+use crate::jobs::job::{check_fields, expect_fields};
 use crate::jobs::{budget, solve};
 use crate::number::{f64_from_json, f64_to_json, format_rational, json_type, rational_from_json};
-use blossom::{exact_error, rational_to_f64, Error, Method, Point, Rational};
+use blossom::{exact_error, rational_to_f64, Error, Point, Rational};
 use serde_json::{json, Map, Value};
-
-/// The method of the exact reference (every method gives the identical exact answer).
-const METHOD: MethodChoice = MethodChoice::Library(Method::ClosedForm);
 
 /// The report of `blossom check` on `document` (`{"job": ..., "answer": ...}`): one line of
 /// JSON, without the newline.
@@ -30,9 +33,11 @@ pub fn check_command(document: &Value, options: &CheckOptions) -> Result<String,
             ),
         ));
     };
+    expect_fields(top, "", &["job", "answer"])?;
     let job = top
         .get("job")
         .ok_or_else(|| Error::new("job", "missing field"))?;
+    check_fields(job).map_err(in_job)?;
     let answer = top
         .get("answer")
         .ok_or_else(|| Error::new("answer", "missing field"))?;
@@ -50,8 +55,11 @@ pub fn check_command(document: &Value, options: &CheckOptions) -> Result<String,
         .ok_or_else(|| Error::new("answer.control_points", "missing field"))?;
 
     let job = exact_doubles(job, "job")?;
-    budget::check(&job, METHOD, Arithmetic::Exact, &options.limits).map_err(in_job)?;
-    let exact = solve::<Rational>(&job, METHOD).map_err(in_job)?;
+    // The exact reference by the default method of `blossom restrict`, the engine (every method
+    // gives the identical exact answer).
+    let method = MethodChoice::default();
+    budget::check(&job, method, Arithmetic::Exact, &options.limits).map_err(in_job)?;
+    let exact = solve::<Rational>(&job, method).map_err(in_job)?;
     let Some(exact_points) = exact.get("control_points") else {
         return Err(Error::new(
             "job.kind",

@@ -312,7 +312,7 @@ fn display_cmp(a: &[(String, u32)], b: &[(String, u32)]) -> Ordering {
 /// std operators on owned values and references (`&a * &b + c`).
 ///
 /// ```
-/// use blossom::{Poly, Ring, Rational};
+/// use blossom::{Poly, Ring};
 ///
 /// let a = Poly::var("a");
 /// let b = Poly::var("b");

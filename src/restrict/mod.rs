@@ -30,11 +30,21 @@ use crate::shape::power_triangle::PowerTriangle;
 use crate::Ring;
 
 /// Which algorithm computes a restriction. All give the identical exact answer.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+///
+/// The default is [`Method::Bulk`], the restriction engine, which is also the default
+/// `--method` of `blossom restrict`:
+///
+/// ```
+/// use blossom::Method;
+/// assert_eq!(Method::default(), Method::Bulk);
+/// assert_eq!(Method::default(), Method::ALL[0]);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Method {
     /// All control points at once, sharing work, in the scaled power basis the input is
     /// written in ([`crate::curve_net`] on d_i = c_i / C(n, i)): O(n^2) for a curve, as
-    /// accurate in f64 as the closed form. The default.
+    /// accurate in f64 as the closed form. The default ([`Method::default`]).
+    #[default]
     Bulk,
     /// All control points at once through a Taylor shift and the change to the Bernstein
     /// basis. Division-free and O(n^2) too, but the power basis of the shifted polynomial is
@@ -144,5 +154,24 @@ pub fn restrict_power_triangle<T: Ring>(
         Method::Definition => definition::restrict_triangle(surface, tri),
         Method::Pyramid => pyramid::restrict_triangle(surface, tri),
         Method::Polarisation => polarisation::restrict_triangle(surface, tri),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_default_is_the_engine_listed_first() {
+        assert_eq!(Method::default(), Method::Bulk);
+        assert_eq!(Method::ALL[0], Method::default());
+        assert_eq!(Method::default().name(), "bulk");
+        // The default is the engine itself: the same answer, bit for bit, in f64.
+        let curve = PowerCurve::new(vec![vec![1.0, 0.5], vec![-2.0, 3.0], vec![0.25, 1.0]])
+            .expect("a curve");
+        assert_eq!(
+            restrict_curve(&curve, &0.1, &0.7, Method::default()),
+            halving::restrict_curve(&curve, &0.1, &0.7)
+        );
     }
 }

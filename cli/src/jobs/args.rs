@@ -21,7 +21,7 @@
 //! for a file whose name starts with `--`.
 //!
 //! A mistyped subcommand, option or method gets the nearest accepted name in its message
-//! (`did you mean "restrict"?`, [`suggest`]).
+//! (`did you mean "restrict"?`, [`super::names::suggest`]).
 //!
 //! # Why not clap
 //!
@@ -33,6 +33,7 @@
 //! 300 lines, tested per error (`tests` below and `bad_arguments` in `cli/tests/cli/cli_restrict.rs`), and costs no
 //! compile time on a CI budget the test command already fills.
 
+use super::names::{did_you_mean, listed, quoted};
 use blossom::Error;
 use blossom::Method;
 use std::ffi::{OsStr, OsString};
@@ -57,15 +58,24 @@ pub enum MethodChoice {
     Specialised,
 }
 
-/// The names `--method` accepts, in the order the help and error messages list them.
+impl Default for MethodChoice {
+    /// The default `--method`: the library's default, [`Method::Bulk`] (the restriction
+    /// engine), for every kind of job.
+    fn default() -> Self {
+        MethodChoice::Library(Method::default())
+    }
+}
+
+/// The names `--method` accepts, in the order the help and error messages list them: the
+/// library's [`Method::ALL`] (the default first), then `specialised`.
 pub const METHOD_NAMES: [(&str, MethodChoice); 7] = [
+    ("bulk", MethodChoice::Library(Method::Bulk)),
+    ("taylor-shift", MethodChoice::Library(Method::TaylorShift)),
     ("closed-form", MethodChoice::Library(Method::ClosedForm)),
     ("definition", MethodChoice::Library(Method::Definition)),
     ("pyramid", MethodChoice::Library(Method::Pyramid)),
     ("polarisation", MethodChoice::Library(Method::Polarisation)),
     ("specialised", MethodChoice::Specialised),
-    ("bulk", MethodChoice::Library(Method::Bulk)),
-    ("taylor-shift", MethodChoice::Library(Method::TaylorShift)),
 ];
 
 /// Options of `blossom restrict`.
@@ -75,7 +85,7 @@ pub struct RestrictOptions {
     pub input: Option<PathBuf>,
     /// `--arithmetic`, default exact.
     pub arithmetic: Arithmetic,
-    /// `--method`, default closed-form.
+    /// `--method`, default `bulk` ([`MethodChoice::default`]).
     pub method: MethodChoice,
     /// `--max-work` and `--max-input` ([`super::budget`]).
     pub limits: super::budget::Limits,
@@ -129,12 +139,15 @@ blossom: exact Bezier subdivision through blossoms
 
 Usage:
   blossom                      same as `blossom verify`
-  blossom verify [--json]      re-derive the tables and worked examples of the seed papers;
+  blossom verify [--json] [--verbose]
+                               re-derive the tables and worked examples of the seed papers;
                                exit 0 when everything is reproduced or explained, 1 otherwise
+                               (see `verify --help`)
   blossom restrict [OPTIONS]   restrict a curve or surface given as JSON (see `restrict --help`)
   blossom check [OPTIONS]      the exact error of another program's f64 answer to a restrict
                                job (see `check --help`)
   blossom figures [--out DIR]  draw the papers' figures and examples as SVG files
+                               (see `figures --help`)
   blossom expand SHAPE DEGREE  print the function the proc-macro generates for a fixed degree
                                (see `expand --help`)
   blossom --help | --version
@@ -155,19 +168,28 @@ Options:
                        answer are strings \"p/q\" or \"p\" in lowest terms
   --arithmetic f64     IEEE double precision; numbers in the answer are JSON numbers
   --method METHOD      the algorithm; every method gives the identical exact answer:
-      closed-form      the closed forms (3), (9), (14) (default)
+      bulk             the restriction engine, in the input's own basis (default): all
+                       control points at once by halving, with de Casteljau's affine steps
+                       on the control points of Bezier input and the scaled power step
+                       d_i + t d_(i+1) on power coefficients; O(n^2) for a curve, as
+                       accurate under f64 as de Casteljau at every degree
+      taylor-shift     Taylor shift of the power form, then the change to the Bernstein
+                       basis (loses digits under f64 as the degree grows)
+      closed-form      the closed forms (3), (9), (14), one control point at a time
       definition       the subset-sum definitions (2), (8), (13)
-      pyramid          de Casteljau's pyramid on the blossom
+      pyramid          de Casteljau's pyramid on the blossom, one per control point
       polarisation     the inverse (polarisation) formula, sampling points only
-      specialised      the compile-time evaluator generated for the job's degree
-      bulk             all control points at once by changes of variable and basis
-                       (an extension of the contract: the fast path of the library)
+      specialised      the evaluator the proc-macro generated at compile time for the
+                       job's degree (exit 2 for a degree this binary does not carry)
+                     Bezier input goes through its exact power form under taylor-shift,
+                     closed-form and definition; power input through its Bernstein form
+                     under pyramid.
   --max-work UNITS     refuse a job whose estimated work is over UNITS (default 1e9, about
                        a second; see Limits below)
   --max-input BYTES    refuse an input longer than BYTES (default 1048576, 1 MiB)
   -h, --help           print this help
 
-Jobs (JSON objects; fields not listed are ignored):
+Jobs (JSON objects; a field not listed is refused, with the nearest listed name):
   {\"kind\": \"curve\", \"coefficients\": [c0, ..., cn], \"interval\": [a, b]}
   {\"kind\": \"tensor\", \"coefficients\": [[c00, ..., c0m], ...], \"rectangle\": [a, b, c, d]}
   {\"kind\": \"triangle\", \"coefficients\": [[c00, ..., c0m], ...],
@@ -253,8 +275,10 @@ blossom figures: the papers' figures and examples drawn from the library's resul
 
 Usage: blossom figures [--out DIR]
 
-Writes SVG files into DIR (default `figures`, created if missing) and lists them on standard
-output, one per line.
+Writes one SVG file per picture into DIR (default `figures`, created if missing), every
+coordinate computed by the library from the papers' inputs, and prints the path of every file
+written, one per line; exit code 0. A DIR that cannot be created or written: one line
+`error: --out: ...` on standard error, exit code 2.
 
 Options:
   --out DIR   the directory of the pictures
@@ -269,8 +293,15 @@ Usage: blossom check [--input FILE] [--per-point] [--max-work UNITS] [--max-inpu
 
 Reads {\"job\": JOB, \"answer\": ANSWER}: JOB is a job of `blossom restrict`, its numbers
 doubles; ANSWER has the job's answer shape (\"control_points\" as `restrict` prints them) in
-doubles. The exact answer for the exact values of the job's doubles is computed and compared
-with ANSWER; the errors are exact rationals and their nearest doubles (see docs/cli.md).
+doubles. The exact answer for the exact values of the job's doubles is computed (by the
+default method, bulk) and compared with ANSWER; the errors are exact rationals and their
+nearest doubles (see docs/cli.md). A field of the document other than \"job\" and \"answer\",
+or one that the job's kind does not read, is refused; ANSWER's fields other than
+\"control_points\" are ignored.
+
+Output: one line of JSON, {\"points\", \"max_abs_error\", \"max_abs_error_f64\", \"max_abs_at\",
+\"max_rel_error\", \"max_rel_error_f64\", \"max_rel_at\"} and with --per-point \"per_point\";
+exit code 0. On bad input one line `error: FIELD: ...` on standard error, exit code 2.
 
 Options:
   --input FILE       read from FILE (default, or `-`: standard input)
@@ -344,70 +375,6 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
             ),
         )),
     }
-}
-
-/// `names` as `a, b or c`.
-fn listed(names: &[&str]) -> String {
-    match names {
-        [] => String::new(),
-        [one] => one.to_string(),
-        [init @ .., last] => format!("{} or {last}", init.join(", ")),
-    }
-}
-
-/// The accepted name nearest to `word`, if it is near enough to be a typing slip: at most a
-/// third of the longer word's letters inserted, deleted, replaced or swapped (the optimal
-/// string alignment distance), at least one; ties go to the first name in `names`. A name
-/// that starts with `word` (three letters or more) counts as near.
-pub fn suggest<'a>(word: &str, names: &[&'a str]) -> Option<&'a str> {
-    let word_lower = word.to_lowercase();
-    let mut best: Option<(usize, &'a str)> = None;
-    for &name in names {
-        let distance = if word_lower.len() >= 3 && name.starts_with(&word_lower) {
-            1
-        } else {
-            edit_distance(&word_lower, name)
-        };
-        let allowed = (word.chars().count().max(name.chars().count()) / 3).max(1);
-        if distance <= allowed && best.is_none_or(|(d, _)| distance < d) {
-            best = Some((distance, name));
-        }
-    }
-    best.map(|(_, name)| name)
-}
-
-/// ` (did you mean "NAME"?)` after a message, or nothing.
-pub(crate) fn did_you_mean(word: &str, names: &[&str]) -> String {
-    suggest(word, names)
-        .filter(|name| *name != word)
-        .map(|name| format!(" (did you mean {}?)", quoted(name)))
-        .unwrap_or_default()
-}
-
-/// The optimal string alignment distance of `a` and `b`: the fewest insertions, deletions,
-/// replacements and swaps of adjacent characters that turn one into the other.
-fn edit_distance(a: &str, b: &str) -> usize {
-    let a: Vec<char> = a.chars().collect();
-    let b: Vec<char> = b.chars().collect();
-    // rows[i][j]: the distance of a[..i] and b[..j]; three rows suffice for the swaps.
-    let width = b.len() + 1;
-    let mut before: Vec<usize> = vec![0; width];
-    let mut previous: Vec<usize> = (0..width).collect();
-    let mut current: Vec<usize> = vec![0; width];
-    for i in 1..=a.len() {
-        current[0] = i;
-        for j in 1..=b.len() {
-            let replace = previous[j - 1] + usize::from(a[i - 1] != b[j - 1]);
-            let mut d = replace.min(previous[j] + 1).min(current[j - 1] + 1);
-            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
-                d = d.min(before[j - 2] + 1);
-            }
-            current[j] = d;
-        }
-        std::mem::swap(&mut before, &mut previous);
-        std::mem::swap(&mut previous, &mut current);
-    }
-    previous[b.len()]
 }
 
 /// `error: FLAG: unknown option for SUBCOMMAND (expected ...)`, with a suggestion.
@@ -634,7 +601,7 @@ fn parse_restrict(args: &[OsString]) -> Result<Command, Error> {
     Ok(Command::Restrict(RestrictOptions {
         input: common.input.clone().unwrap_or(None),
         arithmetic: arithmetic.unwrap_or(Arithmetic::Exact),
-        method: method.unwrap_or(MethodChoice::Library(Method::ClosedForm)),
+        method: method.unwrap_or_default(),
         limits: common.limits(),
     }))
 }
@@ -705,11 +672,6 @@ fn once(seen: bool, flag: &str) -> Result<(), Error> {
     }
 }
 
-/// `text` as a JSON string literal, for messages.
-fn quoted(text: &str) -> String {
-    serde_json::to_string(text).unwrap_or_else(|_| String::from("\"?\""))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -754,7 +716,8 @@ mod tests {
         };
         assert_eq!(o.input, None);
         assert_eq!(o.arithmetic, Arithmetic::Exact);
-        assert_eq!(o.method, MethodChoice::Library(Method::ClosedForm));
+        assert_eq!(o.method, MethodChoice::Library(Method::Bulk));
+        assert_eq!(o.method, MethodChoice::default());
         let Command::Restrict(o) = parse_strs(&[
             "restrict",
             "--method=bulk",
@@ -822,20 +785,49 @@ mod tests {
         assert!(!far.contains("did you mean"), "{far}");
         assert!(far.contains("closed-form, definition"), "{far}");
         assert!(!message(&["xyz"]).contains("did you mean"));
-        assert_eq!(
-            did_you_mean("bezier_curve", &["curve", "bezier-curve"]),
-            " (did you mean \"bezier-curve\"?)"
-        );
     }
 
     #[test]
-    fn edit_distance_counts_slips() {
-        assert_eq!(edit_distance("", ""), 0);
-        assert_eq!(edit_distance("abc", ""), 3);
-        assert_eq!(edit_distance("pyramid", "pyramid"), 0);
-        assert_eq!(edit_distance("pyramd", "pyramid"), 1);
-        assert_eq!(edit_distance("pyarmid", "pyramid"), 1);
-        assert_eq!(edit_distance("kitten", "sitting"), 3);
+    fn help_names_every_method() {
+        // `--method` accepts the library's methods in the order of `Method::ALL` (the default
+        // first), each by its own name, then `specialised`.
+        let expected: Vec<&str> = Method::ALL
+            .iter()
+            .map(|m| m.name())
+            .chain(["specialised"])
+            .collect();
+        let names: Vec<&str> = METHOD_NAMES.iter().map(|(n, _)| *n).collect();
+        assert_eq!(names, expected);
+        for (name, choice) in METHOD_NAMES {
+            if let MethodChoice::Library(method) = choice {
+                assert_eq!(method.name(), name);
+            }
+        }
+        // The help lists each on a line of its own, and marks the default.
+        for name in &expected {
+            assert!(
+                RESTRICT_HELP.contains(&format!("\n      {name} ")),
+                "restrict --help does not list {name}"
+            );
+        }
+        let default = MethodChoice::default();
+        let (default_name, _) = METHOD_NAMES.iter().find(|(_, c)| *c == default).unwrap();
+        assert!(RESTRICT_HELP.contains(&format!("\n      {default_name} ")));
+        let default_entry = RESTRICT_HELP
+            .split(&format!("\n      {default_name} "))
+            .nth(1)
+            .and_then(|rest| rest.split("\n      ").next())
+            .unwrap_or_default();
+        assert!(default_entry.contains("(default)"), "{default_entry}");
+        assert_eq!(
+            RESTRICT_HELP.matches("(default)").count(),
+            2,
+            "arithmetic and method"
+        );
+        // The top-level help shows every flag of verify.
+        assert!(HELP.contains("blossom verify [--json] [--verbose]"));
+        assert!(VERIFY_HELP.contains("blossom verify [--json] [--verbose]"));
+        assert!(CHECK_HELP.contains("bulk"));
     }
 
     #[test]

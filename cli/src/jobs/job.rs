@@ -1,14 +1,26 @@
 //! Reading a job: from a parsed JSON document to a [`Job`] of the library's types, with the path
 //! of the offending field in every error (`coefficients[2]`, `interval`, `triangle[1][0]`).
 //!
-//! Fields are checked in this order: the top level is an object, `kind`, `coefficients`, then
-//! the domain (`interval`, `rectangle` or `triangle`); within an array, element by element.
-//! Fields that a kind does not use are ignored, so that newer jobs with extra fields still run
-//! on this version.
+//! Fields are checked in this order: the top level is an object, `kind`, the names of all
+//! fields ([`check_fields`]), `coefficients`, then the domain (`interval`, `rectangle` or
+//! `triangle`); within an array, element by element.
+//!
+//! # Unknown fields
+//!
+//! A field that the job's kind does not read is refused, at any depth of the job (the pieces of
+//! a `bspline`, the entries of a `bezier-triangle`), with the nearest accepted name when one is
+//! within a few typing slips: `control_point: unknown field "control_point" (did you mean
+//! "control_points"?)`. A misspelt optional field would otherwise be ignored without a word,
+//! and a misspelt required one reported as missing. [`check_fields`] runs on the whole document
+//! before anything else is read, so that this error comes before a missing field's. The
+//! accepted names are [`JOB_FIELDS`] and [`NESTED_FIELDS`]; [`expect_fields`] checks one object
+//! and is what a reader of another kind of job calls.
 //!
 //! To support a new kind, add an arm to [`parse_job`] (and remove the name from
-//! [`LATER_KINDS`]), a variant to [`Job`], and its computation in [`super::answer`].
+//! [`LATER_KINDS`]), a variant to [`Job`], its fields to [`JOB_FIELDS`], and its computation in
+//! [`super::answer`].
 
+use super::names::{did_you_mean, listed, quoted};
 use crate::number::{json_type, JsonNumber};
 use blossom::Point;
 use blossom::{Error, PowerCurve, PowerSurface, PowerTriangle};
@@ -72,9 +84,118 @@ pub enum Job<T> {
     },
 }
 
-/// `text` as a JSON string literal, for messages.
-fn quoted(text: &str) -> String {
-    serde_json::to_string(text).unwrap_or_else(|_| String::from("\"?\""))
+/// The fields each kind of job reads, `kind` first (optional fields included).
+pub const JOB_FIELDS: [(&str, &[&str]); 14] = [
+    ("curve", &["kind", "coefficients", "interval"]),
+    ("tensor", &["kind", "coefficients", "rectangle"]),
+    (
+        "triangle",
+        &["kind", "coefficients", "triangle", "total_degree"],
+    ),
+    ("bezier-curve", &["kind", "control_points", "interval"]),
+    ("bspline", &["kind", "degree", "pieces"]),
+    (
+        "bspline-eval",
+        &["kind", "degree", "knots", "control_points", "at"],
+    ),
+    (
+        "rational-curve",
+        &["kind", "numerator", "denominator", "interval", "degree"],
+    ),
+    ("elevate", &["kind", "control_points", "to_degree"]),
+    ("reduce", &["kind", "control_points", "to_degree", "method"]),
+    ("bezier-tensor", &["kind", "control_points", "rectangle"]),
+    ("bezier-triangle", &["kind", "control_points", "triangle"]),
+    ("derivative", &["kind", "control_points", "order"]),
+    (
+        "rational-tensor",
+        &["kind", "numerator", "denominator", "rectangle", "degree"],
+    ),
+    (
+        "rational-triangle",
+        &[
+            "kind",
+            "numerator",
+            "denominator",
+            "triangle",
+            "degree",
+            "total_degree",
+        ],
+    ),
+];
+
+/// The objects inside a job: (kind, field, the fields of each object in that field's array).
+pub const NESTED_FIELDS: [(&str, &str, &[&str]); 2] = [
+    ("bspline", "pieces", &["interval", "coefficients"]),
+    (
+        "bezier-triangle",
+        "control_points",
+        &["a", "b", "c", "point"],
+    ),
+];
+
+/// Refuses a field of `object` (the object at `path`, `""` for the top level) that is not one
+/// of `accepted`: `error: PATH.NAME: unknown field "NAME" (did you mean "..."?)`, or with the
+/// accepted names listed when none is near. Fields are checked in the object's order.
+pub fn expect_fields(
+    object: &Map<String, Value>,
+    path: &str,
+    accepted: &[&str],
+) -> Result<(), Error> {
+    let Some(name) = object.keys().find(|k| !accepted.contains(&k.as_str())) else {
+        return Ok(());
+    };
+    let at = if path.is_empty() {
+        name.clone()
+    } else {
+        format!("{path}.{name}")
+    };
+    let hint = match did_you_mean(name, accepted) {
+        near if !near.is_empty() => near,
+        _ => format!(" (expected {})", listed(accepted)),
+    };
+    Err(Error::new(
+        at,
+        format!("unknown field {}{hint}", quoted(name)),
+    ))
+}
+
+/// Refuses every field of the job `document` that its kind does not read ([`JOB_FIELDS`], and
+/// inside the arrays of [`NESTED_FIELDS`]). What is not a job of a known kind passes (reading
+/// refuses it with its own message), except that a job without `kind` is checked against the
+/// fields of every kind, so that a misspelt `kind` is named as such.
+pub fn check_fields(document: &Value) -> Result<(), Error> {
+    let Value::Object(job) = document else {
+        return Ok(());
+    };
+    let kind = match job.get("kind") {
+        Some(Value::String(kind)) => kind.as_str(),
+        Some(_) => return Ok(()),
+        None => {
+            let mut every: Vec<&str> = Vec::new();
+            for name in JOB_FIELDS.iter().flat_map(|(_, fields)| fields.iter()) {
+                if !every.contains(name) {
+                    every.push(name);
+                }
+            }
+            return expect_fields(job, "", &every);
+        }
+    };
+    let Some((_, accepted)) = JOB_FIELDS.iter().find(|(k, _)| *k == kind) else {
+        return Ok(());
+    };
+    expect_fields(job, "", accepted)?;
+    for (_, name, inner) in NESTED_FIELDS.iter().filter(|(k, _, _)| *k == kind) {
+        let Some(Value::Array(items)) = job.get(*name) else {
+            continue;
+        };
+        for (i, item) in items.iter().enumerate() {
+            if let Value::Object(object) = item {
+                expect_fields(object, &format!("{name}[{i}]"), inner)?;
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Reads the job in `document`, the whole parsed input.
@@ -140,7 +261,7 @@ pub fn parse_job<T: JsonNumber>(document: &Value) -> Result<Job<T>, Error> {
                 format!(
                     "unknown kind {}{} (expected one of {})",
                     quoted(unknown),
-                    super::args::did_you_mean(unknown, &kinds),
+                    did_you_mean(unknown, &kinds),
                     kinds.join(", ")
                 ),
             ))
@@ -559,15 +680,196 @@ mod tests {
         );
     }
 
+    /// A job of every kind that answers, using every field its kind accepts.
+    fn every_kind() -> Vec<Value> {
+        let tri = json!([[0, 0], [1, 0], [0, 1]]);
+        let entry = |a: u32, b: u32, c: u32, p: i32| json!({"a": a, "b": b, "c": c, "point": [p]});
+        vec![
+            json!({"kind": "curve", "coefficients": [[1], [2]], "interval": [0, 1]}),
+            json!({"kind": "tensor", "coefficients": [[[1], [2]], [[3], [4]]], "rectangle": [0, 1, 0, 1]}),
+            json!({"kind": "triangle", "total_degree": 1, "coefficients": [[[0], [1]], [[1]]], "triangle": tri}),
+            json!({"kind": "bezier-curve", "control_points": [[0], [1]], "interval": [0, "1/2"]}),
+            json!({"kind": "bspline", "degree": 1, "pieces": [{"interval": [0, 1], "coefficients": [[0], [1]]}]}),
+            json!({"kind": "bspline-eval", "degree": 1, "knots": [0, 0, 1, 1], "control_points": [[0], [1]], "at": ["1/2"]}),
+            json!({"kind": "rational-curve", "numerator": [[0], [1]], "denominator": [1, 1], "interval": [0, 1], "degree": 2}),
+            json!({"kind": "elevate", "control_points": [[0], [1]], "to_degree": 2}),
+            json!({"kind": "reduce", "control_points": [[0], [1], [3]], "to_degree": 1, "method": "least-squares"}),
+            json!({"kind": "bezier-tensor", "control_points": [[[0], [1]], [[2], [3]]], "rectangle": [0, 1, 0, 1]}),
+            json!({"kind": "bezier-triangle", "control_points": [entry(1, 0, 0, 1), entry(0, 1, 0, 2), entry(0, 0, 1, 3)],
+                   "triangle": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}),
+            json!({"kind": "derivative", "control_points": [[0], [1], [3]], "order": 1}),
+            json!({"kind": "rational-tensor", "numerator": [[[1]], [[1]]], "denominator": [[1], [1]], "rectangle": [0, 1, 0, 1], "degree": [1, 0]}),
+            json!({"kind": "rational-triangle", "total_degree": 1, "numerator": [[[0], [1]], [[1]]], "denominator": [[1, 0], [1]],
+                   "triangle": tri, "degree": 1}),
+        ]
+    }
+
+    /// `blossom restrict` on `job`, in process: the answer, or the error line.
+    fn restrict(job: &Value) -> Result<Value, String> {
+        let out = crate::jobs::run(&["restrict".into()], &mut job.to_string().as_bytes());
+        if out.code == 0 {
+            Ok(serde_json::from_str(&out.stdout).expect("JSON"))
+        } else {
+            assert_eq!(out.code, 2);
+            assert!(out.stdout.is_empty());
+            assert_eq!(out.stderr.lines().count(), 1, "{}", out.stderr);
+            Err(out.stderr.trim_end().to_string())
+        }
+    }
+
     #[test]
-    fn extra_fields_are_ignored() {
-        let job = parse_job::<Rational>(&json!({
-            "kind": "curve", "coefficients": [["1/2"]], "interval": [0, 1], "comment": "x"
-        }))
-        .unwrap();
-        let Job::Curve { curve, .. } = job else {
-            panic!("curve")
+    fn every_kind_and_field_is_listed_and_read() {
+        let jobs = every_kind();
+        assert_eq!(jobs.len(), JOB_FIELDS.len());
+        for ((kind, fields), job) in JOB_FIELDS.iter().zip(&jobs) {
+            assert_eq!(job["kind"], json!(kind));
+            let names: Vec<&str> = job
+                .as_object()
+                .unwrap()
+                .keys()
+                .map(String::as_str)
+                .collect();
+            let mut sorted = names.clone();
+            sorted.sort_unstable();
+            let mut expected = fields.to_vec();
+            expected.sort_unstable();
+            assert_eq!(sorted, expected, "{kind}: the test job uses every field");
+            assert!(check_fields(job).is_ok(), "{kind}");
+            assert!(restrict(job).is_ok(), "{kind}: {:?}", restrict(job));
+        }
+        let kinds: Vec<&str> = KINDS
+            .iter()
+            .chain(&LATER_KINDS)
+            .chain(&PATCH_KINDS)
+            .copied()
+            .collect();
+        let mut listed: Vec<&str> = JOB_FIELDS.iter().map(|(k, _)| *k).collect();
+        let mut all = kinds.clone();
+        listed.sort_unstable();
+        all.sort_unstable();
+        assert_eq!(listed, all, "JOB_FIELDS lists every kind once");
+    }
+
+    #[test]
+    fn an_unknown_field_is_refused_in_every_kind() {
+        for job in every_kind() {
+            let kind = job["kind"].as_str().unwrap().to_string();
+            // A field that no kind reads: the accepted names are listed.
+            let mut extra = job.clone();
+            extra["comment"] = json!("x");
+            let line = restrict(&extra).unwrap_err();
+            let (_, fields) = JOB_FIELDS.iter().find(|(k, _)| *k == kind).unwrap();
+            assert_eq!(
+                line,
+                format!(
+                    "error: comment: unknown field \"comment\" (expected {})",
+                    listed(fields)
+                ),
+                "{kind}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_misspelt_field_is_named_before_it_is_missed() {
+        for job in every_kind() {
+            let kind = job["kind"].as_str().unwrap().to_string();
+            for (name, value) in job.as_object().unwrap() {
+                if name == "kind" {
+                    continue;
+                }
+                // The field with its last letter dropped: now it is missing too.
+                let typo = &name[..name.len() - 1];
+                let mut misspelt = Map::new();
+                for (k, v) in job.as_object().unwrap() {
+                    let key = if k == name { typo } else { k.as_str() };
+                    misspelt.insert(key.to_string(), v.clone());
+                }
+                let misspelt = Value::Object(misspelt);
+                let line = restrict(&misspelt).unwrap_err();
+                assert_eq!(
+                    line,
+                    format!("error: {typo}: unknown field \"{typo}\" (did you mean \"{name}\"?)"),
+                    "{kind}: {value}"
+                );
+                // The same through the reader alone.
+                let error = check_fields(&misspelt).unwrap_err();
+                assert_eq!(error.field, typo);
+            }
+        }
+    }
+
+    #[test]
+    fn nested_objects_refuse_unknown_fields() {
+        let jobs = every_kind();
+        let find = |kind: &str| {
+            jobs.iter()
+                .find(|j| j["kind"] == json!(kind))
+                .unwrap()
+                .clone()
         };
-        assert_eq!(curve.degree(), 0);
+        let mut spline = find("bspline");
+        spline["pieces"][0]["coeficients"] = spline["pieces"][0]["coefficients"].take();
+        spline["pieces"][0]
+            .as_object_mut()
+            .unwrap()
+            .remove("coefficients");
+        assert_eq!(
+            restrict(&spline).unwrap_err(),
+            "error: pieces[0].coeficients: unknown field \"coeficients\" (did you mean \"coefficients\"?)"
+        );
+        let mut net = find("bezier-triangle");
+        net["control_points"][1]["weight"] = json!(1);
+        assert_eq!(
+            restrict(&net).unwrap_err(),
+            "error: control_points[1].weight: unknown field \"weight\" (expected a, b, c or point)"
+        );
+        let mut net = find("bezier-triangle");
+        let point = net["control_points"][2]["point"].take();
+        net["control_points"][2]
+            .as_object_mut()
+            .unwrap()
+            .remove("point");
+        net["control_points"][2]["pont"] = point;
+        assert_eq!(
+            restrict(&net).unwrap_err(),
+            "error: control_points[2].pont: unknown field \"pont\" (did you mean \"point\"?)"
+        );
+        // An entry that is not an object is the reader's to refuse, with its own message.
+        net["control_points"][2] = json!([1]);
+        assert!(check_fields(&net).is_ok());
+    }
+
+    #[test]
+    fn a_job_without_its_kind_is_checked_against_every_kind() {
+        let line = restrict(&json!({"knd": "curve", "coefficients": [[1]], "interval": [0, 1]}));
+        assert_eq!(
+            line.unwrap_err(),
+            "error: knd: unknown field \"knd\" (did you mean \"kind\"?)"
+        );
+        // Fields of some kind, but no kind: the kind is what is missing.
+        let line = restrict(&json!({"coefficients": [[1]], "interval": [0, 1]}));
+        assert_eq!(line.unwrap_err(), "error: kind: missing field");
+        // An unknown kind is named as such, whatever its fields.
+        let line = restrict(&json!({"kind": "curv", "coefficients": [[1]], "whatever": 1}));
+        assert!(line
+            .unwrap_err()
+            .starts_with("error: kind: unknown kind \"curv\" (did you mean \"curve\"?)"));
+    }
+
+    #[test]
+    fn expect_fields_names_the_path() {
+        let object = json!({"s": 1, "tt": 2});
+        let Value::Object(object) = object else {
+            unreachable!()
+        };
+        assert!(expect_fields(&object, "x", &["s", "tt"]).is_ok());
+        let error = expect_fields(&object, "points[3]", &["s", "t"]).unwrap_err();
+        assert_eq!(
+            error.to_string(),
+            "points[3].tt: unknown field \"tt\" (did you mean \"t\"?)"
+        );
+        let error = expect_fields(&object, "", &["s"]).unwrap_err();
+        assert_eq!(error.to_string(), "tt: unknown field \"tt\" (expected s)");
     }
 }

@@ -20,6 +20,7 @@ pub mod answer;
 pub mod args;
 pub mod budget;
 pub mod job;
+pub mod names;
 pub mod patch_jobs;
 pub mod specialised;
 pub mod spline_jobs;
@@ -138,6 +139,7 @@ fn restrict(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<String, E
     }
     let bytes = read_input(options.input.as_deref(), &options.limits, stdin)?;
     let document = parse_json(&bytes)?;
+    job::check_fields(&document)?;
     budget::check(
         &document,
         options.method,
@@ -229,7 +231,8 @@ pub(crate) fn parse_json(bytes: &[u8]) -> Result<Value, Error> {
     })
 }
 
-/// Reads, computes and writes the job in `document` in the arithmetic `T`.
+/// Reads, computes and writes the job in `document` in the arithmetic `T`. The callers refuse
+/// unknown fields first ([`job::check_fields`]), before the budget.
 pub(crate) fn solve<T: JsonNumber + blossom::Field>(
     document: &Value,
     method: MethodChoice,

@@ -102,6 +102,27 @@ fn bad_input_is_one_line_naming_the_field() {
             json!({"job": 5, "answer": {"control_points": []}}).to_string(),
             "error: job: ",
         ),
+        // Unknown fields of the document and of the job, named before anything else.
+        (
+            json!({"jbo": cubic(), "answer": {"control_points": []}}).to_string(),
+            "error: jbo: unknown field \"jbo\" (did you mean \"job\"?)",
+        ),
+        (
+            json!({"job": cubic(), "answer": {"control_points": []}, "per_point": true}).to_string(),
+            "error: per_point: unknown field \"per_point\" (expected job or answer)",
+        ),
+        (
+            json!({"job": {"kind": "bezier-curve", "control_point": [[0], [1]], "interval": [0, 1]}, "answer": {"control_points": []}}).to_string(),
+            "error: job.control_point: unknown field \"control_point\" (did you mean \"control_points\"?)",
+        ),
+        (
+            json!({"job": {"kind": "bezier-curve", "control_points": [[0], [1]], "interval": [0, 1], "note": "1e400"}, "answer": {"control_points": []}}).to_string(),
+            "error: job.note: unknown field \"note\" (expected kind, control_points or interval)",
+        ),
+        (
+            json!({"job": {"kind": "bspline", "degree": 1, "pieces": [{"interval": [0, 1], "coefficients": [[0], [1]], "weight": 1}]}, "answer": {"control_points": []}}).to_string(),
+            "error: job.pieces[0].weight: unknown field \"weight\" (expected interval or coefficients)",
+        ),
         (
             json!({"job": {"kind": "bspline-eval", "degree": 1, "knots": [0, 0, 1, 1], "control_points": [[0], [1]], "at": [0.5]}, "answer": {"control_points": []}}).to_string(),
             "error: job.kind: the answer of this job has no \"control_points\"",
