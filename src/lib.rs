@@ -93,6 +93,7 @@ extern crate self as blossom;
 
 mod applications;
 mod error;
+mod intersect;
 mod num;
 mod restrict;
 mod shape;
@@ -106,6 +107,10 @@ pub use num::limits::MAX_ENTRIES;
 pub use num::linalg::{solve_rational_system, Field};
 pub use num::poly::Poly;
 pub use num::ring::{rational_to_f64, Rational, Ring};
+
+// Certified zeros and intersections.
+pub use intersect::algebraic::AlgebraicReal;
+pub use intersect::zeros::{bezier_zeros, bezier_zeros_f64, BezierZeros, PolynomialZero};
 
 // Errors.
 pub use error::{Error, ErrorKind};
