@@ -110,6 +110,10 @@ pub use num::ring::{rational_to_f64, Rational, Ring};
 
 // Certified zeros and intersections.
 pub use intersect::algebraic::AlgebraicReal;
+pub use intersect::curves::{
+    intersect_curves, intersect_curves_f64, self_intersections, self_intersections_f64,
+    IntersectionPoint, Intersections, Overlap,
+};
 pub use intersect::zeros::{bezier_zeros, bezier_zeros_f64, BezierZeros, PolynomialZero};
 
 // Errors.

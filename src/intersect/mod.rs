@@ -9,7 +9,9 @@
 
 pub(crate) mod algebraic;
 pub(crate) mod bivariate;
+pub(crate) mod curves;
 pub(crate) mod isolate;
+pub(crate) mod solve;
 pub(crate) mod upoly;
 pub(crate) mod zeros;
 

@@ -247,16 +247,6 @@ pub fn square_free_factors(p: &[BigInt]) -> Vec<(ZPoly, usize)> {
     out
 }
 
-/// The square-free part f / gcd(f, f'), primitive (empty for the zero polynomial).
-pub fn square_free_part(p: &[BigInt]) -> ZPoly {
-    let f = primitive(p);
-    if degree(&f).unwrap_or(0) == 0 {
-        return f;
-    }
-    let g = gcd(&f, &derivative(&f));
-    primitive(&exact_div(&f, &g).expect("a primitive divisor divides exactly"))
-}
-
 /// Whether `p` vanishes identically.
 pub fn is_zero(p: &[BigInt]) -> bool {
     p.iter().all(Zero::is_zero)
@@ -280,13 +270,4 @@ pub fn sign_at(p: &[BigInt], x: &Rational) -> Ordering {
         Sign::NoSign => Ordering::Equal,
         Sign::Plus => Ordering::Greater,
     }
-}
-
-/// The exact value p(x) at a rational x.
-pub fn eval(p: &[BigInt], x: &Rational) -> Rational {
-    let mut acc = Rational::zero();
-    for c in p.iter().rev() {
-        acc = acc * x + Rational::from_integer(c.clone());
-    }
-    acc
 }
