@@ -104,7 +104,11 @@ pub fn halve(b: &[BigInt]) -> (Vec<BigInt>, Vec<BigInt>) {
 
 /// Divides a vector by the largest power of two dividing all its entries.
 fn strip_twos(mut v: Vec<BigInt>) -> Vec<BigInt> {
-    let shift = v.iter().filter_map(|x| x.trailing_zeros()).min().unwrap_or(0);
+    let shift = v
+        .iter()
+        .filter_map(|x| x.trailing_zeros())
+        .min()
+        .unwrap_or(0);
     if shift > 0 {
         for x in &mut v {
             *x >>= shift;
