@@ -102,6 +102,7 @@ extern crate self as blossom;
 
 mod applications;
 mod error;
+mod intersect;
 mod num;
 mod restrict;
 mod shape;
@@ -119,6 +120,14 @@ pub use num::ring::{rational_to_f64, Rational, Ring};
 // Work metering (feature `meter`): one module, its items under one path each.
 #[cfg(feature = "meter")]
 pub use num::meter;
+
+// Certified zeros and intersections.
+pub use intersect::algebraic::AlgebraicReal;
+pub use intersect::curves::{
+    intersect_curves, intersect_curves_f64, self_intersections, self_intersections_f64,
+    IntersectionPoint, Intersections, Overlap,
+};
+pub use intersect::zeros::{bezier_zeros, bezier_zeros_f64, BezierZeros, PolynomialZero};
 
 // Errors.
 pub use error::{Error, ErrorKind};

@@ -91,6 +91,17 @@ pub struct RestrictOptions {
     pub limits: super::budget::Limits,
 }
 
+/// Options of `blossom intersect`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct IntersectOptions {
+    /// The job file; `None` for standard input.
+    pub input: Option<PathBuf>,
+    /// `--arithmetic`, default exact: how the job's numbers are read.
+    pub arithmetic: Arithmetic,
+    /// `--max-work` and `--max-input` ([`super::budget`]).
+    pub limits: super::budget::Limits,
+}
+
 /// Options of `blossom check`.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct CheckOptions {
@@ -103,7 +114,15 @@ pub struct CheckOptions {
 }
 
 /// The subcommands, in the order the help lists them.
-pub const SUBCOMMANDS: [&str; 6] = ["verify", "restrict", "check", "figures", "expand", "help"];
+pub const SUBCOMMANDS: [&str; 7] = [
+    "verify",
+    "restrict",
+    "intersect",
+    "check",
+    "figures",
+    "expand",
+    "help",
+];
 
 /// What the command line asks for.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -118,6 +137,8 @@ pub enum Command {
     },
     /// `blossom restrict ...`.
     Restrict(RestrictOptions),
+    /// `blossom intersect ...`: certified zeros and intersections.
+    Intersect(IntersectOptions),
     /// `blossom check ...`: the exact error of another program's f64 answer.
     Check(CheckOptions),
     /// `blossom figures [--out DIR]`: the pictures, written as SVG files into the directory.
@@ -144,6 +165,8 @@ Usage:
                                exit 0 when everything is reproduced or explained, 1 otherwise
                                (see `verify --help`)
   blossom restrict [OPTIONS]   restrict a curve or surface given as JSON (see `restrict --help`)
+  blossom intersect [OPTIONS]  certified zeros of a Bezier function, intersections of two
+                               curves and self-intersections (see `intersect --help`)
   blossom check [OPTIONS]      the exact error of another program's f64 answer to a restrict
                                job (see `check --help`)
   blossom figures [--out DIR]  draw the papers' figures and examples as SVG files
@@ -287,6 +310,39 @@ Options:
   -h, --help  print this help
 ";
 
+/// Help for `blossom intersect`.
+pub const INTERSECT_HELP: &str = "\
+blossom intersect: certified zeros and intersections of Bezier curves
+
+Usage: blossom intersect [--input FILE] [--arithmetic exact|f64] [--max-work UNITS]
+                         [--max-input BYTES]
+
+Reads one job (JSON) and prints its exact answer as one line of JSON; exit code 0.
+  {\"kind\": \"roots\", \"control_points\": [b0, ..., bn]}
+      every distinct zero in [0, 1] of the Bezier function with these coefficients, with
+      its multiplicity (\"identically_zero\": true for the zero function)
+  {\"kind\": \"curve-curve\", \"curves\": [P, Q]}
+      every isolated intersection P(s) = Q(t) with an exact tangency flag, and every
+      overlap (common stretch), of two 2-D Bezier curves over [0, 1]
+  {\"kind\": \"self\", \"curve\": P}
+      every pair s < t with P(s) = P(t), and the stretches a curve retraces
+A curve is its control points [[x0, y0], ..., [xn, yn]], 1 <= n <= 24; a Bezier function
+has degree at most 200. Every parameter is written as {\"value\": the correctly rounded
+double, \"exact\": \"p/q\" or null, \"interval\": an isolating interval [lo, hi],
+\"polynomial\": a square-free integer polynomial it is a root of} (see docs/cli.md).
+
+Options:
+  --input FILE         read the job from FILE (default, or `-`: standard input)
+  --arithmetic exact   read the numbers as written (default; \"1/3\" is one third)
+  --arithmetic f64     round each input number to the nearest double first; the answer
+                       is still the exact one for those doubles
+  --max-work UNITS     the work budget (as for restrict)
+  --max-input BYTES    the longest input read (as for restrict)
+  -h, --help           print this help
+
+On bad input one line `error: FIELD: ...` on standard error, exit code 2.
+";
+
 /// Help for `blossom check`.
 pub const CHECK_HELP: &str = "\
 blossom check: the exact error of somebody else's f64 answer to a restriction job
@@ -355,6 +411,7 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
         "verify" => parse_verify(rest),
         "restrict" => parse_restrict(rest),
         "check" => parse_check(rest),
+        "intersect" => parse_intersect(rest),
         "figures" => parse_figures(rest),
         "expand" => parse_expand(rest),
         "help" => Ok(Command::Help(HELP)),
@@ -553,20 +610,7 @@ fn parse_restrict(args: &[OsString]) -> Result<Command, Error> {
             "--arithmetic" => {
                 once(arithmetic.is_some(), "--arithmetic")?;
                 let value = take_value("--arithmetic", inline, &mut rest)?;
-                arithmetic = Some(match value.to_string_lossy().as_ref() {
-                    "exact" => Arithmetic::Exact,
-                    "f64" => Arithmetic::F64,
-                    other => {
-                        return Err(Error::new(
-                            "--arithmetic",
-                            format!(
-                                "unknown arithmetic {}{} (expected exact or f64)",
-                                quoted(other),
-                                did_you_mean(other, &["exact", "f64"])
-                            ),
-                        ))
-                    }
-                });
+                arithmetic = Some(arithmetic_value(&value)?);
             }
             "--method" => {
                 once(method.is_some(), "--method")?;
@@ -604,6 +648,59 @@ fn parse_restrict(args: &[OsString]) -> Result<Command, Error> {
         input: common.input.clone().unwrap_or(None),
         arithmetic: arithmetic.unwrap_or(Arithmetic::Exact),
         method: method.unwrap_or_default(),
+        limits: common.limits(),
+    }))
+}
+
+/// The value of `--arithmetic`: `exact` or `f64`.
+fn arithmetic_value(value: &OsStr) -> Result<Arithmetic, Error> {
+    match value.to_string_lossy().as_ref() {
+        "exact" => Ok(Arithmetic::Exact),
+        "f64" => Ok(Arithmetic::F64),
+        other => Err(Error::new(
+            "--arithmetic",
+            format!(
+                "unknown arithmetic {}{} (expected exact or f64)",
+                quoted(other),
+                did_you_mean(other, &["exact", "f64"])
+            ),
+        )),
+    }
+}
+
+/// The flags of `intersect`, for messages and suggestions.
+const INTERSECT_FLAGS: [&str; 4] = ["--input", "--arithmetic", "--max-work", "--max-input"];
+
+fn parse_intersect(args: &[OsString]) -> Result<Command, Error> {
+    let mut common = Common::default();
+    let mut arithmetic: Option<Arithmetic> = None;
+    let mut rest = args.iter();
+    while let Some(arg) = rest.next() {
+        let (flag, inline) = split_flag(arg);
+        match flag.as_str() {
+            f if is_help(f) && inline.is_none() => return Ok(Command::Help(INTERSECT_HELP)),
+            "--arithmetic" => {
+                once(arithmetic.is_some(), "--arithmetic")?;
+                let value = take_value("--arithmetic", inline, &mut rest)?;
+                arithmetic = Some(arithmetic_value(&value)?);
+            }
+            f => {
+                if common.take(f, inline, &mut rest)? {
+                    continue;
+                }
+                if f.starts_with('-') && f.len() > 1 {
+                    return Err(unknown_option(f, "intersect", &INTERSECT_FLAGS));
+                }
+                return Err(Error::new(
+                    f,
+                    "unexpected argument for intersect (give the job file as --input FILE)",
+                ));
+            }
+        }
+    }
+    Ok(Command::Intersect(IntersectOptions {
+        input: common.input.clone().unwrap_or(None),
+        arithmetic: arithmetic.unwrap_or(Arithmetic::Exact),
         limits: common.limits(),
     }))
 }

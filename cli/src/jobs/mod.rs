@@ -20,6 +20,7 @@
 pub mod answer;
 pub mod args;
 pub mod budget;
+pub mod intersect_jobs;
 pub mod job;
 pub mod names;
 pub mod patch_jobs;
@@ -108,6 +109,19 @@ pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
             Ok(text) => Outcome::success(text),
             Err(error) => Outcome::failure(&error),
         },
+        Ok(Command::Intersect(options)) => {
+            match read_input(options.input.as_deref(), &options.limits, stdin)
+                .and_then(|bytes| parse_json(&bytes))
+                .and_then(|document| intersect_jobs::answer(&document, options.arithmetic))
+                .and_then(|answer| {
+                    serde_json::to_string(&answer).map_err(|e| {
+                        Error::new("internal", format!("cannot write the answer: {e}"))
+                    })
+                }) {
+                Ok(text) => Outcome::success(with_newline(text)),
+                Err(error) => Outcome::failure(&error),
+            }
+        }
         Ok(Command::Check(options)) => {
             match read_input(options.input.as_deref(), &options.limits, stdin)
                 .and_then(|bytes| parse_json(&bytes))

@@ -8,6 +8,7 @@ mod common;
 mod cli_budget;
 mod cli_check;
 mod cli_error_bounds;
+mod cli_intersect;
 mod cli_patch_jobs;
 mod cli_restrict;
 mod cli_spline_jobs;

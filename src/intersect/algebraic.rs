@@ -1,0 +1,445 @@
+//! Real algebraic numbers: a square-free primitive integer polynomial f with an isolating
+//! interval, and exact operations on them (refinement, comparison, sign of a polynomial at
+//! the number, correctly rounded conversion to `f64`).
+//!
+//! Invariant of [`AlgebraicReal`]: either the number is the rational r (then `exact` is r, the
+//! polynomial is the primitive linear q x - p of r = p / q, and the interval is [r, r]), or it
+//! is irrational, lo < hi, f(lo) and f(hi) are non-zero with opposite signs and f has exactly
+//! one root in (lo, hi). Rationality is always decided exactly when a number is built:
+//! * a factor of degree 1 gives a rational root;
+//! * for degree >= 2, a root p/q in lowest terms has q | lc(f) (Gauss), and two distinct
+//!   rationals with denominators <= L = |lc(f)| differ by at least 1/L^2. So once the interval
+//!   is shorter than 1/L^2 the only possible rational root is the rational of least
+//!   denominator in it (found by continued fractions), and one exact evaluation decides.
+//!   Before that, a cheap sufficient test: a rational root reduces to a root of f modulo every
+//!   prime l not dividing lc(f), so f without a root modulo some such small prime has no
+//!   rational root at all.
+//!
+//! Refinement is bisection with exact sign evaluation (homogeneous Horner at dyadic points).
+//! `to_f64` is correctly rounded (ties to even): refine until both ends round to the same
+//! double; when exactly one rounding boundary m (the midpoint of two adjacent doubles) lies
+//! between the ends, the sign of f at m tells the side (m itself would be a rational root,
+//! already detected).
+
+use super::isolate::{bernstein_on, sign_changes, Isolated};
+use super::upoly::{self, degree, gcd, primitive, sign_at, ZPoly};
+use crate::num::ring::{rational_to_f64, Rational};
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+use std::cmp::Ordering;
+
+/// A real algebraic number (see the module docs for the invariant).
+#[derive(Clone, Debug)]
+pub struct AlgebraicReal {
+    poly: ZPoly,
+    lo: Rational,
+    hi: Rational,
+    exact: Option<Rational>,
+}
+
+/// Small primes for the modular test of rational roots.
+const SMALL_PRIMES: [u64; 30] = [
+    3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67, 71, 73, 79, 83, 89, 97,
+    101, 103, 107, 109, 113, 127,
+];
+
+impl AlgebraicReal {
+    /// The rational number `r`.
+    pub fn from_rational(r: Rational) -> Self {
+        let poly = vec![-r.numer().clone(), r.denom().clone()];
+        AlgebraicReal {
+            poly,
+            lo: r.clone(),
+            hi: r.clone(),
+            exact: Some(r),
+        }
+    }
+
+    /// The root of the square-free integer polynomial `f` isolated by `iso` (from
+    /// [`isolate`](super::isolate::isolate) on `f` or on a multiple of `f`, provided the root
+    /// is a root of `f`). Decides rationality exactly.
+    pub(crate) fn from_isolated(f: &[BigInt], iso: &Isolated) -> Self {
+        if iso.exact {
+            return Self::from_rational(iso.lo.clone());
+        }
+        let mut a = AlgebraicReal {
+            poly: primitive(f),
+            lo: iso.lo.clone(),
+            hi: iso.hi.clone(),
+            exact: None,
+        };
+        a.settle_rationality();
+        a
+    }
+
+    /// The number (x - beta) / alpha for rationals alpha != 0 and beta: a root of
+    /// f(alpha t + beta), with the image interval.
+    pub(crate) fn affine_preimage(&self, alpha: &Rational, beta: &Rational) -> Self {
+        if let Some(r) = &self.exact {
+            return Self::from_rational((r - beta) / alpha);
+        }
+        let mut c: Vec<Vec<Rational>> = self
+            .poly
+            .iter()
+            .map(|x| vec![Rational::from_integer(x.clone())])
+            .collect();
+        crate::shape::basis::taylor_shift(&mut c, beta);
+        crate::shape::basis::scale_argument(&mut c, alpha);
+        let g: Vec<Rational> = c.into_iter().map(|p| p[0].clone()).collect();
+        let (a, b) = ((&self.lo - beta) / alpha, (&self.hi - beta) / alpha);
+        let (lo, hi) = if a < b { (a, b) } else { (b, a) };
+        let mut out = AlgebraicReal {
+            poly: upoly::from_rationals(&g),
+            lo,
+            hi,
+            exact: None,
+        };
+        out.settle_rationality();
+        out
+    }
+
+    /// The square-free primitive integer polynomial (ascending powers) vanishing at the number.
+    pub fn polynomial(&self) -> &[BigInt] {
+        &self.poly
+    }
+
+    /// The isolating interval [lo, hi] (lo == hi exactly when the number is rational).
+    pub fn interval(&self) -> (&Rational, &Rational) {
+        (&self.lo, &self.hi)
+    }
+
+    /// The number itself when it is rational.
+    pub fn exact(&self) -> Option<&Rational> {
+        self.exact.as_ref()
+    }
+
+    /// The width hi - lo of the isolating interval.
+    pub fn width(&self) -> Rational {
+        &self.hi - &self.lo
+    }
+
+    /// Halves the isolating interval (no-op for a rational number).
+    pub fn refine(&mut self) {
+        if self.exact.is_some() {
+            return;
+        }
+        let m = (&self.lo + &self.hi) / Rational::from_integer(2.into());
+        match sign_at(&self.poly, &m) {
+            Ordering::Equal => *self = Self::from_rational(m),
+            s if s == sign_at(&self.poly, &self.lo) => self.lo = m,
+            _ => self.hi = m,
+        }
+    }
+
+    /// Refines until the interval is no wider than `width`.
+    pub fn refine_to(&mut self, width: &Rational) {
+        while self.exact.is_none() && &self.width() > width {
+            self.refine();
+        }
+    }
+
+    /// Decides whether the (irrational-so-far) number is rational; see the module docs.
+    fn settle_rationality(&mut self) {
+        let d = degree(&self.poly).unwrap_or(0);
+        if d == 1 {
+            let r = Rational::new(-self.poly[0].clone(), self.poly[1].clone());
+            *self = Self::from_rational(r);
+            return;
+        }
+        let lead = self.poly[d].abs();
+        if no_root_modulo_small_prime(&self.poly, &lead) {
+            return;
+        }
+        let bound = Rational::new(BigInt::one(), &lead * &lead);
+        let mut step = 0u32;
+        loop {
+            if self.exact.is_some() {
+                return;
+            }
+            let done = self.width() < bound;
+            if done || step % 8 == 0 {
+                let c = simplest_between(&self.lo, &self.hi);
+                if sign_at(&self.poly, &c) == Ordering::Equal {
+                    *self = Self::from_rational(c);
+                    return;
+                }
+            }
+            if done {
+                return;
+            }
+            self.refine();
+            step += 1;
+        }
+    }
+
+    /// Exact comparison with a rational, without refinement.
+    pub fn cmp_rational(&self, c: &Rational) -> Ordering {
+        if let Some(r) = &self.exact {
+            return r.cmp(c);
+        }
+        if c <= &self.lo {
+            return Ordering::Greater;
+        }
+        if c >= &self.hi {
+            return Ordering::Less;
+        }
+        let sc = sign_at(&self.poly, c);
+        if sc == Ordering::Equal {
+            return Ordering::Equal;
+        }
+        if sc == sign_at(&self.poly, &self.lo) {
+            // The sign change is in (c, hi).
+            Ordering::Greater
+        } else {
+            Ordering::Less
+        }
+    }
+
+    /// Whether the number is a root of the integer polynomial `h` (exactly: it is a root of
+    /// gcd(f, h), which changes sign over the isolating interval).
+    pub fn is_root_of(&self, h: &[BigInt]) -> bool {
+        if let Some(r) = &self.exact {
+            return sign_at(h, r) == Ordering::Equal;
+        }
+        if upoly::is_zero(h) {
+            return true;
+        }
+        let g = gcd(&self.poly, h);
+        if degree(&g).unwrap_or(0) == 0 {
+            return false;
+        }
+        sign_at(&g, &self.lo) != sign_at(&g, &self.hi)
+    }
+
+    /// The sign of h at the number, exactly (refines `self` as needed).
+    pub fn sign_of(&mut self, h: &[BigInt]) -> Ordering {
+        if let Some(r) = &self.exact {
+            return sign_at(h, r);
+        }
+        if self.is_root_of(h) {
+            return Ordering::Equal;
+        }
+        loop {
+            if let Some(r) = &self.exact {
+                return sign_at(h, r);
+            }
+            let b = bernstein_on(h, &self.lo, &self.hi);
+            if sign_changes(&b) == 0 {
+                let s = b.iter().find(|x| !x.is_zero()).map(|x| x.sign());
+                return match s {
+                    Some(num_bigint::Sign::Minus) => Ordering::Less,
+                    _ => Ordering::Greater,
+                };
+            }
+            self.refine();
+        }
+    }
+
+    /// Exact equality (both isolate the same root of the gcd of their polynomials).
+    pub fn equals(&self, other: &Self) -> bool {
+        match (&self.exact, &other.exact) {
+            (Some(a), Some(b)) => a == b,
+            (Some(a), None) => other.cmp_rational(a) == Ordering::Equal,
+            (None, Some(b)) => self.cmp_rational(b) == Ordering::Equal,
+            (None, None) => {
+                if self.hi <= other.lo || other.hi <= self.lo {
+                    return false;
+                }
+                let g = gcd(&self.poly, &other.poly);
+                if degree(&g).unwrap_or(0) == 0 || !self.is_root_of(&g) || !other.is_root_of(&g) {
+                    return false;
+                }
+                // Both are roots of g, which has one root only in self's interval.
+                other.cmp_rational(&self.lo) == Ordering::Greater
+                    && other.cmp_rational(&self.hi) == Ordering::Less
+            }
+        }
+    }
+
+    /// Exact comparison (refines copies until the intervals are disjoint).
+    pub fn compare(&self, other: &Self) -> Ordering {
+        if let Some(b) = &other.exact {
+            return self.cmp_rational(b);
+        }
+        if let Some(a) = &self.exact {
+            return other.cmp_rational(a).reverse();
+        }
+        if self.equals(other) {
+            return Ordering::Equal;
+        }
+        let (mut a, mut b) = (self.clone(), other.clone());
+        loop {
+            if let Some(r) = b.exact.clone() {
+                return a.cmp_rational(&r);
+            }
+            if let Some(r) = a.exact.clone() {
+                return b.cmp_rational(&r).reverse();
+            }
+            if a.hi <= b.lo {
+                return Ordering::Less;
+            }
+            if b.hi <= a.lo {
+                return Ordering::Greater;
+            }
+            a.refine();
+            b.refine();
+        }
+    }
+
+    /// The double nearest to the number (ties to even), exactly.
+    pub fn to_f64(&self) -> f64 {
+        let mut a = self.clone();
+        loop {
+            if let Some(r) = &a.exact {
+                return rational_to_f64(r);
+            }
+            match rounding_decision(&a.lo, &a.hi) {
+                Rounding::Same(x) => return x,
+                Rounding::Boundary(below, m, above) => {
+                    // m is not a root (the number is irrational), so the sign decides.
+                    return match a.cmp_rational(&m) {
+                        Ordering::Less => below,
+                        Ordering::Greater => above,
+                        Ordering::Equal => rational_to_f64(&m),
+                    };
+                }
+                Rounding::Wide => a.refine(),
+            }
+        }
+    }
+}
+
+/// What the rounding of the numbers in [lo, hi] looks like.
+pub(crate) enum Rounding {
+    /// Every number in [lo, hi] rounds to this double.
+    Same(f64),
+    /// Exactly one rounding boundary m lies in [lo, hi]: numbers below round to the first
+    /// double, numbers above to the last, m itself to even.
+    Boundary(f64, Rational, f64),
+    /// More than one boundary: refine.
+    Wide,
+}
+
+/// The rounding situation of the interval [lo, hi] (lo <= hi).
+pub(crate) fn rounding_decision(lo: &Rational, hi: &Rational) -> Rounding {
+    let a = rational_to_f64(lo);
+    let b = rational_to_f64(hi);
+    if a == b {
+        return Rounding::Same(a);
+    }
+    if !a.is_finite() || !b.is_finite() {
+        return Rounding::Wide;
+    }
+    let next = next_up(a);
+    if next != b {
+        return Rounding::Wide;
+    }
+    let m = (exact_f64(a) + exact_f64(b)) / Rational::from_integer(2.into());
+    Rounding::Boundary(a, m, b)
+}
+
+/// The exact rational value of a finite double.
+pub(crate) fn exact_f64(x: f64) -> Rational {
+    Rational::from_float(x).expect("finite double")
+}
+
+/// The next double above a finite `x`.
+fn next_up(x: f64) -> f64 {
+    if x == 0.0 {
+        f64::from_bits(1)
+    } else if x > 0.0 {
+        f64::from_bits(x.to_bits() + 1)
+    } else {
+        f64::from_bits(x.to_bits() - 1)
+    }
+}
+
+/// The rational of least denominator in the closed interval [x, y] (x <= y).
+pub fn simplest_between(x: &Rational, y: &Rational) -> Rational {
+    if x <= &Rational::zero() && &Rational::zero() <= y {
+        return Rational::zero();
+    }
+    if y < &Rational::zero() {
+        return -simplest_between(&-y, &-x);
+    }
+    let c = x.ceil();
+    if &c <= y {
+        return c;
+    }
+    let fl = x.floor();
+    let inner = simplest_between(
+        &(Rational::one() / (y - &fl)),
+        &(Rational::one() / (x - &fl)),
+    );
+    fl + Rational::one() / inner
+}
+
+/// True when some prime l < 130 not dividing `lead` leaves f without a root modulo l, which
+/// proves that f has no rational root.
+fn no_root_modulo_small_prime(f: &[BigInt], lead: &BigInt) -> bool {
+    SMALL_PRIMES.iter().any(|&l| {
+        let lb = BigInt::from(l);
+        if (lead % &lb).is_zero() {
+            return false;
+        }
+        let c: Vec<u64> = f
+            .iter()
+            .map(|x| x.mod_floor(&lb).to_u64().expect("a residue fits"))
+            .collect();
+        (0..l).all(|x| c.iter().rev().fold(0u64, |acc, ci| (acc * x + ci) % l) != 0)
+    })
+}
+
+/// A positive integer multiple of p - c for a rational polynomial p and a rational c
+/// (ascending): same zeros and same signs.
+pub(crate) fn shifted_poly(p: &[Rational], c: &Rational) -> ZPoly {
+    let mut q: Vec<Rational> = p.to_vec();
+    if q.is_empty() {
+        q.push(Rational::zero());
+    }
+    q[0] -= c;
+    upoly::positive_multiple(&q)
+}
+
+/// Encloses p([lo, hi]) for a rational polynomial p (ascending) by interval Horner.
+pub(crate) fn enclose(p: &[Rational], lo: &Rational, hi: &Rational) -> (Rational, Rational) {
+    let mut a = Rational::zero();
+    let mut b = Rational::zero();
+    for c in p.iter().rev() {
+        let products = [&a * lo, &a * hi, &b * lo, &b * hi];
+        let mn = products.iter().min().expect("four").clone();
+        let mx = products.iter().max().expect("four").clone();
+        a = mn + c;
+        b = mx + c;
+    }
+    (a, b)
+}
+
+/// The value p(alpha) of a rational polynomial at an algebraic number, correctly rounded to a
+/// double (ties to even), exactly.
+pub fn round_polynomial_at(p: &[Rational], alpha: &AlgebraicReal) -> f64 {
+    let mut a = alpha.clone();
+    loop {
+        if let Some(r) = &a.exact {
+            return rational_to_f64(&upoly_eval_q(p, r));
+        }
+        let (lo, hi) = enclose(p, &a.lo, &a.hi);
+        match rounding_decision(&lo, &hi) {
+            Rounding::Same(x) => return x,
+            Rounding::Boundary(below, m, above) => {
+                return match a.sign_of(&shifted_poly(p, &m)) {
+                    Ordering::Less => below,
+                    Ordering::Greater => above,
+                    Ordering::Equal => rational_to_f64(&m),
+                };
+            }
+            Rounding::Wide => a.refine(),
+        }
+    }
+}
+
+/// p(r) for a rational polynomial (ascending) at a rational.
+pub(crate) fn upoly_eval_q(p: &[Rational], r: &Rational) -> Rational {
+    p.iter().rev().fold(Rational::zero(), |acc, c| acc * r + c)
+}

@@ -1,0 +1,273 @@
+//! Univariate polynomials with integer coefficients, `Vec<BigInt>` in ascending powers
+//! (`[c0, c1, ..., cd]` is c0 + c1 x + ... + cd x^d; the zero polynomial is the empty vector).
+//!
+//! Everything here is exact integer arithmetic:
+//! * gcd by the **primitive polynomial remainder sequence**: pseudo-remainders (Knuth's
+//!   Algorithm R, so no fractions appear) divided by their content at every step, which keeps
+//!   the coefficients no larger than the cofactors of the answer;
+//! * the **square-free factorisation of Yun**: f = c f_1 f_2^2 ... f_k^k with every f_i
+//!   square-free, primitive and the f_i pairwise coprime, so a zero of f_i is a zero of f of
+//!   multiplicity exactly i;
+//! * exact sign evaluation at a rational p/q by homogeneous Horner (q^d f(p/q), an integer).
+
+use crate::num::ring::Rational;
+use num_bigint::{BigInt, Sign};
+use num_integer::Integer;
+use num_traits::{One, Signed, Zero};
+use std::cmp::Ordering;
+
+/// A polynomial with integer coefficients, ascending powers, no trailing zero.
+pub type ZPoly = Vec<BigInt>;
+
+/// Drops trailing zero coefficients (the zero polynomial becomes empty).
+pub fn trim(p: &mut ZPoly) {
+    while p.last().is_some_and(Zero::is_zero) {
+        p.pop();
+    }
+}
+
+/// The degree, `None` for the zero polynomial.
+pub fn degree(p: &[BigInt]) -> Option<usize> {
+    p.iter().rposition(|c| !c.is_zero())
+}
+
+/// The gcd of the coefficients (non-negative; 0 for the zero polynomial).
+pub fn content(p: &[BigInt]) -> BigInt {
+    let mut g = BigInt::zero();
+    for c in p {
+        g = g.gcd(c);
+        if g.is_one() {
+            break;
+        }
+    }
+    g
+}
+
+/// The primitive part with a positive leading coefficient (the zero polynomial stays zero).
+pub fn primitive(p: &[BigInt]) -> ZPoly {
+    let mut out: ZPoly = p.to_vec();
+    trim(&mut out);
+    let mut g = content(&out);
+    if g.is_zero() {
+        return out;
+    }
+    if out.last().is_some_and(Signed::is_negative) {
+        g = -g;
+    }
+    if !g.is_one() {
+        for c in &mut out {
+            *c /= &g;
+        }
+    }
+    out
+}
+
+/// The integer polynomial with the same zeros as the rational polynomial `p` (ascending):
+/// `p` times the lcm of its denominators, made primitive.
+pub fn from_rationals(p: &[Rational]) -> ZPoly {
+    let mut l = BigInt::one();
+    for c in p {
+        l = l.lcm(c.denom());
+    }
+    let scaled: ZPoly = p.iter().map(|c| c.numer() * (&l / c.denom())).collect();
+    primitive(&scaled)
+}
+
+/// A positive integer multiple of the rational polynomial `p`, divided by its content: the
+/// same zeros and the same signs everywhere.
+pub fn positive_multiple(p: &[Rational]) -> ZPoly {
+    let mut l = BigInt::one();
+    for c in p {
+        l = l.lcm(c.denom());
+    }
+    let mut out: ZPoly = p.iter().map(|c| c.numer() * (&l / c.denom())).collect();
+    trim(&mut out);
+    let g = content(&out);
+    if !g.is_zero() && !g.is_one() {
+        out.iter_mut().for_each(|x| *x /= &g);
+    }
+    out
+}
+
+/// The derivative.
+pub fn derivative(p: &[BigInt]) -> ZPoly {
+    let mut d: ZPoly = p
+        .iter()
+        .enumerate()
+        .skip(1)
+        .map(|(i, c)| c * BigInt::from(i))
+        .collect();
+    trim(&mut d);
+    d
+}
+
+/// The product.
+pub fn mul(a: &[BigInt], b: &[BigInt]) -> ZPoly {
+    if a.is_empty() || b.is_empty() {
+        return Vec::new();
+    }
+    let mut out = vec![BigInt::zero(); a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        if x.is_zero() {
+            continue;
+        }
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] += x * y;
+        }
+    }
+    trim(&mut out);
+    out
+}
+
+/// `a - b`.
+pub fn sub(a: &[BigInt], b: &[BigInt]) -> ZPoly {
+    let mut out = vec![BigInt::zero(); a.len().max(b.len())];
+    for (i, x) in a.iter().enumerate() {
+        out[i] += x;
+    }
+    for (i, y) in b.iter().enumerate() {
+        out[i] -= y;
+    }
+    trim(&mut out);
+    out
+}
+
+/// The pseudo-remainder of `a` by `b` (b non-zero): lc(b)^(deg a - deg b + 1) a mod b.
+fn pseudo_remainder(a: &[BigInt], b: &[BigInt]) -> ZPoly {
+    let mut r: ZPoly = a.to_vec();
+    trim(&mut r);
+    let db = degree(b).expect("non-zero divisor");
+    let lb = &b[db];
+    while let Some(dr) = degree(&r) {
+        if dr < db {
+            break;
+        }
+        let lr = r[dr].clone();
+        let shift = dr - db;
+        for c in r.iter_mut() {
+            *c *= lb;
+        }
+        for (j, c) in b.iter().enumerate().take(db + 1) {
+            r[j + shift] -= &lr * c;
+        }
+        trim(&mut r);
+    }
+    r
+}
+
+/// The exact quotient a / b when b divides a over the rationals and the quotient has integer
+/// coefficients (as for a divisor of a primitive polynomial times an integer); `None` when the
+/// division leaves a remainder or a fraction.
+pub fn exact_div(a: &[BigInt], b: &[BigInt]) -> Option<ZPoly> {
+    let db = degree(b)?;
+    let mut r: ZPoly = a.to_vec();
+    trim(&mut r);
+    let Some(da) = degree(&r) else {
+        return Some(Vec::new());
+    };
+    if da < db {
+        return None;
+    }
+    let mut q = vec![BigInt::zero(); da - db + 1];
+    let lb = &b[db];
+    for k in (0..=da - db).rev() {
+        let c = &r[k + db];
+        if c.is_zero() {
+            continue;
+        }
+        let (qk, rem) = c.div_rem(lb);
+        if !rem.is_zero() {
+            return None;
+        }
+        for (j, bj) in b.iter().enumerate().take(db + 1) {
+            r[j + k] -= &qk * bj;
+        }
+        q[k] = qk;
+    }
+    if r.iter().any(|c| !c.is_zero()) {
+        return None;
+    }
+    trim(&mut q);
+    Some(q)
+}
+
+/// The greatest common divisor, primitive with a positive leading coefficient (`[1]` when the
+/// polynomials are coprime, empty when both are zero), by the primitive remainder sequence.
+pub fn gcd(a: &[BigInt], b: &[BigInt]) -> ZPoly {
+    let mut x = primitive(a);
+    let mut y = primitive(b);
+    if degree(&x) < degree(&y) {
+        std::mem::swap(&mut x, &mut y);
+    }
+    while degree(&y).is_some() {
+        let r = pseudo_remainder(&x, &y);
+        x = y;
+        y = primitive(&r);
+    }
+    primitive(&x)
+}
+
+/// Yun's square-free factorisation of a non-zero `p`: the list of (f_i, i) with f_i
+/// primitive, square-free, of positive degree and pairwise coprime, such that
+/// p = c * prod f_i^i for a constant c. Factors of degree 0 are left out.
+///
+/// Yun's recurrence a_i = gcd(b_i, d_i), b_(i+1) = b_i / a_i, c_(i+1) = d_i / a_i,
+/// d_i = c_i - b_i' (b_1 = f / gcd(f, f'), c_1 = f' / gcd(f, f')) only needs b_i and c_i to
+/// carry the *same* constant factor, so every quotient is taken by a primitive divisor (an
+/// integer quotient by Gauss's lemma) and b_i, c_i are divided by their common content only.
+pub fn square_free_factors(p: &[BigInt]) -> Vec<(ZPoly, usize)> {
+    let f = primitive(p);
+    let mut out = Vec::new();
+    if degree(&f).unwrap_or(0) == 0 {
+        return out;
+    }
+    let df = derivative(&f);
+    let a0 = gcd(&f, &df);
+    let mut b = exact_div(&f, &a0).expect("a primitive divisor divides exactly");
+    let mut c = exact_div(&df, &a0).expect("a primitive divisor divides exactly");
+    let mut i = 1;
+    loop {
+        let d = sub(&c, &derivative(&b));
+        let a = gcd(&b, &d);
+        if degree(&a).unwrap_or(0) > 0 {
+            out.push((a.clone(), i));
+        }
+        b = exact_div(&b, &a).expect("a primitive divisor divides exactly");
+        if degree(&b).unwrap_or(0) == 0 {
+            break;
+        }
+        c = exact_div(&d, &a).expect("a primitive divisor divides exactly");
+        let g = content(&b).gcd(&content(&c));
+        if !g.is_zero() && !g.is_one() {
+            b.iter_mut().for_each(|x| *x /= &g);
+            c.iter_mut().for_each(|x| *x /= &g);
+        }
+        i += 1;
+    }
+    out
+}
+
+/// Whether `p` vanishes identically.
+pub fn is_zero(p: &[BigInt]) -> bool {
+    p.iter().all(Zero::is_zero)
+}
+
+/// The sign of p(x) for a rational x = n / d (d > 0), exactly, by homogeneous Horner:
+/// d^deg p(n/d) = sum c_i n^i d^(deg - i).
+pub fn sign_at(p: &[BigInt], x: &Rational) -> Ordering {
+    let Some(deg) = degree(p) else {
+        return Ordering::Equal;
+    };
+    let (n, d) = (x.numer(), x.denom());
+    let mut acc = p[deg].clone();
+    let mut dpow = BigInt::one();
+    for c in p[..deg].iter().rev() {
+        dpow *= d;
+        acc = acc * n + c * &dpow;
+    }
+    match acc.sign() {
+        Sign::Minus => Ordering::Less,
+        Sign::NoSign => Ordering::Equal,
+        Sign::Plus => Ordering::Greater,
+    }
+}
