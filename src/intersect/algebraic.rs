@@ -441,7 +441,5 @@ pub fn round_polynomial_at(p: &[Rational], alpha: &AlgebraicReal) -> f64 {
 
 /// p(r) for a rational polynomial (ascending) at a rational.
 pub(crate) fn upoly_eval_q(p: &[Rational], r: &Rational) -> Rational {
-    p.iter()
-        .rev()
-        .fold(Rational::zero(), |acc, c| acc * r + c)
+    p.iter().rev().fold(Rational::zero(), |acc, c| acc * r + c)
 }

@@ -64,11 +64,9 @@ pub fn swap(a: &BiPoly) -> BiPoly {
 fn at_s(a: &BiPoly, s0: &BigInt, dt: usize) -> Vec<BigInt> {
     (0..=dt)
         .map(|j| {
-            a.iter()
-                .rev()
-                .fold(BigInt::zero(), |acc, row| {
-                    acc * s0 + row.get(j).cloned().unwrap_or_default()
-                })
+            a.iter().rev().fold(BigInt::zero(), |acc, row| {
+                acc * s0 + row.get(j).cloned().unwrap_or_default()
+            })
         })
         .collect()
 }

@@ -222,7 +222,11 @@ fn finish(mut points: Vec<IntersectionPoint>, mut overlaps: Vec<Overlap>) -> Int
             .any(|o| within(&pt.s, &o.s[0], &o.s[1]) || within(&pt.t, &o.t[0], &o.t[1]))
     });
     points.sort_by(|a, b| a.s.compare(&b.s).then_with(|| a.t.compare(&b.t)));
-    overlaps.sort_by(|a, b| a.s[0].compare(&b.s[0]).then_with(|| a.t[0].compare(&b.t[0])));
+    overlaps.sort_by(|a, b| {
+        a.s[0]
+            .compare(&b.s[0])
+            .then_with(|| a.t[0].compare(&b.t[0]))
+    });
     Intersections { points, overlaps }
 }
 
@@ -265,7 +269,17 @@ fn overlap_case(
         let (pts, ovs) = collinear_overlaps(&along(pp), &along(qq), false)?;
         let points = pts
             .into_iter()
-            .map(|(s, t)| point_of(pp, Some(qq), Solution { s, t, singular: true }))
+            .map(|(s, t)| {
+                point_of(
+                    pp,
+                    Some(qq),
+                    Solution {
+                        s,
+                        t,
+                        singular: true,
+                    },
+                )
+            })
             .collect();
         return Ok(finish(points, ovs));
     }
@@ -338,11 +352,19 @@ fn collinear_overlaps(
             }
             let (b0, b1) = (&cg[l], &cg[l + 1]);
             let (gb0, gb1) = (upoly_eval_q(g, b0), upoly_eval_q(g, b1));
-            let lo = fa0.clone().min(fa1.clone()).max(gb0.clone().min(gb1.clone()));
-            let hi = fa0.clone().max(fa1.clone()).min(gb0.clone().max(gb1.clone()));
+            let lo = fa0
+                .clone()
+                .min(fa1.clone())
+                .max(gb0.clone().min(gb1.clone()));
+            let hi = fa0
+                .clone()
+                .max(fa1.clone())
+                .min(gb0.clone().max(gb1.clone()));
             match lo.cmp(&hi) {
                 Ordering::Greater => {}
-                Ordering::Equal => points.push((preimage(f, a0, a1, &lo), preimage(g, b0, b1, &lo))),
+                Ordering::Equal => {
+                    points.push((preimage(f, a0, a1, &lo), preimage(g, b0, b1, &lo)))
+                }
                 Ordering::Less => {
                     // s increases along the piece: its first end has the value nearer fa0.
                     let (c0, c1) = if fa0 < fa1 { (&lo, &hi) } else { (&hi, &lo) };
@@ -420,7 +442,13 @@ fn affine_overlap(pp: &Power, qq: &Power) -> Result<Intersections> {
             scale_argument(&mut v, &alpha);
             v.into_iter().map(|p| p[0].clone()).collect()
         };
-        if compose(&pp.x) != qq.x || compose(&pp.y) != qq.y {
+        let same = |a: Vec<Rational>, b: &[Rational]| {
+            let n = a.len().max(b.len());
+            (0..n).all(|i| {
+                a.get(i).cloned().unwrap_or_default() == b.get(i).cloned().unwrap_or_default()
+            })
+        };
+        if !same(compose(&pp.x), &qq.x) || !same(compose(&pp.y), &qq.y) {
             continue;
         }
         return Ok(affine_answer(pp, qq, &alpha, &beta));
@@ -443,7 +471,11 @@ fn affine_answer(pp: &Power, qq: &Power, alpha: &Rational, beta: &Rational) -> I
     let mut points = Vec::new();
     match ta.cmp(&tb) {
         Ordering::Less => {
-            let (t0, t1) = if alpha.is_positive() { (ta, tb) } else { (tb, ta) };
+            let (t0, t1) = if alpha.is_positive() {
+                (ta, tb)
+            } else {
+                (tb, ta)
+            };
             overlaps.push(Overlap {
                 s: [
                     AlgebraicReal::from_rational(s_of(&t0)),
@@ -533,24 +565,33 @@ pub fn self_intersections(p: &[[Rational; 2]]) -> Result<Intersections> {
     let sols = divided_difference_solutions(&pp, (&zero, &one), (&zero, &one))?;
     let Some(sols) = sols else {
         if let Some((o, d)) = collinear(p) {
-            let f: Vec<Rational> = pp
-                .x
-                .iter()
-                .zip(&pp.y)
-                .enumerate()
-                .map(|(i, (x, y))| {
-                    if i == 0 {
-                        (x - &o[0]) * &d[0] + (y - &o[1]) * &d[1]
-                    } else {
-                        x * &d[0] + y * &d[1]
-                    }
-                })
-                .collect();
+            let f: Vec<Rational> =
+                pp.x.iter()
+                    .zip(&pp.y)
+                    .enumerate()
+                    .map(|(i, (x, y))| {
+                        if i == 0 {
+                            (x - &o[0]) * &d[0] + (y - &o[1]) * &d[1]
+                        } else {
+                            x * &d[0] + y * &d[1]
+                        }
+                    })
+                    .collect();
             let (pts, ovs) = collinear_overlaps(&f, &f, true)?;
             let points = pts
                 .into_iter()
                 .filter(|(s, t)| s.compare(t) == Ordering::Less)
-                .map(|(s, t)| point_of(&pp, None, Solution { s, t, singular: true }))
+                .map(|(s, t)| {
+                    point_of(
+                        &pp,
+                        None,
+                        Solution {
+                            s,
+                            t,
+                            singular: true,
+                        },
+                    )
+                })
                 .collect();
             return Ok(finish(points, ovs));
         }

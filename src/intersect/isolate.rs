@@ -97,14 +97,18 @@ pub fn halve(b: &[BigInt]) -> (Vec<BigInt>, Vec<BigInt>) {
             level[i] = next;
         }
         left.push(level[0].clone() << (n - j));
-        right[n - j] = level[n - j].clone() << j;
+        right[n - j] = level[n - j].clone() << (n - j);
     }
     (strip_twos(left), strip_twos(right))
 }
 
 /// Divides a vector by the largest power of two dividing all its entries.
 fn strip_twos(mut v: Vec<BigInt>) -> Vec<BigInt> {
-    let shift = v.iter().filter_map(|x| x.trailing_zeros()).min().unwrap_or(0);
+    let shift = v
+        .iter()
+        .filter_map(|x| x.trailing_zeros())
+        .min()
+        .unwrap_or(0);
     if shift > 0 {
         for x in &mut v {
             *x >>= shift;

@@ -229,7 +229,9 @@ fn locate_quotient(
 
 /// Integer coefficients as rationals.
 fn to_rationals(p: &[BigInt]) -> Vec<Rational> {
-    p.iter().map(|c| Rational::from_integer(c.clone())).collect()
+    p.iter()
+        .map(|c| Rational::from_integer(c.clone()))
+        .collect()
 }
 
 /// A(s0, t) for a rational s0, as an integer polynomial in t (a positive multiple).
@@ -277,12 +279,7 @@ fn mul_bi(a: &BiPoly, b: &BiPoly) -> BiPoly {
 /// The difference of two bivariate polynomials.
 fn sub_bi(a: &BiPoly, b: &BiPoly) -> BiPoly {
     let ns = a.len().max(b.len());
-    let nt = a
-        .iter()
-        .chain(b.iter())
-        .map(Vec::len)
-        .max()
-        .unwrap_or(0);
+    let nt = a.iter().chain(b.iter()).map(Vec::len).max().unwrap_or(0);
     let mut out = vec![vec![BigInt::zero(); nt]; ns];
     for (i, row) in a.iter().enumerate() {
         for (j, x) in row.iter().enumerate() {

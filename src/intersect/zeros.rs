@@ -63,7 +63,11 @@ pub(crate) fn roots_with_multiplicity(p: &[BigInt], a: &Rational, b: &Rational) 
             .find(|(f, _)| holds_root(f, iso))
             .expect("every root of the square-free part is a root of one factor");
         let nbhd = if iso.exact {
-            let lo = if k > 0 { isolated[k - 1].hi.clone() } else { a.clone() };
+            let lo = if k > 0 {
+                isolated[k - 1].hi.clone()
+            } else {
+                a.clone()
+            };
             let hi = match isolated.get(k + 1) {
                 Some(next) => next.lo.clone(),
                 None => b.clone(),
