@@ -442,7 +442,13 @@ fn affine_overlap(pp: &Power, qq: &Power) -> Result<Intersections> {
             scale_argument(&mut v, &alpha);
             v.into_iter().map(|p| p[0].clone()).collect()
         };
-        if compose(&pp.x) != qq.x || compose(&pp.y) != qq.y {
+        let same = |a: Vec<Rational>, b: &[Rational]| {
+            let n = a.len().max(b.len());
+            (0..n).all(|i| {
+                a.get(i).cloned().unwrap_or_default() == b.get(i).cloned().unwrap_or_default()
+            })
+        };
+        if !same(compose(&pp.x), &qq.x) || !same(compose(&pp.y), &qq.y) {
             continue;
         }
         return Ok(affine_answer(pp, qq, &alpha, &beta));

@@ -97,7 +97,7 @@ pub fn halve(b: &[BigInt]) -> (Vec<BigInt>, Vec<BigInt>) {
             level[i] = next;
         }
         left.push(level[0].clone() << (n - j));
-        right[n - j] = level[n - j].clone() << j;
+        right[n - j] = level[n - j].clone() << (n - j);
     }
     (strip_twos(left), strip_twos(right))
 }

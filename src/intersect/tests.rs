@@ -1,16 +1,404 @@
-//! Tests of the certified zeros and intersections.
+//! Tests of the certified zeros and intersections. Expected values are derived by hand or by
+//! independent means (f64::sqrt, num's own rounding, exact products of linear factors).
 
-use super::*;
-use crate::num::ring::Rational;
+use super::algebraic::AlgebraicReal;
+use super::curves::{intersect_curves, intersect_curves_f64, self_intersections, Intersections};
+use super::upoly;
+use super::zeros::{bezier_zeros, bezier_zeros_f64};
+use crate::num::ring::{rational_to_f64, Rational};
+use crate::shape::basis::power_to_bernstein;
 use num_bigint::BigInt;
+use num_traits::{One, Zero};
+use std::cmp::Ordering;
 
 fn q(n: i64, d: i64) -> Rational {
     Rational::new(BigInt::from(n), BigInt::from(d))
 }
 
+fn pts(v: &[(i64, i64)]) -> Vec<[Rational; 2]> {
+    v.iter().map(|&(x, y)| [q(x, 1), q(y, 1)]).collect()
+}
+
+/// Bernstein coefficients of the product of (t - r_i) (power form multiplied out).
+fn bernstein_of_roots(roots: &[Rational]) -> Vec<Rational> {
+    let mut p = vec![Rational::one()];
+    for r in roots {
+        let mut next = vec![Rational::zero(); p.len() + 1];
+        for (i, c) in p.iter().enumerate() {
+            next[i + 1] += c;
+            next[i] -= c * r;
+        }
+        p = next;
+    }
+    let pts: Vec<Vec<Rational>> = p.into_iter().map(|c| vec![c]).collect();
+    power_to_bernstein(&pts)
+        .into_iter()
+        .map(|v| v[0].clone())
+        .collect()
+}
+
 #[test]
-fn placeholder_compiles() {
-    let z = zeros::bezier_zeros(&[q(-1, 1), q(1, 1)]).unwrap();
+fn high_multiplicity_and_ends() {
+    let mut roots = vec![q(1, 3); 5];
+    roots.push(q(1, 2));
+    let z = bezier_zeros(&bernstein_of_roots(&roots)).unwrap();
+    assert!(!z.identically_zero);
+    let got: Vec<(Rational, usize)> = z
+        .zeros
+        .iter()
+        .map(|r| (r.t.exact().unwrap().clone(), r.multiplicity))
+        .collect();
+    assert_eq!(got, vec![(q(1, 3), 5), (q(1, 2), 1)]);
+    // Roots at both ends, a double root at 0, a root outside [0, 1] ignored.
+    let z = bezier_zeros(&bernstein_of_roots(&[q(0, 1), q(0, 1), q(1, 1), q(3, 1)])).unwrap();
+    let got: Vec<(Rational, usize)> = z
+        .zeros
+        .iter()
+        .map(|r| (r.t.exact().unwrap().clone(), r.multiplicity))
+        .collect();
+    assert_eq!(got, vec![(q(0, 1), 2), (q(1, 1), 1)]);
+}
+
+#[test]
+fn identically_zero_and_no_roots() {
+    let z = bezier_zeros(&[q(0, 1), q(0, 1), q(0, 1)]).unwrap();
+    assert!(z.identically_zero && z.zeros.is_empty());
+    let z = bezier_zeros_f64(&[1.0, -0.5, 1.0]).unwrap();
+    assert!(!z.identically_zero && z.zeros.is_empty());
+    assert!(bezier_zeros(&[]).is_err());
+    let e = bezier_zeros_f64(&[1.0, f64::NAN]).unwrap_err();
+    assert_eq!(e.field, "coefficients[1]");
+}
+
+#[test]
+fn irrational_roots_round_correctly() {
+    // 2 t^2 - 1 = 0: t = sqrt(2)/2, f64::sqrt is correctly rounded (IEEE).
+    let pts: Vec<Vec<Rational>> = [q(-1, 1), q(0, 1), q(2, 1)]
+        .into_iter()
+        .map(|c| vec![c])
+        .collect();
+    let b: Vec<Rational> = power_to_bernstein(&pts)
+        .into_iter()
+        .map(|v| v[0].clone())
+        .collect();
+    let z = bezier_zeros(&b).unwrap();
     assert_eq!(z.zeros.len(), 1);
-    assert_eq!(z.zeros[0].t.exact(), Some(&q(1, 2)));
+    let t = &z.zeros[0].t;
+    assert!(t.exact().is_none());
+    assert_eq!(t.to_f64(), 0.5f64.sqrt());
+    assert_eq!(z.zeros[0].multiplicity, 1);
+    // k t^2 - 1 for several k: 1/sqrt(k), compared with an exact test of the nearest double:
+    // x = to_f64 must satisfy (x - ulp/2)^2 k < 1 < (x + ulp/2)^2 k.
+    for k in [3i64, 5, 7, 11, 13, 1000003] {
+        let pts: Vec<Vec<Rational>> = [q(-1, 1), q(0, 1), q(k, 1)]
+            .into_iter()
+            .map(|c| vec![c])
+            .collect();
+        let b: Vec<Rational> = power_to_bernstein(&pts)
+            .into_iter()
+            .map(|v| v[0].clone())
+            .collect();
+        let z = bezier_zeros(&b).unwrap();
+        let x = z.zeros[0].t.to_f64();
+        let ex = Rational::from_float(x).unwrap();
+        let half_ulp = Rational::from_float(f64::from_bits(x.to_bits() + 1) - x).unwrap() / q(2, 1);
+        let lo = &ex - &half_ulp;
+        let hi = &ex + &half_ulp;
+        assert!(&lo * &lo * q(k, 1) < q(1, 1), "k = {k}");
+        assert!(&hi * &hi * q(k, 1) > q(1, 1), "k = {k}");
+    }
+}
+
+#[test]
+fn rational_root_of_an_irreducible_looking_factor_is_exact() {
+    // (3t - 1)(t^2 - 2)... in [0,1] only 1/3; and (5t-2)(7t-3) gives 2/5 and 3/7 exactly.
+    let z = bezier_zeros(&bernstein_of_roots(&[q(2, 5), q(3, 7)])).unwrap();
+    let got: Vec<Rational> = z
+        .zeros
+        .iter()
+        .map(|r| r.t.exact().unwrap().clone())
+        .collect();
+    assert_eq!(got, vec![q(2, 5), q(3, 7)]);
+    assert_eq!(
+        z.zeros[0].t.polynomial(),
+        &[BigInt::from(-2), BigInt::from(5)]
+    );
+    // to_f64 of a rational equals num's rounding of the exact value.
+    assert_eq!(z.zeros[1].t.to_f64(), rational_to_f64(&q(3, 7)));
+}
+
+#[test]
+fn yun_factors() {
+    // (x - 1)^3 (x + 2)^2 x
+    let lin = |a: i64| vec![BigInt::from(-a), BigInt::one()];
+    let mut p = vec![BigInt::one()];
+    for f in [lin(1), lin(1), lin(1), lin(-2), lin(-2), lin(0)] {
+        p = upoly::mul(&p, &f);
+    }
+    let f = upoly::square_free_factors(&p);
+    let mults: Vec<usize> = f.iter().map(|(_, m)| *m).collect();
+    assert_eq!(mults, vec![1, 2, 3]);
+    assert_eq!(f[0].0, lin(0));
+    assert_eq!(f[1].0, lin(-2));
+    assert_eq!(f[2].0, lin(1));
+}
+
+#[test]
+fn algebraic_comparison() {
+    let sqrt_half = {
+        let b: Vec<Rational> = vec![q(-1, 1), q(-1, 1), q(1, 1)]; // 2t^2 - 1 in Bernstein
+        bezier_zeros(&b).unwrap().zeros[0].t.clone()
+    };
+    // The same number from 4 t^2 - 2.
+    let b2: Vec<Rational> = vec![q(-2, 1), q(-2, 1), q(2, 1)];
+    let other = bezier_zeros(&b2).unwrap().zeros[0].t.clone();
+    assert!(sqrt_half.equals(&other));
+    assert_eq!(sqrt_half.compare(&other), Ordering::Equal);
+    let r = AlgebraicReal::from_rational(q(7, 10));
+    assert_eq!(sqrt_half.compare(&r), Ordering::Greater);
+    let r = AlgebraicReal::from_rational(q(71, 100));
+    assert_eq!(sqrt_half.compare(&r), Ordering::Less);
+}
+
+/// (s, t, tangent) of every point, as exact rationals where rational.
+fn summary(x: &Intersections) -> Vec<(Option<Rational>, Option<Rational>, bool)> {
+    x.points
+        .iter()
+        .map(|p| (p.s.exact().cloned(), p.t.exact().cloned(), p.tangent))
+        .collect()
+}
+
+#[test]
+fn transversal_lines_and_symmetry() {
+    let p = pts(&[(0, 0), (4, 4)]);
+    let qq = pts(&[(0, 4), (4, 0)]);
+    let x = intersect_curves(&p, &qq).unwrap();
+    assert_eq!(summary(&x), vec![(Some(q(1, 2)), Some(q(1, 2)), false)]);
+    assert_eq!(x.points[0].point, [2.0, 2.0]);
+}
+
+#[test]
+fn parabola_and_line_irrational() {
+    // P(s) = (s, s^2) as a quadratic Bézier: (0,0), (1/2, 0), (1, 1); Q: y = 1/2, x in [0,1].
+    let p = vec![[q(0, 1), q(0, 1)], [q(1, 2), q(0, 1)], [q(1, 1), q(1, 1)]];
+    let qq = vec![[q(0, 1), q(1, 2)], [q(1, 1), q(1, 2)]];
+    let x = intersect_curves(&p, &qq).unwrap();
+    assert_eq!(x.points.len(), 1);
+    let pt = &x.points[0];
+    assert_eq!(pt.s.to_f64(), 0.5f64.sqrt());
+    assert_eq!(pt.t.to_f64(), 0.5f64.sqrt());
+    assert!(!pt.tangent);
+    assert_eq!(pt.point, [0.5f64.sqrt(), 0.5]);
+    // Swapped.
+    let y = intersect_curves(&qq, &p).unwrap();
+    assert_eq!(y.points.len(), 1);
+    assert!(y.points[0].s.equals(&pt.t) && y.points[0].t.equals(&pt.s));
+}
+
+#[test]
+fn tangent_parabola_and_line() {
+    // y = s^2 touches y = 0 at s = 0 (an end point) and y = (2s-1)^2 touches at s = 1/2.
+    let p = vec![[q(0, 1), q(1, 1)], [q(1, 2), q(-1, 1)], [q(1, 1), q(1, 1)]];
+    let qq = pts(&[(-1, 0), (3, 0)]);
+    let x = intersect_curves(&p, &qq).unwrap();
+    assert_eq!(summary(&x), vec![(Some(q(1, 2)), Some(q(3, 8)), true)]);
+    let y = intersect_curves(&qq, &p).unwrap();
+    assert_eq!(summary(&y), vec![(Some(q(3, 8)), Some(q(1, 2)), true)]);
+}
+
+#[test]
+fn end_point_touching_and_near_miss() {
+    let p = pts(&[(0, 0), (1, 2), (2, 0)]);
+    let qq = pts(&[(2, 0), (3, 1), (4, 0)]);
+    let x = intersect_curves(&p, &qq).unwrap();
+    assert_eq!(summary(&x), vec![(Some(q(1, 1)), Some(q(0, 1)), false)]);
+    // Near miss: the line y = 1 + 1/10^12 above the arch whose top is y = 1.
+    let line = vec![
+        [q(0, 1), q(1_000_000_000_001, 1_000_000_000_000)],
+        [q(2, 1), q(1_000_000_000_001, 1_000_000_000_000)],
+    ];
+    let x = intersect_curves(&p, &line).unwrap();
+    assert!(x.points.is_empty() && x.overlaps.is_empty());
+    // Exactly touching at the top: tangent.
+    let line = pts(&[(0, 1), (2, 1)]);
+    let x = intersect_curves(&p, &line).unwrap();
+    assert_eq!(summary(&x), vec![(Some(q(1, 2)), Some(q(1, 2)), true)]);
+}
+
+#[test]
+fn cubic_pair_many_crossings_symmetric() {
+    let p = pts(&[(0, 0), (1, 6), (2, -6), (3, 0)]);
+    let qq = pts(&[(0, 1), (3, -1), (0, -2), (3, 2)]);
+    let x = intersect_curves(&p, &qq).unwrap();
+    let y = intersect_curves(&qq, &p).unwrap();
+    assert!(!x.points.is_empty());
+    assert_eq!(x.points.len(), y.points.len());
+    for a in &x.points {
+        assert!(y
+            .points
+            .iter()
+            .any(|b| b.s.equals(&a.t) && b.t.equals(&a.s)));
+        // The point is on both curves within rounding.
+        let s = a.s.to_f64();
+        let px =
+            (1.0 - s).powi(2) * 3.0 * s * 1.0 + 3.0 * (1.0 - s) * s * s * 2.0 + s.powi(3) * 3.0;
+        assert!((px - a.point[0]).abs() < 1e-12);
+    }
+}
+
+#[test]
+fn overlaps_same_reversed_subsegment_elevated() {
+    let p = pts(&[(0, 0), (1, 2), (3, 3)]);
+    // The same curve.
+    let x = intersect_curves(&p, &p).unwrap();
+    assert!(x.points.is_empty());
+    assert_eq!(x.overlaps.len(), 1);
+    let o = &x.overlaps[0];
+    let ends = |o: &super::curves::Overlap| {
+        [
+            o.s[0].exact().cloned().unwrap(),
+            o.s[1].exact().cloned().unwrap(),
+            o.t[0].exact().cloned().unwrap(),
+            o.t[1].exact().cloned().unwrap(),
+        ]
+    };
+    assert_eq!(ends(o), [q(0, 1), q(1, 1), q(0, 1), q(1, 1)]);
+    // Reversed.
+    let r: Vec<[Rational; 2]> = p.iter().rev().cloned().collect();
+    let x = intersect_curves(&p, &r).unwrap();
+    assert_eq!(ends(&x.overlaps[0]), [q(0, 1), q(1, 1), q(1, 1), q(0, 1)]);
+    // Degree-elevated copy: Q = P elevated to 3.
+    let e = vec![
+        [q(0, 1), q(0, 1)],
+        [q(2, 3), q(4, 3)],
+        [q(5, 3), q(7, 3)],
+        [q(3, 1), q(3, 1)],
+    ];
+    let x = intersect_curves(&p, &e).unwrap();
+    assert_eq!(ends(&x.overlaps[0]), [q(0, 1), q(1, 1), q(0, 1), q(1, 1)]);
+    // A sub-segment: P over [1/4, 3/4] (control points by de Casteljau, exact).
+    let sub = {
+        let mut out = p.clone();
+        crate::shape::array::subsegment_into(&p, &q(1, 4), &q(3, 4), &mut out, &mut Vec::new())
+            .unwrap();
+        out
+    };
+    let x = intersect_curves(&p, &sub).unwrap();
+    assert!(x.points.is_empty());
+    assert_eq!(ends(&x.overlaps[0]), [q(1, 4), q(3, 4), q(0, 1), q(1, 1)]);
+    // Adjacent pieces of the same parabola touch at one point.
+    let right = {
+        let mut out = p.clone();
+        crate::shape::array::subsegment_into(&p, &q(1, 1), &q(2, 1), &mut out, &mut Vec::new())
+            .unwrap();
+        out
+    };
+    let x = intersect_curves(&p, &right).unwrap();
+    assert!(x.overlaps.is_empty());
+    assert_eq!(summary(&x), vec![(Some(q(1, 1)), Some(q(0, 1)), true)]);
+}
+
+#[test]
+fn collinear_back_and_forth() {
+    // P goes 0 -> 4 on the x axis; Q goes from 1 to 3 and back toward 2 (turning at a
+    // rational parameter): x(t) = 1 + 6t - 5t^2... built from its power form.
+    let p = pts(&[(0, 0), (4, 0)]);
+    // Q(t) = (1 + 4t - 3t^2... choose x(t) = 1 + 4t - 4t^2 + ... use Bernstein (1, 3, 1): turns at 1/2 at x = 2.
+    let qq = pts(&[(1, 0), (3, 0), (1, 0)]);
+    let x = intersect_curves(&p, &qq).unwrap();
+    assert!(x.points.is_empty());
+    let ends: Vec<[Rational; 4]> = x
+        .overlaps
+        .iter()
+        .map(|o| {
+            [
+                o.s[0].exact().cloned().unwrap(),
+                o.s[1].exact().cloned().unwrap(),
+                o.t[0].exact().cloned().unwrap(),
+                o.t[1].exact().cloned().unwrap(),
+            ]
+        })
+        .collect();
+    assert_eq!(
+        ends,
+        vec![
+            [q(1, 4), q(1, 2), q(0, 1), q(1, 2)],
+            [q(1, 4), q(1, 2), q(1, 1), q(1, 2)],
+        ]
+    );
+    // Self: Q retraces itself: one overlap with t0 > t1, s1 <= t1.
+    let x = self_intersections(&qq).unwrap();
+    assert_eq!(x.overlaps.len(), 1);
+    let o = &x.overlaps[0];
+    assert_eq!(o.s[0].exact(), Some(&q(0, 1)));
+    assert_eq!(o.s[1].exact(), Some(&q(1, 2)));
+    assert_eq!(o.t[0].exact(), Some(&q(1, 1)));
+    assert_eq!(o.t[1].exact(), Some(&q(1, 2)));
+}
+
+#[test]
+fn cubic_loop_self_intersection() {
+    // P: (0,0), (2,1), (-1,1), (1,0). By hand: x(s) = 6s - 15s^2 + 10s^3 and y(s) = 3s(1 - s),
+    // both symmetric under s -> 1 - s (x(s) + x(1 - s) = 1), so the loop closes at x = 1/2:
+    // x(s) - 1/2 = (2s - 1)(5s^2 - 5s + 1/2), s = (5 - sqrt 15)/10, t = 1 - s, and
+    // y = 3 s (1 - s) = 3/10.
+    let p = pts(&[(0, 0), (2, 1), (-1, 1), (1, 0)]);
+    let x = self_intersections(&p).unwrap();
+    assert_eq!(x.points.len(), 1);
+    let pt = &x.points[0];
+    assert!(!pt.tangent);
+    let f = [BigInt::from(1), BigInt::from(-10), BigInt::from(10)];
+    assert!(pt.s.is_root_of(&f) && pt.t.is_root_of(&f));
+    assert_eq!(
+        pt.s.compare(&AlgebraicReal::from_rational(q(1, 2))),
+        Ordering::Less
+    );
+    assert_eq!(
+        pt.t.compare(&AlgebraicReal::from_rational(q(1, 2))),
+        Ordering::Greater
+    );
+    let s = pt.s.to_f64();
+    assert!((s - (5.0 - 15f64.sqrt()) / 10.0).abs() <= 2.0 * f64::EPSILON * s);
+    assert_eq!(pt.point, [0.5, 0.3]);
+}
+
+#[test]
+fn closed_curve_gives_zero_one() {
+    let p = pts(&[(0, 0), (2, 2), (-2, 2), (0, 0)]);
+    let x = self_intersections(&p).unwrap();
+    assert!(x
+        .points
+        .iter()
+        .any(|pt| pt.s.exact() == Some(&q(0, 1)) && pt.t.exact() == Some(&q(1, 1))));
+}
+
+#[test]
+fn f64_input_reads_doubles_exactly() {
+    let x = intersect_curves_f64(&[[0.0, 0.0], [1.0, 1.0]], &[[0.0, 0.1], [1.0, 0.1]]).unwrap();
+    assert_eq!(x.points.len(), 1);
+    // s = t = the double 0.1 exactly (a rational with denominator 2^55).
+    assert_eq!(
+        x.points[0].s.exact(),
+        Some(&Rational::from_float(0.1).unwrap())
+    );
+    assert_eq!(x.points[0].s.to_f64(), 0.1);
+    assert!(intersect_curves_f64(
+        &[[0.0, f64::INFINITY], [1.0, 1.0]],
+        &[[0.0, 0.0], [1.0, 0.0]]
+    )
+    .is_err());
+}
+
+#[test]
+fn bad_input_is_refused() {
+    let e = intersect_curves(&pts(&[(0, 0)]), &pts(&[(0, 0), (1, 1)])).unwrap_err();
+    assert_eq!(e.field, "p");
+    let e = intersect_curves(&pts(&[(0, 0), (1, 1)]), &pts(&[(2, 2), (2, 2)])).unwrap_err();
+    assert_eq!(e.field, "q");
+    // Q(t) = P(t^2)-like common component: refused, not guessed.
+    let p = pts(&[(0, 0), (1, 1)]);
+    let line_quadratic = pts(&[(0, 0), (0, 0), (1, 1)]);
+    // Collinear: decided (one overlap), not refused.
+    let x = intersect_curves(&p, &line_quadratic).unwrap();
+    assert_eq!(x.overlaps.len(), 1);
 }
