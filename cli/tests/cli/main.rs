@@ -14,3 +14,4 @@ mod cli_restrict;
 mod cli_spline_jobs;
 mod figures;
 mod fuzz_corpus;
+mod intersect_corpus;
