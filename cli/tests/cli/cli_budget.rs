@@ -195,7 +195,12 @@ fn the_meter_stops_what_the_estimate_lets_through() {
     // library's own test `charges_stop_at_the_limit_and_nothing_without_a_meter` stops a
     // `BoundedF64` computation).
     let job = sweep_job("curve", 30, true);
-    let estimate = budget::estimate(&job, METHOD_NAMES[0].1, Arithmetic::Exact).work;
+    let closed_form = METHOD_NAMES
+        .iter()
+        .find(|(name, _)| *name == "closed-form")
+        .expect("a method")
+        .1;
+    let estimate = budget::estimate(&job, closed_form, Arithmetic::Exact).work;
     // Within the up-front factor, so only the meter can refuse it; the meter stops it at about
     // a tenth of its work.
     let limit = format!("{}", (estimate / 25.0).ceil());
