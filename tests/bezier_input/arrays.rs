@@ -196,7 +196,9 @@ fn unrolled_f64_path_equals_the_engine_bit_for_bit() {
         }
     }
     let mut rng = Rng(29);
-    assert!(f64::UNROLLED && f32::UNROLLED && !Rational::UNROLLED);
+    const { assert!(<f64 as Ring>::UNROLLED) };
+    const { assert!(<f32 as Ring>::UNROLLED) };
+    const { assert!(!<Rational as Ring>::UNROLLED) };
     for n in 1..=24 {
         check::<2>(&mut rng, n);
         check::<3>(&mut rng, n);
