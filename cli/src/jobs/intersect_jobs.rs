@@ -31,7 +31,7 @@ pub const INTERSECT_FIELDS: [(&str, &[&str]); 3] = [
 ];
 
 /// The largest degree of a curve of a `curve-curve` or `self` job.
-pub const MAX_CURVE_DEGREE: usize = 24;
+pub const MAX_CURVE_DEGREE: usize = 8;
 
 /// The largest degree of the Bézier function of a `roots` job.
 pub const MAX_FUNCTION_DEGREE: usize = 200;

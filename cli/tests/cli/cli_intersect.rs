@@ -272,11 +272,11 @@ fn bad_input_names_the_field() {
     }
     assert!(error(&[], r#"{"kind": "root", "control_points": [1]}"#)
         .contains("did you mean \"roots\"?"));
-    // A curve of degree 25 is over the documented limit of 24.
+    // A curve of degree 25 is over the documented limit of 8.
     let long: Vec<Value> = (0..26).map(|i| json!([i, i * i % 7])).collect();
     let e = error(&[], &json!({"kind": "self", "curve": long}).to_string());
     assert!(
-        e.starts_with("error: curve: degree 25 is over the limit of 24"),
+        e.starts_with("error: curve: degree 25 is over the limit of 8"),
         "{e}"
     );
     // Options.
