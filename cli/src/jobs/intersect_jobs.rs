@@ -18,8 +18,8 @@
 //! ([`super::budget`]) applies to what is accepted.
 
 use super::args::Arithmetic;
-use super::job::{array, expect_fields, field};
-use crate::number::{f64_from_json, f64_to_json, format_rational, json_type, rational_from_json};
+use super::job::{array, expect_fields, field, object_and_kind};
+use crate::number::{f64_from_json, f64_to_json, format_rational, rational_from_json};
 use blossom::{AlgebraicReal, Error, Intersections, Rational};
 use serde_json::{json, Map, Value};
 
@@ -38,24 +38,7 @@ pub const MAX_FUNCTION_DEGREE: usize = 200;
 
 /// Answers the `blossom intersect` job `document` as one JSON value.
 pub fn answer(document: &Value, arithmetic: Arithmetic) -> Result<Value, Error> {
-    let Value::Object(job) = document else {
-        return Err(Error::new(
-            "input",
-            format!(
-                "expected a JSON object (a job), found {}",
-                json_type(document)
-            ),
-        ));
-    };
-    let kind = match field(job, "kind")? {
-        Value::String(kind) => kind.as_str(),
-        other => {
-            return Err(Error::new(
-                "kind",
-                format!("expected a string, found {}", json_type(other)),
-            ))
-        }
-    };
+    let (job, kind) = object_and_kind(document)?;
     let Some((kind, accepted)) = INTERSECT_FIELDS.iter().find(|(k, _)| *k == kind) else {
         let kinds: Vec<&str> = INTERSECT_FIELDS.iter().map(|(k, _)| *k).collect();
         return Err(Error::new(

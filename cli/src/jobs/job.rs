@@ -198,8 +198,9 @@ pub fn check_fields(document: &Value) -> Result<(), Error> {
     Ok(())
 }
 
-/// Reads the job in `document`, the whole parsed input.
-pub fn parse_job<T: JsonNumber>(document: &Value) -> Result<Job<T>, Error> {
+/// The job object of `document` (the whole parsed input) and its `"kind"` string, or the error
+/// naming `input` (not an object) or `kind` (missing, not a string).
+pub(super) fn object_and_kind(document: &Value) -> Result<(&Map<String, Value>, &str), Error> {
     let Value::Object(job) = document else {
         return Err(Error::new(
             "input",
@@ -209,15 +210,18 @@ pub fn parse_job<T: JsonNumber>(document: &Value) -> Result<Job<T>, Error> {
             ),
         ));
     };
-    let kind = match field(job, "kind")? {
-        Value::String(kind) => kind.as_str(),
-        other => {
-            return Err(Error::new(
-                "kind",
-                format!("expected a string, found {}", json_type(other)),
-            ))
-        }
-    };
+    match field(job, "kind")? {
+        Value::String(kind) => Ok((job, kind.as_str())),
+        other => Err(Error::new(
+            "kind",
+            format!("expected a string, found {}", json_type(other)),
+        )),
+    }
+}
+
+/// Reads the job in `document`, the whole parsed input.
+pub fn parse_job<T: JsonNumber>(document: &Value) -> Result<Job<T>, Error> {
+    let (job, kind) = object_and_kind(document)?;
     match kind {
         "curve" => {
             let coefficients = points(field(job, "coefficients")?, "coefficients", None)?;
