@@ -674,14 +674,16 @@ fn moderate(x: f64) -> bool {
 
 /// The fuzz target `restrict_shapes`: the first byte chooses exact (even) or `f64` (odd)
 /// arithmetic, then `Layout::decode` a shape (power curve, tensor grid, grid on a triangle,
-/// triangular array, Bézier curve, patch or triangle) of small degree ([`F64_CAPS`],
-/// [`EXACT_CAPS`]), then its coordinates and domain. In exact arithmetic every method of
-/// [`Method::ALL`] (and for Bézier input the direct Bézier restriction, and the barycentric
-/// form of the triangle's) gives the identical answer; [`SLOW_METHODS`] take part up to total
-/// degree [`SLOW_EXACT_DEGREE`]. In `f64` (every method at every degree) nothing panics on any doubles (NaN, infinities, huge); [`BoundedF64`]
-/// computes bit for bit the values of plain `f64`, and when every input is a short dyadic
-/// number (`moderate`), every
-/// finite bound covers the distance to the exact answer for the same input doubles.
+/// triangular array, Bézier curve, patch or triangle) of small degree (the private caps
+/// `F64_CAPS` and `EXACT_CAPS`), then its coordinates and domain.
+///
+/// In exact arithmetic every method of [`Method::ALL`] (and for Bézier input the direct Bézier
+/// restriction, and the barycentric form of the triangle's) gives the identical answer; the
+/// methods that grow fastest with the degree (`SLOW_METHODS`) take part up to total degree
+/// `SLOW_EXACT_DEGREE`. In `f64` (every method at every degree) nothing panics on any doubles
+/// (NaN, infinities, huge); [`BoundedF64`] computes bit for bit the values of plain `f64`, and
+/// when every input is a short dyadic number (`moderate`), every finite bound covers the
+/// distance to the exact answer for the same input doubles.
 pub fn restrict_entry(data: &[u8]) {
     let mut bytes = Bytes { data };
     let f64_mode = bytes.byte() & 1 == 1;

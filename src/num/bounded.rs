@@ -242,7 +242,7 @@ impl fmt::Display for BoundedF64 {
 }
 
 /// Every operation but `zero`, `one` and `is_zero` charges the work meter first
-/// ([`meter`](super::meter), a no-op unless a meter runs).
+/// (`blossom::meter` with the feature `meter`, a no-op unless a meter runs).
 impl Ring for BoundedF64 {
     fn zero() -> Self {
         Self::exact(0.0)

@@ -169,7 +169,7 @@ float_ring!(
 );
 
 /// Every operation but `zero`, `one` and `is_zero` charges the work meter first
-/// ([`meter`](super::meter), a no-op unless a meter runs).
+/// (`blossom::meter` with the feature `meter`, a no-op unless a meter runs).
 impl Ring for Rational {
     fn zero() -> Self {
         Zero::zero()
