@@ -250,8 +250,9 @@ pub(crate) fn charge_bounded_constant(k: &Rational) {
 /// let third = Rational::new(1.into(), 3.into());
 /// // A few operations fit in 10^6 units ...
 /// assert_eq!(metered(1_000_000, || third.mul(&third)), Ok(Rational::new(1.into(), 9.into())));
-/// // ... a power of a huge exponent does not.
-/// let over = metered(1_000_000, || third.pow(1 << 20)).unwrap_err();
+/// // ... a power of a huge exponent does not (`Ring::pow`: the inherent `Ratio::pow` of
+/// // num-rational is not metered).
+/// let over = metered(1_000_000, || Ring::pow(&third, 1 << 20)).unwrap_err();
 /// assert_eq!(over.limit, 1_000_000);
 /// assert!(over.charged > over.limit);
 /// ```
