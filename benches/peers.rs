@@ -13,8 +13,8 @@
 //!
 //! Run: `cargo bench --bench peers --features rayon` (BENCHMARKS.md has the figures).
 
-use blossom::{restrict_bezier_curve, Bezier, BezierCurve};
 use blossom::{Batch, RestrictionMap};
+use blossom::{Bezier, BezierCurve};
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 use kurbo::ParamCurve;
 use std::time::Duration;
@@ -70,7 +70,7 @@ fn check_agreement(cases: &[Case]) {
         let ly = lyon_of(c).split_range(c.a..c.b);
         let lyon = [ly.from, ly.ctrl1, ly.ctrl2, ly.to].map(|p| [p.x, p.y]);
         let special = cubic_specialised(&c.ctrl, &c.a, &c.b);
-        let generic = restrict_bezier_curve(&generic_of(c), &c.a, &c.b);
+        let generic = generic_of(c).subsegment(c.a.clone()..c.b.clone());
         for j in 0..4 {
             for x in 0..2 {
                 let w = want[j][x];
@@ -146,7 +146,7 @@ fn single_cubic(c: &mut Criterion) {
             let mut acc = 0.0;
             for c in &cases {
                 // The runtime-degree entry point on the same inline arrays as the others.
-                blossom::subsegment_into(
+                blossom::engine::subsegment_into(
                     black_box(&c.ctrl[..]),
                     black_box(&c.a),
                     black_box(&c.b),
@@ -176,7 +176,7 @@ fn single_cubic(c: &mut Criterion) {
         bench.iter(|| {
             let mut acc = 0.0;
             for (g, c) in generics.iter().zip(&cases) {
-                let q = restrict_bezier_curve(black_box(g), black_box(&c.a), black_box(&c.b));
+                let q = black_box(g).subsegment(black_box(c.a)..black_box(c.b));
                 acc += q.control_points()[1][0] + q.control_points()[2][1];
             }
             acc

@@ -37,7 +37,7 @@ pub fn to_f64(p: &[Rational]) -> Point<f64> {
 pub fn tensor_f64(patch: &TensorPatch<Rational>) -> Result<TensorPatch<f64>, Error> {
     TensorPatch::new(
         patch
-            .control_points()
+            .to_nested()
             .iter()
             .map(|row| row.iter().map(|p| to_f64(p)).collect())
             .collect(),
@@ -92,7 +92,7 @@ pub fn triangle_iso_lines(patch: &TriangularPatch<f64>) -> Vec<Vec<Point3>> {
                         1 => [b, fixed, a],
                         _ => [a, b, fixed],
                     };
-                    point3_f64(&patch.eval(&bary))
+                    point3_f64(&patch.eval(&[bary[0].clone(), bary[1].clone()]))
                 })
                 .collect();
             lines.push(line);
@@ -133,7 +133,7 @@ pub fn triangle_points(patch: &TriangularPatch<Rational>) -> Vec<Point3> {
 /// The control net of a tensor patch as points of the picture, `[nu][mu]`.
 pub fn tensor_points(patch: &TensorPatch<Rational>) -> Vec<Vec<Point3>> {
     patch
-        .control_points()
+        .to_nested()
         .iter()
         .map(|row| row.iter().map(|p| point3(p)).collect())
         .collect()
