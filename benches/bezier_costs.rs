@@ -1,7 +1,7 @@
 //! Growth of the cost of restricting Bézier input with the degree, f64, 3-D points, three
 //! algorithms in the same run:
 //!
-//! * `bulk`: `restrict_bezier_curve` and its siblings, the halving engine in the Bernstein
+//! * `bulk`: `BezierCurve::subsegment` and its siblings, the halving engine in the Bernstein
 //!   basis through the runtime-dimension API, O(n^2) per curve, O(nm(n + m)) per tensor patch,
 //!   O(N^3) per triangle (`benches/engine.rs` measures the allocation-free front end);
 //! * `pyramid`: every control point on its own by de Casteljau's pyramid on the blossom,
@@ -49,7 +49,7 @@ fn curves(c: &mut Criterion) {
     for n in [4usize, 8, 16, 32, 64, 128, 256] {
         let curve = BezierCurve::new((0..=n).map(point).collect()).unwrap();
         group.bench_with_input(BenchmarkId::new("bulk", n), &curve, |bench, curve| {
-            bench.iter(|| black_box(curve).subsegment(A.clone()..B.clone()))
+            bench.iter(|| black_box(curve).subsegment(A..B))
         });
         if n > 128 {
             continue; // the per-point algorithms: 0.04 s (pyramid) per call at n = 128

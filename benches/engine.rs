@@ -3,7 +3,7 @@
 //!
 //! * `curve`: a Bézier curve of degree n restricted to [a, b]: the engine without allocation
 //!   (`Bezier::subsegment_into`), the engine through the runtime-dimension API
-//!   (`restrict_bezier_curve`), a textbook de Casteljau restriction written here (split at b,
+//!   (`BezierCurve::subsegment`, a new curve each call), a textbook de Casteljau restriction written here (split at b,
 //!   then the right part at a / b, in place, no allocation), and the previous default (to the
 //!   power basis by forward differences, then the Taylor shift: `before`);
 //! * `tensor`: a tensor patch of bidegree (n, n): the engine, and `before`;
@@ -132,11 +132,7 @@ fn curves(c: &mut Criterion) {
         if n <= 16 {
             close(&as_arrays(before()), &want, "before");
         }
-        close(
-            &as_arrays(vec_curve.subsegment(a.clone()..b.clone())),
-            &want,
-            "vec",
-        );
+        close(&as_arrays(vec_curve.subsegment(a..b)), &want, "vec");
         group.bench_with_input(BenchmarkId::new("engine", n), &n, |bench, _| {
             bench.iter(|| {
                 curve
@@ -152,7 +148,7 @@ fn curves(c: &mut Criterion) {
             })
         });
         group.bench_with_input(BenchmarkId::new("engine_vec_api", n), &n, |bench, _| {
-            bench.iter(|| black_box(&vec_curve).subsegment(a.clone()..b.clone()))
+            bench.iter(|| black_box(&vec_curve).subsegment(a..b))
         });
         group.bench_with_input(BenchmarkId::new("before", n), &n, |bench, _| {
             bench.iter(|| black_box(before()))

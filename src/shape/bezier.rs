@@ -563,8 +563,10 @@ impl<T: Ring> TriangularPatch<T> {
     /// `nu + mu > N`.
     pub fn try_get(&self, nu: usize, mu: usize) -> Option<&[T]> {
         let in_range = nu.checked_add(mu).is_some_and(|s| s <= self.degree);
-        let start = triangle_index(self.degree, nu, mu) * self.dim;
-        in_range.then(|| &self.coords[start..start + self.dim])
+        in_range.then(|| {
+            let start = triangle_index(self.degree, nu, mu) * self.dim;
+            &self.coords[start..start + self.dim]
+        })
     }
 
     /// All control points in lexicographic order of `(nu, mu)`.

@@ -131,8 +131,8 @@ fn measure() -> Vec<Row> {
                 }
                 let want = bezier_q.subsegment(aq.clone()..bq.clone());
                 let want = &want.control_points().to_vec();
-                let got = bezier.subsegment(a.clone()..b.clone());
-                let got_64 = bezier_64.subsegment(a64.clone()..b64.clone());
+                let got = bezier.subsegment(a..b);
+                let got_64 = bezier_64.subsegment(a64..b64);
                 let e = relative_error(&got.control_points().to_vec(), want);
                 let e_64 = relative_error(&got_64.control_points().to_vec(), want);
                 record("Bézier", "engine", degree, kind, (e, e_64));

@@ -201,7 +201,7 @@ mod kurbo_curves {
                 }
                 let (a, b) = (rng.unit().abs() * 0.5, 0.5 + rng.unit().abs() * 0.5);
                 let theirs = seg.subsegment(a..b);
-                let mine = ours.subsegment(a.clone()..b.clone());
+                let mine = ours.subsegment(a..b);
                 let points: Vec<Point> = match theirs {
                     PathSeg::Cubic(c) => vec![c.p0, c.p1, c.p2, c.p3],
                     PathSeg::Quad(q) => vec![q.p0, q.p1, q.p2],

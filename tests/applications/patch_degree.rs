@@ -797,11 +797,7 @@ fn patch_reductions_snapshot() {
         (
             "triangle (u, v, u^2 v), 3 -> 2, over the unit triangle",
             Json::array(triangle.iter().map(|(m, r, e)| {
-                figure(
-                    *m,
-                    Json::array(r.control_points().iter().map(|p| coords(p))),
-                    e,
-                )
+                figure(*m, Json::array(r.control_points().iter().map(&coords)), e)
             })),
         ),
     ]);

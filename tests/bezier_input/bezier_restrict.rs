@@ -404,7 +404,7 @@ fn f64_curves_against_the_exact_answer() {
             } else {
                 (rng.unit_f64() * 2.0 - 1.0, rng.unit_f64() * 2.0 + 1.0)
             };
-            let float = (&BezierCurve::new(pts.clone()).unwrap()).subsegment(a.clone()..b.clone());
+            let float = BezierCurve::new(pts.clone()).unwrap().subsegment(a..b);
             let exact_curve = BezierCurve::new(exact_points(&pts)).unwrap();
             let want = exact_curve.subsegment((exact(a)).clone()..(exact(b)).clone());
             let e = relative_error(
@@ -441,9 +441,11 @@ fn f64_patches_against_the_exact_answer() {
                 })
                 .collect();
             let rect: [f64; 4] = std::array::from_fn(|_| (rng.unit_f64() + 1.0) / 2.0);
-            let float = (&TensorPatch::new(net.clone()).unwrap()).restrict(&rect);
+            let float = TensorPatch::new(net.clone()).unwrap().restrict(&rect);
             let exact_net = net.iter().map(|row| exact_points(row)).collect();
-            let want = (&TensorPatch::new(exact_net).unwrap()).restrict(&rect.map(exact));
+            let want = TensorPatch::new(exact_net)
+                .unwrap()
+                .restrict(&rect.map(exact));
             let size = input_size(&net.concat());
             for (fr, er) in float.to_nested().iter().zip(want.to_nested()) {
                 worst_tensor = worst_tensor.max(relative_error(fr, &er, size));

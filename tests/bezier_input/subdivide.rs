@@ -125,7 +125,7 @@ fn f64_error_is_small_at_moderate_degree() {
             let pts: Vec<Vec<f64>> = (0..=n).map(|_| vec![rng.unit(), rng.unit()]).collect();
             let a = (rng.next() % 1000) as f64 / 2000.0;
             let b = 0.5 + (rng.next() % 1000) as f64 / 2000.0;
-            let float = (&BezierCurve::new(pts.clone()).unwrap()).subsegment(a.clone()..b.clone());
+            let float = BezierCurve::new(pts.clone()).unwrap().subsegment(a..b);
             let exact_curve = BezierCurve::new(exact_points(&pts)).unwrap();
             let want = exact_curve.subsegment((exact(a)).clone()..(exact(b)).clone());
             for (pf, pe) in float.control_points().iter().zip(want.control_points()) {

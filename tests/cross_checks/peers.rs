@@ -86,9 +86,7 @@ fn peers_errors_next_to_blossoms() {
         let l = segment.split_range(t0..t1);
         let lyon = [l.from, l.ctrl1, l.ctrl2, l.to].map(|p| vec![p.x, p.y]);
 
-        let ours = curve
-            .subsegment(t0.clone()..t1.clone())
-            .into_control_points();
+        let ours = curve.subsegment(t0..t1).into_control_points();
 
         let mut out = [[0.0; 2]; 4];
         subsegment_into(&ctrl, &t0, &t1, &mut out, &mut scratch).unwrap();

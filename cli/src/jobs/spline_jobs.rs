@@ -134,7 +134,7 @@ pub(super) fn points_json<T: JsonNumber>(pts: &[Point<T>], path: &str) -> Result
 }
 
 pub(super) fn numbers_json<T: JsonNumber>(xs: &[T], path: &str) -> Result<Value, Error> {
-    point_json(&xs.to_vec(), path)
+    point_json(xs, path)
 }
 
 /// The Bézier curve over [0, 1] restricted to [a, b]: the control points
