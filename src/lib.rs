@@ -9,16 +9,16 @@
 //! compute through one another, all generic over one small number trait, [`Ring`].
 //!
 //! ```
-//! use blossom::{restrict_curve, Method, PowerCurve, Rational};
+//! use blossom::{restrict_power_curve, Method, PowerCurve, Rational};
 //!
 //! // C(u) = u^3 on [1, 2]: control points 1, 4/3, 2 ... as blossom values b(2^v, 1^(3-v)).
 //! let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
 //! let cubic = PowerCurve::new(vec![vec![q(0, 1)], vec![q(0, 1)], vec![q(0, 1)], vec![q(1, 1)]])?;
-//! let bezier = restrict_curve(&cubic, &q(1, 1), &q(2, 1), Method::Bulk);
+//! let bezier = restrict_power_curve(&cubic, &q(1, 1), &q(2, 1), Method::Bulk);
 //! let w: Vec<Rational> = bezier.control_points().iter().map(|p| p[0].clone()).collect();
 //! assert_eq!(w, vec![q(1, 1), q(2, 1), q(4, 1), q(8, 1)]);
 //! // Every method gives the identical answer.
-//! assert_eq!(bezier, restrict_curve(&cubic, &q(1, 1), &q(2, 1), Method::ClosedForm));
+//! assert_eq!(bezier, restrict_power_curve(&cubic, &q(1, 1), &q(2, 1), Method::ClosedForm));
 //! # Ok::<(), blossom::Error>(())
 //! ```
 //!

@@ -139,7 +139,7 @@ pub fn restrict_power_surface_to_triangle<T: Ring>(
 /// let tri = [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]];
 /// let patch = restrict_power_triangle(&s, &tri, Method::Definition);
 /// assert_eq!(patch.degree(), 1);
-/// assert_eq!((patch.get(1, 0), patch.get(0, 0)), (&vec![1.0], &vec![0.0]));
+/// assert_eq!((patch.get(1, 0), patch.get(0, 0)), (&[1.0][..], &[0.0][..]));
 /// # Ok::<(), blossom::Error>(())
 /// ```
 pub fn restrict_power_triangle<T: Ring>(

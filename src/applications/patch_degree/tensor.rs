@@ -55,7 +55,7 @@ fn net_len((n, m): (usize, usize)) -> Result<usize> {
 /// // The bilinear patch u v as a biquadratic: only the corner (2, 2) is 1, the middle 1/4.
 /// let uv = TensorPatch::new(vec![vec![vec![0.0], vec![0.0]], vec![vec![0.0], vec![1.0]]])?;
 /// let e = elevate_tensor(&uv, (2, 2))?;
-/// assert_eq!(e.control_points()[1][1], vec![0.25]);
+/// assert_eq!(e.get(1, 1), &[0.25][..]);
 /// assert_eq!(e.control_points()[2][2], vec![1.0]);
 /// # Ok::<(), blossom::Error>(())
 /// ```
