@@ -56,7 +56,7 @@ fn net_len((n, m): (usize, usize)) -> Result<usize> {
 /// let uv = TensorPatch::new(vec![vec![vec![0.0], vec![0.0]], vec![vec![0.0], vec![1.0]]])?;
 /// let e = elevate_tensor(&uv, (2, 2))?;
 /// assert_eq!(e.get(1, 1), &[0.25][..]);
-/// assert_eq!(e.control_points()[2][2], vec![1.0]);
+/// assert_eq!(e.get(2, 2), &[1.0][..]);
 /// # Ok::<(), blossom::Error>(())
 /// ```
 pub fn elevate_tensor<T: Ring>(
