@@ -1,7 +1,7 @@
 //! Growth of the cost of restricting Bézier input with the degree, f64, 3-D points, three
 //! algorithms in the same run:
 //!
-//! * `bulk`: `restrict_bezier_curve` and its siblings, the halving engine in the Bernstein
+//! * `bulk`: `BezierCurve::subsegment` and its siblings, the halving engine in the Bernstein
 //!   basis through the runtime-dimension API, O(n^2) per curve, O(nm(n + m)) per tensor patch,
 //!   O(N^3) per triangle (`benches/engine.rs` measures the allocation-free front end);
 //! * `pyramid`: every control point on its own by de Casteljau's pyramid on the blossom,
@@ -15,13 +15,11 @@
 //! `cargo run --release --example bench_slopes bezier_curve bezier_tensor bezier_triangle`
 //! for the medians, the log-log slopes and the ratios.
 
+use blossom::engine::bernstein_to_power;
+use blossom::{bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom};
 use blossom::{
-    bernstein_to_power, bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom,
-    restrict_bezier_triangle_affine,
-};
-use blossom::{
-    restrict_bezier_curve, restrict_bezier_tensor, restrict_curve, restrict_tensor, BezierCurve,
-    Method, PowerCurve, PowerSurface, TensorPatch, TriangularPatch,
+    restrict_power_curve, restrict_power_surface, BezierCurve, Method, PowerCurve, PowerSurface,
+    TensorPatch, TriangularPatch,
 };
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::time::Duration;
@@ -51,7 +49,7 @@ fn curves(c: &mut Criterion) {
     for n in [4usize, 8, 16, 32, 64, 128, 256] {
         let curve = BezierCurve::new((0..=n).map(point).collect()).unwrap();
         group.bench_with_input(BenchmarkId::new("bulk", n), &curve, |bench, curve| {
-            bench.iter(|| restrict_bezier_curve(black_box(curve), &A, &B))
+            bench.iter(|| black_box(curve).subsegment(A..B))
         });
         if n > 128 {
             continue; // the per-point algorithms: 0.04 s (pyramid) per call at n = 128
@@ -61,7 +59,7 @@ fn curves(c: &mut Criterion) {
                 (0..=n)
                     .map(|j| {
                         bezier_curve_blossom(
-                            black_box(curve).control_points(),
+                            &black_box(curve).control_points().to_vec(),
                             &repeated(A, n - j, B, j),
                         )
                         .expect("the arguments of the degree")
@@ -77,10 +75,11 @@ fn curves(c: &mut Criterion) {
             &curve,
             |bench, curve| {
                 bench.iter(|| {
-                    let power =
-                        PowerCurve::new(bernstein_to_power(black_box(curve).control_points()))
-                            .unwrap();
-                    restrict_curve(&power, &A, &B, Method::ClosedForm)
+                    let power = PowerCurve::new(bernstein_to_power(
+                        &black_box(curve).control_points().to_vec(),
+                    ))
+                    .unwrap();
+                    restrict_power_curve(&power, &A, &B, Method::ClosedForm)
                 })
             },
         );
@@ -97,7 +96,7 @@ fn tensors(c: &mut Criterion) {
         let patch = TensorPatch::new(net).unwrap();
         let [a, b, cc, d] = RECT;
         group.bench_with_input(BenchmarkId::new("bulk", n), &patch, |bench, patch| {
-            bench.iter(|| restrict_bezier_tensor(black_box(patch), &RECT))
+            bench.iter(|| black_box(patch).restrict(&RECT))
         });
         if n > 24 {
             continue; // the per-point algorithms: 0.1 s (pyramid) per call at n = 24
@@ -109,7 +108,7 @@ fn tensors(c: &mut Criterion) {
                     for mu in 0..=n {
                         out.push(
                             bezier_tensor_blossom(
-                                black_box(patch).control_points(),
+                                &black_box(patch).to_nested(),
                                 &repeated(a, n - nu, b, nu),
                                 &repeated(cc, n - mu, d, mu),
                             )
@@ -130,7 +129,7 @@ fn tensors(c: &mut Criterion) {
                 bench.iter(|| {
                     // The power form, converting along u (rows as long points), then along v.
                     let rows: Vec<Vec<f64>> = black_box(patch)
-                        .control_points()
+                        .to_nested()
                         .iter()
                         .map(|row| row.concat())
                         .collect();
@@ -141,7 +140,7 @@ fn tensors(c: &mut Criterion) {
                             bernstein_to_power(&row)
                         })
                         .collect();
-                    restrict_tensor(
+                    restrict_power_surface(
                         &PowerSurface::new(coefficients).unwrap(),
                         &RECT,
                         Method::ClosedForm,
@@ -160,7 +159,7 @@ fn triangles(c: &mut Criterion) {
         let patch = TriangularPatch::new(big_n, (0..len).map(point).collect()).unwrap();
         let bary = TRI.map(|[s, t]| [s, t, 1.0 - s - t]);
         group.bench_with_input(BenchmarkId::new("bulk", big_n), &patch, |bench, patch| {
-            bench.iter(|| restrict_bezier_triangle_affine(black_box(patch), &TRI))
+            bench.iter(|| black_box(patch).restrict(&TRI))
         });
         if big_n > 24 {
             continue; // the pyramid: 0.04 s per call at N = 24

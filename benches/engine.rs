@@ -3,7 +3,7 @@
 //!
 //! * `curve`: a Bézier curve of degree n restricted to [a, b]: the engine without allocation
 //!   (`Bezier::subsegment_into`), the engine through the runtime-dimension API
-//!   (`restrict_bezier_curve`), a textbook de Casteljau restriction written here (split at b,
+//!   (`BezierCurve::subsegment`, a new curve each call), a textbook de Casteljau restriction written here (split at b,
 //!   then the right part at a / b, in place, no allocation), and the previous default (to the
 //!   power basis by forward differences, then the Taylor shift: `before`);
 //! * `tensor`: a tensor patch of bidegree (n, n): the engine, and `before`;
@@ -16,9 +16,10 @@
 //! Run: `cargo bench -p blossom --bench engine`; `cargo run --release --example bench_slopes`
 //! then prints the log-log slopes from criterion's estimates.
 
+use blossom::engine::bernstein_to_power;
 use blossom::{
-    bernstein_to_power, restrict_bezier_curve, restrict_curve, restrict_tensor, Bezier,
-    BezierCurve, BezierTensor, BezierTriangle, Method, PowerCurve, PowerSurface,
+    restrict_power_curve, restrict_power_surface, Bezier, BezierCurve, BezierTensor,
+    BezierTriangle, Method, PowerCurve, PowerSurface,
 };
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::time::Duration;
@@ -118,9 +119,9 @@ fn curves(c: &mut Criterion) {
             .expect("fits");
         close(&out, &want, "engine");
         let before = || {
-            let power =
-                PowerCurve::new(bernstein_to_power(vec_curve.control_points())).expect("points");
-            restrict_curve(&power, &a, &b, Method::TaylorShift)
+            let power = PowerCurve::new(bernstein_to_power(&vec_curve.control_points().to_vec()))
+                .expect("points");
+            restrict_power_curve(&power, &a, &b, Method::TaylorShift)
         };
         let as_arrays = |c: BezierCurve<f64>| -> Vec<[f64; 3]> {
             c.control_points()
@@ -131,11 +132,7 @@ fn curves(c: &mut Criterion) {
         if n <= 16 {
             close(&as_arrays(before()), &want, "before");
         }
-        close(
-            &as_arrays(restrict_bezier_curve(&vec_curve, &a, &b)),
-            &want,
-            "vec",
-        );
+        close(&as_arrays(vec_curve.subsegment(a..b)), &want, "vec");
         group.bench_with_input(BenchmarkId::new("engine", n), &n, |bench, _| {
             bench.iter(|| {
                 curve
@@ -151,7 +148,7 @@ fn curves(c: &mut Criterion) {
             })
         });
         group.bench_with_input(BenchmarkId::new("engine_vec_api", n), &n, |bench, _| {
-            bench.iter(|| restrict_bezier_curve(black_box(&vec_curve), &a, &b))
+            bench.iter(|| black_box(&vec_curve).subsegment(a..b))
         });
         group.bench_with_input(BenchmarkId::new("before", n), &n, |bench, _| {
             bench.iter(|| black_box(before()))
@@ -180,7 +177,7 @@ fn tensors(c: &mut Criterion) {
                 .into_iter()
                 .map(|r| r.chunks(3).map(<[f64]>::to_vec).collect())
                 .collect();
-            restrict_tensor(
+            restrict_power_surface(
                 &PowerSurface::new(grid).expect("grid"),
                 &rect,
                 Method::TaylorShift,
@@ -254,7 +251,7 @@ fn powers(c: &mut Criterion) {
         let (a, b) = (0.25, 0.75);
         for method in [Method::Bulk, Method::TaylorShift, Method::ClosedForm] {
             group.bench_with_input(BenchmarkId::new(method.name(), n), &n, |bench, _| {
-                bench.iter(|| restrict_curve(black_box(&curve), &a, &b, method))
+                bench.iter(|| restrict_power_curve(black_box(&curve), &a, &b, method))
             });
         }
     }

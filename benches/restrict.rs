@@ -6,7 +6,8 @@
 //! the log-log slopes and ratios.
 
 use blossom::{
-    restrict_curve, restrict_tensor, restrict_triangle, Method, PowerCurve, PowerSurface,
+    restrict_power_curve, restrict_power_surface, restrict_power_surface_to_triangle, Method,
+    PowerCurve, PowerSurface,
 };
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::time::Duration;
@@ -49,7 +50,7 @@ fn curves(c: &mut Criterion) {
                 BenchmarkId::new(method.name(), n),
                 &input,
                 |bench, input| {
-                    bench.iter(|| restrict_curve(black_box(input), &0.25, &0.75, method))
+                    bench.iter(|| restrict_power_curve(black_box(input), &0.25, &0.75, method))
                 },
             );
         }
@@ -66,7 +67,9 @@ fn tensors(c: &mut Criterion) {
             group.bench_with_input(
                 BenchmarkId::new(method.name(), n),
                 &input,
-                |bench, input| bench.iter(|| restrict_tensor(black_box(input), &rect, method)),
+                |bench, input| {
+                    bench.iter(|| restrict_power_surface(black_box(input), &rect, method))
+                },
             );
         }
     }
@@ -82,7 +85,10 @@ fn triangles(c: &mut Criterion) {
             group.bench_with_input(
                 BenchmarkId::new(method.name(), big_n),
                 &input,
-                |bench, input| bench.iter(|| restrict_triangle(black_box(input), &tri, method)),
+                |bench, input| {
+                    bench
+                        .iter(|| restrict_power_surface_to_triangle(black_box(input), &tri, method))
+                },
             );
         }
     }

@@ -7,7 +7,7 @@
 //! w_v = blossom(a^(n-v), b^v) (Theorem 1 of the subdivision paper): the same polynomial,
 //! reparametrised so that t in [0, 1] runs over u = a + t (b - a).
 
-use blossom::{rational_to_f64, restrict_curve, Method, PowerCurve, Rational, Ring};
+use blossom::{rational_to_f64, restrict_power_curve, Method, PowerCurve, Rational, Ring};
 
 /// The curve of degree `n` in any number type.
 fn curve<T: Ring>(n: usize) -> PowerCurve<T> {
@@ -28,9 +28,9 @@ pub fn run(degree: usize) {
         Rational::new(1.into(), 4.into()),
         Rational::new(3.into(), 4.into()),
     );
-    let exact = restrict_curve(&curve::<Rational>(degree), &a, &b, Method::Bulk);
+    let exact = restrict_power_curve(&curve::<Rational>(degree), &a, &b, Method::Bulk);
     for method in Method::ALL {
-        assert_eq!(restrict_curve(&curve(degree), &a, &b, method), exact);
+        assert_eq!(restrict_power_curve(&curve(degree), &a, &b, method), exact);
     }
     // The restriction is the same polynomial: at t it equals C(a + t (b - a)).
     let c = curve::<Rational>(degree);
@@ -41,7 +41,7 @@ pub fn run(degree: usize) {
     }
 
     // In f64 (the default method, the halving engine): close to the exact answer.
-    let float = restrict_curve(&curve::<f64>(degree), &0.25, &0.75, Method::Bulk);
+    let float = restrict_power_curve(&curve::<f64>(degree), &0.25, &0.75, Method::Bulk);
     for (p, q) in float.control_points().iter().zip(exact.control_points()) {
         for (x, y) in p.iter().zip(q) {
             let y = rational_to_f64(y);

@@ -4,9 +4,7 @@
 //!
 //! `cargo run -p blossom --example restriction_macro`.
 
-use blossom::{
-    restrict_bezier_curve, restrict_curve, BezierCurve, Method, PowerCurve, Rational, Ring,
-};
+use blossom::{restrict_power_curve, BezierCurve, Method, PowerCurve, Rational, Ring};
 
 // C(u) = sum_i c_i u^i of degree 5 on [a, b]: fn(&[[T; D]; 6], &T, &T) -> [[T; D]; 6], whose
 // entry v is w_v = blossom(a^(5-v), b^v).
@@ -33,7 +31,7 @@ pub fn main() {
     let (a, b) = (q(1, 4), q(3, 4));
     let w = restrict_quintic(&coefficients::<Rational>(), &a, &b);
     let c = PowerCurve::new(coefficients::<Rational>().map(Vec::from).to_vec()).unwrap();
-    let runtime = restrict_curve(&c, &a, &b, Method::Bulk);
+    let runtime = restrict_power_curve(&c, &a, &b, Method::Bulk);
     assert_eq!(
         runtime.control_points(),
         w.clone().map(Vec::from).as_slice()
@@ -55,7 +53,7 @@ pub fn main() {
     let ctrl = [[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 0.0]];
     let left = split_cubic(&ctrl, &0.0, &0.5);
     let cubic = BezierCurve::new(ctrl.map(Vec::from).to_vec()).unwrap();
-    let engine = restrict_bezier_curve(&cubic, &0.0, &0.5);
+    let engine = cubic.subsegment(0.0..0.5);
     assert_eq!(engine.control_points(), left.map(Vec::from).as_slice());
     assert_eq!(left[3].to_vec(), cubic.eval(&0.5));
     println!("left half of the cubic: {left:?}");

@@ -3,14 +3,13 @@
 //! `cargo run -p blossom --example triangle_subpatch`.
 //!
 //! A patch of degree N over its triangle, in barycentric coordinates (s, t, r), s + t + r = 1,
-//! restricted to the sub-triangle with corners A, B, C (barycentric in the patch's triangle) is
-//! the patch of degree N with control points q_(nu mu lambda) = b[A^nu, B^mu, C^lambda], b the
-//! blossom (eq. (12) of the subdivision paper): the same surface, reparametrised so that the
-//! point (σ, τ, ρ) of the new patch is σ A + τ B + ρ C.
+//! restricted to the sub-triangle with corners A, B, C is the patch of degree N with control
+//! points q_(nu mu lambda) = b[A^nu, B^mu, C^lambda], b the blossom (eq. (12) of the
+//! subdivision paper): the same surface, reparametrised so that the point (σ, τ, ρ) of the new
+//! patch is σ A + τ B + ρ C. Every point of the domain is given by its affine coordinates
+//! [s, t] (r = 1 - s - t is implied), the one convention of the library's triangles.
 
-use blossom::{
-    rational_to_f64, restrict_bezier_triangle, BezierTriangle, Rational, TriangularPatch,
-};
+use blossom::{rational_to_f64, BezierTriangle, Rational, TriangularPatch};
 
 pub fn main() {
     let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
@@ -28,27 +27,21 @@ pub fn main() {
     ];
     let patch = TriangularPatch::new(2, net.map(int).to_vec()).unwrap();
 
-    // The sub-triangle A = (1/2, 1/4, 1/4), B = (1/4, 1/2, 1/4), C = (1/4, 1/4, 1/2).
-    let corners = [
-        [q(1, 2), q(1, 4), q(1, 4)],
-        [q(1, 4), q(1, 2), q(1, 4)],
-        [q(1, 4), q(1, 4), q(1, 2)],
-    ];
-    let sub = restrict_bezier_triangle(&patch, &corners).unwrap();
+    // The sub-triangle A = (1/2, 1/4, 1/4), B = (1/4, 1/2, 1/4), C = (1/4, 1/4, 1/2), by
+    // [s, t].
+    let corners = [[q(1, 2), q(1, 4)], [q(1, 4), q(1, 2)], [q(1, 4), q(1, 4)]];
+    let sub = patch.restrict(&corners);
 
     // Its corner control points are the patch's points at A, B, C ...
     assert_eq!(sub.get(2, 0), &patch.eval(&corners[0]));
     assert_eq!(sub.get(0, 2), &patch.eval(&corners[1]));
     assert_eq!(sub.get(0, 0), &patch.eval(&corners[2]));
     // ... and everywhere it is the same surface: sub(σ, τ, ρ) = patch(σ A + τ B + ρ C).
-    for bary in [
-        [q(1, 3), q(1, 3), q(1, 3)],
-        [q(1, 2), q(0, 1), q(1, 2)],
-        [q(1, 5), q(3, 5), q(1, 5)],
-    ] {
-        let point: [Rational; 3] =
+    for at in [[q(1, 3), q(1, 3)], [q(1, 2), q(0, 1)], [q(1, 5), q(3, 5)]] {
+        let bary = [at[0].clone(), at[1].clone(), q(1, 1) - &at[0] - &at[1]];
+        let point: [Rational; 2] =
             std::array::from_fn(|k| (0..3).fold(q(0, 1), |acc, c| acc + &bary[c] * &corners[c][k]));
-        assert_eq!(sub.eval(&bary), patch.eval(&point));
+        assert_eq!(sub.eval(&at), patch.eval(&point));
     }
     println!(
         "exact sub-patch: q_110 = {:?}",
@@ -58,7 +51,7 @@ pub fn main() {
             .collect::<Vec<_>>()
     );
 
-    // In f64, with fixed-dimension points: the corners by their first two coordinates (s, t).
+    // In f64, with fixed-dimension points: the same corners.
     let float = BezierTriangle::new(2, net.map(|p| p.map(|x| x as f64)).to_vec()).unwrap();
     let sub_f = float.restrict(&[[0.5, 0.25], [0.25, 0.5], [0.25, 0.25]]);
     for (p, want) in sub_f.points().iter().zip(sub.control_points()) {

@@ -9,16 +9,16 @@
 //! compute through one another, all generic over one small number trait, [`Ring`].
 //!
 //! ```
-//! use blossom::{restrict_curve, Method, PowerCurve, Rational};
+//! use blossom::{restrict_power_curve, Method, PowerCurve, Rational};
 //!
 //! // C(u) = u^3 on [1, 2]: control points 1, 4/3, 2 ... as blossom values b(2^v, 1^(3-v)).
 //! let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
 //! let cubic = PowerCurve::new(vec![vec![q(0, 1)], vec![q(0, 1)], vec![q(0, 1)], vec![q(1, 1)]])?;
-//! let bezier = restrict_curve(&cubic, &q(1, 1), &q(2, 1), Method::Bulk);
+//! let bezier = restrict_power_curve(&cubic, &q(1, 1), &q(2, 1), Method::Bulk);
 //! let w: Vec<Rational> = bezier.control_points().iter().map(|p| p[0].clone()).collect();
 //! assert_eq!(w, vec![q(1, 1), q(2, 1), q(4, 1), q(8, 1)]);
 //! // Every method gives the identical answer.
-//! assert_eq!(bezier, restrict_curve(&cubic, &q(1, 1), &q(2, 1), Method::ClosedForm));
+//! assert_eq!(bezier, restrict_power_curve(&cubic, &q(1, 1), &q(2, 1), Method::ClosedForm));
 //! # Ok::<(), blossom::Error>(())
 //! ```
 //!
@@ -110,16 +110,51 @@ mod shape;
 mod interop;
 
 // Numbers.
-pub use num::binomial::{binomial, multinomial};
 pub use num::bounded::BoundedF64;
 pub use num::limits::MAX_ENTRIES;
-pub use num::linalg::{solve_rational_system, Field};
+pub use num::linalg::Field;
 pub use num::poly::Poly;
 pub use num::ring::{rational_to_f64, Rational, Ring};
 
 // Work metering (feature `meter`): one module, its items under one path each.
 #[cfg(feature = "meter")]
 pub use num::meter;
+
+// Errors.
+pub use error::{Error, ErrorKind};
+
+// Bézier shapes: the runtime-dimension types (one buffer, any dimension) and the
+// fixed-dimension ones (`[T; D]` points), which convert into each other.
+pub use shape::array::{Bezier, BezierTensor, BezierTriangle};
+pub use shape::bezier::{
+    bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom, BezierCurve, TensorPatch,
+    TriangularPatch,
+};
+pub use shape::point::{Point, Points};
+pub use shape::traits::{Evaluate, Restrict};
+
+// Power-basis shapes and their restriction (the subdivision paper's problem), by any method.
+pub use restrict::{
+    restrict_power_curve, restrict_power_surface, restrict_power_surface_to_triangle,
+    restrict_power_triangle, Method,
+};
+pub use shape::power::{PowerCurve, PowerSurface};
+pub use shape::power_triangle::PowerTriangle;
+
+// The blossoms of power-basis shapes: the subset-sum definitions, the inverse
+// (polarisation) formula and the multilinear form of the homogenisation.
+pub use restrict::definition::{
+    curve_blossom, power_triangle_blossom, tensor_blossom, triangle_blossom,
+};
+pub use restrict::homogeneous::{
+    homogeneous_curve, homogeneous_curve_blossom, homogeneous_surface,
+    homogeneous_triangle_blossom, multilinear_polar_form,
+};
+pub use restrict::polarisation::{
+    curve_blossom_from_samples, curve_control_points_from_samples, polar_form,
+    tensor_blossom_from_samples, tensor_control_points_from_samples, triangle_blossom_from_samples,
+    triangle_control_points_from_samples,
+};
 
 // Certified zeros and intersections.
 pub use intersect::algebraic::AlgebraicReal;
@@ -129,86 +164,66 @@ pub use intersect::curves::{
 };
 pub use intersect::zeros::{bezier_zeros, bezier_zeros_f64, BezierZeros, PolynomialZero};
 
-// Errors.
-pub use error::{Error, ErrorKind};
-
-// Shapes.
-pub use shape::array::{subsegment_into, Bezier, BezierTensor, BezierTriangle};
-pub use shape::basis::{
-    bernstein_by_horner, bernstein_to_power, power_to_bernstein, scale_argument, taylor_shift,
-    tensor_bernstein_to_power, triangle_bernstein_by_horner, triangle_bernstein_to_power,
-    triangle_power_to_bernstein,
-};
-pub use shape::bezier::{
-    bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom, BezierCurve, TensorPatch,
-    TriangularPatch,
-};
-pub use shape::halving::{
-    curve_net, curve_scratch_len, tensor_net, tensor_scratch_len, triangle_net,
-    triangle_scratch_len, BernsteinPairStep, BernsteinPairVectorStep, BernsteinStep,
-    BernsteinVectorStep, CurveStep, Fixed, PowerPairStep, PowerPairVectorStep, PowerStep,
-    PowerVectorStep, TriangleStep, Width,
-};
-pub use shape::point::Point;
-pub use shape::power::{PowerCurve, PowerSurface};
-pub use shape::power_triangle::PowerTriangle;
-pub use shape::simplex::{checked_triangle_len, triangle_index, triangle_len};
-pub use shape::traits::{Evaluate, Restrict};
-
-// Restriction.
-pub use restrict::closed_form::{
-    restrict_triangle_with_formula, TriangleFormula, TriangleSplit, THEOREM_3,
-};
-pub use restrict::definition::{
-    curve_blossom, power_triangle_blossom, tensor_blossom, triangle_blossom,
-};
-pub use restrict::homogeneous::{
-    homogeneous_curve, homogeneous_curve_blossom, homogeneous_surface,
-    homogeneous_triangle_blossom, multilinear_polar_form, multilinear_term_count,
-    MAX_MULTILINEAR_DEGREE,
-};
-pub use restrict::polarisation::{
-    curve_blossom_from_samples, curve_control_points_from_samples, polar_form,
-    tensor_blossom_from_samples, tensor_control_points_from_samples, triangle_blossom_from_samples,
-    triangle_control_points_from_samples,
-};
-pub use restrict::{
-    restrict_curve, restrict_power_triangle, restrict_tensor, restrict_triangle, Method,
-};
-
 // Applications.
 pub use applications::batch::{Batch, RestrictionMap, BATCH_LANES};
 pub use applications::check::{check_bezier_restriction, exact_error, AnswerError, PointError};
-pub use applications::degree::{
-    bernstein_gram, elevate, elevation_matrix, least_squares_matrix, reduce, squared_l2_distance,
-    Reduction,
-};
+pub use applications::degree::{elevate, reduce, squared_l2_distance, Reduction};
 pub use applications::derivative::{
     bezier_derivative, bezier_tensor_derivative, bezier_triangle_derivative,
     power_curve_derivative, power_tensor_derivative, power_triangle_derivative,
 };
 pub use applications::patch_degree::tensor::{
-    elevate_tensor, reduce_tensor, tensor_bernstein_gram, tensor_least_squares_matrix,
-    tensor_squared_l2_distance,
+    elevate_tensor, reduce_tensor, tensor_squared_l2_distance,
 };
 pub use applications::patch_degree::triangle::{
-    elevate_triangle, reduce_triangle, triangle_bernstein_gram, triangle_elevation_matrix,
-    triangle_least_squares_matrix, triangle_squared_l2_distance,
+    elevate_triangle, reduce_triangle, triangle_squared_l2_distance,
 };
 pub use applications::rational::{
     RationalBSpline, RationalBezierCurve, RationalCurve, RationalPowerTriangle, RationalSurface,
     RationalTensorPatch, RationalTriangularPatch,
 };
 pub use applications::spline::{
-    bspline_basis_on_span, bspline_from_pieces, bspline_from_pieces_with_knots,
-    bspline_surface_from_pieces, continuity_at, BSpline, BSplineSurface, BezierCell, BezierPiece,
-    KnotVector, Piece, PowerPiece, RationalBSplineSurface, RationalBezierCell, SurfacePiece,
+    bspline_from_pieces, bspline_from_pieces_with_knots, bspline_surface_from_pieces,
+    continuity_at, BSpline, BSplineSurface, BezierCell, BezierPiece, KnotVector, Piece, PowerPiece,
+    RationalBSplineSurface, RationalBezierCell, SurfacePiece,
 };
 pub use applications::true_degree::{tensor_true_degree, triangle_true_degree, true_degree};
-pub use shape::subdivide::{
-    restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle,
-    restrict_bezier_triangle_affine,
-};
+
+/// The building blocks under the geometry, for code that composes its own algorithms: the
+/// restriction engine (the halving nets on flat coordinates and their step types), the changes
+/// of basis, the index of triangular nets, exact binomials and linear algebra, the matrices of
+/// degree elevation and reduction, and the closed form (14) with its formula visible.
+///
+/// A user of the curves and patches needs none of it: every shape's methods call into here.
+pub mod engine {
+    pub use crate::applications::degree::{bernstein_gram, elevation_matrix, least_squares_matrix};
+    pub use crate::applications::patch_degree::tensor::{
+        tensor_bernstein_gram, tensor_least_squares_matrix,
+    };
+    pub use crate::applications::patch_degree::triangle::{
+        triangle_bernstein_gram, triangle_elevation_matrix, triangle_least_squares_matrix,
+    };
+    pub use crate::applications::spline::bspline_basis_on_span;
+    pub use crate::num::binomial::{binomial, multinomial};
+    pub use crate::num::linalg::solve_rational_system;
+    pub use crate::restrict::closed_form::{
+        restrict_triangle_with_formula, TriangleFormula, TriangleSplit, THEOREM_3,
+    };
+    pub use crate::restrict::homogeneous::{multilinear_term_count, MAX_MULTILINEAR_DEGREE};
+    pub use crate::shape::array::subsegment_into;
+    pub use crate::shape::basis::{
+        bernstein_by_horner, bernstein_to_power, power_to_bernstein, scale_argument, taylor_shift,
+        tensor_bernstein_to_power, triangle_bernstein_by_horner, triangle_bernstein_to_power,
+        triangle_power_to_bernstein,
+    };
+    pub use crate::shape::halving::{
+        curve_net, curve_scratch_len, tensor_net, tensor_scratch_len, triangle_net,
+        triangle_scratch_len, BernsteinPairStep, BernsteinPairVectorStep, BernsteinStep,
+        BernsteinVectorStep, CurveStep, Fixed, PowerPairStep, PowerPairVectorStep, PowerStep,
+        PowerVectorStep, TriangleStep, Width,
+    };
+    pub use crate::shape::simplex::{checked_triangle_len, triangle_index, triangle_len};
+}
 
 // The compile-time expansion of formulae (3), (9), (14).
 pub use blossom_macros::restriction;

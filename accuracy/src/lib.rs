@@ -12,10 +12,12 @@ pub mod reference;
 pub mod sweep;
 
 use blossom::rational_to_f64;
-use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method};
+use blossom::{
+    restrict_power_curve, restrict_power_surface, restrict_power_surface_to_triangle, Method,
+};
 use blossom::{PowerCurve, PowerSurface, Rational};
 
-fn error_of(exact: &[&Vec<Rational>], float: &[&Vec<f64>]) -> f64 {
+fn error_of(exact: &[&[Rational]], float: &[Vec<f64>]) -> f64 {
     let scale = exact
         .iter()
         .flat_map(|p| p.iter())
@@ -40,13 +42,13 @@ pub fn curve_error(
     b: &Rational,
     method: Method,
 ) -> f64 {
-    let exact = restrict_curve(curve, a, b, Method::Bulk);
+    let exact = restrict_power_curve(curve, a, b, Method::Bulk);
     let fc = PowerCurve::new(curve.coefficients().iter().map(|p| to_f64(p)).collect())
         .expect("same shape as the exact curve");
-    let float = restrict_curve(&fc, &rational_to_f64(a), &rational_to_f64(b), method);
+    let float = restrict_power_curve(&fc, &rational_to_f64(a), &rational_to_f64(b), method);
     error_of(
         &exact.control_points().iter().collect::<Vec<_>>(),
-        &float.control_points().iter().collect::<Vec<_>>(),
+        &float.control_points().to_vec(),
     )
 }
 
@@ -62,15 +64,15 @@ fn surface_to_f64(s: &PowerSurface<Rational>) -> PowerSurface<f64> {
 
 /// Relative error of `method` in f64 on `surface` restricted to the rectangle `rect`.
 pub fn tensor_error(surface: &PowerSurface<Rational>, rect: &[Rational; 4], method: Method) -> f64 {
-    let exact = restrict_tensor(surface, rect, Method::Bulk);
-    let float = restrict_tensor(
+    let exact = restrict_power_surface(surface, rect, Method::Bulk);
+    let float = restrict_power_surface(
         &surface_to_f64(surface),
         &rect.each_ref().map(rational_to_f64),
         method,
     );
     error_of(
-        &exact.control_points().iter().flatten().collect::<Vec<_>>(),
-        &float.control_points().iter().flatten().collect::<Vec<_>>(),
+        &exact.points().iter().collect::<Vec<_>>(),
+        &float.points().to_vec(),
     )
 }
 
@@ -80,11 +82,11 @@ pub fn triangle_error(
     tri: &[[Rational; 2]; 3],
     method: Method,
 ) -> f64 {
-    let exact = restrict_triangle(surface, tri, Method::Bulk);
+    let exact = restrict_power_surface_to_triangle(surface, tri, Method::Bulk);
     let ftri = tri.each_ref().map(|p| p.each_ref().map(rational_to_f64));
-    let float = restrict_triangle(&surface_to_f64(surface), &ftri, method);
+    let float = restrict_power_surface_to_triangle(&surface_to_f64(surface), &ftri, method);
     error_of(
         &exact.control_points().iter().collect::<Vec<_>>(),
-        &float.control_points().iter().collect::<Vec<_>>(),
+        &float.control_points().to_vec(),
     )
 }

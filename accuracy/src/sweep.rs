@@ -11,9 +11,10 @@
 
 use super::dyadic::Dyadic;
 use super::reference;
+use blossom::engine::bernstein_to_power;
 use blossom::{
-    bernstein_to_power, rational_to_f64, restrict_curve, Batch, Bezier, BezierTensor,
-    BezierTriangle, Method, PowerCurve, PowerSurface, Rational, RestrictionMap,
+    rational_to_f64, restrict_power_curve, Batch, Bezier, BezierTensor, BezierTriangle, Method,
+    PowerCurve, PowerSurface, Rational, RestrictionMap,
 };
 
 /// The kind of interval (or of rectangle and triangle, built from such intervals).
@@ -312,11 +313,12 @@ pub fn bezier_curves(degrees: &[usize], samples: usize, seed: u64) -> Vec<Row> {
                         &ctrl.iter().map(|p| p.to_vec()).collect::<Vec<_>>(),
                     ))
                     .expect("points");
-                    let before: Vec<[f64; 3]> = restrict_curve(&power, &a, &b, Method::TaylorShift)
-                        .control_points()
-                        .iter()
-                        .map(|p| std::array::from_fn(|x| p[x]))
-                        .collect();
+                    let before: Vec<[f64; 3]> =
+                        restrict_power_curve(&power, &a, &b, Method::TaylorShift)
+                            .control_points()
+                            .iter()
+                            .map(|p| std::array::from_fn(|x| p[x]))
+                            .collect();
                     paths.add(BEFORE, &want, &before);
                 }
             }
@@ -411,8 +413,8 @@ pub fn bezier_tensors(degrees: &[(usize, usize)], samples: usize, seed: u64) -> 
                     .collect();
                 let power = PowerSurface::new(coefficients).expect("grid");
                 let before: Vec<[f64; 3]> =
-                    blossom::restrict_tensor(&power, &rect, Method::TaylorShift)
-                        .control_points()
+                    blossom::restrict_power_surface(&power, &rect, Method::TaylorShift)
+                        .to_nested()
                         .iter()
                         .flatten()
                         .map(|p| std::array::from_fn(|x| p[x]))
@@ -538,15 +540,16 @@ pub fn power_curves(degrees: &[usize], samples: usize, seed: u64) -> Vec<Row> {
                 )
                 .expect("points");
                 let (ea, eb) = (Rational::of(a), Rational::of(b));
-                let want: Vec<[f64; 3]> = restrict_curve(&exact_curve, &ea, &eb, Method::Bulk)
-                    .control_points()
-                    .iter()
-                    .map(|p| std::array::from_fn(|x| p[x].nearest()))
-                    .collect();
+                let want: Vec<[f64; 3]> =
+                    restrict_power_curve(&exact_curve, &ea, &eb, Method::Bulk)
+                        .control_points()
+                        .iter()
+                        .map(|p| std::array::from_fn(|x| p[x].nearest()))
+                        .collect();
                 let curve = PowerCurve::new(coefficients.iter().map(|p| p.to_vec()).collect())
                     .expect("points");
                 for method in methods {
-                    let got: Vec<[f64; 3]> = restrict_curve(&curve, &a, &b, method)
+                    let got: Vec<[f64; 3]> = restrict_power_curve(&curve, &a, &b, method)
                         .control_points()
                         .iter()
                         .map(|p| std::array::from_fn(|x| p[x]))

@@ -6,11 +6,11 @@
 //! * `curve3/specialised`: `blossom::restriction!` cubic on `[[f64; 3]; 4]`;
 //! * `curve3/specialised_dispatch`: the carried evaluator through the `Vec` API
 //!   (`restrict_curve_specialised`, one `D = 1` call per coordinate);
-//! * `curve3/generic_bulk`: `restrict_curve(.., Method::Bulk)`;
-//! * `curve3/closed_form`: `restrict_curve(.., Method::ClosedForm)` (eq. (3) per point);
+//! * `curve3/generic_bulk`: `restrict_power_curve(.., Method::Bulk)`;
+//! * `curve3/closed_form`: `restrict_power_curve(.., Method::ClosedForm)` (eq. (3) per point);
 //! * the same for the (3, 3) tensor patch.
 
-use blossom::{restrict_curve, restrict_tensor, Method, PowerCurve, PowerSurface};
+use blossom::{restrict_power_curve, restrict_power_surface, Method, PowerCurve, PowerSurface};
 use blossom_cli::specialised::{restrict_curve_specialised, restrict_tensor_specialised};
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
@@ -37,7 +37,7 @@ fn curve(c: &mut Criterion) {
     });
     g.bench_function("generic_bulk", |bch| {
         bch.iter(|| {
-            restrict_curve(
+            restrict_power_curve(
                 black_box(&power),
                 black_box(&a),
                 black_box(&b),
@@ -47,7 +47,7 @@ fn curve(c: &mut Criterion) {
     });
     g.bench_function("closed_form", |bch| {
         bch.iter(|| {
-            restrict_curve(
+            restrict_power_curve(
                 black_box(&power),
                 black_box(&a),
                 black_box(&b),
@@ -80,10 +80,10 @@ fn tensor(c: &mut Criterion) {
         bch.iter(|| restrict_tensor_specialised(black_box(&power), black_box(&rect)))
     });
     g.bench_function("generic_bulk", |bch| {
-        bch.iter(|| restrict_tensor(black_box(&power), black_box(&rect), Method::Bulk))
+        bch.iter(|| restrict_power_surface(black_box(&power), black_box(&rect), Method::Bulk))
     });
     g.bench_function("closed_form", |bch| {
-        bch.iter(|| restrict_tensor(black_box(&power), black_box(&rect), Method::ClosedForm))
+        bch.iter(|| restrict_power_surface(black_box(&power), black_box(&rect), Method::ClosedForm))
     });
     g.finish();
 }

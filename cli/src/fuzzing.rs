@@ -21,11 +21,13 @@ use crate::jobs::{self, EXIT_BAD_INPUT};
 use crate::number::{
     f64_from_json, format_rational, parse_f64, parse_rational, rational_from_json, JsonNumber,
 };
+use blossom::engine::{
+    bernstein_to_power, tensor_bernstein_to_power, triangle_bernstein_to_power, triangle_index,
+    triangle_len,
+};
 use blossom::{
-    bernstein_to_power, rational_to_f64, restrict_bezier_curve, restrict_bezier_tensor,
-    restrict_bezier_triangle, restrict_bezier_triangle_affine, restrict_curve,
-    restrict_power_triangle, restrict_tensor, restrict_triangle, tensor_bernstein_to_power,
-    triangle_bernstein_to_power, triangle_index, triangle_len, BezierCurve, BoundedF64, Method,
+    rational_to_f64, restrict_power_curve, restrict_power_surface,
+    restrict_power_surface_to_triangle, restrict_power_triangle, BezierCurve, BoundedF64, Method,
     PowerCurve, PowerSurface, PowerTriangle, Rational, Ring, TensorPatch, TriangularPatch,
 };
 use num_bigint::BigInt;
@@ -589,7 +591,7 @@ fn variants(shape_is_bezier: bool) -> Vec<Option<Method>> {
 
 /// The coordinates of a patch's control points, row after row.
 fn flat<T: Ring>(patch: TensorPatch<T>) -> Vec<T> {
-    patch.into_control_points().concat().concat()
+    patch.into_coordinates()
 }
 
 impl<T: Ring> Shape<T> {
@@ -604,38 +606,38 @@ impl<T: Ring> Shape<T> {
     fn restrict(&self, variant: Option<Method>) -> Vec<T> {
         let direct = "the direct restriction applies to Bézier shapes only";
         match self {
-            Shape::Curve(c, [a, b]) => restrict_curve(c, a, b, variant.expect(direct))
+            Shape::Curve(c, [a, b]) => restrict_power_curve(c, a, b, variant.expect(direct))
                 .control_points()
                 .concat(),
-            Shape::Tensor(s, rect) => flat(restrict_tensor(s, rect, variant.expect(direct))),
-            Shape::TriangleGrid(s, tri) => restrict_triangle(s, tri, variant.expect(direct))
-                .control_points()
-                .concat(),
+            Shape::Tensor(s, rect) => flat(restrict_power_surface(s, rect, variant.expect(direct))),
+            Shape::TriangleGrid(s, tri) => {
+                restrict_power_surface_to_triangle(s, tri, variant.expect(direct))
+                    .control_points()
+                    .concat()
+            }
             Shape::PowerTriangle(s, tri) => restrict_power_triangle(s, tri, variant.expect(direct))
                 .control_points()
                 .concat(),
             Shape::BezierCurve(c, [a, b]) => match variant {
-                None => restrict_bezier_curve(c, a, b).control_points().concat(),
+                None => c.subsegment(a.clone()..b.clone()).control_points().concat(),
                 Some(method) => {
-                    let power = PowerCurve::new(bernstein_to_power(c.control_points()))
+                    let power = PowerCurve::new(bernstein_to_power(&c.control_points().to_vec()))
                         .expect("the power form of a curve");
-                    restrict_curve(&power, a, b, method)
+                    restrict_power_curve(&power, a, b, method)
                         .control_points()
                         .concat()
                 }
             },
             Shape::BezierTensor(p, rect) => match variant {
-                None => flat(restrict_bezier_tensor(p, rect)),
+                None => flat(p.restrict(rect)),
                 Some(method) => {
-                    let power = PowerSurface::new(tensor_bernstein_to_power(p.control_points()))
+                    let power = PowerSurface::new(tensor_bernstein_to_power(&p.to_nested()))
                         .expect("the power form of a patch");
-                    flat(restrict_tensor(&power, rect, method))
+                    flat(restrict_power_surface(&power, rect, method))
                 }
             },
             Shape::BezierTriangle(p, tri) => match variant {
-                None => restrict_bezier_triangle_affine(p, tri)
-                    .control_points()
-                    .concat(),
+                None => p.restrict(tri).control_points().concat(),
                 Some(method) => {
                     let n = p.degree();
                     let flat = triangle_bernstein_to_power(p);
@@ -704,23 +706,24 @@ pub fn restrict_entry(data: &[u8]) {
             );
         }
         if let Shape::BezierTriangle(patch, tri) = &shape {
+            // Every control point is the blossom at the corners, q_(ν μ λ) = b[A^ν, B^μ, C^λ],
+            // by the barycentric pyramid (one per point) instead of the halving net.
             let one = Rational::from_integer(1.into());
             let corners = tri
                 .clone()
                 .map(|[s, t]| [s.clone(), t.clone(), &one - &s - &t]);
-            let bary = restrict_bezier_triangle(patch, &corners)
-                .expect("barycentric coordinates adding up to 1");
-            assert_eq!(
-                bary.control_points().concat(),
-                reference,
-                "barycentric form"
-            );
-            let mut off = corners.clone();
-            off[1][2] = &off[1][2] + &one;
-            assert!(
-                restrict_bezier_triangle(patch, &off).is_err(),
-                "a corner whose coordinates add up to 2 is accepted"
-            );
+            let n = patch.degree();
+            let mut by_blossom = Vec::with_capacity(reference.len());
+            for nu in 0..=n {
+                for mu in 0..=n - nu {
+                    let args: Vec<[Rational; 3]> = std::iter::repeat_n(corners[0].clone(), nu)
+                        .chain(std::iter::repeat_n(corners[1].clone(), mu))
+                        .chain(std::iter::repeat_n(corners[2].clone(), n - nu - mu))
+                        .collect();
+                    by_blossom.extend(patch.blossom(&args).expect("N arguments"));
+                }
+            }
+            assert_eq!(by_blossom, reference, "the blossom at the corners");
         }
         return;
     }

@@ -7,11 +7,12 @@
 //! ([`prove_curve_candidate`], [`prove_tensor_candidate`], [`prove_triangle_candidate`]), so
 //! that a wrong one, e.g. eq. (14) with a misprinted ingredient, can be shown to fail it.
 
-use blossom::{
-    power_to_bernstein, restrict_bezier_curve, restrict_bezier_tensor,
-    restrict_bezier_triangle_affine, triangle_index, triangle_len, triangle_power_to_bernstein,
+use blossom::engine::{
+    power_to_bernstein, triangle_index, triangle_len, triangle_power_to_bernstein,
 };
-use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method, Ring};
+use blossom::{
+    restrict_power_curve, restrict_power_surface, restrict_power_surface_to_triangle, Method, Ring,
+};
 use blossom::{BezierCurve, Poly, PowerCurve, PowerSurface, TensorPatch, TriangularPatch};
 
 /// The shape a proof is about.
@@ -75,8 +76,10 @@ fn vars<const K: usize>(names: [&str; K]) -> [Poly; K] {
     names.map(Poly::var)
 }
 
-fn count_terms<'a>(points: impl Iterator<Item = &'a Vec<Poly>>) -> usize {
-    points.flat_map(|p| p.iter()).map(Poly::num_terms).sum()
+fn count_terms<P: AsRef<[Poly]>>(points: impl Iterator<Item = P>) -> usize {
+    points
+        .map(|p| p.as_ref().iter().map(Poly::num_terms).sum::<usize>())
+        .sum()
 }
 
 /// A candidate restriction of curves: the control points on [a, b] of a power-basis curve.
@@ -151,7 +154,7 @@ type TriangleInput = (PowerSurface<Poly>, [[Poly; 2]; 3]);
 fn curve_reference(n: usize) -> Reference<CurveInput, BezierCurve<Poly>> {
     let curve = symbolic_curve(n);
     let [a, b] = vars(["a", "b"]);
-    let answer = restrict_curve(&curve, &a, &b, Method::Definition);
+    let answer = restrict_power_curve(&curve, &a, &b, Method::Definition);
     let terms = count_terms(answer.control_points().iter());
     Reference {
         shape: Shape::Curve,
@@ -166,8 +169,8 @@ fn curve_reference(n: usize) -> Reference<CurveInput, BezierCurve<Poly>> {
 fn tensor_reference(n: usize, m: usize) -> Reference<TensorInput, TensorPatch<Poly>> {
     let surface = symbolic_surface(n, m);
     let rect = vars(["a", "b", "c", "d"]);
-    let answer = restrict_tensor(&surface, &rect, Method::Definition);
-    let terms = count_terms(answer.control_points().iter().flatten());
+    let answer = restrict_power_surface(&surface, &rect, Method::Definition);
+    let terms = count_terms(answer.to_nested().iter().flatten());
     Reference {
         shape: Shape::Tensor,
         degree: (n, m),
@@ -182,7 +185,7 @@ fn tensor_reference(n: usize, m: usize) -> Reference<TensorInput, TensorPatch<Po
 fn triangle_reference(n: usize, m: usize) -> Reference<TriangleInput, TriangularPatch<Poly>> {
     let surface = symbolic_surface(n, m);
     let tri = symbolic_triangle();
-    let answer = restrict_triangle(&surface, &tri, Method::Definition);
+    let answer = restrict_power_surface_to_triangle(&surface, &tri, Method::Definition);
     let terms = count_terms(answer.control_points().iter());
     Reference {
         shape: Shape::Triangle,
@@ -200,7 +203,7 @@ pub fn prove_curve(n: usize, methods: &[Method]) -> Vec<ProofRow> {
         .iter()
         .map(|&method| {
             reference.method_row(method, &|(curve, [a, b])| {
-                restrict_curve(curve, a, b, method)
+                restrict_power_curve(curve, a, b, method)
             })
         })
         .collect()
@@ -219,7 +222,7 @@ pub fn prove_tensor(n: usize, m: usize, methods: &[Method]) -> Vec<ProofRow> {
         .iter()
         .map(|&method| {
             reference.method_row(method, &|(surface, rect)| {
-                restrict_tensor(surface, rect, method)
+                restrict_power_surface(surface, rect, method)
             })
         })
         .collect()
@@ -249,7 +252,7 @@ pub fn prove_triangle(n: usize, m: usize, methods: &[Method]) -> Vec<ProofRow> {
         .iter()
         .map(|&method| {
             reference.method_row(method, &|(surface, tri)| {
-                restrict_triangle(surface, tri, method)
+                restrict_power_surface_to_triangle(surface, tri, method)
             })
         })
         .collect()
@@ -257,7 +260,7 @@ pub fn prove_triangle(n: usize, m: usize, methods: &[Method]) -> Vec<ProofRow> {
 
 /// Runs `candidate` through the comparison of [`prove_triangle`] for the surface of bidegree
 /// (n, m) on the symbolic triangle; e.g. eq. (14) read with a printed variant of one of its
-/// ingredients, through [`blossom::restrict_triangle_with_formula`].
+/// ingredients, through [`blossom::engine::restrict_triangle_with_formula`].
 pub fn prove_triangle_candidate(
     n: usize,
     m: usize,
@@ -347,7 +350,7 @@ pub fn prove_bezier_input(
             curve_reference(n).candidate_proof(BEZIER_INPUT, &|(curve, [a, b])| {
                 let bezier = BezierCurve::new(power_to_bernstein(curve.coefficients()))
                     .expect("n + 1 points");
-                restrict_bezier_curve(&bezier, a, b)
+                bezier.subsegment(a.clone()..b.clone())
             }),
         );
     }
@@ -355,7 +358,7 @@ pub fn prove_bezier_input(
         for m in 0..=max_tensor {
             rows.push(
                 tensor_reference(n, m).candidate_proof(BEZIER_INPUT, &|(surface, rect)| {
-                    restrict_bezier_tensor(&bernstein_tensor(surface), rect)
+                    bernstein_tensor(surface).restrict(rect)
                 }),
             );
         }
@@ -365,7 +368,7 @@ pub fn prove_bezier_input(
             let m = big_n - n;
             rows.push(
                 triangle_reference(n, m).candidate_proof(BEZIER_INPUT, &|(surface, tri)| {
-                    restrict_bezier_triangle_affine(&bernstein_triangle(surface), tri)
+                    bernstein_triangle(surface).restrict(tri)
                 }),
             );
         }

@@ -350,7 +350,12 @@ pub fn restrict_bezier_curve_specialised<T: Carried>(
     a: &T,
     b: &T,
 ) -> Option<BezierCurve<T>> {
-    run_curve(curve.control_points(), a, b, &grid::bezier_curve_carried)
+    run_curve(
+        &curve.control_points().to_vec(),
+        a,
+        b,
+        &grid::bezier_curve_carried,
+    )
 }
 
 /// `surface` restricted to `rect = [a, b, c, d]` by the generated evaluator of its bidegree
@@ -384,7 +389,7 @@ pub fn restrict_triangle_specialised<T: Carried>(
     let tri = tri
         .each_ref()
         .map(|corner| corner.each_ref().map(Carried::wrap));
-    let mut points = vec![Vec::with_capacity(surface.dim()); blossom::triangle_len(n + m)];
+    let mut points = vec![Vec::with_capacity(surface.dim()); blossom::engine::triangle_len(n + m)];
     for x in 0..surface.dim() {
         let coef = surface_coordinate(surface, x);
         let out =
@@ -403,13 +408,12 @@ pub fn restrict_bezier_tensor_specialised<T: Carried>(
     rect: &[T; 4],
 ) -> Option<TensorPatch<T>> {
     let (n, m) = patch.degree();
-    let dim = patch.control_points()[0][0].len();
+    let dim = patch.dim();
     let rect = rect.each_ref().map(Carried::wrap);
     let mut net = vec![vec![Vec::with_capacity(dim); m + 1]; n + 1];
     for x in 0..dim {
         let ctrl: Vec<Vec<Scalar>> = patch
-            .control_points()
-            .iter()
+            .rows()
             .map(|row| row.iter().map(|p| p[x].wrap()).collect())
             .collect();
         let out = grid::bezier_tensor_carried(&ctrl, &rect)?;
@@ -465,7 +469,7 @@ pub fn restrict_power_triangle_specialised<T: Carried>(
     let tri = tri
         .each_ref()
         .map(|corner| corner.each_ref().map(Carried::wrap));
-    let mut points = vec![Vec::with_capacity(surface.dim()); blossom::triangle_len(big_n)];
+    let mut points = vec![Vec::with_capacity(surface.dim()); blossom::engine::triangle_len(big_n)];
     for x in 0..surface.dim() {
         let coef: Vec<Scalar> = rows.iter().flatten().map(|c| c[x].wrap()).collect();
         let out = grid::triangle_total_carried(big_n, &coef, &tri)?;

@@ -10,8 +10,8 @@
 //!
 //! Point p of a block, all its coordinates for all its objects, is one contiguous run of
 //! `dim * BATCH_LANES` numbers. A block is therefore *one* Bézier object whose points have
-//! `dim * BATCH_LANES` coordinates, and the restriction engine ([`crate::curve_net`],
-//! [`crate::tensor_net`], [`crate::triangle_net`]) runs on it unchanged: every de Casteljau
+//! `dim * BATCH_LANES` coordinates, and the restriction engine ([`crate::engine::curve_net`],
+//! [`crate::engine::tensor_net`], [`crate::engine::triangle_net`]) runs on it unchanged: every de Casteljau
 //! step is one straight loop over `dim * BATCH_LANES` numbers, which the compiler vectorises,
 //! and every object gets exactly the answer (bit for bit) of the engine run on it alone: the
 //! accuracy of de Casteljau, not that of a precomputed matrix. A block of a cubic 3-D curve
@@ -249,9 +249,34 @@ impl Batch {
         let first = curves
             .first()
             .ok_or_else(|| Error::of(ErrorKind::Empty, "curves", "expected at least one curve"))?;
-        let nets: Vec<&[Vec<f64>]> = curves.iter().map(|c| c.control_points()).collect();
-        Batch::from_nets(first.degree() + 1, first.control_points()[0].len(), &nets)
-            .map_err(|e| Error::of(e.kind, e.field.replacen("nets", "curves", 1), e.message))
+        let (points, dim) = (first.degree() + 1, first.dim());
+        let mut batch = Batch::zeros(points, dim, curves.len())?;
+        for (k, curve) in curves.iter().enumerate() {
+            if (curve.degree() + 1, curve.dim()) != (points, dim) {
+                return Err(Error::of(
+                    ErrorKind::Shape,
+                    format!("curves[{k}]"),
+                    format!(
+                        "expected {points} control points of {dim} coordinates (as curves[0]), \
+                         found {} of {}",
+                        curve.degree() + 1,
+                        curve.dim()
+                    ),
+                ));
+            }
+            batch.set_curve(k, curve.coordinates());
+        }
+        Ok(batch)
+    }
+
+    /// Writes the flat coordinates `coords` (point after point) of object `k`.
+    fn set_curve(&mut self, k: usize, coords: &[f64]) {
+        for (p, point) in coords.chunks_exact(self.dim).enumerate() {
+            for (x, &value) in point.iter().enumerate() {
+                let i = self.index(k, p, x);
+                self.data[i] = value;
+            }
+        }
     }
 
     fn index(&self, k: usize, p: usize, x: usize) -> usize {

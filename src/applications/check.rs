@@ -13,7 +13,6 @@ use crate::error::{Error, ErrorKind, Result};
 use crate::num::ring::{rational_to_f64, Rational};
 use crate::shape::bezier::BezierCurve;
 use crate::shape::point::Point;
-use crate::shape::subdivide::restrict_bezier_curve;
 use num_traits::{Signed, Zero};
 
 /// The error of one control point of an answer: absolute e_i and relative r_i (definitions
@@ -183,14 +182,14 @@ pub fn exact_error(exact: &[Point<Rational>], answer: &[Point<f64>]) -> Result<A
 /// The exact error of `answer`, somebody's `f64` control points of the Bézier curve `curve`
 /// (over [0, 1]) restricted to [a, b]: the reference is the exact restriction of the exact
 /// values of the same doubles (`curve`'s coordinates, `a`, `b`), computed in [`Rational`] by
-/// [`restrict_bezier_curve`] (control points b[a^(n-j), b^j] of the blossom, by the halving net
+/// [`BezierCurve::subsegment`] (control points b[a^(n-j), b^j] of the blossom, by the halving net
 /// of Bernstein steps), so without any rounding; then [`exact_error`].
 ///
 /// ```
-/// use blossom::{check_bezier_restriction, restrict_bezier_curve, BezierCurve};
+/// use blossom::{check_bezier_restriction, BezierCurve};
 /// let c = BezierCurve::new(vec![vec![0.0, 0.0], vec![1.0, 2.0], vec![3.0, 3.0], vec![4.0, 0.0]])?;
-/// let ours = restrict_bezier_curve(&c, &0.25, &0.5);
-/// let err = check_bezier_restriction(&c, 0.25, 0.5, ours.control_points())?;
+/// let ours = c.subsegment(0.25..0.5);
+/// let err = check_bezier_restriction(&c, 0.25, 0.5, &ours.control_points().to_vec())?;
 /// assert!(err.max_rel_f64() <= 1e-15);
 /// # Ok::<(), blossom::Error>(())
 /// ```
@@ -217,8 +216,8 @@ pub fn check_bezier_restriction(
         .collect::<Result<Vec<_>>>()?;
     let a = exact_double(a, || String::from("a"))?;
     let b = exact_double(b, || String::from("b"))?;
-    let exact = restrict_bezier_curve(&BezierCurve::new(points)?, &a, &b);
-    exact_error(exact.control_points(), answer)
+    let exact = BezierCurve::new(points)?.subsegment(a..b);
+    exact_error(&exact.control_points().to_vec(), answer)
 }
 
 #[cfg(test)]

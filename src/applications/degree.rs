@@ -124,8 +124,12 @@ pub fn elevate<T: Ring>(curve: &BezierCurve<T>, to_degree: usize) -> Result<Bezi
             ),
         ));
     }
-    let dim = curve.control_points()[0].len();
-    let points = linalg::apply(&elevation_matrix(n, to_degree), curve.control_points(), dim);
+    let dim = curve.dim();
+    let points = linalg::apply(
+        &elevation_matrix(n, to_degree),
+        &curve.control_points().to_vec(),
+        dim,
+    );
     BezierCurve::new(points)
 }
 
@@ -163,7 +167,7 @@ pub fn reduce<T: Ring>(
             curve_control_points_from_samples(m, &zero, &one, &|t| curve.eval(t))
         }
         Reduction::LeastSquares | Reduction::LeastSquaresEndpoints => {
-            linalg::apply(&least_squares_matrix(n, m, method)?, b, dim)
+            linalg::apply(&least_squares_matrix(n, m, method)?, &b.to_vec(), dim)
         }
     };
     BezierCurve::new(points)
@@ -212,10 +216,14 @@ pub(crate) fn not_a_matrix() -> Error {
 /// degrees and one dimension, exactly (`a` is elevated to the degree of `b` or vice versa,
 /// and the difference d gives sum_coords d^T G d).
 pub fn squared_l2_distance<T: Ring>(a: &BezierCurve<T>, b: &BezierCurve<T>) -> Result<T> {
-    check_same_dimension(a.control_points(), b.control_points(), "curves")?;
+    check_same_dimension(
+        &a.control_points().to_vec(),
+        &b.control_points().to_vec(),
+        "curves",
+    )?;
     let n = a.degree().max(b.degree());
     let (ea, eb) = (elevate(a, n)?, elevate(b, n)?);
-    let diff = linalg::differences(ea.control_points(), eb.control_points());
+    let diff = linalg::differences(&ea.control_points().to_vec(), &eb.control_points().to_vec());
     Ok(linalg::gram_quadratic_form(&bernstein_gram(n, n), &diff))
 }
 

@@ -2,7 +2,7 @@
 //! with vector arguments.
 //!
 //! The blossom f of a form of degree n, extended to homogeneous arguments (points of weight 1,
-//! vectors of weight 0, see [`crate::BernsteinVectorStep`]), gives every derivative:
+//! vectors of weight 0, see [`crate::engine::BernsteinVectorStep`]), gives every derivative:
 //!
 //! * curve: d^k C / du^k (u) = n! / (n - k)! f(u^(n-k), delta^k), delta the unit vector of the
 //!   parameter line; at u = 0 for a Bézier curve over [0, 1] this is eq. (10) of seed 004,
@@ -19,8 +19,8 @@
 //! The blossom is symmetric, so the vector arguments are fixed first, by k steps of weight 0
 //! on the form as it is written (Bernstein: forward differences; scaled power basis: shifts
 //! d_i -> d_(i+1); triangles: the directions' steps), which leaves a form of degree n - k;
-//! for power input that form is then restricted by the engine ([`crate::curve_net`],
-//! [`crate::tensor_net`], [`crate::triangle_net`]) with the ordinary point steps, exactly as
+//! for power input that form is then restricted by the engine ([`crate::engine::curve_net`],
+//! [`crate::engine::tensor_net`], [`crate::engine::triangle_net`]) with the ordinary point steps, exactly as
 //! [`crate::Method::Bulk`] restricts. Bézier input stays over its own domain, so the form left
 //! after the vector steps already is the answer. Everything is ring arithmetic plus the exact
 //! constants n! / (n - k)! (and 1 / C(n, i) of the scaled power basis), so the same code runs
@@ -109,7 +109,7 @@ fn scale_all<T: Ring>(flat: &mut [T], k: &Rational) {
 /// Delta^1 b_i = b_(i+1) - b_i, Delta^k b_i = Delta^(k-1) b_(i+1) - Delta^(k-1) b_i,
 ///
 /// i.e. n! / (n - k)! b[0^(n-k-i), 1^i, delta^k] with delta the unit vector: k vector steps
-/// ([`crate::BernsteinVectorStep`]) on the control points, O(nk) subtractions per coordinate.
+/// ([`crate::engine::BernsteinVectorStep`]) on the control points, O(nk) subtractions per coordinate.
 ///
 /// ```
 /// use blossom::{bezier_derivative, BezierCurve};
@@ -125,21 +125,21 @@ fn scale_all<T: Ring>(flat: &mut [T], k: &Rational) {
 pub fn bezier_derivative<T: Ring>(curve: &BezierCurve<T>, order: usize) -> Result<BezierCurve<T>> {
     let n = curve.degree();
     check_order(order, n, "order")?;
-    let dim = curve.control_points()[0].len();
+    let dim = curve.dim();
     let one = T::one();
     let mut flat = fix_curve(
-        curve.control_points().concat(),
+        curve.coordinates().to_vec(),
         dim,
         BernsteinVectorStep(&one),
         order,
     );
     scale_all(&mut flat, &falling_factorial(n, order));
-    BezierCurve::new(points_of(&flat, dim))
+    BezierCurve::from_coordinates(dim, flat)
 }
 
 /// The k-th derivative (`order` = k) of the power curve `curve` on [a, b], as the Bézier curve
 /// of degree n - k over [a, b]: control points n! / (n - k)! f(a^(n-k-j), b^j, delta^k), the
-/// k shifts of the scaled power coefficients ([`crate::PowerVectorStep`]) restricted by the
+/// k shifts of the scaled power coefficients ([`crate::engine::PowerVectorStep`]) restricted by the
 /// engine. The derivative is with respect to the curve's own parameter u.
 ///
 /// # Errors
@@ -176,18 +176,13 @@ pub fn bezier_tensor_derivative<T: Ring>(
     let (n, m) = patch.degree();
     check_order(order[0], n, "order[0]")?;
     check_order(order[1], m, "order[1]")?;
-    let dim = patch.control_points()[0][0].len();
-    let flat: Vec<T> = patch.flat_coordinates();
+    let dim = patch.dim();
+    let flat: Vec<T> = patch.coordinates().to_vec();
     let one = T::one();
     let mut flat = fix_tensor(flat, m + 1, dim, BernsteinVectorStep(&one), order);
     let k = falling_factorial(n, order[0]) * falling_factorial(m, order[1]);
     scale_all(&mut flat, &k);
-    let cols = m + 1 - order[1];
-    TensorPatch::new(
-        flat.chunks(cols * dim)
-            .map(|row| points_of(row, dim))
-            .collect(),
-    )
+    TensorPatch::from_coordinates((n - order[0], m - order[1]), dim, flat)
 }
 
 /// The partial derivative d^(k+l) S / du^k dv^l (`order` = [k, l]) of the power surface
@@ -239,7 +234,7 @@ pub fn power_tensor_derivative<T: Ring>(
 /// patch's corners, in the order of the net's indices, adding up to 0), as the triangular
 /// patch of degree N - k over the same triangle: control points
 /// N! / (N - k)! b[A^nu, B^mu, C^lambda, d_1, ..., d_k] (k vector steps
-/// [`crate::BernsteinPairVectorStep`] on the net). No directions: the patch itself.
+/// [`crate::engine::BernsteinPairVectorStep`] on the net). No directions: the patch itself.
 ///
 /// # Errors
 /// `directions` ([`ErrorKind::Degree`]) when k exceeds N; `directions[i]`
@@ -274,19 +269,19 @@ pub fn bezier_triangle_derivative<T: Ring>(
         pairs.push([s.clone(), t.clone()]);
     }
     let steps: Vec<_> = pairs.iter().map(BernsteinPairVectorStep).collect();
-    let dim = patch.control_points()[0].len();
-    let mut flat = patch.control_points().concat();
+    let dim = patch.dim();
+    let mut flat = patch.coordinates().to_vec();
     let degree = triangle_fix_in_place(&mut flat, big_n, dim, &steps);
     flat.truncate(triangle_len(degree) * dim);
     scale_all(&mut flat, &falling_factorial(big_n, directions.len()));
-    TriangularPatch::new(degree, points_of(&flat, dim))
+    TriangularPatch::from_coordinates(degree, dim, flat)
 }
 
 /// The directional derivative D_(d_1) ... D_(d_k) of the power surface `surface` (of total
 /// degree N: a triangular array, or a grid taken at N = n + m by [`PowerTriangle::from_surface`]), `directions` = [d_1, ..., d_k] each a vector (du, dv) of
 /// the (u, v) plane, as the triangular patch of degree N - k on the triangle `tri`: control
 /// points N! / (N - k)! f(A^nu, B^mu, C^lambda, d_1, ..., d_k), the vector steps
-/// ([`crate::PowerPairVectorStep`]) on the scaled power coefficients, then the engine's
+/// ([`crate::engine::PowerPairVectorStep`]) on the scaled power coefficients, then the engine's
 /// restriction to `tri`.
 ///
 /// # Errors

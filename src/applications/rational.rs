@@ -560,11 +560,12 @@ impl<T: Field> RationalTriangularPatch<T> {
         TriangularPatch::new(self.degree, h).expect("a full net of one dimension")
     }
 
-    /// The point with barycentric coordinates (r, s, t) of the corners (a, b, c), or `None`
+    /// The point at the affine coordinates `[s, t]` of the reference triangle (barycentric
+    /// (s, t, 1 - s - t) of the corners (a, b, c), as [`TriangularPatch::eval`]), or `None`
     /// where the denominator vanishes.
-    pub fn eval(&self, bary: &[T; 3]) -> Option<Point<T>> {
+    pub fn eval(&self, at: &[T; 2]) -> Option<Point<T>> {
         debug_assert_eq!(self.points.len(), triangle_len(self.degree));
-        let mut p = self.homogeneous().eval(bary);
+        let mut p = self.homogeneous().eval(at);
         let w = p.pop()?;
         divide_point(p, &w)
     }

@@ -34,7 +34,8 @@ const VALID: &str = "a least-squares reduction to a lower degree of a valid inpu
 /// // 0, 1, 2, 3 lie on a line: the cubic is the line from 0 to 3.
 /// let c = BezierCurve::new(vec![vec![q(0)], vec![q(1)], vec![q(2)], vec![q(3)]])?;
 /// let (m, line) = true_degree(&c);
-/// assert_eq!((m, line.control_points()), (1, &[vec![q(0)], vec![q(3)]][..]));
+/// assert_eq!(m, 1);
+/// assert_eq!(line.control_points(), vec![vec![q(0)], vec![q(3)]]);
 /// # Ok::<(), blossom::Error>(())
 /// ```
 pub fn true_degree<T: Ring>(curve: &BezierCurve<T>) -> (usize, BezierCurve<T>) {

@@ -83,7 +83,8 @@ macro_rules! kurbo_segment {
 
             fn try_from(curve: &BezierCurve<f64>) -> Result<Self> {
                 let name = concat!("kurbo::", stringify!($name));
-                let [$($p),+] = kurbo_points::<$k, _>(curve.control_points(), "control_points", name)?;
+                let points: Vec<&[f64]> = curve.control_points().iter().collect();
+                let [$($p),+] = kurbo_points::<$k, _>(&points, "control_points", name)?;
                 Ok(kurbo::$name { $($p),+ })
             }
         }
@@ -110,6 +111,14 @@ macro_rules! kurbo_segment {
                 let name = concat!("kurbo::", stringify!($name));
                 let [$($p),+] = kurbo_points::<$k, _>(curve.points(), "points", name)?;
                 Ok(kurbo::$name { $($p),+ })
+            }
+        }
+
+        impl TryFrom<Bezier<f64, 2>> for kurbo::$name {
+            type Error = Error;
+
+            fn try_from(curve: Bezier<f64, 2>) -> Result<Self> {
+                kurbo::$name::try_from(&curve)
             }
         }
     };

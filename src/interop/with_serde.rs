@@ -48,7 +48,7 @@ use crate::applications::rational::divide_point;
 use crate::error::{Error, ErrorKind, Result};
 use crate::num::limits::{check_entries, checked_product};
 use crate::num::linalg::Field;
-use crate::shape::point::{self, Point};
+use crate::shape::point::{self, Point, Points as FlatPoints};
 use crate::shape::simplex::checked_triangle_len;
 use crate::{
     BSpline, BSplineSurface, Bezier, BezierCurve, BezierTensor, BezierTriangle, KnotVector,
@@ -209,6 +209,14 @@ macro_rules! written_only {
     };
 }
 
+/// A run of flat points is written as the list of its points, each a list of coordinates:
+/// the same document as nested vectors.
+impl<T: Serialize> Serialize for FlatPoints<'_, T> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        serializer.collect_seq(self.iter())
+    }
+}
+
 // Power form.
 
 through_constructor!(
@@ -254,7 +262,7 @@ through_constructor!(
 
 through_constructor!(
     TensorPatch<T: Ring>,
-    |p| ControlPoints { control_points: p.control_points() },
+    |p| ControlPoints { control_points: p.rows().collect::<Vec<_>>() },
     |doc: ControlPoints<Vec<Vec<Point<T>>>>| TensorPatch::new(doc.control_points)
 );
 

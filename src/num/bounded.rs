@@ -59,14 +59,14 @@ const SAFETY: f64 = 1.0 + 16.0 * UNIT_ROUNDOFF;
 /// operations on the same inputs (see the module documentation for the model).
 ///
 /// ```
-/// use blossom::{restrict_curve, BoundedF64, Method, PowerCurve};
+/// use blossom::{restrict_power_curve, BoundedF64, Method, PowerCurve};
 ///
 /// // C(u) = 1 + u + u^2 on [0.1, 0.7], in f64 with a bound on every control point's error.
 /// let x = BoundedF64::exact;
 /// let curve = PowerCurve::new(vec![vec![x(1.0)], vec![x(1.0)], vec![x(1.0)]])?;
-/// let bezier = restrict_curve(&curve, &x(0.1), &x(0.7), Method::Bulk);
+/// let bezier = restrict_power_curve(&curve, &x(0.1), &x(0.7), Method::Bulk);
 /// let plain = PowerCurve::new(vec![vec![1.0], vec![1.0], vec![1.0]])?;
-/// let plain = restrict_curve(&plain, &0.1, &0.7, Method::Bulk);
+/// let plain = restrict_power_curve(&plain, &0.1, &0.7, Method::Bulk);
 /// for (p, q) in bezier.control_points().iter().zip(plain.control_points()) {
 ///     assert_eq!(p[0].value(), q[0]); // the very same doubles as plain f64
 ///     assert!(p[0].error_bound() < 1e-14); // and a few ulps of bound

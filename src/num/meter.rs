@@ -19,7 +19,7 @@
 //!   `from_rational` also charge the exact constant as a product of its length (the algorithms
 //!   build their constants, with a gcd each, right before they use them, and the conversion to
 //!   the nearest double is itself a big division);
-//! * [`binomial`](crate::binomial): its `k` steps, each a product and an exact quotient;
+//! * [`binomial`](crate::engine::binomial): its `k` steps, each a product and an exact quotient;
 //! * the pyramids of `shape/bezier.rs` (the blossom of a Bézier curve, tensor or triangular
 //!   patch): [`POINT_ALLOCATION`] for every point they allocate (the sweep found the `f64`
 //!   pyramid running three times as long as its arithmetic's charge without it).
@@ -424,7 +424,7 @@ mod tests {
         let (a, b) = (BoundedF64::exact(0.25), BoundedF64::exact(0.75));
         for method in [crate::Method::Bulk, crate::Method::ClosedForm] {
             let mut run = || {
-                std::hint::black_box(crate::restrict_curve(&curve, &a, &b, method));
+                std::hint::black_box(crate::restrict_power_curve(&curve, &a, &b, method));
             };
             let off = time(3, &mut run);
             let on = metered(u64::MAX, || time(3, &mut run)).unwrap();

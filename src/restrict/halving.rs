@@ -1,5 +1,5 @@
 //! The default restriction of power-basis input ([`crate::Method::Bulk`]): the scaled power
-//! basis and the halving engine of [`crate::curve_net`], with no change of basis.
+//! basis and the halving engine of [`crate::engine::curve_net`], with no change of basis.
 //!
 //! * curve C(u) = sum_i c_i u^i of degree n: d_i = c_i / C(n, i), and the blossom is
 //!   f(u_1, ..., u_n) = sum_i d_i e_i(u_1, ..., u_n) (Theorem 1, eq. (3): the weight of c_i

@@ -42,7 +42,7 @@ use crate::Ring;
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Method {
     /// All control points at once, sharing work, in the scaled power basis the input is
-    /// written in ([`crate::curve_net`] on d_i = c_i / C(n, i)): O(n^2) for a curve, as
+    /// written in ([`crate::engine::curve_net`] on d_i = c_i / C(n, i)): O(n^2) for a curve, as
     /// accurate in f64 as the closed form. The default ([`Method::default`]).
     #[default]
     Bulk,
@@ -86,7 +86,7 @@ impl Method {
 }
 
 /// `curve` restricted to [a, b] by `method`.
-pub fn restrict_curve<T: Ring>(
+pub fn restrict_power_curve<T: Ring>(
     curve: &PowerCurve<T>,
     a: &T,
     b: &T,
@@ -103,7 +103,7 @@ pub fn restrict_curve<T: Ring>(
 }
 
 /// `surface` restricted to `rect = [a, b, c, d]`, i.e. [a, b] x [c, d], by `method`.
-pub fn restrict_tensor<T: Ring>(
+pub fn restrict_power_surface<T: Ring>(
     surface: &PowerSurface<T>,
     rect: &[T; 4],
     method: Method,
@@ -120,7 +120,7 @@ pub fn restrict_tensor<T: Ring>(
 
 /// `surface`, as a triangular patch of total degree N = n + m (the paper's convention),
 /// restricted to the triangle with corners `tri = [a, b, c]`, by `method`.
-pub fn restrict_triangle<T: Ring>(
+pub fn restrict_power_surface_to_triangle<T: Ring>(
     surface: &PowerSurface<T>,
     tri: &[[T; 2]; 3],
     method: Method,
@@ -139,7 +139,7 @@ pub fn restrict_triangle<T: Ring>(
 /// let tri = [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]];
 /// let patch = restrict_power_triangle(&s, &tri, Method::Definition);
 /// assert_eq!(patch.degree(), 1);
-/// assert_eq!((patch.get(1, 0), patch.get(0, 0)), (&vec![1.0], &vec![0.0]));
+/// assert_eq!((patch.get(1, 0), patch.get(0, 0)), (&[1.0][..], &[0.0][..]));
 /// # Ok::<(), blossom::Error>(())
 /// ```
 pub fn restrict_power_triangle<T: Ring>(
@@ -170,7 +170,7 @@ mod tests {
         let curve = PowerCurve::new(vec![vec![1.0, 0.5], vec![-2.0, 3.0], vec![0.25, 1.0]])
             .expect("a curve");
         assert_eq!(
-            restrict_curve(&curve, &0.1, &0.7, Method::default()),
+            restrict_power_curve(&curve, &0.1, &0.7, Method::default()),
             halving::restrict_curve(&curve, &0.1, &0.7)
         );
     }

@@ -21,7 +21,7 @@
 //! larger than the answer by up to k^n, which is at most e for k = (n + 1) / n, where a fixed
 //! factor 2 would cost up to 2^n (`BENCHMARKS.md` has the measured errors). The choice uses
 //! ring operations only, so the symbolic proofs cover it. The Bernstein form over the reference domain comes from Horner's rule carried out in
-//! the Bernstein basis ([`crate::bernstein_by_horner`], [`crate::triangle_bernstein_by_horner`]),
+//! the Bernstein basis ([`crate::engine::bernstein_by_horner`], [`crate::engine::triangle_bernstein_by_horner`]),
 //! not from the Taylor shift of [`crate::Method::TaylorShift`], so the pyramid computes through no other
 //! method.
 

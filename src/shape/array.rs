@@ -8,16 +8,14 @@
 //!   (1, 0), (0, 1), (0, 0) in the affine coordinates (s, t) and barycentric coordinates
 //!   (s, t, 1 - s - t); points in lexicographic order of (ν, μ) as [`crate::TriangularPatch`].
 //!
-//! Restriction is the halving engine ([`crate::curve_net`] and its siblings) with de Casteljau
+//! Restriction is the halving engine ([`crate::engine::curve_net`] and its siblings) with de Casteljau
 //! steps; evaluation and blossoms are de Casteljau's pyramid.
 
 use crate::error::{Error, ErrorKind, Result};
-use crate::shape::halving::{
-    curve_blossom_in_place, curve_net, curve_split, tensor_net, triangle_blossom_in_place,
-    triangle_net, BernsteinPairStep, BernsteinStep, Fixed,
-};
+use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
+use crate::shape::flat;
+use crate::shape::halving::curve_split;
 use crate::shape::simplex::{checked_triangle_len, triangle_index};
-use crate::shape::unrolled::restrict_curve_unrolled;
 use crate::Ring;
 use std::ops::Range;
 
@@ -127,18 +125,18 @@ impl<T: Ring, const D: usize> Bezier<T, D> {
                 ),
             ));
         }
-        let mut level = self.points.as_flattened().to_vec();
-        let steps: Vec<BernsteinStep<'_, T>> = args.iter().map(BernsteinStep).collect();
-        curve_blossom_in_place(&mut level, D, &steps);
-        Ok(first_point(&level))
+        Ok(first_point(&flat::curve_blossom(
+            self.points.as_flattened(),
+            D,
+            args,
+        )))
     }
 
     /// The point at `t` (de Casteljau; one allocation for the working level).
     pub fn eval(&self, t: &T) -> [T; D] {
-        let mut level = self.points.as_flattened().to_vec();
-        let steps = vec![BernsteinStep(t); self.degree()];
-        curve_blossom_in_place(&mut level, D, &steps);
-        first_point(&level)
+        let mut out: [T; D] = std::array::from_fn(|_| T::zero());
+        flat::curve_eval_into(self.points.as_flattened(), D, t, &mut out, &mut Vec::new());
+        out
     }
 
     /// The same curve over `range` = a..b, reparametrised over [0, 1]: control points
@@ -151,9 +149,9 @@ impl<T: Ring, const D: usize> Bezier<T, D> {
     }
 
     /// [`Bezier::subsegment`] into `out` (n + 1 points), with `scratch` grown to
-    /// [`crate::curve_scratch_len`]`(n, D)` on first use and reused afterwards: no allocation
+    /// [`crate::engine::curve_scratch_len`]`(n, D)` on first use and reused afterwards: no allocation
     /// once it is large enough. Degrees 1..=24 run the engine's steps unrolled by
-    /// `blossom::restriction!` (no scratch at all), higher degrees [`crate::curve_net`]; the
+    /// `blossom::restriction!` (no scratch at all), higher degrees [`crate::engine::curve_net`]; the
     /// answer is the same bit for bit.
     ///
     /// # Errors
@@ -205,14 +203,10 @@ pub fn subsegment_into<T: Ring, const D: usize>(
         ));
     }
     check_out("out", points.len(), out.len())?;
-    if T::UNROLLED && restrict_curve_unrolled(points, a, b, out) {
-        return Ok(());
-    }
-    curve_net(
+    flat::curve_subsegment_fixed::<T, D>(
         points.as_flattened(),
-        Fixed::<D>,
-        &BernsteinStep(a),
-        &BernsteinStep(b),
+        a,
+        b,
         out.as_flattened_mut(),
         scratch,
     );
@@ -271,18 +265,13 @@ impl<T: Ring, const D: usize> BezierTensor<T, D> {
 
     /// The point at (s, t): de Casteljau along v in every row, then along u.
     pub fn eval(&self, s: &T, t: &T) -> [T; D] {
-        let (n, m) = self.degree();
-        let along_v = vec![BernsteinStep(t); m];
-        let mut column = Vec::with_capacity((n + 1) * D);
-        let mut row = Vec::with_capacity(self.cols * D);
-        for r in self.points.chunks(self.cols) {
-            row.clear();
-            row.extend_from_slice(r.as_flattened());
-            curve_blossom_in_place(&mut row, D, &along_v);
-            column.extend_from_slice(&row[..D]);
-        }
-        curve_blossom_in_place(&mut column, D, &vec![BernsteinStep(s); n]);
-        first_point(&column)
+        first_point(&flat::tensor_eval(
+            self.points.as_flattened(),
+            self.cols,
+            D,
+            s,
+            t,
+        ))
     }
 
     /// The patch over `rect` = [a, b, c, d], i.e. [a, b] x [c, d], reparametrised over
@@ -298,7 +287,7 @@ impl<T: Ring, const D: usize> BezierTensor<T, D> {
     }
 
     /// [`BezierTensor::restrict`] into `out`, with a reusable `scratch`
-    /// ([`crate::tensor_scratch_len`]).
+    /// ([`crate::engine::tensor_scratch_len`]).
     ///
     /// # Errors
     /// `out` when it does not hold (n + 1)(m + 1) points.
@@ -309,12 +298,11 @@ impl<T: Ring, const D: usize> BezierTensor<T, D> {
         scratch: &mut Vec<T>,
     ) -> Result<()> {
         check_out("out", self.points.len(), out.len())?;
-        let steps = rect.each_ref().map(BernsteinStep);
-        tensor_net(
+        flat::tensor_restrict(
             self.points.as_flattened(),
             self.cols,
             D,
-            steps.each_ref(),
+            rect,
             out.as_flattened_mut(),
             scratch,
         );
@@ -370,9 +358,12 @@ impl<T: Ring, const D: usize> BezierTriangle<T, D> {
 
     /// The point at the affine coordinates (s, t) (barycentric (s, t, 1 - s - t)).
     pub fn eval(&self, at: &[T; 2]) -> [T; D] {
-        let mut level = self.points.as_flattened().to_vec();
-        triangle_blossom_in_place(&mut level, D, &vec![BernsteinPairStep(at); self.degree]);
-        first_point(&level)
+        first_point(&flat::triangle_eval(
+            self.points.as_flattened(),
+            self.degree,
+            D,
+            at,
+        ))
     }
 
     /// The patch over the triangle with corners `corners` = [A, B, C] (affine coordinates),
@@ -388,7 +379,7 @@ impl<T: Ring, const D: usize> BezierTriangle<T, D> {
     }
 
     /// [`BezierTriangle::restrict`] into `out`, with a reusable `scratch`
-    /// ([`crate::triangle_scratch_len`]).
+    /// ([`crate::engine::triangle_scratch_len`]).
     ///
     /// # Errors
     /// `out` when it does not hold (N + 1)(N + 2) / 2 points.
@@ -399,15 +390,140 @@ impl<T: Ring, const D: usize> BezierTriangle<T, D> {
         scratch: &mut Vec<T>,
     ) -> Result<()> {
         check_out("out", self.points.len(), out.len())?;
-        let steps = corners.each_ref().map(BernsteinPairStep);
-        triangle_net(
+        flat::triangle_restrict(
             self.points.as_flattened(),
             self.degree,
             D,
-            steps.each_ref(),
+            corners,
             out.as_flattened_mut(),
             scratch,
         );
         Ok(())
+    }
+}
+
+// Lossless conversions between the two front ends, owned and borrowed: the coordinates are the
+// same numbers in the same order, so each way is one copy of the buffer (or none of the
+// numbers' values changed).
+
+/// The error of a runtime dimension that is not the type's `D`.
+fn other_dimension<const D: usize>(found: usize) -> Error {
+    Error::of(
+        ErrorKind::Dimension,
+        "dim",
+        format!("expected points of {D} coordinates, found {found}"),
+    )
+}
+
+fn to_arrays<T: Clone, const D: usize>(coords: &[T], dim: usize) -> Result<Vec<[T; D]>> {
+    if dim != D {
+        return Err(other_dimension::<D>(dim));
+    }
+    Ok(to_points(coords))
+}
+
+impl<T: Ring, const D: usize> From<Bezier<T, D>> for BezierCurve<T> {
+    fn from(curve: Bezier<T, D>) -> Self {
+        BezierCurve::from_raw(D, curve.points.into_iter().flatten().collect())
+    }
+}
+
+impl<T: Ring, const D: usize> From<&Bezier<T, D>> for BezierCurve<T> {
+    fn from(curve: &Bezier<T, D>) -> Self {
+        BezierCurve::from_raw(D, curve.points.as_flattened().to_vec())
+    }
+}
+
+impl<T: Ring, const D: usize> TryFrom<&BezierCurve<T>> for Bezier<T, D> {
+    type Error = Error;
+
+    /// # Errors
+    /// `dim` when the curve's dimension is not `D`.
+    fn try_from(curve: &BezierCurve<T>) -> Result<Self> {
+        Ok(Bezier {
+            points: to_arrays(curve.coordinates(), curve.dim())?,
+        })
+    }
+}
+
+impl<T: Ring, const D: usize> TryFrom<BezierCurve<T>> for Bezier<T, D> {
+    type Error = Error;
+
+    /// # Errors
+    /// `dim` when the curve's dimension is not `D`.
+    fn try_from(curve: BezierCurve<T>) -> Result<Self> {
+        Bezier::try_from(&curve)
+    }
+}
+
+impl<T: Ring, const D: usize> From<&BezierTensor<T, D>> for TensorPatch<T> {
+    fn from(patch: &BezierTensor<T, D>) -> Self {
+        TensorPatch::from_raw(patch.cols, D, patch.points.as_flattened().to_vec())
+    }
+}
+
+impl<T: Ring, const D: usize> From<BezierTensor<T, D>> for TensorPatch<T> {
+    fn from(patch: BezierTensor<T, D>) -> Self {
+        let cols = patch.cols;
+        TensorPatch::from_raw(cols, D, patch.points.into_iter().flatten().collect())
+    }
+}
+
+impl<T: Ring, const D: usize> TryFrom<&TensorPatch<T>> for BezierTensor<T, D> {
+    type Error = Error;
+
+    /// # Errors
+    /// `dim` when the patch's dimension is not `D`.
+    fn try_from(patch: &TensorPatch<T>) -> Result<Self> {
+        Ok(BezierTensor {
+            cols: patch.degree().1 + 1,
+            points: to_arrays(patch.coordinates(), patch.dim())?,
+        })
+    }
+}
+
+impl<T: Ring, const D: usize> TryFrom<TensorPatch<T>> for BezierTensor<T, D> {
+    type Error = Error;
+
+    /// # Errors
+    /// `dim` when the patch's dimension is not `D`.
+    fn try_from(patch: TensorPatch<T>) -> Result<Self> {
+        BezierTensor::try_from(&patch)
+    }
+}
+
+impl<T: Ring, const D: usize> From<&BezierTriangle<T, D>> for TriangularPatch<T> {
+    fn from(patch: &BezierTriangle<T, D>) -> Self {
+        TriangularPatch::from_raw(patch.degree, D, patch.points.as_flattened().to_vec())
+    }
+}
+
+impl<T: Ring, const D: usize> From<BezierTriangle<T, D>> for TriangularPatch<T> {
+    fn from(patch: BezierTriangle<T, D>) -> Self {
+        let degree = patch.degree;
+        TriangularPatch::from_raw(degree, D, patch.points.into_iter().flatten().collect())
+    }
+}
+
+impl<T: Ring, const D: usize> TryFrom<&TriangularPatch<T>> for BezierTriangle<T, D> {
+    type Error = Error;
+
+    /// # Errors
+    /// `dim` when the patch's dimension is not `D`.
+    fn try_from(patch: &TriangularPatch<T>) -> Result<Self> {
+        Ok(BezierTriangle {
+            degree: patch.degree(),
+            points: to_arrays(patch.coordinates(), patch.dim())?,
+        })
+    }
+}
+
+impl<T: Ring, const D: usize> TryFrom<TriangularPatch<T>> for BezierTriangle<T, D> {
+    type Error = Error;
+
+    /// # Errors
+    /// `dim` when the patch's dimension is not `D`.
+    fn try_from(patch: TriangularPatch<T>) -> Result<Self> {
+        BezierTriangle::try_from(&patch)
     }
 }

@@ -13,36 +13,15 @@
 
 use crate::error::{check_arity, Error, ErrorKind, Result};
 use crate::num::limits::check_entries;
-use crate::num::meter::charge_points;
-use crate::shape::point::lerp;
-use crate::shape::point::Point;
-use crate::shape::power::check_dims;
-use crate::shape::simplex::{checked_triangle_len, triangle_index, triangle_len};
+use crate::shape::flat;
+use crate::shape::point::{check_dims, check_flat, flatten_points, Point, Points};
+use crate::shape::simplex::{checked_triangle_len, triangle_index};
 use crate::Ring;
-
-/// Checks a control polygon `points` (about `field`): at least one point, all of one
-/// dimension D >= 1.
-fn check_polygon<T>(points: &[Point<T>], field: &str) -> Result<()> {
-    let Some(first) = points.first() else {
-        return Err(Error::of(
-            ErrorKind::Empty,
-            field,
-            "expected at least one point",
-        ));
-    };
-    if first.is_empty() {
-        return Err(Error::of(
-            ErrorKind::Dimension,
-            format!("{field}[0]"),
-            "expected at least 1 coordinate",
-        ));
-    }
-    check_dims(points, first.len(), field)
-}
+use std::ops::Range;
 
 /// Checks a control net `net[nu][mu]` (about `field`): at least one row, all rows of one
-/// non-zero length, all points of one dimension D >= 1.
-fn check_net<T>(net: &[Vec<Point<T>>], field: &str) -> Result<()> {
+/// non-zero length, all points of one dimension D >= 1. Returns (rows, cols, dim).
+fn check_net<T>(net: &[Vec<Point<T>>], field: &str) -> Result<(usize, usize, usize)> {
     let Some(first) = net.first() else {
         return Err(Error::of(
             ErrorKind::Empty,
@@ -69,120 +48,418 @@ fn check_net<T>(net: &[Vec<Point<T>>], field: &str) -> Result<()> {
         }
         check_dims(row, dim, &format!("{field}[{i}]"))?;
     }
-    Ok(())
+    Ok((net.len(), cols, dim))
+}
+
+/// The number of points (N + 1)(N + 2) / 2 of a triangular net of degree `degree`, checked
+/// against overflow and [`MAX_ENTRIES`](crate::MAX_ENTRIES) (about `degree_field`).
+fn triangle_points(degree: usize, degree_field: &str) -> Result<usize> {
+    check_entries(
+        checked_triangle_len(degree),
+        degree_field,
+        "the number of control points (N + 1)(N + 2) / 2",
+    )
+}
+
+fn wrong_count(field: &str, what: String, found: usize) -> Error {
+    Error::of(ErrorKind::Shape, field, format!("{what}, found {found}"))
 }
 
 /// Checks a triangular net `points` of degree `degree` (about `degree_field` and
 /// `points_field`): (N + 1)(N + 2) / 2 points, a count that must not overflow nor exceed
 /// [`MAX_ENTRIES`](crate::MAX_ENTRIES), all of one dimension D >= 1.
-pub(crate) fn check_triangle_net<T>(
+pub(crate) fn check_triangle_net<T: Clone>(
     degree: usize,
     points: &[Point<T>],
     degree_field: &str,
     points_field: &str,
 ) -> Result<()> {
-    let want = check_entries(
-        checked_triangle_len(degree),
-        degree_field,
-        "the number of control points (N + 1)(N + 2) / 2",
-    )?;
+    let want = triangle_points(degree, degree_field)?;
     if points.len() != want {
-        return Err(Error::of(
-            ErrorKind::Shape,
+        return Err(wrong_count(
             points_field,
-            format!(
-                "a triangular patch of degree {degree} has {want} points, found {}",
-                points.len()
-            ),
+            format!("a triangular patch of degree {degree} has {want} points"),
+            points.len(),
         ));
     }
-    check_polygon(points, points_field)
+    flatten_points(points, points_field).map(|_| ())
 }
 
-/// A Bézier curve sum_v w_v B_v^n(t) over t in [0, 1].
+/// A Bézier curve sum_i w_i B_i^n(t) over t in [0, 1], with control points of any dimension
+/// `D >= 1` stored in one buffer (`D` coordinates per point, point after point).
+///
+/// This is the curve type of the library: every operation on Bézier curves is a method here
+/// (or takes this type). [`crate::Bezier`] is the same curve with the dimension in the type
+/// (`[T; D]` points), for code that knows it at compile time; the two convert into each other
+/// without loss ([`From`] one way, [`TryFrom`] the other).
+///
+/// ```
+/// use blossom::BezierCurve;
+/// let cubic = BezierCurve::new(vec![vec![0.0, 0.0], vec![1.0, 2.0], vec![3.0, 3.0], vec![4.0, 0.0]])?;
+/// let middle = cubic.subsegment(0.25..0.75);
+/// // The ends of a subsegment are points of the curve.
+/// assert_eq!(middle.control_points()[0], cubic.eval(&0.25));
+/// assert_eq!(middle.control_points()[3], cubic.eval(&0.75));
+/// // The same with no allocation once `out` and `scratch` have their size.
+/// let (mut out, mut scratch) = (cubic.clone(), Vec::new());
+/// cubic.subsegment_into(&0.25, &0.75, &mut out, &mut scratch);
+/// assert_eq!(out, middle);
+/// # Ok::<(), blossom::Error>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct BezierCurve<T> {
-    control_points: Vec<Point<T>>,
+    dim: usize,
+    coords: Vec<T>,
 }
 
 impl<T: Ring> BezierCurve<T> {
-    /// A curve from its control points `w_0, ..., w_n`, all of one dimension `D >= 1`.
+    /// A curve from its control points `w_0, ..., w_n`, all of one dimension `D >= 1` (copied
+    /// once into the curve's buffer; [`BezierCurve::from_coordinates`] takes a buffer as it is).
+    ///
+    /// # Errors
+    /// `control_points` when it is empty, `control_points[i]` when point i has no coordinate or
+    /// another dimension than the first.
     pub fn new(control_points: Vec<Point<T>>) -> Result<Self> {
-        check_polygon(&control_points, "control_points")?;
-        Ok(BezierCurve { control_points })
+        let (dim, coords) = flatten_points(&control_points, "control_points")?;
+        Ok(BezierCurve { dim, coords })
+    }
+
+    /// A curve from the coordinates of its control points, point after point, `dim` each.
+    ///
+    /// # Errors
+    /// `dim` when it is 0, `coordinates` when it is empty or not a whole number of points.
+    pub fn from_coordinates(dim: usize, coordinates: Vec<T>) -> Result<Self> {
+        check_flat(&coordinates, dim, "coordinates")?;
+        Ok(BezierCurve {
+            dim,
+            coords: coordinates,
+        })
+    }
+
+    /// The curve with `coords` as they are (`dim >= 1`, a whole number of at least one point:
+    /// the caller's guarantee).
+    pub(crate) fn from_raw(dim: usize, coords: Vec<T>) -> Self {
+        debug_assert!(dim >= 1 && !coords.is_empty() && coords.len() % dim == 0);
+        BezierCurve { dim, coords }
     }
 
     /// The degree `n`.
     pub fn degree(&self) -> usize {
-        self.control_points.len() - 1
+        self.coords.len() / self.dim - 1
     }
 
-    /// The control points `w_0, ..., w_n`.
-    pub fn control_points(&self) -> &[Point<T>] {
-        &self.control_points
+    /// The dimension `D` of the points.
+    pub fn dim(&self) -> usize {
+        self.dim
     }
 
-    /// Consumes the curve, returning its control points.
+    /// The control points `w_0, ..., w_n`, each a `&[T]`.
+    pub fn control_points(&self) -> Points<'_, T> {
+        Points::new(&self.coords, self.dim)
+    }
+
+    /// Every coordinate, point after point.
+    pub fn coordinates(&self) -> &[T] {
+        &self.coords
+    }
+
+    /// Every coordinate, to change in place (the degree and dimension stay).
+    pub fn coordinates_mut(&mut self) -> &mut [T] {
+        &mut self.coords
+    }
+
+    /// Consumes the curve, returning its coordinates.
+    pub fn into_coordinates(self) -> Vec<T> {
+        self.coords
+    }
+
+    /// Consumes the curve, returning its control points as nested vectors.
     pub fn into_control_points(self) -> Vec<Point<T>> {
-        self.control_points
+        self.control_points().to_vec()
     }
 
     /// The point at parameter `t` (de Casteljau).
     pub fn eval(&self, t: &T) -> Point<T> {
-        curve_blossom_unchecked(&self.control_points, &vec![t.clone(); self.degree()])
+        let mut out = vec![T::zero(); self.dim];
+        self.eval_into(t, &mut out, &mut Vec::new());
+        out
+    }
+
+    /// [`BezierCurve::eval`] into `out` (`D` numbers), with `level` as the working copy of the
+    /// control points: no allocation once `level` has grown.
+    ///
+    /// # Panics
+    /// When `out.len()` is not the dimension.
+    pub fn eval_into(&self, t: &T, out: &mut [T], level: &mut Vec<T>) {
+        assert_eq!(out.len(), self.dim, "out holds one point");
+        flat::curve_eval_into(&self.coords, self.dim, t, out, level);
+    }
+
+    /// The blossom b[t_1, ..., t_n], eq. (2) of seed 004.
+    ///
+    /// # Errors
+    /// `args` when it does not hold n arguments.
+    pub fn blossom(&self, args: &[T]) -> Result<Point<T>> {
+        check_arity("args", args.len(), self.degree())?;
+        Ok(flat::curve_blossom(&self.coords, self.dim, args))
+    }
+
+    /// The same curve over `range` = a..b, reparametrised over [0, 1]: control points
+    /// b[a^(n-j), b^j], j = 0..=n. Any a, b, also outside [0, 1] or with a > b.
+    pub fn subsegment(&self, range: Range<T>) -> Self {
+        let mut out = BezierCurve {
+            dim: self.dim,
+            coords: vec![T::zero(); self.coords.len()],
+        };
+        flat::curve_subsegment(
+            &self.coords,
+            self.dim,
+            &range.start,
+            &range.end,
+            &mut out.coords,
+            &mut Vec::new(),
+        );
+        out
+    }
+
+    /// [`BezierCurve::subsegment`] over [a, b] into `out`, whose buffer is reused (resized
+    /// when its degree or dimension differ), with `scratch` grown to
+    /// [`crate::engine::curve_scratch_len`] on first use. Nothing is allocated once both have
+    /// their size; `f64` and `f32` curves of degree up to 24 in dimension up to 4 need no
+    /// scratch at all (the unrolled evaluators of `blossom::restriction!`).
+    pub fn subsegment_into(&self, a: &T, b: &T, out: &mut Self, scratch: &mut Vec<T>) {
+        out.dim = self.dim;
+        out.coords.resize(self.coords.len(), T::zero());
+        flat::curve_subsegment(&self.coords, self.dim, a, b, &mut out.coords, scratch);
+    }
+
+    /// The parts over [0, t] and [t, 1], each over [0, 1], from one de Casteljau pyramid.
+    pub fn split(&self, t: &T) -> (Self, Self) {
+        let mut left = self.clone();
+        let mut right = self.clone();
+        crate::shape::halving::curve_split(
+            &self.coords,
+            self.dim,
+            t,
+            &mut left.coords,
+            &mut right.coords,
+        );
+        (left, right)
+    }
+
+    /// The first derivative (the hodograph): n (w_(i+1) - w_i), a curve of degree n - 1; for a
+    /// constant curve, the zero curve of degree 0.
+    pub fn deriv(&self) -> Self {
+        if self.degree() == 0 {
+            return BezierCurve {
+                dim: self.dim,
+                coords: vec![T::zero(); self.dim],
+            };
+        }
+        crate::bezier_derivative(self, 1).expect("order 1 <= degree")
+    }
+
+    /// The same curve at degree `to_degree` >= n (degree elevation, seed 004).
+    ///
+    /// # Errors
+    /// `to_degree` when it is below the degree.
+    pub fn elevate(&self, to_degree: usize) -> Result<Self> {
+        crate::elevate(self, to_degree)
+    }
+
+    /// The curve of degree `to_degree` <= n nearest to this one by `method` (seed 004).
+    ///
+    /// # Errors
+    /// As [`crate::reduce`].
+    pub fn reduce(&self, to_degree: usize, method: crate::Reduction) -> Result<Self> {
+        crate::reduce(self, to_degree, method)
     }
 }
 
-/// A tensor-product Bézier patch sum_{nu, mu} p_{nu mu} B_nu^n(s) B_mu^m(t) over [0, 1]^2.
+/// A tensor-product Bézier patch sum_{nu, mu} p_{nu mu} B_nu^n(s) B_mu^m(t) over [0, 1]^2, its
+/// control points in one buffer, row by row (point (ν, μ) at position ν (m + 1) + μ).
 #[derive(Clone, Debug, PartialEq)]
 pub struct TensorPatch<T> {
-    control_points: Vec<Vec<Point<T>>>,
+    cols: usize,
+    dim: usize,
+    coords: Vec<T>,
 }
 
 impl<T: Ring> TensorPatch<T> {
     /// A patch from its control net, `net[nu][mu]` = `p_{nu mu}`: `n + 1` rows of `m + 1`
-    /// points, all of one dimension.
+    /// points, all of one dimension (copied once into the patch's buffer).
+    ///
+    /// # Errors
+    /// `control_points` (or one of its rows or points) when the net is empty, not rectangular
+    /// or of mixed dimensions.
     pub fn new(control_points: Vec<Vec<Point<T>>>) -> Result<Self> {
-        check_net(&control_points, "control_points")?;
-        Ok(TensorPatch { control_points })
+        let (_, cols, dim) = check_net(&control_points, "control_points")?;
+        let coords = control_points.iter().flatten().flatten().cloned().collect();
+        Ok(TensorPatch { cols, dim, coords })
+    }
+
+    /// A patch of bidegree `degree` = (n, m) from the coordinates of its points, row by row,
+    /// `dim` each.
+    ///
+    /// # Errors
+    /// `dim` when it is 0, `coordinates` when it does not hold (n + 1)(m + 1) points,
+    /// `degree` when that count overflows.
+    pub fn from_coordinates(
+        degree: (usize, usize),
+        dim: usize,
+        coordinates: Vec<T>,
+    ) -> Result<Self> {
+        let points = check_flat(&coordinates, dim, "coordinates")?;
+        let cols = degree.1.checked_add(1);
+        let want = degree
+            .0
+            .checked_add(1)
+            .zip(cols)
+            .and_then(|(r, c)| r.checked_mul(c))
+            .ok_or_else(|| {
+                Error::of(
+                    ErrorKind::TooLarge,
+                    "degree",
+                    "the number of control points overflows usize",
+                )
+            })?;
+        if points != want {
+            return Err(wrong_count(
+                "coordinates",
+                format!(
+                    "a patch of bidegree ({}, {}) has {want} points",
+                    degree.0, degree.1
+                ),
+                points,
+            ));
+        }
+        Ok(TensorPatch {
+            cols: degree.1 + 1,
+            dim,
+            coords: coordinates,
+        })
+    }
+
+    /// The patch with `coords` as they are (rows of `cols >= 1` points of `dim >= 1`: the
+    /// caller's guarantee).
+    pub(crate) fn from_raw(cols: usize, dim: usize, coords: Vec<T>) -> Self {
+        debug_assert!(cols >= 1 && dim >= 1 && !coords.is_empty());
+        debug_assert!(coords.len() % (cols * dim) == 0);
+        TensorPatch { cols, dim, coords }
     }
 
     /// The bidegree `(n, m)`.
     pub fn degree(&self) -> (usize, usize) {
         (
-            self.control_points.len() - 1,
-            self.control_points[0].len() - 1,
+            self.coords.len() / (self.cols * self.dim) - 1,
+            self.cols - 1,
         )
     }
 
-    /// The control net, `[nu][mu]`.
-    pub fn control_points(&self) -> &[Vec<Point<T>>] {
-        &self.control_points
+    /// The dimension `D` of the points.
+    pub fn dim(&self) -> usize {
+        self.dim
     }
 
-    /// Consumes the patch, returning its control net.
+    /// The control point p_(ν μ).
+    ///
+    /// # Panics
+    /// When ν > n or μ > m, as slice indexing does.
+    pub fn get(&self, nu: usize, mu: usize) -> &[T] {
+        let (n, m) = self.degree();
+        assert!(
+            nu <= n && mu <= m,
+            "control point ({nu}, {mu}) of a patch of bidegree ({n}, {m})"
+        );
+        let start = (nu * self.cols + mu) * self.dim;
+        &self.coords[start..start + self.dim]
+    }
+
+    /// Row ν of the net: the points p_(ν 0), ..., p_(ν m).
+    ///
+    /// # Panics
+    /// When ν > n.
+    pub fn row(&self, nu: usize) -> Points<'_, T> {
+        let width = self.cols * self.dim;
+        Points::new(&self.coords[nu * width..(nu + 1) * width], self.dim)
+    }
+
+    /// The rows of the net, ν = 0..=n.
+    pub fn rows(&self) -> impl ExactSizeIterator<Item = Points<'_, T>> + '_ {
+        self.coords
+            .chunks_exact(self.cols * self.dim)
+            .map(|r| Points::new(r, self.dim))
+    }
+
+    /// All control points, row by row.
+    pub fn points(&self) -> Points<'_, T> {
+        Points::new(&self.coords, self.dim)
+    }
+
+    /// Every coordinate, row by row, point after point (the layout of the engine).
+    pub fn coordinates(&self) -> &[T] {
+        &self.coords
+    }
+
+    /// Consumes the patch, returning its coordinates.
+    pub fn into_coordinates(self) -> Vec<T> {
+        self.coords
+    }
+
+    /// The control net as nested vectors, `[nu][mu]` (one allocation per point).
+    pub fn to_nested(&self) -> Vec<Vec<Point<T>>> {
+        self.rows().map(|r| r.to_vec()).collect()
+    }
+
+    /// Consumes the patch, returning its control net as nested vectors, `[nu][mu]`.
     pub fn into_control_points(self) -> Vec<Vec<Point<T>>> {
-        self.control_points
-    }
-
-    /// Every coordinate of the net in one run, row after row (the layout of the engine).
-    pub(crate) fn flat_coordinates(&self) -> Vec<T> {
-        self.control_points
-            .iter()
-            .flatten()
-            .flatten()
-            .cloned()
-            .collect()
+        self.to_nested()
     }
 
     /// The point at `(s, t)` (two passes of de Casteljau).
     pub fn eval(&self, s: &T, t: &T) -> Point<T> {
+        flat::tensor_eval(&self.coords, self.cols, self.dim, s, t)
+    }
+
+    /// The blossom b[u_1..u_n; v_1..v_m], eq. (9) of seed 004.
+    ///
+    /// # Errors
+    /// `us` (`vs`) when it does not hold n (m) arguments.
+    pub fn blossom(&self, us: &[T], vs: &[T]) -> Result<Point<T>> {
         let (n, m) = self.degree();
-        tensor_blossom_unchecked(
-            &self.control_points,
-            &vec![s.clone(); n],
-            &vec![t.clone(); m],
-        )
+        check_arity("us", us.len(), n)?;
+        check_arity("vs", vs.len(), m)?;
+        Ok(flat::tensor_blossom(
+            &self.coords,
+            self.cols,
+            self.dim,
+            us,
+            vs,
+        ))
+    }
+
+    /// The patch over `rect` = [a, b, c, d], i.e. [a, b] x [c, d], reparametrised over
+    /// [0, 1]^2: p_(ν μ) = b[a^(n-ν), b^ν; c^(m-μ), d^μ]. O(nm(n + m)) per coordinate.
+    pub fn restrict(&self, rect: &[T; 4]) -> Self {
+        let mut out = self.clone();
+        self.restrict_into(rect, &mut out, &mut Vec::new());
+        out
+    }
+
+    /// [`TensorPatch::restrict`] into `out` (its buffer reused, resized when the shapes
+    /// differ), with `scratch` grown to [`crate::engine::tensor_scratch_len`] on first use.
+    pub fn restrict_into(&self, rect: &[T; 4], out: &mut Self, scratch: &mut Vec<T>) {
+        out.cols = self.cols;
+        out.dim = self.dim;
+        out.coords.resize(self.coords.len(), T::zero());
+        flat::tensor_restrict(
+            &self.coords,
+            self.cols,
+            self.dim,
+            rect,
+            &mut out.coords,
+            scratch,
+        );
     }
 }
 
@@ -191,16 +468,23 @@ impl<T: Ring> TensorPatch<T> {
 /// barycentric coordinates (s, t, r) of the triangle's corners (a, b, c).
 ///
 /// The control point `q_{nu mu lambda}` is the blossom value at `a^nu, b^mu, c^lambda`
-/// (equation (12)); points are stored in lexicographic order of `(nu, mu)`.
+/// (equation (12)); points are stored in one buffer in lexicographic order of `(nu, mu)`.
+///
+/// Points of the domain are given by their **affine coordinates** `[s, t]`: the barycentric
+/// coordinates (s, t, 1 - s - t), i.e. the point of the reference triangle with corners
+/// a = (1, 0), b = (0, 1), c = (0, 0). [`TriangularPatch::eval`] and
+/// [`TriangularPatch::restrict`] both take them (as [`crate::BezierTriangle`] does); only the
+/// blossom, which is multi-affine in three free weights, takes `[u, v, w]`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TriangularPatch<T> {
     degree: usize,
-    control_points: Vec<Point<T>>,
+    dim: usize,
+    coords: Vec<T>,
 }
 
 impl<T: Ring> TriangularPatch<T> {
     /// A patch of degree `degree` from its control points in lexicographic order of
-    /// `(nu, mu)`: `(0, 0), (0, 1), ..., (0, N), (1, 0), ..., (N, 0)`.
+    /// `(nu, mu)`: `(0, 0), (0, 1), ..., (0, N), (1, 0), ..., (N, 0)` (copied once).
     ///
     /// # Errors
     /// [`ErrorKind::TooLarge`] on `degree` when (N + 1)(N + 2) / 2 overflows or exceeds
@@ -209,10 +493,46 @@ impl<T: Ring> TriangularPatch<T> {
     /// another dimension than the first.
     pub fn new(degree: usize, control_points: Vec<Point<T>>) -> Result<Self> {
         check_triangle_net(degree, &control_points, "degree", "control_points")?;
+        let (dim, coords) = flatten_points(&control_points, "control_points")?;
         Ok(TriangularPatch {
             degree,
-            control_points,
+            dim,
+            coords,
         })
+    }
+
+    /// A patch of degree `degree` from the coordinates of its points (lexicographic order of
+    /// `(nu, mu)`), `dim` each.
+    ///
+    /// # Errors
+    /// `dim` when it is 0, `coordinates` when it does not hold (N + 1)(N + 2) / 2 points,
+    /// `degree` when that count overflows or exceeds [`MAX_ENTRIES`](crate::MAX_ENTRIES).
+    pub fn from_coordinates(degree: usize, dim: usize, coordinates: Vec<T>) -> Result<Self> {
+        let want = triangle_points(degree, "degree")?;
+        let points = check_flat(&coordinates, dim, "coordinates")?;
+        if points != want {
+            return Err(wrong_count(
+                "coordinates",
+                format!("a triangular patch of degree {degree} has {want} points"),
+                points,
+            ));
+        }
+        Ok(TriangularPatch {
+            degree,
+            dim,
+            coords: coordinates,
+        })
+    }
+
+    /// The patch with `coords` as they are ((N + 1)(N + 2) / 2 points of `dim >= 1`: the
+    /// caller's guarantee).
+    pub(crate) fn from_raw(degree: usize, dim: usize, coords: Vec<T>) -> Self {
+        debug_assert!(dim >= 1 && coords.len() == crate::engine::triangle_len(degree) * dim);
+        TriangularPatch {
+            degree,
+            dim,
+            coords,
+        }
     }
 
     /// The total degree `N`.
@@ -220,12 +540,17 @@ impl<T: Ring> TriangularPatch<T> {
         self.degree
     }
 
+    /// The dimension `D` of the points.
+    pub fn dim(&self) -> usize {
+        self.dim
+    }
+
     /// The control point `q_{nu mu lambda}` with `lambda = N - nu - mu`.
     ///
     /// # Panics
     /// When `nu + mu > N`, as slice indexing does; [`TriangularPatch::try_get`] returns `None`
     /// instead.
-    pub fn get(&self, nu: usize, mu: usize) -> &Point<T> {
+    pub fn get(&self, nu: usize, mu: usize) -> &[T] {
         self.try_get(nu, mu).unwrap_or_else(|| {
             panic!(
                 "index (nu, mu) = ({nu}, {mu}) out of range for a triangular patch of degree {}",
@@ -236,33 +561,88 @@ impl<T: Ring> TriangularPatch<T> {
 
     /// The control point `q_{nu mu lambda}` with `lambda = N - nu - mu`, or `None` when
     /// `nu + mu > N`.
-    pub fn try_get(&self, nu: usize, mu: usize) -> Option<&Point<T>> {
+    pub fn try_get(&self, nu: usize, mu: usize) -> Option<&[T]> {
         let in_range = nu.checked_add(mu).is_some_and(|s| s <= self.degree);
-        in_range.then(|| &self.control_points[triangle_index(self.degree, nu, mu)])
+        in_range.then(|| {
+            let start = triangle_index(self.degree, nu, mu) * self.dim;
+            &self.coords[start..start + self.dim]
+        })
     }
 
     /// All control points in lexicographic order of `(nu, mu)`.
-    pub fn control_points(&self) -> &[Point<T>] {
-        &self.control_points
+    pub fn control_points(&self) -> Points<'_, T> {
+        Points::new(&self.coords, self.dim)
+    }
+
+    /// Every coordinate, point after point.
+    pub fn coordinates(&self) -> &[T] {
+        &self.coords
+    }
+
+    /// Consumes the patch, returning its coordinates.
+    pub fn into_coordinates(self) -> Vec<T> {
+        self.coords
+    }
+
+    /// Consumes the patch, returning its control points as nested vectors.
+    pub fn into_control_points(self) -> Vec<Point<T>> {
+        self.control_points().to_vec()
     }
 
     /// `(nu, mu, lambda, q)` for every control point, in lexicographic order of `(nu, mu)`.
-    pub fn entries(&self) -> impl Iterator<Item = (usize, usize, usize, &Point<T>)> {
+    pub fn entries(&self) -> impl Iterator<Item = (usize, usize, usize, &[T])> {
         let n = self.degree;
         (0..=n)
             .flat_map(move |nu| (0..=n - nu).map(move |mu| (nu, mu)))
-            .zip(&self.control_points)
+            .zip(self.control_points())
             .map(move |((nu, mu), q)| (nu, mu, n - nu - mu, q))
     }
 
-    /// The point with barycentric coordinates `(s, t, r)` (`s + t + r = 1`), by de Casteljau.
-    pub fn eval(&self, bary: &[T; 3]) -> Point<T> {
-        triangle_blossom_unchecked(self, &vec![bary.clone(); self.degree])
+    /// The point at the affine coordinates `[s, t]` (barycentric (s, t, 1 - s - t)), by
+    /// de Casteljau.
+    pub fn eval(&self, at: &[T; 2]) -> Point<T> {
+        flat::triangle_eval(&self.coords, self.degree, self.dim, at)
+    }
+
+    /// The blossom at barycentric arguments `[u_r, v_r, w_r]` (weights of the corners a, b, c,
+    /// free: the blossom is multi-affine in them).
+    ///
+    /// # Errors
+    /// `args` when it does not hold N arguments.
+    pub fn blossom(&self, args: &[[T; 3]]) -> Result<Point<T>> {
+        check_arity("args", args.len(), self.degree)?;
+        Ok(flat::triangle_blossom(&self.coords, self.dim, args))
+    }
+
+    /// The patch over the sub-triangle with corners `corners` = [A, B, C], each by its affine
+    /// coordinates [s, t], reparametrised over the reference triangle:
+    /// q_(ν μ λ) = b[A^ν, B^μ, C^λ]. O(N^3) per coordinate.
+    pub fn restrict(&self, corners: &[[T; 2]; 3]) -> Self {
+        let mut out = self.clone();
+        self.restrict_into(corners, &mut out, &mut Vec::new());
+        out
+    }
+
+    /// [`TriangularPatch::restrict`] into `out` (its buffer reused, resized when the shapes
+    /// differ), with `scratch` grown to [`crate::engine::triangle_scratch_len`] on first use.
+    pub fn restrict_into(&self, corners: &[[T; 2]; 3], out: &mut Self, scratch: &mut Vec<T>) {
+        out.degree = self.degree;
+        out.dim = self.dim;
+        out.coords.resize(self.coords.len(), T::zero());
+        flat::triangle_restrict(
+            &self.coords,
+            self.degree,
+            self.dim,
+            corners,
+            &mut out.coords,
+            scratch,
+        );
     }
 }
 
-// De Casteljau's algorithm on the blossom (seed 004, section 2): the evaluation of every
-// Bézier shape, and its blossom at any arguments.
+// The blossoms on nested input, for the library's independent algorithms (the pyramid, the
+// rational shapes) and for users holding nested points: each flattens once and runs the one
+// implementation in `flat`.
 
 /// The blossom b[t_1, ..., t_n] of the Bézier curve with control points `control` (degree
 /// `n = control.len() - 1 = args.len()`), eq. (2) of seed 004.
@@ -271,22 +651,16 @@ impl<T: Ring> TriangularPatch<T> {
 /// [`ErrorKind::Empty`] or [`ErrorKind::Dimension`] on `control` as [`BezierCurve::new`];
 /// [`ErrorKind::Arity`] on `args` when `args.len() + 1 != control.len()`.
 pub fn bezier_curve_blossom<T: Ring>(control: &[Point<T>], args: &[T]) -> Result<Point<T>> {
-    check_polygon(control, "control")?;
+    let (dim, coords) = flatten_points(control, "control")?;
     check_arity("args", args.len(), control.len() - 1)?;
-    Ok(curve_blossom_unchecked(control, args))
+    Ok(flat::curve_blossom(&coords, dim, args))
 }
 
 /// [`bezier_curve_blossom`] on input known to fit: a non-empty polygon of one dimension and
 /// `args.len() + 1 == control.len()`.
 pub(crate) fn curve_blossom_unchecked<T: Ring>(control: &[Point<T>], args: &[T]) -> Point<T> {
     debug_assert_eq!(args.len() + 1, control.len());
-    charge_points(control.len());
-    let mut level: Vec<Point<T>> = control.to_vec();
-    for t in args {
-        charge_points(level.len());
-        level = level.windows(2).map(|w| lerp(&w[0], &w[1], t)).collect();
-    }
-    level.pop().expect("one point remains")
+    flat::curve_blossom(&control.concat(), control[0].len(), args)
 }
 
 /// The blossom b[u_1..u_n; v_1..v_m] of the tensor patch with net `net[nu][mu]`, in two passes
@@ -313,11 +687,8 @@ pub(crate) fn tensor_blossom_unchecked<T: Ring>(
     us: &[T],
     vs: &[T],
 ) -> Point<T> {
-    let column: Vec<Point<T>> = net
-        .iter()
-        .map(|row| curve_blossom_unchecked(row, vs))
-        .collect();
-    curve_blossom_unchecked(&column, us)
+    let coords: Vec<T> = net.iter().flatten().flatten().cloned().collect();
+    flat::tensor_blossom(&coords, net[0].len(), net[0][0].len(), us, vs)
 }
 
 /// The blossom of a triangular patch at barycentric arguments (u_r, v_r, w_r) (weights of the
@@ -329,8 +700,7 @@ pub fn bezier_triangle_blossom<T: Ring>(
     patch: &TriangularPatch<T>,
     args: &[[T; 3]],
 ) -> Result<Point<T>> {
-    check_arity("args", args.len(), patch.degree())?;
-    Ok(triangle_blossom_unchecked(patch, args))
+    patch.blossom(args)
 }
 
 /// [`bezier_triangle_blossom`] with `args.len()` known to be the degree.
@@ -338,31 +708,7 @@ pub(crate) fn triangle_blossom_unchecked<T: Ring>(
     patch: &TriangularPatch<T>,
     args: &[[T; 3]],
 ) -> Point<T> {
-    let n = patch.degree();
-    debug_assert_eq!(args.len(), n);
-    charge_points(patch.control_points().len());
-    let mut level: Vec<Point<T>> = patch.control_points().to_vec();
-    for (r, [u, v, w]) in args.iter().enumerate() {
-        let d = n - r - 1;
-        charge_points(triangle_len(d));
-        let mut next = Vec::with_capacity(triangle_len(d));
-        for i in 0..=d {
-            for j in 0..=d - i {
-                let pa = &level[triangle_index(d + 1, i + 1, j)];
-                let pb = &level[triangle_index(d + 1, i, j + 1)];
-                let pc = &level[triangle_index(d + 1, i, j)];
-                let q = pa
-                    .iter()
-                    .zip(pb)
-                    .zip(pc)
-                    .map(|((x, y), z)| u.mul(x).add(&v.mul(y)).add(&w.mul(z)))
-                    .collect();
-                next.push(q);
-            }
-        }
-        level = next;
-    }
-    level.pop().expect("one point remains")
+    flat::triangle_blossom(&patch.coords, patch.dim, args)
 }
 
 #[cfg(test)]
@@ -377,8 +723,8 @@ mod tests {
         assert_eq!(c.eval(&0.5), vec![3.0, 4.5]);
         let t = TriangularPatch::new(1, vec![vec![1.0], vec![2.0], vec![3.0]]).unwrap();
         // q_001 = c-corner, q_010 = b-corner, q_100 = a-corner.
-        assert_eq!(t.eval(&[1.0, 0.0, 0.0]), vec![3.0]);
-        assert_eq!(t.eval(&[0.0, 0.0, 1.0]), vec![1.0]);
+        assert_eq!(t.eval(&[1.0, 0.0]), vec![3.0]);
+        assert_eq!(t.eval(&[0.0, 0.0]), vec![1.0]);
         assert!(TriangularPatch::new(2, vec![vec![1.0]; 5]).is_err());
     }
 }

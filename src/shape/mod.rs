@@ -6,11 +6,11 @@
 pub(crate) mod array;
 pub(crate) mod basis;
 pub(crate) mod bezier;
+pub(crate) mod flat;
 pub(crate) mod halving;
 pub(crate) mod point;
 pub(crate) mod power;
 pub(crate) mod power_triangle;
 pub(crate) mod simplex;
-pub(crate) mod subdivide;
 pub(crate) mod traits;
 pub(crate) mod unrolled;

@@ -6,16 +6,13 @@ use crate::shape::array::{Bezier, BezierTensor, BezierTriangle};
 use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
 use crate::shape::point::Point;
 use crate::shape::power::{PowerCurve, PowerSurface};
-use crate::shape::subdivide::{
-    restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle_affine,
-};
 use crate::Ring;
 
 /// A polynomial shape evaluated at a parameter of its domain: its blossom with all arguments
 /// equal.
 pub trait Evaluate {
-    /// The parameter: t for a curve, (s, t) for a patch (affine coordinates for triangles,
-    /// barycentric for [`TriangularPatch`]).
+    /// The parameter: t for a curve, (s, t) for a patch (for triangles the affine coordinates
+    /// of the reference triangle, i.e. barycentric (s, t, 1 - s - t)).
     type Param;
     /// The point type.
     type Point;
@@ -68,7 +65,7 @@ evaluate!(PowerSurface<T>, [T; 2], Point<T>, |s, p| s
 evaluate!(BezierCurve<T>, T, Point<T>, |s, t| s.eval(t));
 evaluate!(TensorPatch<T>, [T; 2], Point<T>, |s, p| s
     .eval(&p[0], &p[1]));
-evaluate!(TriangularPatch<T>, [T; 3], Point<T>, |s, p| s.eval(p));
+evaluate!(TriangularPatch<T>, [T; 2], Point<T>, |s, p| s.eval(p));
 evaluate_array!(Bezier, T, |s, t| s.eval(t));
 evaluate_array!(BezierTensor, [T; 2], |s, p| s.eval(&p[0], &p[1]));
 evaluate_array!(BezierTriangle, [T; 2], |s, p| s.eval(p));
@@ -78,7 +75,7 @@ impl<T: Ring> Restrict for PowerCurve<T> {
     type Output = BezierCurve<T>;
     /// By [`crate::Method::Bulk`].
     fn restrict(&self, [a, b]: &[T; 2]) -> BezierCurve<T> {
-        crate::restrict::restrict_curve(self, a, b, crate::Method::Bulk)
+        crate::restrict::restrict_power_curve(self, a, b, crate::Method::Bulk)
     }
 }
 
@@ -86,7 +83,7 @@ impl<T: Ring> Restrict for BezierCurve<T> {
     type Domain = [T; 2];
     type Output = BezierCurve<T>;
     fn restrict(&self, [a, b]: &[T; 2]) -> BezierCurve<T> {
-        restrict_bezier_curve(self, a, b)
+        self.subsegment(a.clone()..b.clone())
     }
 }
 
@@ -94,7 +91,7 @@ impl<T: Ring> Restrict for TensorPatch<T> {
     type Domain = [T; 4];
     type Output = TensorPatch<T>;
     fn restrict(&self, rect: &[T; 4]) -> TensorPatch<T> {
-        restrict_bezier_tensor(self, rect)
+        TensorPatch::restrict(self, rect)
     }
 }
 
@@ -102,7 +99,7 @@ impl<T: Ring> Restrict for TriangularPatch<T> {
     type Domain = [[T; 2]; 3];
     type Output = TriangularPatch<T>;
     fn restrict(&self, corners: &[[T; 2]; 3]) -> TriangularPatch<T> {
-        restrict_bezier_triangle_affine(self, corners)
+        TriangularPatch::restrict(self, corners)
     }
 }
 

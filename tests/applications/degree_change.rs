@@ -4,7 +4,8 @@
 
 use crate::common::{q, Rng};
 use blossom::curve_control_points_from_samples;
-use blossom::{bernstein_gram, elevate, reduce, squared_l2_distance, Reduction};
+use blossom::engine::bernstein_gram;
+use blossom::{elevate, reduce, squared_l2_distance, Reduction};
 use blossom::{BezierCurve, Poly, Rational, Ring};
 
 fn random_bezier(rng: &mut Rng, n: usize, dim: usize) -> BezierCurve<Rational> {

@@ -4,12 +4,15 @@
 //! the CLI contract, and in f64 against the exact answer of the same f64 inputs.
 
 use crate::common::{exact, q, Rng};
+use blossom::engine::{
+    bernstein_to_power, triangle_bernstein_to_power, triangle_index, triangle_power_to_bernstein,
+};
 use blossom::{
-    bernstein_to_power, bezier_derivative, bezier_tensor_derivative, bezier_triangle_derivative,
-    power_curve_derivative, power_tensor_derivative, power_triangle_derivative, restrict_curve,
-    restrict_tensor, restrict_triangle, triangle_bernstein_to_power, triangle_index,
-    triangle_power_to_bernstein, BezierCurve, ErrorKind, Method, PowerCurve, PowerSurface,
-    PowerTriangle, Rational, TensorPatch, TriangularPatch,
+    bezier_derivative, bezier_tensor_derivative, bezier_triangle_derivative,
+    power_curve_derivative, power_tensor_derivative, power_triangle_derivative,
+    restrict_power_curve, restrict_power_surface, restrict_power_surface_to_triangle, BezierCurve,
+    ErrorKind, Method, PowerCurve, PowerSurface, PowerTriangle, Rational, TensorPatch,
+    TriangularPatch,
 };
 
 type Pt = Vec<Rational>;
@@ -66,8 +69,8 @@ fn differentiate_grid(c: &[Vec<Pt>], [k, l]: [usize; 2]) -> Vec<Vec<Pt>> {
 /// The power grid of a Bézier tensor patch over [0, 1]^2: the curve conversion along u with
 /// whole rows as points, then along v in every row.
 fn tensor_to_power(patch: &TensorPatch<Rational>) -> Vec<Vec<Pt>> {
-    let dim = patch.control_points()[0][0].len();
-    let rows: Vec<Pt> = patch.control_points().iter().map(|r| r.concat()).collect();
+    let dim = patch.to_nested()[0][0].len();
+    let rows: Vec<Pt> = patch.to_nested().iter().map(|r| r.concat()).collect();
     bernstein_to_power(&rows)
         .iter()
         .map(|row| {
@@ -103,7 +106,7 @@ fn bezier_curve_derivatives_are_the_forward_difference_formula() {
             assert_eq!(d.degree(), n - k);
             assert_eq!(
                 d.control_points(),
-                forward_difference_formula(b.control_points(), k).as_slice(),
+                forward_difference_formula(&b.control_points().to_vec(), k).as_slice(),
                 "n={n} k={k}"
             );
         }
@@ -118,7 +121,7 @@ fn bezier_curve_derivatives_are_the_forward_difference_formula() {
         let b = bezier_curve(&mut rng, n, 2);
         assert_eq!(
             bezier_derivative(&b, k).unwrap().control_points(),
-            forward_difference_formula(b.control_points(), k).as_slice()
+            forward_difference_formula(&b.control_points().to_vec(), k).as_slice()
         );
     }
 }
@@ -128,10 +131,10 @@ fn bezier_curve_derivatives_match_power_differentiation() {
     let mut rng = Rng(701);
     for n in 0..=10 {
         let b = bezier_curve(&mut rng, n, 2);
-        let c = bernstein_to_power(b.control_points());
+        let c = bernstein_to_power(&b.control_points().to_vec());
         for k in 0..=n {
             let power = PowerCurve::new(differentiate(&c, k)).unwrap();
-            let want = restrict_curve(&power, &q(0, 1), &q(1, 1), Method::Definition);
+            let want = restrict_power_curve(&power, &q(0, 1), &q(1, 1), Method::Definition);
             assert_eq!(bezier_derivative(&b, k).unwrap(), want, "n={n} k={k}");
         }
     }
@@ -146,7 +149,7 @@ fn power_curve_derivatives_match_power_differentiation() {
         for k in 0..=n {
             let power = PowerCurve::new(differentiate(curve.coefficients(), k)).unwrap();
             let method = [Method::Definition, Method::ClosedForm][k % 2];
-            let want = restrict_curve(&power, &a, &b, method);
+            let want = restrict_power_curve(&power, &a, &b, method);
             let got = power_curve_derivative(&curve, k, &a, &b).unwrap();
             assert_eq!(got, want, "n={n} k={k} [{a}, {b}]");
         }
@@ -173,14 +176,14 @@ fn tensor_derivatives_match_power_differentiation() {
             for l in 0..=m {
                 let method = [Method::Definition, Method::ClosedForm][(k + l) % 2];
                 let d = PowerSurface::new(differentiate_grid(&from_bezier, [k, l])).unwrap();
-                let want = restrict_tensor(&d, &unit, method);
+                let want = restrict_power_surface(&d, &unit, method);
                 let got = bezier_tensor_derivative(&patch, [k, l]).unwrap();
                 assert_eq!(got.degree(), (n - k, m - l));
                 assert_eq!(got, want, "Bézier ({n}, {m}) order ({k}, {l})");
 
                 let d =
                     PowerSurface::new(differentiate_grid(surface.coefficients(), [k, l])).unwrap();
-                let want = restrict_tensor(&d, &rect, method);
+                let want = restrict_power_surface(&d, &rect, method);
                 let got = power_tensor_derivative(&surface, [k, l], &rect).unwrap();
                 assert_eq!(got, want, "power ({n}, {m}) order ({k}, {l})");
             }
@@ -268,7 +271,11 @@ fn power_triangle_derivatives_match_power_differentiation() {
                     acc * &directions[i][if mask >> i & 1 == 1 { 0 } else { 1 }]
                 });
                 let d = differentiate_grid(surface.coefficients(), [a, k - a]);
-                let term = restrict_triangle(&PowerSurface::new(d).unwrap(), &tri, method);
+                let term = restrict_power_surface_to_triangle(
+                    &PowerSurface::new(d).unwrap(),
+                    &tri,
+                    method,
+                );
                 assert_eq!(term.degree(), big_n - k);
                 let term: Vec<Pt> = term
                     .control_points()
@@ -420,13 +427,17 @@ fn f64_curve_derivatives_are_close_to_the_exact_ones_of_the_same_inputs() {
             for k in 1..=n {
                 let got = bezier_derivative(&b64, k).unwrap();
                 let want = bezier_derivative(&b, k).unwrap();
-                worst[0] =
-                    worst[0].max(relative_error(got.control_points(), want.control_points()));
+                worst[0] = worst[0].max(relative_error(
+                    &got.control_points().to_vec(),
+                    &want.control_points().to_vec(),
+                ));
                 if k <= 4 || k >= n - 1 || k == n / 2 {
                     let got = power_curve_derivative(&c64, k, &a64, &bb64).unwrap();
                     let want = power_curve_derivative(&c, k, &a, &bb).unwrap();
-                    worst[1] =
-                        worst[1].max(relative_error(got.control_points(), want.control_points()));
+                    worst[1] = worst[1].max(relative_error(
+                        &got.control_points().to_vec(),
+                        &want.control_points().to_vec(),
+                    ));
                 }
             }
         }
@@ -461,14 +472,14 @@ fn f64_tensor_derivatives_are_close_to_the_exact_ones_of_the_same_inputs() {
             let got = bezier_tensor_derivative(&p64, order).unwrap();
             let want = bezier_tensor_derivative(&p, order).unwrap();
             worst[0] = worst[0].max(relative_error(
-                &got.control_points().concat(),
-                &want.control_points().concat(),
+                &got.to_nested().concat(),
+                &want.to_nested().concat(),
             ));
             let got = power_tensor_derivative(&s64, order, &rect64).unwrap();
             let want = power_tensor_derivative(&s, order, &rect).unwrap();
             worst[1] = worst[1].max(relative_error(
-                &got.control_points().concat(),
-                &want.control_points().concat(),
+                &got.to_nested().concat(),
+                &want.to_nested().concat(),
             ));
         }
         println!(
@@ -496,7 +507,10 @@ fn f64_triangle_derivatives_are_close_to_the_exact_ones_of_the_same_inputs() {
             let dirs64: Vec<Vec<f64>> = (0..k).map(|i| bary[i % 2].clone()).collect();
             let got = bezier_triangle_derivative(&t64, &dirs64).unwrap();
             let want = bezier_triangle_derivative(&t, &exact_directions(&dirs64)).unwrap();
-            worst[0] = worst[0].max(relative_error(got.control_points(), want.control_points()));
+            worst[0] = worst[0].max(relative_error(
+                &got.control_points().to_vec(),
+                &want.control_points().to_vec(),
+            ));
         }
         // Bidegree (n/2, n/2): a triangular form of total degree n.
         let grid: Vec<Vec<Vec<f64>>> = (0..=n / 2)
@@ -518,7 +532,10 @@ fn f64_triangle_derivatives_are_close_to_the_exact_ones_of_the_same_inputs() {
                 &exact_directions(&dirs64),
             )
             .unwrap();
-            worst[1] = worst[1].max(relative_error(got.control_points(), want.control_points()));
+            worst[1] = worst[1].max(relative_error(
+                &got.control_points().to_vec(),
+                &want.control_points().to_vec(),
+            ));
         }
         println!(
             "degree {n}: largest relative error: Bézier triangle (k = 1, 2, 5, N) {:.2e}, power triangle (k = 1, N/2) {:.2e}",

@@ -7,7 +7,7 @@
 //! `cargo test -p blossom --test applications f32_restriction -- --nocapture`.
 
 use crate::common::Rng;
-use blossom::{rational_to_f64, restrict_bezier_curve, restrict_curve, BezierCurve, Method};
+use blossom::{rational_to_f64, restrict_power_curve, BezierCurve, Method};
 use blossom::{PowerCurve, Rational, Ring};
 use num_traits::Signed;
 
@@ -120,21 +120,21 @@ fn measure() -> Vec<Row> {
             for (kind, a, b) in intervals(&mut rng) {
                 let (aq, bq) = (exact(a), exact(b));
                 let (a64, b64) = (f64::from(a), f64::from(b));
-                let want = restrict_curve(&power_q, &aq, &bq, Method::Bulk);
-                let want = want.control_points();
+                let want = restrict_power_curve(&power_q, &aq, &bq, Method::Bulk);
+                let want = &want.control_points().to_vec();
                 for (name, method) in [("bulk", Method::Bulk), ("pyramid", Method::Pyramid)] {
-                    let got = restrict_curve(&power, &a, &b, method);
-                    let got_64 = restrict_curve(&power_64, &a64, &b64, method);
-                    let e = relative_error(got.control_points(), want);
-                    let e_64 = relative_error(got_64.control_points(), want);
+                    let got = restrict_power_curve(&power, &a, &b, method);
+                    let got_64 = restrict_power_curve(&power_64, &a64, &b64, method);
+                    let e = relative_error(&got.control_points().to_vec(), want);
+                    let e_64 = relative_error(&got_64.control_points().to_vec(), want);
                     record("power", name, degree, kind, (e, e_64));
                 }
-                let want = restrict_bezier_curve(&bezier_q, &aq, &bq);
-                let want = want.control_points();
-                let got = restrict_bezier_curve(&bezier, &a, &b);
-                let got_64 = restrict_bezier_curve(&bezier_64, &a64, &b64);
-                let e = relative_error(got.control_points(), want);
-                let e_64 = relative_error(got_64.control_points(), want);
+                let want = bezier_q.subsegment(aq.clone()..bq.clone());
+                let want = &want.control_points().to_vec();
+                let got = bezier.subsegment(a..b);
+                let got_64 = bezier_64.subsegment(a64..b64);
+                let e = relative_error(&got.control_points().to_vec(), want);
+                let e_64 = relative_error(&got_64.control_points().to_vec(), want);
                 record("Bézier", "engine", degree, kind, (e, e_64));
             }
         }

@@ -15,10 +15,11 @@
 use crate::common::{curve_by_pyramid, tensor_by_pyramid, triangle_by_pyramid, Rng};
 use blossom::{
     bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom,
-    curve_blossom_from_samples, curve_control_points_from_samples, restrict_curve, restrict_tensor,
-    restrict_triangle, tensor_blossom_from_samples, tensor_control_points_from_samples,
-    triangle_blossom_from_samples, triangle_control_points_from_samples, BezierCurve, Method,
-    Rational, Ring, TensorPatch, TriangularPatch,
+    curve_blossom_from_samples, curve_control_points_from_samples, restrict_power_curve,
+    restrict_power_surface, restrict_power_surface_to_triangle, tensor_blossom_from_samples,
+    tensor_control_points_from_samples, triangle_blossom_from_samples,
+    triangle_control_points_from_samples, BezierCurve, Method, Rational, Ring, TensorPatch,
+    TriangularPatch,
 };
 
 /// The bidegrees of the surface tests: a triangle of total degree n + m besides.
@@ -39,7 +40,7 @@ fn closures_of_power_forms_give_the_definition_s_blossoms() {
         let pts = curve_control_points_from_samples(n, &a, &b, &|t| c.eval(t));
         assert_eq!(
             pts.as_slice(),
-            restrict_curve(&c, &a, &b, Method::Definition).control_points(),
+            restrict_power_curve(&c, &a, &b, Method::Definition).control_points(),
             "curve n={n}"
         );
         let args: Vec<Rational> = (0..n).map(|_| rng.rational()).collect();
@@ -55,7 +56,7 @@ fn closures_of_power_forms_give_the_definition_s_blossoms() {
         let net = tensor_control_points_from_samples((n, m), &rect, &|u, v| s.eval(u, v));
         assert_eq!(
             net.as_slice(),
-            restrict_tensor(&s, &rect, Method::Definition).control_points(),
+            restrict_power_surface(&s, &rect, Method::Definition).to_nested(),
             "tensor ({n}, {m})"
         );
         let us: Vec<Rational> = (0..n).map(|_| rng.rational()).collect();
@@ -69,7 +70,7 @@ fn closures_of_power_forms_give_the_definition_s_blossoms() {
         let pts = triangle_control_points_from_samples(n + m, &tri, &|u, v| s.eval(u, v));
         assert_eq!(
             pts.as_slice(),
-            restrict_triangle(&s, &tri, Method::Definition).control_points(),
+            restrict_power_surface_to_triangle(&s, &tri, Method::Definition).control_points(),
             "triangle ({n}, {m})"
         );
         let args: Vec<[Rational; 2]> = (0..n + m)
@@ -127,7 +128,7 @@ fn closures_of_bezier_forms_give_de_casteljau_s_blossoms() {
             .map(|_| rng.point(2))
             .collect();
         let patch = TriangularPatch::new(big_n, points).unwrap();
-        let at = |u: &Rational, v: &Rational| patch.eval(&bary(&[u.clone(), v.clone()]));
+        let at = |u: &Rational, v: &Rational| patch.eval(&[u.clone(), v.clone()]);
         let tri: [[Rational; 2]; 3] = std::array::from_fn(|_| [rng.rational(), rng.rational()]);
         assert_eq!(
             triangle_control_points_from_samples(big_n, &tri, &at),

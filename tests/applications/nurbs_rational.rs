@@ -94,7 +94,7 @@ fn rational_surfaces_reproduce_the_surface() {
             ] {
                 let coord = |d: usize| (0..3).map(|k| &bary[k] * &tri[k][d]).sum::<Rational>();
                 assert_eq!(
-                    patch.eval(&bary).unwrap(),
+                    patch.eval(&[bary[0].clone(), bary[1].clone()]).unwrap(),
                     s.eval(&coord(0), &coord(1)).unwrap(),
                     "N = {degree}"
                 );
@@ -195,7 +195,7 @@ fn rational_triangles_from_triangular_arrays_and_at_their_true_degree() {
             for bary in &barys {
                 let (u, v) = (coord(bary, 0), coord(bary, 1));
                 assert_eq!(
-                    patch.eval(bary).unwrap(),
+                    patch.eval(&[bary[0].clone(), bary[1].clone()]).unwrap(),
                     s.eval(&u, &v).unwrap(),
                     "N = {degree}"
                 );
@@ -215,7 +215,10 @@ fn rational_triangles_from_triangular_arrays_and_at_their_true_degree() {
     assert_eq!(patch.degree(), 1);
     for bary in &barys {
         let (u, v) = (coord(bary, 0), coord(bary, 1));
-        assert_eq!(patch.eval(bary).unwrap(), s.eval(&u, &v).unwrap());
+        assert_eq!(
+            patch.eval(&[bary[0].clone(), bary[1].clone()]).unwrap(),
+            s.eval(&u, &v).unwrap()
+        );
     }
     assert_eq!(
         s.triangle(&tri, Some(0)).unwrap_err().kind(),

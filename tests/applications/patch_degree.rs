@@ -6,14 +6,17 @@
 
 use crate::common::{q, Rng};
 use crate::json::Json;
-use blossom::{bernstein_to_power, triangle_index, triangle_len};
+use blossom::engine::{bernstein_to_power, triangle_index, triangle_len};
+use blossom::engine::{
+    least_squares_matrix, tensor_bernstein_gram, tensor_least_squares_matrix,
+    triangle_bernstein_gram, triangle_bernstein_to_power, triangle_elevation_matrix,
+    triangle_least_squares_matrix,
+};
 use blossom::{
-    elevate, elevate_tensor, elevate_triangle, least_squares_matrix, reduce, reduce_tensor,
-    reduce_triangle, tensor_bernstein_gram, tensor_control_points_from_samples,
-    tensor_least_squares_matrix, tensor_squared_l2_distance, tensor_true_degree,
-    triangle_bernstein_gram, triangle_bernstein_to_power, triangle_control_points_from_samples,
-    triangle_elevation_matrix, triangle_least_squares_matrix, triangle_squared_l2_distance,
-    triangle_true_degree, true_degree,
+    elevate, elevate_tensor, elevate_triangle, reduce, reduce_tensor, reduce_triangle,
+    tensor_control_points_from_samples, tensor_squared_l2_distance, tensor_true_degree,
+    triangle_control_points_from_samples, triangle_squared_l2_distance, triangle_true_degree,
+    true_degree,
 };
 use blossom::{BezierCurve, ErrorKind, Rational, Reduction, Ring, TensorPatch, TriangularPatch};
 use num_bigint::BigInt;
@@ -52,7 +55,7 @@ fn tensor_power(p: &TensorPatch<Rational>, d: usize) -> Poly2 {
     let m = p.degree().1;
     // Along v for each row, then along u for each power of v.
     let rows: Vec<Vec<Vec<Rational>>> = p
-        .control_points()
+        .to_nested()
         .iter()
         .map(|row| {
             let col: Vec<Vec<Rational>> = row.iter().map(|x| vec![x[d].clone()]).collect();
@@ -133,7 +136,7 @@ fn triangle_basis(n: usize, k: usize) -> TriangularPatch<Rational> {
 
 /// int over [0, 1]^2 of |a - b|^2 from the power forms.
 fn tensor_l2_by_power(a: &TensorPatch<Rational>, b: &TensorPatch<Rational>) -> Rational {
-    (0..a.control_points()[0][0].len())
+    (0..a.to_nested()[0][0].len())
         .map(|d| {
             let r = minus(&tensor_power(a, d), &tensor_power(b, d));
             inner(&r, &r, square_monomial)
@@ -152,7 +155,7 @@ fn triangle_l2_by_power(a: &TriangularPatch<Rational>, b: &TriangularPatch<Ratio
 
 fn tensor_corners(p: &TensorPatch<Rational>) -> [Vec<Rational>; 4] {
     let (n, m) = p.degree();
-    let c = p.control_points();
+    let c = p.to_nested();
     [
         c[0][0].clone(),
         c[0][m].clone(),
@@ -164,9 +167,9 @@ fn tensor_corners(p: &TensorPatch<Rational>) -> [Vec<Rational>; 4] {
 fn triangle_corners(p: &TriangularPatch<Rational>) -> [Vec<Rational>; 3] {
     let n = p.degree();
     [
-        p.get(n, 0).clone(),
-        p.get(0, n).clone(),
-        p.get(0, 0).clone(),
+        p.get(n, 0).to_vec(),
+        p.get(0, n).to_vec(),
+        p.get(0, 0).to_vec(),
     ]
 }
 
@@ -189,7 +192,7 @@ fn tensor_elevation_evaluates_like_the_original() {
             let rect = [q(0, 1), q(1, 1), q(0, 1), q(1, 1)];
             let built_in =
                 tensor_control_points_from_samples((n + a, m + b), &rect, &|u, v| p.eval(u, v));
-            assert_eq!(e.control_points(), built_in.as_slice());
+            assert_eq!(e.to_nested(), built_in.as_slice());
         }
     }
 }
@@ -204,12 +207,15 @@ fn triangle_elevation_evaluates_like_the_original() {
             let e = elevate_triangle(&p, n + k).unwrap();
             for _ in 0..8 {
                 let (s, t) = (unit(&mut rng), unit(&mut rng));
-                // Any barycentric point, inside the triangle or not.
-                let bary = [s.clone(), t.clone(), q(1, 1) - &s - &t];
-                assert_eq!(e.eval(&bary), p.eval(&bary), "{n} + {k}");
+                // Any point of the plane, inside the triangle or not.
+                assert_eq!(
+                    e.eval(&[s.clone(), t.clone()]),
+                    p.eval(&[s.clone(), t.clone()]),
+                    "{n} + {k}"
+                );
             }
             let built_in = triangle_control_points_from_samples(n + k, &tri, &|u, v| {
-                p.eval(&[u.clone(), v.clone(), q(1, 1) - u - v])
+                p.eval(&[u.clone(), v.clone()])
             });
             assert_eq!(
                 e.control_points(),
@@ -398,7 +404,7 @@ fn tensor_least_squares_are_orthogonal_and_keep_the_corners() {
         );
         // The unconstrained optimum is separable: the curve reduction along u, then along v.
         let rows: Vec<Vec<Vec<Rational>>> = b
-            .control_points()
+            .to_nested()
             .iter()
             .map(|row| {
                 let c = BezierCurve::new(row.clone()).unwrap();
@@ -425,7 +431,7 @@ fn tensor_least_squares_are_orthogonal_and_keep_the_corners() {
         } else {
             rows
         };
-        assert_eq!(ls.control_points(), sep.as_slice());
+        assert_eq!(ls.to_nested(), sep.as_slice());
     }
 }
 
@@ -499,7 +505,7 @@ fn squared_l2_distances_are_power_form_integrals() {
     ])
     .unwrap();
     let mean = reduce_tensor(&uv, (0, 0), Reduction::LeastSquares).unwrap();
-    assert_eq!(mean.control_points(), &[vec![vec![q(1, 4)]]]);
+    assert_eq!(mean.to_nested(), &[vec![vec![q(1, 4)]]]);
     let sum = TriangularPatch::new(1, vec![vec![q(0, 1)], vec![q(1, 1)], vec![q(1, 1)]]).unwrap();
     let mean = reduce_triangle(&sum, 0, Reduction::LeastSquares).unwrap();
     assert_eq!(mean.control_points(), &[vec![q(2, 3)]]);
@@ -512,7 +518,7 @@ fn floats_follow_the_exact_patch_reductions() {
     let close = |x: &Rational, y: &f64| (to_f(x) - y).abs() < 1e-9 * (1.0 + y.abs());
     let t = random_tensor(&mut rng, (4, 3), 3);
     let tf = TensorPatch::new(
-        t.control_points()
+        t.to_nested()
             .iter()
             .map(|r| r.iter().map(|p| p.iter().map(to_f).collect()).collect())
             .collect(),
@@ -532,7 +538,7 @@ fn floats_follow_the_exact_patch_reductions() {
             reduce_tensor(&t, (2, 2), method).unwrap(),
             reduce_tensor(&tf, (2, 2), method).unwrap(),
         );
-        for (r, rf) in exact.control_points().iter().zip(float.control_points()) {
+        for (r, rf) in exact.to_nested().iter().zip(&float.to_nested()) {
             for (p, pf) in r.iter().zip(rf) {
                 assert!(p.iter().zip(pf).all(|(x, y)| close(x, y)), "{method:?}");
             }
@@ -780,7 +786,7 @@ fn patch_reductions_snapshot() {
                 figure(
                     *m,
                     Json::array(
-                        r.control_points()
+                        r.to_nested()
                             .iter()
                             .map(|row| Json::array(row.iter().map(|p| coords(p)))),
                     ),
@@ -791,11 +797,7 @@ fn patch_reductions_snapshot() {
         (
             "triangle (u, v, u^2 v), 3 -> 2, over the unit triangle",
             Json::array(triangle.iter().map(|(m, r, e)| {
-                figure(
-                    *m,
-                    Json::array(r.control_points().iter().map(|p| coords(p))),
-                    e,
-                )
+                figure(*m, Json::array(r.control_points().iter().map(&coords)), e)
             })),
         ),
     ]);

@@ -6,7 +6,7 @@
 use crate::common::{q, Rng};
 use blossom::curve_blossom;
 use blossom::{bspline_from_pieces, bspline_from_pieces_with_knots, BSpline, Piece};
-use blossom::{restrict_curve, Method, PowerCurve, Rational, Ring};
+use blossom::{restrict_power_curve, Method, PowerCurve, Rational, Ring};
 
 fn pad(c: &PowerCurve<Rational>, p: usize) -> PowerCurve<Rational> {
     let mut v = c.coefficients().to_vec();
@@ -37,13 +37,13 @@ fn random_spline(
                 conts.push(r);
                 // Taylor coefficients at e: copy 0..=r, draw the others; shift back by -e.
                 let mut t = c.coefficients().to_vec();
-                blossom::taylor_shift(&mut t, &e);
+                blossom::engine::taylor_shift(&mut t, &e);
                 for (i, ti) in t.iter_mut().enumerate() {
                     if i as isize > r {
                         *ti = rng.point(dim);
                     }
                 }
-                blossom::taylor_shift(&mut t, &e.neg());
+                blossom::engine::taylor_shift(&mut t, &e.neg());
                 PowerCurve::new(t).unwrap()
             }
         };
@@ -95,7 +95,7 @@ fn curry_schoenberg_round_trips_through_every_algorithm() {
             // Bézier pieces equal the engine's restriction of the input pieces.
             for bp in f.bezier_pieces() {
                 let src = piece_at(&pieces, &bp.interval[0]);
-                let want = restrict_curve(
+                let want = restrict_power_curve(
                     &pad(&src.curve, p),
                     &bp.interval[0],
                     &bp.interval[1],

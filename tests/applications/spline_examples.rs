@@ -87,7 +87,7 @@ fn curry_schoenberg_example() {
                     ("interval", show(&b.interval)),
                     (
                         "control_points",
-                        Json::array(b.curve.control_points().iter().map(|p| show(p)))
+                        Json::array(b.curve.control_points().iter().map(show))
                     ),
                 ])))
             ),
@@ -145,7 +145,7 @@ fn theorem_2_2_example_pieces() {
                     ),
                     (
                         "bezier_points",
-                        Json::array(b.curve.control_points().iter().map(|c| show(c)))
+                        Json::array(b.curve.control_points().iter().map(show))
                     ),
                 ]))
         )

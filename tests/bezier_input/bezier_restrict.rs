@@ -11,15 +11,12 @@
 //! `subdivide.rs` has one random input per degree; this file widens the sample.
 
 use blossom::rational_to_f64;
-use blossom::restrict_bezier_triangle_affine;
-use blossom::{
-    restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle, BezierCurve, Poly,
-    Rational, Ring, TensorPatch, TriangularPatch,
-};
+use blossom::{BezierCurve, Poly, Rational, Ring, TensorPatch, TriangularPatch};
 use num_bigint::BigInt;
 
 use crate::common::{
-    curve_by_pyramid, exact, exact_points, tensor_by_pyramid, triangle_by_pyramid, Rng,
+    curve_by_pyramid, exact, exact_points, restrict_bary, tensor_by_pyramid, triangle_by_pyramid,
+    Rng,
 };
 
 /// The samplers this file needs on top of the shared generator.
@@ -194,7 +191,7 @@ fn curves_equal_the_pyramid_on_every_kind_of_interval() {
                 for _ in 0..4 {
                     let curve = random_curve(&mut rng, n, dim);
                     let (a, b) = interval(&mut rng, kind);
-                    let fast = restrict_bezier_curve(&curve, &a, &b);
+                    let fast = curve.subsegment(a.clone()..b.clone());
                     assert_eq!(
                         fast.control_points(),
                         curve_by_pyramid(&curve, &a, &b).as_slice(),
@@ -222,9 +219,9 @@ fn tensor_patches_equal_the_pyramid_on_every_kind_of_rectangle() {
                 let (a, b) = interval(&mut rng, ku);
                 let (c, d) = interval(&mut rng, kv);
                 let rect = [a, b, c, d];
-                let fast = restrict_bezier_tensor(&patch, &rect);
+                let fast = patch.restrict(&rect);
                 assert_eq!(
-                    fast.control_points(),
+                    fast.to_nested(),
                     tensor_by_pyramid(&patch, &rect).as_slice(),
                     "bidegree ({n}, {m}), dim {dim}, {ku:?} x {kv:?}"
                 );
@@ -242,7 +239,7 @@ fn triangles_equal_the_pyramid_on_every_kind_of_sub_triangle() {
                 for _ in 0..2 {
                     let patch = random_triangle(&mut rng, n, dim);
                     let corners = triangle(&mut rng, kind);
-                    let fast = restrict_bezier_triangle(&patch, &corners).unwrap();
+                    let fast = restrict_bary(&patch, &corners);
                     assert_eq!(fast.degree(), n);
                     assert_eq!(
                         fast.control_points(),
@@ -261,29 +258,28 @@ fn the_whole_domain_gives_the_input_back() {
     let (zero, unit) = (r(0, 1), one());
     for n in 0..=8 {
         let curve = random_curve(&mut rng, n, 2);
-        assert_eq!(restrict_bezier_curve(&curve, &zero, &unit), curve);
+        assert_eq!(curve.subsegment(zero.clone()..unit.clone()), curve);
         let mut reversed = curve.control_points().to_vec();
         reversed.reverse();
         assert_eq!(
-            restrict_bezier_curve(&curve, &unit, &zero).control_points(),
+            curve
+                .subsegment(unit.clone()..zero.clone())
+                .control_points(),
             reversed.as_slice()
         );
     }
     for (n, m) in [(0, 3), (2, 2), (4, 1), (5, 5)] {
         let patch = random_tensor(&mut rng, n, m, 3);
         let whole = [zero.clone(), unit.clone(), zero.clone(), unit.clone()];
-        assert_eq!(restrict_bezier_tensor(&patch, &whole), patch);
+        assert_eq!(patch.restrict(&whole), patch);
     }
     let e = |k: usize| -> [Rational; 3] { std::array::from_fn(|i| r((i == k) as i64, 1)) };
     for n in 0..=6 {
         let patch = random_triangle(&mut rng, n, 2);
-        assert_eq!(
-            restrict_bezier_triangle(&patch, &[e(0), e(1), e(2)]).unwrap(),
-            patch
-        );
+        assert_eq!(restrict_bary(&patch, &[e(0), e(1), e(2)]), patch);
         // Corners (e_1, e_2, e_0): the point of indices (nu, mu, lambda) of the answer is the
         // point (lambda, nu, mu) of the input.
-        let rotated = restrict_bezier_triangle(&patch, &[e(1), e(2), e(0)]).unwrap();
+        let rotated = restrict_bary(&patch, &[e(1), e(2), e(0)]);
         for (nu, mu, la, q) in rotated.entries() {
             assert_eq!(q, patch.get(la, nu), "degree {n}, ({nu}, {mu}, {la})");
         }
@@ -300,24 +296,22 @@ fn two_restrictions_compose() {
         let curve = random_curve(&mut rng, n, 2);
         let (a, b) = interval(&mut rng, INTERVALS[n % 5]);
         let (c, d) = interval(&mut rng, INTERVALS[(n + 2) % 5]);
-        let once = restrict_bezier_curve(&curve, &a, &b);
-        let twice = restrict_bezier_curve(&once, &c, &d);
+        let once = curve.subsegment(a.clone()..b.clone());
+        let twice = once.subsegment(c.clone()..d.clone());
         let h = b.clone() - &a;
-        let direct = restrict_bezier_curve(&curve, &(a.clone() + &h * &c), &(a + &h * &d));
+        let direct = curve.subsegment((a.clone() + &h * &c).clone()..(a + &h * &d).clone());
         assert_eq!(twice, direct, "degree {n}");
     }
     for n in 0..=6 {
         let patch = random_triangle(&mut rng, n, 2);
         let outer = triangle(&mut rng, TRIANGLES[n % 5]);
         let inner = triangle(&mut rng, TRIANGLES[(n + 1) % 5]);
-        let twice =
-            restrict_bezier_triangle(&restrict_bezier_triangle(&patch, &outer).unwrap(), &inner)
-                .unwrap();
+        let twice = restrict_bary(&restrict_bary(&patch, &outer), &inner);
         // Corner k of the composition: sum_j inner[k][j] outer[j].
         let combined: [[Rational; 3]; 3] = std::array::from_fn(|k| {
             std::array::from_fn(|i| (0..3).map(|j| &inner[k][j] * &outer[j][i]).sum())
         });
-        let direct = restrict_bezier_triangle(&patch, &combined).unwrap();
+        let direct = restrict_bary(&patch, &combined);
         assert_eq!(twice, direct, "degree {n}");
     }
 }
@@ -341,20 +335,13 @@ fn symbolic_triangles_through_barycentric_corners() {
             let rest = Poly::one().sub(&s).sub(&t);
             [s, t, rest]
         });
-        let fast = restrict_bezier_triangle(&patch, &corners).unwrap();
+        let fast = restrict_bary(&patch, &corners);
         assert_eq!(
             fast.control_points(),
             triangle_by_pyramid(&patch, &corners).as_slice(),
             "degree {n}"
         );
     }
-    // A symbolic corner whose coordinates add up to 1 + t is refused.
-    let patch = TriangularPatch::new(1, vec![vec![Poly::var("p")]; 3]).unwrap();
-    let (s, t) = (Poly::var("s"), Poly::var("t"));
-    let good = [s.clone(), t.clone(), Poly::one().sub(&s).sub(&t)];
-    let bad = [s.clone(), t.clone(), Poly::one().sub(&s)];
-    let err = restrict_bezier_triangle(&patch, &[good.clone(), bad, good]).unwrap_err();
-    assert_eq!(err.field, "corners[1]");
 }
 
 /// A symbolic curve of dimension 2 on a symbolic interval, and its reversal.
@@ -368,12 +355,12 @@ fn symbolic_curves_and_reversal() {
                 .collect(),
         )
         .unwrap();
-        let forward = restrict_bezier_curve(&curve, &a, &b);
+        let forward = curve.subsegment(a.clone()..b.clone());
         assert_eq!(
             forward.control_points(),
             curve_by_pyramid(&curve, &a, &b).as_slice()
         );
-        let mut backward = restrict_bezier_curve(&curve, &b, &a).into_control_points();
+        let mut backward = curve.subsegment(b.clone()..a.clone()).into_control_points();
         backward.reverse();
         assert_eq!(forward.control_points(), backward.as_slice(), "degree {n}");
     }
@@ -417,12 +404,12 @@ fn f64_curves_against_the_exact_answer() {
             } else {
                 (rng.unit_f64() * 2.0 - 1.0, rng.unit_f64() * 2.0 + 1.0)
             };
-            let float = restrict_bezier_curve(&BezierCurve::new(pts.clone()).unwrap(), &a, &b);
+            let float = BezierCurve::new(pts.clone()).unwrap().subsegment(a..b);
             let exact_curve = BezierCurve::new(exact_points(&pts)).unwrap();
-            let want = restrict_bezier_curve(&exact_curve, &exact(a), &exact(b));
+            let want = exact_curve.subsegment((exact(a)).clone()..(exact(b)).clone());
             let e = relative_error(
-                float.control_points(),
-                want.control_points(),
+                &float.control_points().to_vec(),
+                &want.control_points().to_vec(),
                 input_size(&pts),
             );
             if inside {
@@ -454,13 +441,14 @@ fn f64_patches_against_the_exact_answer() {
                 })
                 .collect();
             let rect: [f64; 4] = std::array::from_fn(|_| (rng.unit_f64() + 1.0) / 2.0);
-            let float = restrict_bezier_tensor(&TensorPatch::new(net.clone()).unwrap(), &rect);
+            let float = TensorPatch::new(net.clone()).unwrap().restrict(&rect);
             let exact_net = net.iter().map(|row| exact_points(row)).collect();
-            let want =
-                restrict_bezier_tensor(&TensorPatch::new(exact_net).unwrap(), &rect.map(exact));
+            let want = TensorPatch::new(exact_net)
+                .unwrap()
+                .restrict(&rect.map(exact));
             let size = input_size(&net.concat());
-            for (fr, er) in float.control_points().iter().zip(want.control_points()) {
-                worst_tensor = worst_tensor.max(relative_error(fr, er, size));
+            for (fr, er) in float.to_nested().iter().zip(want.to_nested()) {
+                worst_tensor = worst_tensor.max(relative_error(fr, &er, size));
             }
         }
     }
@@ -485,17 +473,12 @@ fn f64_patches_against_the_exact_answer() {
                     break [s, t, rest];
                 }
             });
-            let float =
-                restrict_bezier_triangle(&TriangularPatch::new(n, pts.clone()).unwrap(), &corners)
-                    .unwrap();
+            let float = restrict_bary(&TriangularPatch::new(n, pts.clone()).unwrap(), &corners);
             let exact_patch = TriangularPatch::new(n, exact_points(&pts)).unwrap();
-            let want = restrict_bezier_triangle_affine(
-                &exact_patch,
-                &corners.map(|[s, t, _]| [exact(s), exact(t)]),
-            );
+            let want = exact_patch.restrict(&corners.map(|[s, t, _]| [exact(s), exact(t)]));
             worst_triangle = worst_triangle.max(relative_error(
-                float.control_points(),
-                want.control_points(),
+                &float.control_points().to_vec(),
+                &want.control_points().to_vec(),
                 input_size(&pts),
             ));
         }
@@ -504,27 +487,4 @@ fn f64_patches_against_the_exact_answer() {
     println!("f64 triangles, degree 0..=6, sub-triangles of the domain (corners i/q, q <= 12): max relative error {worst_triangle:e}");
     assert!(worst_tensor < 1e-9, "{worst_tensor:e}");
     assert!(worst_triangle < 1e-9, "{worst_triangle:e}");
-}
-
-#[test]
-fn corners_off_the_plane_are_refused_naming_the_corner() {
-    let patch = TriangularPatch::new(2, (0..6).map(|k| vec![r(k, 1)]).collect()).unwrap();
-    let good = bary(r(1, 3), r(1, 4));
-    for k in 0..3 {
-        let mut corners = [good.clone(), good.clone(), good.clone()];
-        corners[k][2] += r(1, 1000);
-        let err = restrict_bezier_triangle(&patch, &corners).unwrap_err();
-        assert_eq!(err.field, format!("corners[{k}]"));
-        assert!(err.message.contains("add up to 1"), "{}", err.message);
-    }
-    // The first bad corner is the one named.
-    let bad = [r(0, 1), r(0, 1), r(0, 1)];
-    let err = restrict_bezier_triangle(&patch, &[good.clone(), bad.clone(), bad]).unwrap_err();
-    assert_eq!(err.field, "corners[1]");
-    // f64: the sum must round to exactly 1 (the documented choice).
-    let fpatch = TriangularPatch::new(1, vec![vec![0.0], vec![1.0], vec![2.0]]).unwrap();
-    let ok = [0.25, 0.25, 0.5];
-    assert!(restrict_bezier_triangle(&fpatch, &[ok, ok, ok]).is_ok());
-    let err = restrict_bezier_triangle(&fpatch, &[ok, ok, [0.5, 0.5, 0.5]]).unwrap_err();
-    assert_eq!(err.field, "corners[2]");
 }

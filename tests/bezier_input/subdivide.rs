@@ -5,14 +5,11 @@
 //! error. Bad corners are refused.
 
 use crate::common::{
-    curve_by_pyramid, exact, exact_points, q, tensor_by_pyramid, triangle_by_pyramid, Rng,
+    curve_by_pyramid, exact, exact_points, restrict_bary, tensor_by_pyramid, triangle_by_pyramid,
+    Rng,
 };
 use blossom::rational_to_f64;
-use blossom::restrict_bezier_triangle_affine;
-use blossom::{
-    restrict_bezier_curve, restrict_bezier_tensor, restrict_bezier_triangle, BezierCurve, Poly,
-    Rational, Ring, TensorPatch, TriangularPatch,
-};
+use blossom::{BezierCurve, Poly, Rational, Ring, TensorPatch, TriangularPatch};
 
 /// Random barycentric corners (s, t, 1 - s - t), exact.
 fn corners(rng: &mut Rng) -> [[Rational; 3]; 3] {
@@ -30,7 +27,7 @@ fn curves_equal_the_pyramid_exactly() {
         for dim in 1..=3 {
             let curve = BezierCurve::new((0..=n).map(|_| rng.point(dim)).collect()).unwrap();
             let (a, b) = (rng.rational(), rng.rational());
-            let fast = restrict_bezier_curve(&curve, &a, &b);
+            let fast = curve.subsegment(a.clone()..b.clone());
             assert_eq!(
                 fast.control_points(),
                 curve_by_pyramid(&curve, &a, &b).as_slice()
@@ -50,9 +47,9 @@ fn tensor_patches_equal_the_pyramid_exactly() {
                 .collect();
             let patch = TensorPatch::new(net).unwrap();
             let rect = std::array::from_fn(|_| rng.rational());
-            let fast = restrict_bezier_tensor(&patch, &rect);
+            let fast = patch.restrict(&rect);
             assert_eq!(
-                fast.control_points(),
+                fast.to_nested(),
                 tensor_by_pyramid(&patch, &rect).as_slice()
             );
         }
@@ -68,7 +65,7 @@ fn triangles_equal_the_pyramid_exactly() {
             let patch =
                 TriangularPatch::new(n, (0..len).map(|_| rng.point(dim)).collect()).unwrap();
             let tri = corners(&mut rng);
-            let fast = restrict_bezier_triangle(&patch, &tri).unwrap();
+            let fast = restrict_bary(&patch, &tri);
             assert_eq!(
                 fast.control_points(),
                 triangle_by_pyramid(&patch, &tri).as_slice()
@@ -83,7 +80,7 @@ fn symbolic_identity_with_the_pyramid() {
     for n in 0..=5 {
         let curve = BezierCurve::new((0..=n).map(|i| vec![v(format!("b{i}"))]).collect()).unwrap();
         let (a, b) = (Poly::var("a"), Poly::var("b"));
-        let fast = restrict_bezier_curve(&curve, &a, &b);
+        let fast = curve.subsegment(a.clone()..b.clone());
         assert_eq!(
             fast.control_points(),
             curve_by_pyramid(&curve, &a, &b).as_slice()
@@ -95,9 +92,9 @@ fn symbolic_identity_with_the_pyramid() {
             .collect();
         let patch = TensorPatch::new(net).unwrap();
         let rect = ["a", "b", "c", "d"].map(Poly::var);
-        let fast = restrict_bezier_tensor(&patch, &rect);
+        let fast = patch.restrict(&rect);
         assert_eq!(
-            fast.control_points(),
+            fast.to_nested(),
             tensor_by_pyramid(&patch, &rect).as_slice()
         );
     }
@@ -109,7 +106,7 @@ fn symbolic_identity_with_the_pyramid() {
         let bary = affine
             .clone()
             .map(|[s, t]| [s.clone(), t.clone(), Poly::one().sub(&s).sub(&t)]);
-        let fast = restrict_bezier_triangle_affine(&patch, &affine);
+        let fast = patch.restrict(&affine);
         assert_eq!(
             fast.control_points(),
             triangle_by_pyramid(&patch, &bary).as_slice()
@@ -128,9 +125,9 @@ fn f64_error_is_small_at_moderate_degree() {
             let pts: Vec<Vec<f64>> = (0..=n).map(|_| vec![rng.unit(), rng.unit()]).collect();
             let a = (rng.next() % 1000) as f64 / 2000.0;
             let b = 0.5 + (rng.next() % 1000) as f64 / 2000.0;
-            let float = restrict_bezier_curve(&BezierCurve::new(pts.clone()).unwrap(), &a, &b);
+            let float = BezierCurve::new(pts.clone()).unwrap().subsegment(a..b);
             let exact_curve = BezierCurve::new(exact_points(&pts)).unwrap();
-            let want = restrict_bezier_curve(&exact_curve, &exact(a), &exact(b));
+            let want = exact_curve.subsegment((exact(a)).clone()..(exact(b)).clone());
             for (pf, pe) in float.control_points().iter().zip(want.control_points()) {
                 for (x, y) in pf.iter().zip(pe) {
                     let y = rational_to_f64(y);
@@ -141,15 +138,4 @@ fn f64_error_is_small_at_moderate_degree() {
     }
     println!("largest relative f64 error, Bézier curves of degree 1..=8 in [-1, 1]^2: {worst:e}");
     assert!(worst < 1e-12, "{worst:e}");
-}
-
-#[test]
-fn corners_must_be_barycentric() {
-    let patch = TriangularPatch::new(1, vec![vec![q(0, 1)], vec![q(1, 1)], vec![q(2, 1)]]).unwrap();
-    let good = [q(1, 1), q(0, 1), q(0, 1)];
-    let bad = [q(1, 2), q(1, 2), q(1, 2)];
-    let err = restrict_bezier_triangle(&patch, &[good.clone(), good.clone(), bad]).unwrap_err();
-    assert_eq!(err.field, "corners[2]");
-    assert!(err.message.contains("add up to 1"), "{}", err.message);
-    assert!(restrict_bezier_triangle(&patch, &[good.clone(), good.clone(), good]).is_ok());
 }

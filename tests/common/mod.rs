@@ -64,7 +64,10 @@ pub fn repeated<X: Clone>(x: &X, k: usize, y: &X, l: usize) -> Vec<X> {
 pub fn curve_by_pyramid<T: Ring>(curve: &BezierCurve<T>, a: &T, b: &T) -> Vec<Vec<T>> {
     let n = curve.degree();
     (0..=n)
-        .map(|j| bezier_curve_blossom(curve.control_points(), &repeated(a, n - j, b, j)).unwrap())
+        .map(|j| {
+            bezier_curve_blossom(&curve.control_points().to_vec(), &repeated(a, n - j, b, j))
+                .unwrap()
+        })
         .collect()
 }
 
@@ -77,7 +80,7 @@ pub fn tensor_by_pyramid<T: Ring>(patch: &TensorPatch<T>, rect: &[T; 4]) -> Vec<
             (0..=m)
                 .map(|mu| {
                     bezier_tensor_blossom(
-                        patch.control_points(),
+                        &patch.to_nested(),
                         &repeated(a, n - nu, b, nu),
                         &repeated(c, m - mu, d, mu),
                     )
@@ -121,4 +124,14 @@ pub fn exact_points(points: &[Vec<f64>]) -> Vec<Vec<Rational>> {
         .iter()
         .map(|p| p.iter().map(|&x| exact(x)).collect())
         .collect()
+}
+
+/// The restriction of `patch` to the sub-triangle whose corners the tests give by all three
+/// barycentric coordinates, through the library's one convention: affine coordinates [s, t]
+/// (the third coordinate is implied).
+pub fn restrict_bary<T: Ring>(
+    patch: &TriangularPatch<T>,
+    corners: &[[T; 3]; 3],
+) -> TriangularPatch<T> {
+    patch.restrict(&corners.each_ref().map(|[s, t, _]| [s.clone(), t.clone()]))
 }

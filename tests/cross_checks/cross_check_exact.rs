@@ -9,7 +9,10 @@
 //! corners of the definition's answer are the curve or surface evaluated by Horner's rule.
 
 use crate::common::Rng;
-use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method, Rational};
+use blossom::{
+    restrict_power_curve, restrict_power_surface, restrict_power_surface_to_triangle, Method,
+    Rational,
+};
 
 /// The methods compared with the definition: every other one.
 fn against_the_definition() -> impl Iterator<Item = Method> {
@@ -33,13 +36,13 @@ fn curves_agree_up_to_degree_20() {
     for n in 0..=20 {
         let curve = rng.curve(n, 2);
         let (a, b) = (rng.rational(), rng.rational());
-        let reference = restrict_curve(&curve, &a, &b, Method::Definition);
+        let reference = restrict_power_curve(&curve, &a, &b, Method::Definition);
         // End points interpolate: w_0 = C(a), w_n = C(b).
         assert_eq!(reference.control_points()[0], curve.eval(&a));
         assert_eq!(reference.control_points()[n], curve.eval(&b));
         for method in against_the_definition() {
             assert_eq!(
-                restrict_curve(&curve, &a, &b, method),
+                restrict_power_curve(&curve, &a, &b, method),
                 reference,
                 "{method:?} against the definition, n={n}"
             );
@@ -57,13 +60,13 @@ fn tensor_patches_agree_up_to_6_by_6() {
         for m in 0..=6 {
             let s = rng.surface(n, m, 2);
             let rect: [Rational; 4] = std::array::from_fn(|_| rng.rational());
-            let reference = restrict_tensor(&s, &rect, Method::Definition);
+            let reference = restrict_power_surface(&s, &rect, Method::Definition);
             // Corners interpolate: p_00 = S(a, c), p_nm = S(b, d).
-            assert_eq!(reference.control_points()[0][0], s.eval(&rect[0], &rect[2]));
-            assert_eq!(reference.control_points()[n][m], s.eval(&rect[1], &rect[3]));
+            assert_eq!(reference.to_nested()[0][0], s.eval(&rect[0], &rect[2]));
+            assert_eq!(reference.to_nested()[n][m], s.eval(&rect[1], &rect[3]));
             for method in against_the_definition() {
                 assert_eq!(
-                    restrict_tensor(&s, &rect, method),
+                    restrict_power_surface(&s, &rect, method),
                     reference,
                     "{method:?} against the definition, ({n},{m})"
                 );
@@ -83,7 +86,7 @@ fn triangles_agree_up_to_total_degree_10() {
             let m = big_n - n;
             let s = rng.surface(n, m, 1);
             let tri: [[Rational; 2]; 3] = std::array::from_fn(|_| [rng.rational(), rng.rational()]);
-            let reference = restrict_triangle(&s, &tri, Method::Definition);
+            let reference = restrict_power_surface_to_triangle(&s, &tri, Method::Definition);
             // Corners interpolate: q_{N00} = S(a), q_{0N0} = S(b), q_{00N} = S(c).
             assert_eq!(reference.get(big_n, 0), &s.eval(&tri[0][0], &tri[0][1]));
             assert_eq!(reference.get(0, big_n), &s.eval(&tri[1][0], &tri[1][1]));
@@ -98,7 +101,7 @@ fn triangles_agree_up_to_total_degree_10() {
                     continue;
                 }
                 assert_eq!(
-                    restrict_triangle(&s, &tri, method),
+                    restrict_power_surface_to_triangle(&s, &tri, method),
                     reference,
                     "{method:?} against the definition, ({n},{m})"
                 );

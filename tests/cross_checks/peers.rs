@@ -14,7 +14,8 @@
 //! ```
 
 use crate::common::Rng;
-use blossom::{check_bezier_restriction, restrict_bezier_curve, subsegment_into, BezierCurve};
+use blossom::engine::subsegment_into;
+use blossom::{check_bezier_restriction, BezierCurve};
 use kurbo::ParamCurve;
 
 /// How many random cubics.
@@ -85,7 +86,7 @@ fn peers_errors_next_to_blossoms() {
         let l = segment.split_range(t0..t1);
         let lyon = [l.from, l.ctrl1, l.ctrl2, l.to].map(|p| vec![p.x, p.y]);
 
-        let ours = restrict_bezier_curve(&curve, &t0, &t1).into_control_points();
+        let ours = curve.subsegment(t0..t1).into_control_points();
 
         let mut out = [[0.0; 2]; 4];
         subsegment_into(&ctrl, &t0, &t1, &mut out, &mut scratch).unwrap();

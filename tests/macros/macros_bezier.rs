@@ -110,7 +110,7 @@ fn prove_triangle<const L: usize>(n: usize, f: TriangleFn<L>) -> Row {
         pyramid &= q[k].to_vec() == bezier_triangle_blossom(&patch, &args).unwrap();
     }
     let sampled = triangle_control_points_from_samples(n, &tri, &|u: &Poly, v: &Poly| {
-        patch.eval(&bary(&[u.clone(), v.clone()]))
+        patch.eval(&[u.clone(), v.clone()])
     });
     let polarisation = (0..L).all(|k| q[k].to_vec() == sampled[k]);
     Row {

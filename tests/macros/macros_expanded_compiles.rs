@@ -5,7 +5,8 @@
 
 use crate::common::q;
 use blossom::{
-    restrict_curve, restrict_tensor, restrict_triangle, Method, PowerCurve, PowerSurface, Rational,
+    restrict_power_curve, restrict_power_surface, restrict_power_surface_to_triangle, Method,
+    PowerCurve, PowerSurface, Rational,
 };
 
 mod expanded {
@@ -21,7 +22,7 @@ fn the_printed_functions_compute_the_closed_form() {
     let curve = PowerCurve::new(coef.iter().map(|p| p.to_vec()).collect()).unwrap();
     let (a, b) = (q(-1, 2), q(7, 3));
     let w = expanded::restrict_curve_3(&coef, &a, &b);
-    let want = restrict_curve(&curve, &a, &b, Method::ClosedForm);
+    let want = restrict_power_curve(&curve, &a, &b, Method::ClosedForm);
     assert_eq!(w.map(|p| p.to_vec()).to_vec(), want.control_points());
 
     let coef: [[[Rational; 1]; 3]; 4] =
@@ -34,15 +35,15 @@ fn the_printed_functions_compute_the_closed_form() {
     .unwrap();
     let rect = [q(1, 3), q(2, 3), q(1, 4), q(3, 4)];
     let p = expanded::restrict_tensor_3_2(&coef, &rect);
-    let want = restrict_tensor(&surface, &rect, Method::ClosedForm);
+    let want = restrict_power_surface(&surface, &rect, Method::ClosedForm);
     let got: Vec<Vec<Vec<Rational>>> = p
         .iter()
         .map(|r| r.iter().map(|x| x.to_vec()).collect())
         .collect();
-    assert_eq!(got, want.control_points());
+    assert_eq!(got, want.to_nested());
 
     let tri = [[q(0, 1), q(1, 2)], [q(1, 2), q(0, 1)], [q(1, 2), q(1, 2)]];
     let t = expanded::restrict_triangle_3_2(&coef, &tri);
-    let want = restrict_triangle(&surface, &tri, Method::ClosedForm);
+    let want = restrict_power_surface_to_triangle(&surface, &tri, Method::ClosedForm);
     assert_eq!(t.map(|p| p.to_vec()).to_vec(), want.control_points());
 }

@@ -37,7 +37,7 @@ pub fn to_f64(p: &[Rational]) -> Point<f64> {
 pub fn tensor_f64(patch: &TensorPatch<Rational>) -> Result<TensorPatch<f64>, Error> {
     TensorPatch::new(
         patch
-            .control_points()
+            .to_nested()
             .iter()
             .map(|row| row.iter().map(|p| to_f64(p)).collect())
             .collect(),
@@ -48,7 +48,7 @@ pub fn tensor_f64(patch: &TensorPatch<Rational>) -> Result<TensorPatch<f64>, Err
 pub fn triangle_f64(patch: &TriangularPatch<Rational>) -> Result<TriangularPatch<f64>, Error> {
     TriangularPatch::new(
         patch.degree(),
-        patch.control_points().iter().map(|p| to_f64(p)).collect(),
+        patch.control_points().iter().map(to_f64).collect(),
     )
 }
 
@@ -92,7 +92,7 @@ pub fn triangle_iso_lines(patch: &TriangularPatch<f64>) -> Vec<Vec<Point3>> {
                         1 => [b, fixed, a],
                         _ => [a, b, fixed],
                     };
-                    point3_f64(&patch.eval(&bary))
+                    point3_f64(&patch.eval(&[bary[0], bary[1]]))
                 })
                 .collect();
             lines.push(line);
@@ -114,7 +114,7 @@ pub fn tensor_net_lines(net: &[Vec<Point3>]) -> Vec<Vec<Point3>> {
 /// The lines of a triangular net of degree N on which nu, mu or lambda is constant.
 pub fn triangle_net_lines(patch: &TriangularPatch<Rational>) -> Vec<Vec<Point3>> {
     let n = patch.degree();
-    let at = |nu: usize, mu: usize| patch.try_get(nu, mu).map(|p| point3(p));
+    let at = |nu: usize, mu: usize| patch.try_get(nu, mu).map(point3);
     let mut lines = Vec::new();
     for c in 0..n {
         // nu = c, mu = c, lambda = c in turn.
@@ -127,13 +127,13 @@ pub fn triangle_net_lines(patch: &TriangularPatch<Rational>) -> Vec<Vec<Point3>>
 
 /// The control points of a triangular patch as points of the picture.
 pub fn triangle_points(patch: &TriangularPatch<Rational>) -> Vec<Point3> {
-    patch.control_points().iter().map(|p| point3(p)).collect()
+    patch.control_points().iter().map(point3).collect()
 }
 
 /// The control net of a tensor patch as points of the picture, `[nu][mu]`.
 pub fn tensor_points(patch: &TensorPatch<Rational>) -> Vec<Vec<Point3>> {
     patch
-        .control_points()
+        .to_nested()
         .iter()
         .map(|row| row.iter().map(|p| point3(p)).collect())
         .collect()

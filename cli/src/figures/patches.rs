@@ -23,7 +23,7 @@ use super::scene::{Figure, Layer, Rgb, View};
 use crate::verify::paper_data::{TABLE_1_RECTANGLES, TABLE_2_TRIANGLES};
 use crate::verify::seeds_002_004::num;
 use crate::verify::subdivision::example_1_surface;
-use blossom::{restrict_tensor, restrict_triangle, Error, Method};
+use blossom::{restrict_power_surface, restrict_power_surface_to_triangle, Error, Method};
 use blossom::{Rational, TensorPatch, TriangularPatch};
 
 /// The method the pictures restrict with (the library's default).
@@ -39,7 +39,7 @@ pub fn tensor_restriction(which: usize) -> Result<TensorPatch<Rational>, Error> 
     let rect = TABLE_1_RECTANGLES
         .get(which)
         .ok_or_else(|| Error::new("figures", "Table 1 has two rectangles"))?;
-    Ok(restrict_tensor(
+    Ok(restrict_power_surface(
         &example_1_surface(),
         &rect.map(num),
         METHOD,
@@ -51,7 +51,7 @@ pub fn triangle_restriction(which: usize) -> Result<TriangularPatch<Rational>, E
     let tri = TABLE_2_TRIANGLES
         .get(which)
         .ok_or_else(|| Error::new("figures", "Table 2 has two triangles"))?;
-    Ok(restrict_triangle(
+    Ok(restrict_power_surface_to_triangle(
         &example_1_surface(),
         &tri.map(|corner| corner.map(num)),
         METHOD,

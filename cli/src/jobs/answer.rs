@@ -13,10 +13,10 @@
 
 use super::job::Job;
 use crate::number::JsonNumber;
-use blossom::Point;
+
 use blossom::{
-    restrict_curve, restrict_power_triangle, restrict_tensor, restrict_triangle, BezierCurve,
-    Error, Method, Ring, TensorPatch, TriangularPatch,
+    restrict_power_curve, restrict_power_surface, restrict_power_surface_to_triangle,
+    restrict_power_triangle, BezierCurve, Error, Method, Ring, TensorPatch, TriangularPatch,
 };
 use serde_json::{Map, Value};
 
@@ -37,13 +37,13 @@ pub fn compute<T: Ring>(job: &Job<T>, method: Method) -> Answer<T> {
         Job::Curve {
             curve,
             interval: [a, b],
-        } => Answer::Curve(restrict_curve(curve, a, b, method)),
+        } => Answer::Curve(restrict_power_curve(curve, a, b, method)),
         Job::Tensor { surface, rectangle } => {
-            Answer::Tensor(restrict_tensor(surface, rectangle, method))
+            Answer::Tensor(restrict_power_surface(surface, rectangle, method))
         }
-        Job::Triangle { surface, triangle } => {
-            Answer::Triangle(restrict_triangle(surface, triangle, method))
-        }
+        Job::Triangle { surface, triangle } => Answer::Triangle(
+            restrict_power_surface_to_triangle(surface, triangle, method),
+        ),
         Job::TotalDegreeTriangle { surface, triangle } => {
             Answer::Triangle(restrict_power_triangle(surface, triangle, method))
         }
@@ -51,7 +51,7 @@ pub fn compute<T: Ring>(job: &Job<T>, method: Method) -> Answer<T> {
 }
 
 /// A point as a JSON array; `path` names it in errors.
-pub(super) fn point_json<T: JsonNumber>(p: &Point<T>, path: &str) -> Result<Value, Error> {
+pub(super) fn point_json<T: JsonNumber>(p: &[T], path: &str) -> Result<Value, Error> {
     p.iter()
         .enumerate()
         .map(|(k, x)| {
@@ -106,7 +106,7 @@ pub fn to_json<T: JsonNumber>(answer: &Answer<T>) -> Result<Value, Error> {
         Answer::Tensor(patch) => {
             let (n, m) = patch.degree();
             let rows = patch
-                .control_points()
+                .to_nested()
                 .iter()
                 .enumerate()
                 .map(|(nu, row)| {

@@ -46,11 +46,13 @@ use super::job::{
 use super::spline_jobs::{exact_spelling, numbers_json, points_json, rounded};
 use crate::number::{json_type, JsonNumber};
 use crate::repeated;
+use blossom::engine::{
+    tensor_bernstein_to_power, triangle_bernstein_to_power, triangle_index, triangle_len,
+};
 use blossom::{
-    bezier_tensor_blossom, bezier_triangle_blossom, restrict_bezier_tensor,
-    restrict_bezier_triangle_affine, restrict_power_triangle, restrict_tensor,
-    tensor_bernstein_to_power, tensor_control_points_from_samples, triangle_bernstein_to_power,
-    triangle_control_points_from_samples, triangle_index, triangle_len,
+    bezier_tensor_blossom, bezier_triangle_blossom, restrict_power_surface,
+    restrict_power_triangle, tensor_control_points_from_samples,
+    triangle_control_points_from_samples,
 };
 use blossom::{Error, Field, Method, Point, Rational, Ring};
 use blossom::{PowerSurface, PowerTriangle, TensorPatch, TriangularPatch};
@@ -169,15 +171,13 @@ fn bezier_tensor<T: JsonNumber + Field>(
     let (n, m) = patch.degree();
     let [a, b, c, d] = &rect;
     let net: Vec<Vec<Point<T>>> = match method {
-        MethodChoice::Library(Method::Bulk) => {
-            restrict_bezier_tensor(&patch, &rect).into_control_points()
-        }
+        MethodChoice::Library(Method::Bulk) => patch.restrict(&rect).into_control_points(),
         MethodChoice::Library(Method::Pyramid) => (0..=n)
             .map(|nu| {
                 (0..=m)
                     .map(|mu| {
                         bezier_tensor_blossom(
-                            patch.control_points(),
+                            &patch.to_nested(),
                             &repeated(a, n - nu, b, nu),
                             &repeated(c, m - mu, d, mu),
                         )
@@ -195,8 +195,8 @@ fn bezier_tensor<T: JsonNumber + Field>(
             }
         }
         MethodChoice::Library(method) => {
-            let power = PowerSurface::new(tensor_bernstein_to_power(patch.control_points()))?;
-            restrict_tensor(&power, &rect, method).into_control_points()
+            let power = PowerSurface::new(tensor_bernstein_to_power(&patch.to_nested()))?;
+            restrict_power_surface(&power, &rect, method).into_control_points()
         }
     };
     out.insert("degree".into(), Value::from(vec![n, m]));
@@ -372,7 +372,7 @@ fn bezier_triangle<T: JsonNumber + Field>(
     // (0, 1) and (0, 0).
     let plane = bary.each_ref().map(|[r, s, _]| [r.clone(), s.clone()]);
     let net: TriangularPatch<T> = match method {
-        MethodChoice::Library(Method::Bulk) => restrict_bezier_triangle_affine(&patch, &plane),
+        MethodChoice::Library(Method::Bulk) => patch.restrict(&plane),
         MethodChoice::Library(Method::Pyramid) => {
             let points = (0..=big_n)
                 .flat_map(|nu| (0..=big_n - nu).map(move |mu| (nu, mu)))
@@ -388,7 +388,7 @@ fn bezier_triangle<T: JsonNumber + Field>(
         }
         MethodChoice::Library(Method::Polarisation) => {
             let points = triangle_control_points_from_samples(big_n, &plane, &|u, v| {
-                patch.eval(&[u.clone(), v.clone(), T::one().sub(u).sub(v)])
+                patch.eval(&[u.clone(), v.clone()])
             });
             TriangularPatch::new(big_n, points)?
         }
@@ -436,7 +436,7 @@ fn derivative<T: JsonNumber + Field>(
     out.insert("degree".into(), Value::from(n - k));
     out.insert(
         "control_points".into(),
-        points_json(hodograph.control_points(), "control_points")?,
+        points_json(&hodograph.control_points().to_vec(), "control_points")?,
     );
     Ok(())
 }

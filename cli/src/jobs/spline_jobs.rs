@@ -50,11 +50,11 @@ use crate::number::{f64_from_json, format_rational, json_type, rational_from_jso
 use crate::repeated;
 use blossom::bezier_curve_blossom;
 use blossom::curve_control_points_from_samples;
-use blossom::restrict_bezier_curve;
+use blossom::engine::bernstein_to_power;
 use blossom::Field;
 use blossom::Point;
-use blossom::{bernstein_to_power, elevate, reduce, squared_l2_distance, Reduction};
 use blossom::{bspline_from_pieces as from_pieces, BSpline, Piece};
+use blossom::{elevate, reduce, squared_l2_distance, Reduction};
 use blossom::{BezierCurve, Error, Method, PowerCurve, Rational};
 use blossom::{RationalBezierCurve, RationalCurve};
 use serde_json::{Map, Value};
@@ -95,7 +95,7 @@ pub fn solve<T: JsonNumber + Field>(
             out.insert("degree".into(), Value::from(m));
             out.insert(
                 "control_points".into(),
-                points_json(elevated.control_points(), "control_points")?,
+                points_json(&elevated.control_points().to_vec(), "control_points")?,
             );
         }
         "reduce" => reduce_job::<T>(job, &mut out)?,
@@ -134,7 +134,7 @@ pub(super) fn points_json<T: JsonNumber>(pts: &[Point<T>], path: &str) -> Result
 }
 
 pub(super) fn numbers_json<T: JsonNumber>(xs: &[T], path: &str) -> Result<Value, Error> {
-    point_json(&xs.to_vec(), path)
+    point_json(xs, path)
 }
 
 /// The Bézier curve over [0, 1] restricted to [a, b]: the control points
@@ -155,13 +155,18 @@ fn bezier_curve<T: JsonNumber + Field>(
     let n = curve.degree();
     let restricted: Vec<Point<T>> = match method {
         MethodChoice::Library(Method::Pyramid) => (0..=n)
-            .map(|v| bezier_curve_blossom(curve.control_points(), &repeated(&a, n - v, &b, v)))
+            .map(|v| {
+                bezier_curve_blossom(
+                    &curve.control_points().to_vec(),
+                    &repeated(&a, n - v, &b, v),
+                )
+            })
             .collect::<Result<_, _>>()?,
         MethodChoice::Library(Method::Polarisation) => {
             curve_control_points_from_samples(n, &a, &b, &|t| curve.eval(t))
         }
         MethodChoice::Library(Method::Bulk) => {
-            restrict_bezier_curve(&curve, &a, &b).into_control_points()
+            curve.subsegment(a.clone()..b.clone()).into_control_points()
         }
         MethodChoice::Specialised => {
             match super::specialised::specialised_bezier_curve(&curve, &a, &b) {
@@ -170,7 +175,7 @@ fn bezier_curve<T: JsonNumber + Field>(
             }
         }
         MethodChoice::Library(method) => {
-            let power = PowerCurve::new(bernstein_to_power(curve.control_points()))?;
+            let power = PowerCurve::new(bernstein_to_power(&curve.control_points().to_vec()))?;
             let as_curve = Job::Curve {
                 curve: power,
                 interval: [a, b],
@@ -433,7 +438,7 @@ fn reduce_job<T: JsonNumber + Field>(
     out.insert("degree".into(), Value::from(m));
     out.insert(
         "control_points".into(),
-        points_json(reduced.control_points(), "control_points")?,
+        points_json(&reduced.control_points().to_vec(), "control_points")?,
     );
     out.insert(
         "l2_error".into(),

@@ -28,12 +28,12 @@
 //! ```
 //! # #[cfg(feature = "carried-grid")] {
 //! use blossom_cli::specialised::{grid, restrict_curve_specialised};
-//! use blossom::{restrict_curve, Method, PowerCurve, Rational};
+//! use blossom::{restrict_power_curve, Method, PowerCurve, Rational};
 //!
 //! let q = |n: i64| Rational::from_integer(n.into());
 //! let curve = PowerCurve::new(vec![vec![q(1), q(2)], vec![q(-3), q(0)], vec![q(0), q(5)]])?;
 //! let w = restrict_curve_specialised(&curve, &q(-1), &q(2)).expect("degree 2 is carried");
-//! assert_eq!(w, restrict_curve(&curve, &q(-1), &q(2), Method::Definition));
+//! assert_eq!(w, restrict_power_curve(&curve, &q(-1), &q(2), Method::Definition));
 //! // The generated function itself, on fixed-size arrays of 3-D f64 points:
 //! let w = grid::curve_1(&[[1.0, 2.0, 3.0], [1.0, 1.0, 1.0]], &0.0, &2.0);
 //! assert_eq!(w, [[1.0, 2.0, 3.0], [3.0, 4.0, 5.0]]);

@@ -3,7 +3,9 @@
 use super::Shape;
 use crate::proofs::{symbolic_curve, symbolic_surface, symbolic_triangle};
 use blossom::{curve_control_points_from_samples, tensor_control_points_from_samples};
-use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method};
+use blossom::{
+    restrict_power_curve, restrict_power_surface, restrict_power_surface_to_triangle, Method,
+};
 use blossom::{restrict_power_triangle, PowerTriangle};
 use blossom::{triangle_control_points_from_samples, Poly, PowerCurve, Ring};
 use blossom_grid::{
@@ -48,8 +50,11 @@ impl ProofRow {
     }
 }
 
-fn count_terms<'a>(points: impl IntoIterator<Item = &'a Vec<Poly>>) -> usize {
-    points.into_iter().flatten().map(Poly::num_terms).sum()
+fn count_terms<P: AsRef<[Poly]>>(points: impl IntoIterator<Item = P>) -> usize {
+    points
+        .into_iter()
+        .map(|p| p.as_ref().iter().map(Poly::num_terms).sum::<usize>())
+        .sum()
 }
 
 /// `f` with its values remembered: the polarisation formula samples the same point for many
@@ -116,7 +121,7 @@ pub fn prove_curve(n: usize) -> ProofRow {
     ProofRow {
         shape: Shape::Curve(n),
         terms: count_terms(w.control_points()),
-        definition: w == restrict_curve(&curve, &a, &b, Method::Definition),
+        definition: w == restrict_power_curve(&curve, &a, &b, Method::Definition),
         polarisation: w.control_points() == curve_by_polarisation(&curve, &a, &b).as_slice(),
     }
 }
@@ -131,9 +136,9 @@ pub fn prove_tensor(n: usize, m: usize) -> ProofRow {
         tensor_control_points_from_samples((n, m), &rect, &|u, v| sample(&(u.clone(), v.clone())));
     ProofRow {
         shape: Shape::Tensor(n, m),
-        terms: count_terms(p.control_points().iter().flatten()),
-        definition: p == restrict_tensor(&s, &rect, Method::Definition),
-        polarisation: p.control_points() == by_polarisation.as_slice(),
+        terms: count_terms(p.to_nested().iter().flatten()),
+        definition: p == restrict_power_surface(&s, &rect, Method::Definition),
+        polarisation: p.to_nested() == by_polarisation.as_slice(),
     }
 }
 
@@ -148,7 +153,7 @@ pub fn prove_triangle(n: usize, m: usize) -> ProofRow {
     ProofRow {
         shape: Shape::Triangle(n, m),
         terms: count_terms(q.control_points()),
-        definition: q == restrict_triangle(&s, &tri, Method::Definition),
+        definition: q == restrict_power_surface_to_triangle(&s, &tri, Method::Definition),
         polarisation: q.control_points() == by_polarisation.as_slice(),
     }
 }
@@ -156,7 +161,7 @@ pub fn prove_triangle(n: usize, m: usize) -> ProofRow {
 /// Proves the carried Bézier-curve evaluator of degree `n` (1..=16) symbolically.
 ///
 /// The control points are the Bernstein form b = M c of the symbolic power curve with
-/// coefficients c_0..c_n ([`blossom::power_to_bernstein`], an exact change of basis): M is
+/// coefficients c_0..c_n ([`blossom::engine::power_to_bernstein`], an exact change of basis): M is
 /// invertible, so an identity of polynomials in c is one in b (every net is the Bernstein form
 /// of exactly one power curve, b = M c with c = M^-1 b). This keeps each symbolic value as
 /// small as the curve's own (a net of independent symbols b_i makes every sample n times
@@ -164,14 +169,15 @@ pub fn prove_triangle(n: usize, m: usize) -> ProofRow {
 /// definition (2) of that curve and the inverse formula (22) applied to points of the curve.
 pub fn prove_bezier_curve(n: usize) -> ProofRow {
     let power = symbolic_curve(n);
-    let curve = blossom::BezierCurve::new(blossom::power_to_bernstein(power.coefficients()))
-        .expect("a non-empty polygon");
+    let curve =
+        blossom::BezierCurve::new(blossom::engine::power_to_bernstein(power.coefficients()))
+            .expect("a non-empty polygon");
     let (a, b) = (Poly::var("a"), Poly::var("b"));
     let w = restrict_bezier_curve_specialised(&curve, &a, &b).expect("a carried degree");
     ProofRow {
         shape: Shape::BezierCurve(n),
         terms: count_terms(w.control_points()),
-        definition: w == restrict_curve(&power, &a, &b, Method::Definition),
+        definition: w == restrict_power_curve(&power, &a, &b, Method::Definition),
         polarisation: w.control_points() == curve_by_polarisation(&power, &a, &b).as_slice(),
     }
 }
@@ -239,12 +245,12 @@ pub fn prove_bezier_tensor(n: usize, m: usize) -> ProofRow {
     let rows: Vec<Vec<Vec<Poly>>> = s
         .coefficients()
         .iter()
-        .map(|row| blossom::power_to_bernstein(row))
+        .map(|row| blossom::engine::power_to_bernstein(row))
         .collect();
     let columns: Vec<Vec<Vec<Poly>>> = (0..=m)
         .map(|j| {
             let column: Vec<Vec<Poly>> = rows.iter().map(|r| r[j].clone()).collect();
-            blossom::power_to_bernstein(&column)
+            blossom::engine::power_to_bernstein(&column)
         })
         .collect();
     let net: Vec<Vec<Vec<Poly>>> = (0..=n)
@@ -258,14 +264,14 @@ pub fn prove_bezier_tensor(n: usize, m: usize) -> ProofRow {
         tensor_control_points_from_samples((n, m), &rect, &|u, v| sample(&(u.clone(), v.clone())));
     ProofRow {
         shape: Shape::BezierTensor(n, m),
-        terms: count_terms(p.control_points().iter().flatten()),
-        definition: p == restrict_tensor(&s, &rect, Method::Definition),
-        polarisation: p.control_points() == by_polarisation.as_slice(),
+        terms: count_terms(p.to_nested().iter().flatten()),
+        definition: p == restrict_power_surface(&s, &rect, Method::Definition),
+        polarisation: p.to_nested() == by_polarisation.as_slice(),
     }
 }
 
 /// Proves the carried Bézier triangle evaluator of degree `big_n` symbolically: the net is the
-/// triangular Bernstein form ([`blossom::triangle_power_to_bernstein`], exact and invertible) of
+/// triangular Bernstein form ([`blossom::engine::triangle_power_to_bernstein`], exact and invertible) of
 /// the symbolic array c_i_j in the barycentric coordinates (s, t) of the patch's first two
 /// corners, so the patch's domain is the triangle (1, 0), (0, 1), (0, 0) of the (s, t) plane and
 /// the sub-triangle's corners (a1, a2), (b1, b2), (c1, c2) are variables of that plane. The
@@ -273,7 +279,7 @@ pub fn prove_bezier_tensor(n: usize, m: usize) -> ProofRow {
 pub fn prove_bezier_triangle(big_n: usize) -> ProofRow {
     let s = symbolic_power_triangle(big_n);
     let flat: Vec<Vec<Poly>> = s.rows().iter().flatten().cloned().collect();
-    let patch = blossom::triangle_power_to_bernstein(big_n, &flat)
+    let patch = blossom::engine::triangle_power_to_bernstein(big_n, &flat)
         .expect("the rows of a power triangle of degree N: a full net of one dimension");
     let tri = symbolic_triangle();
     let q = restrict_bezier_triangle_specialised(&patch, &tri).expect("a carried degree");

@@ -24,13 +24,15 @@
 
 use super::report::{Entry, Section, Status};
 use crate::proofs::{bernstein_tensor, bernstein_triangle, symbolic_curve, symbolic_surface};
+use blossom::engine::power_to_bernstein;
+use blossom::triangle_blossom_from_samples;
 use blossom::{bezier_curve_blossom, bezier_tensor_blossom, bezier_triangle_blossom};
 use blossom::{curve_blossom, tensor_blossom, triangle_blossom};
 use blossom::{curve_blossom_from_samples, tensor_blossom_from_samples};
 use blossom::{homogeneous_curve_blossom, homogeneous_triangle_blossom, polar_form};
-use blossom::{power_to_bernstein, restrict_bezier_curve, restrict_bezier_tensor};
-use blossom::{restrict_bezier_triangle_affine, triangle_blossom_from_samples};
-use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method};
+use blossom::{
+    restrict_power_curve, restrict_power_surface, restrict_power_surface_to_triangle, Method,
+};
 use blossom::{BezierCurve, Poly, PowerCurve, PowerSurface, Ring};
 use std::collections::HashMap;
 
@@ -272,7 +274,7 @@ fn curve_restrictions() -> Vec<CurveRestriction<'static>> {
     let mut out: Vec<CurveRestriction> = Method::ALL
         .iter()
         .map(|&m| {
-            let f: CurveFn = Box::new(move |c, a, b| restrict_curve(c, a, b, m));
+            let f: CurveFn = Box::new(move |c, a, b| restrict_power_curve(c, a, b, m));
             (m.name(), f)
         })
         .collect();
@@ -280,7 +282,7 @@ fn curve_restrictions() -> Vec<CurveRestriction<'static>> {
         "halving engine on Bézier input",
         Box::new(|c, a, b| {
             let net = BezierCurve::new(power_to_bernstein(c.coefficients())).expect("a net");
-            restrict_bezier_curve(&net, a, b)
+            net.subsegment(a.clone()..b.clone())
         }),
     ));
     #[cfg(feature = "carried-grid")]
@@ -335,7 +337,7 @@ pub fn curve_rows(n: usize) -> Vec<AxiomRow> {
             .control_points()
             .iter()
             .enumerate()
-            .map(|(v, p)| (p.clone(), vec![slot(&["a"], n - v), slot(&["b"], v)]))
+            .map(|(v, p)| (p.to_vec(), vec![slot(&["a"], n - v), slot(&["b"], v)]))
             .collect();
         rows.push(AxiomRow {
             shape: "curve",
@@ -376,7 +378,7 @@ pub fn tensor_rows(n: usize, m: usize) -> Vec<AxiomRow> {
             "pyramid on the Bernstein net",
             form(|args| {
                 let (us, vs) = split(args);
-                bezier_tensor_blossom(net.control_points(), &us, &vs).expect("arguments")
+                bezier_tensor_blossom(&net.to_nested(), &us, &vs).expect("arguments")
             }),
         ),
     ];
@@ -393,12 +395,14 @@ pub fn tensor_rows(n: usize, m: usize) -> Vec<AxiomRow> {
     let rect = ["a", "b", "c", "d"].map(Poly::var);
     let mut restrictions: Vec<(String, blossom::TensorPatch<Poly>)> = Method::ALL
         .iter()
-        .map(|&meth| (meth.name().to_string(), restrict_tensor(&s, &rect, meth)))
+        .map(|&meth| {
+            (
+                meth.name().to_string(),
+                restrict_power_surface(&s, &rect, meth),
+            )
+        })
         .collect();
-    restrictions.push((
-        "halving engine on Bézier input".into(),
-        restrict_bezier_tensor(&net, &rect),
-    ));
+    restrictions.push(("halving engine on Bézier input".into(), net.restrict(&rect)));
     #[cfg(feature = "carried-grid")]
     if (n, m) != (0, 0) {
         restrictions.push((
@@ -408,7 +412,7 @@ pub fn tensor_rows(n: usize, m: usize) -> Vec<AxiomRow> {
     }
     for (name, patch) in restrictions {
         let mut points = Vec::new();
-        for (nu, row) in patch.control_points().iter().enumerate() {
+        for (nu, row) in patch.to_nested().iter().enumerate() {
             for (mu, p) in row.iter().enumerate() {
                 let slots = vec![
                     slot(&["a"], n - nu),
@@ -487,11 +491,16 @@ pub fn triangle_rows(n: usize, m: usize) -> Vec<AxiomRow> {
     let tri = crate::proofs::symbolic_triangle();
     let mut restrictions: Vec<(String, blossom::TriangularPatch<Poly>)> = Method::ALL
         .iter()
-        .map(|&meth| (meth.name().to_string(), restrict_triangle(&s, &tri, meth)))
+        .map(|&meth| {
+            (
+                meth.name().to_string(),
+                restrict_power_surface_to_triangle(&s, &tri, meth),
+            )
+        })
         .collect();
     restrictions.push((
         "halving engine on Bézier input".into(),
-        restrict_bezier_triangle_affine(&patch, &tri),
+        patch.restrict(&tri),
     ));
     #[cfg(feature = "carried-grid")]
     if (n, m) != (0, 0) && n <= 4 && m <= 4 {
@@ -509,7 +518,7 @@ pub fn triangle_rows(n: usize, m: usize) -> Vec<AxiomRow> {
                     slot(&["b1", "b2"], mu),
                     slot(&["c1", "c2"], la),
                 ];
-                (p.clone(), slots)
+                (p.to_vec(), slots)
             })
             .collect();
         rows.push(AxiomRow {

@@ -1,11 +1,11 @@
 //! The printed versions of Theorem 3's ingredients where the two transcriptions (000, 001)
 //! or the theorem and its proof differ: the count (15), the sum (16), Remark 1's count (21)
 //! and the summation bounds under (14). Each version is implemented as printed, through the
-//! one evaluator of eq. (14) ([`blossom::restrict_triangle_with_formula`]), and compared with the
+//! one evaluator of eq. (14) ([`blossom::engine::restrict_triangle_with_formula`]), and compared with the
 //! subset-sum definition (13).
 
-use blossom::{binomial, multinomial};
-use blossom::{restrict_triangle_with_formula, TriangleFormula, THEOREM_3};
+use blossom::engine::{binomial, multinomial};
+use blossom::engine::{restrict_triangle_with_formula, TriangleFormula, THEOREM_3};
 use blossom::{Poly, PowerSurface, Rational};
 use num_bigint::BigInt;
 
@@ -155,7 +155,11 @@ pub fn judge(formula: &TriangleFormula, symbolic_max: usize) -> Verdict {
             for i in 0..=n {
                 for j in 0..=m {
                     let s = monomial_surface(n, m, i, j);
-                    let want = blossom::restrict_triangle(&s, &tri, blossom::Method::Definition);
+                    let want = blossom::restrict_power_surface_to_triangle(
+                        &s,
+                        &tri,
+                        blossom::Method::Definition,
+                    );
                     let got = restrict_triangle_with_formula(formula, &s, &tri);
                     for ((nu, mu, la, w), (_, _, _, g)) in want.entries().zip(got.entries()) {
                         if w != g {
@@ -178,7 +182,8 @@ pub fn judge(formula: &TriangleFormula, symbolic_max: usize) -> Verdict {
     for big_n in 0..=symbolic_max {
         for n in 0..=big_n {
             let s = crate::proofs::symbolic_surface(n, big_n - n);
-            let want = blossom::restrict_triangle(&s, &tri, blossom::Method::Definition);
+            let want =
+                blossom::restrict_power_surface_to_triangle(&s, &tri, blossom::Method::Definition);
             let got: blossom::TriangularPatch<Poly> =
                 restrict_triangle_with_formula(formula, &s, &tri);
             if want != got {

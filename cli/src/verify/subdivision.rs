@@ -7,7 +7,7 @@ use super::formula_versions::{judge, negative_j_alpha_bound, versions};
 use super::paper_data::*;
 use super::report::{Entry, Section, Status};
 use super::seeds_002_004::num;
-use blossom::{restrict_tensor, restrict_triangle, Method};
+use blossom::{restrict_power_surface, restrict_power_surface_to_triangle, Method};
 use blossom::{PowerSurface, Rational, TriangularPatch};
 
 fn point(texts: &[&str; 3]) -> Vec<Rational> {
@@ -86,15 +86,15 @@ fn agreement_finding(all_equal: bool) -> String {
 pub fn tensor_section(title: &str, table: &[Labelled; 12], rect: &[&str; 4]) -> Section {
     let surface = example_1_surface();
     let rect: [Rational; 4] = rect.map(num);
-    let net = restrict_tensor(&surface, &rect, Method::ClosedForm);
+    let net = restrict_power_surface(&surface, &rect, Method::ClosedForm);
     let all_equal = Method::ALL
         .iter()
-        .all(|&m| restrict_tensor(&surface, &rect, m) == net);
+        .all(|&m| restrict_power_surface(&surface, &rect, m) == net);
     let entries: Vec<Entry> = table
         .iter()
         .map(|(label, p)| {
             let (nu, mu) = label_indices(label);
-            let computed = &net.control_points()[nu][mu];
+            let computed = &net.to_nested()[nu][mu];
             Entry {
                 label: label.to_string(),
                 printed: printed(p),
@@ -202,10 +202,10 @@ fn matches_under(
 pub fn triangle_section(title: &str, table: &[Labelled; 21], tri: &[[&str; 2]; 3]) -> Section {
     let surface = example_1_surface();
     let tri: [[Rational; 2]; 3] = tri.map(|p| p.map(num));
-    let patch = restrict_triangle(&surface, &tri, Method::ClosedForm);
+    let patch = restrict_power_surface_to_triangle(&surface, &tri, Method::ClosedForm);
     let all_equal = Method::ALL
         .iter()
-        .all(|&m| restrict_triangle(&surface, &tri, m) == patch);
+        .all(|&m| restrict_power_surface_to_triangle(&surface, &tri, m) == patch);
     let scores: Vec<(Convention, usize)> = Convention::ALL
         .iter()
         .map(|&c| (c, matches_under(&patch, table, c)))

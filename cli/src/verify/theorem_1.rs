@@ -5,8 +5,9 @@
 
 use super::report::{Entry, Section, Status};
 use super::seeds_002_004::expr::sample_name;
+use blossom::engine::multinomial;
 use blossom::{curve_blossom, homogeneous_curve_blossom, homogeneous_triangle_blossom};
-use blossom::{multilinear_polar_form, multinomial, polar_form, triangle_blossom};
+use blossom::{multilinear_polar_form, polar_form, triangle_blossom};
 use blossom::{Poly, PowerCurve, PowerSurface, Rational, Ring};
 use num_bigint::BigInt;
 

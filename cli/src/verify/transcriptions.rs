@@ -7,8 +7,10 @@
 
 use super::formula_versions::judge;
 use super::report::{Entry, Section, Status};
-use blossom::{binomial, curve_blossom, restrict_tensor, triangle_blossom, Method, THEOREM_3};
-use blossom::{Poly, PowerCurve, PowerSurface, Rational, Ring, TriangleFormula};
+use blossom::engine::TriangleFormula;
+use blossom::engine::{binomial, THEOREM_3};
+use blossom::{curve_blossom, restrict_power_surface, triangle_blossom, Method};
+use blossom::{Poly, PowerCurve, PowerSurface, Rational, Ring};
 
 const SOURCE: &str = "seeds 000/001, proof of Theorem 2, eqs. (10)-(11)";
 
@@ -91,9 +93,9 @@ pub fn judge_eleven(eleven: &Eleven, max_total: usize) -> Result<usize, String> 
         for n in 0..=total {
             let m = total - n;
             let s = crate::proofs::symbolic_surface(n, m);
-            let want = restrict_tensor(&s, &rect, Method::Definition);
+            let want = restrict_power_surface(&s, &rect, Method::Definition);
             let got = tensor_by_9(&s, &rect, eleven);
-            for (nu, row) in want.control_points().iter().enumerate() {
+            for (nu, row) in want.to_nested().iter().enumerate() {
                 for (mu, w) in row.iter().enumerate() {
                     if w[0] != got[nu][mu] {
                         return Err(format!(

@@ -36,7 +36,8 @@ fn every_algorithm_satisfies_the_axioms_and_wrong_forms_do_not() {
     // A restriction with its two end points exchanged: each point alone looks fine, but
     // the recovered forms disagree and the diagonal fails.
     let (a, b) = (Poly::var("a"), Poly::var("b"));
-    let mut w = blossom::restrict_curve(&c, &a, &b, blossom::Method::Bulk).into_control_points();
+    let mut w =
+        blossom::restrict_power_curve(&c, &a, &b, blossom::Method::Bulk).into_control_points();
     w.swap(0, 2);
     let slots = |v: usize| vec![Slot::new(&["a"], 2 - v), Slot::new(&["b"], v)];
     let points: Vec<(Vec<Poly>, Vec<Slot>)> = w

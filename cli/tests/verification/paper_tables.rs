@@ -1,7 +1,10 @@
 //! The subdivision paper's tables re-derived exactly, and the `verify` report, snapshotted in
 //! the top-level `snapshots/` directory.
 
-use blossom::{restrict_curve, restrict_tensor, restrict_triangle, Method, Poly, Rational, Ring};
+use blossom::{
+    restrict_power_curve, restrict_power_surface, restrict_power_surface_to_triangle, Method, Poly,
+    Rational, Ring,
+};
 use blossom_cli::verify::subdivision::{example_1_surface, format_point};
 use blossom_cli::verify::{build_report, Status};
 use std::fmt::Write;
@@ -104,9 +107,9 @@ fn computed_tables_snapshot() {
         ("table_1_s2", ["1/3", "2/3", "1/4", "3/4"]),
     ] {
         let rect = rect.map(q);
-        let net = restrict_tensor(&surface, &rect, Method::Bulk);
+        let net = restrict_power_surface(&surface, &rect, Method::Bulk);
         let mut rows = Vec::new();
-        for (nu, row) in net.control_points().iter().enumerate() {
+        for (nu, row) in net.to_nested().iter().enumerate() {
             for (mu, p) in row.iter().enumerate() {
                 rows.push((format!("p_{nu}{mu}"), p.clone()));
             }
@@ -124,10 +127,10 @@ fn computed_tables_snapshot() {
         ("table_2_s4", [["0", "1/2"], ["1/2", "0"], ["1/2", "1/2"]]),
     ] {
         let tri = tri.map(|p| p.map(q));
-        let patch = restrict_triangle(&surface, &tri, Method::Bulk);
+        let patch = restrict_power_surface_to_triangle(&surface, &tri, Method::Bulk);
         let rows = patch
             .entries()
-            .map(|(nu, mu, la, p)| (format!("q[a^{nu} b^{mu} c^{la}]"), p.clone()))
+            .map(|(nu, mu, la, p)| (format!("q[a^{nu} b^{mu} c^{la}]"), p.to_vec()))
             .collect();
         snapshot!(
             name,
@@ -143,7 +146,7 @@ fn computed_tables_snapshot() {
 fn symbolic_control_points_snapshot() {
     let curve = blossom_cli::proofs::symbolic_curve(3);
     let (a, b) = (Poly::var("a"), Poly::var("b"));
-    let bez = restrict_curve(&curve, &a, &b, Method::Bulk);
+    let bez = restrict_power_curve(&curve, &a, &b, Method::Bulk);
     let mut out = String::from("cubic C(u) = c0 + c1 u + c2 u^2 + c3 u^3 on [a, b]\n");
     for (v, w) in bez.control_points().iter().enumerate() {
         let _ = writeln!(out, "w_{v} = {}", w[0]);
@@ -159,10 +162,10 @@ fn symbolic_control_points_snapshot() {
 
     let surface = blossom_cli::proofs::symbolic_surface(1, 1);
     let rect = ["a", "b", "c", "d"].map(Poly::var);
-    let net = restrict_tensor(&surface, &rect, Method::Bulk);
+    let net = restrict_power_surface(&surface, &rect, Method::Bulk);
     let mut out =
         String::from("S(u, v) = sum c_i_j u^i v^j, (n, m) = (1, 1), on [a, b] x [c, d]\n");
-    for (nu, row) in net.control_points().iter().enumerate() {
+    for (nu, row) in net.to_nested().iter().enumerate() {
         for (mu, p) in row.iter().enumerate() {
             let _ = writeln!(out, "p_{nu}{mu} = {}", p[0]);
         }

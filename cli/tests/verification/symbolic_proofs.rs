@@ -5,9 +5,10 @@
 //! wrong candidates (a misprinted eq. (14), control points out of order, a perturbed input)
 //! run through the same comparison and fail it.
 
+use blossom::engine::{restrict_triangle_with_formula, TriangleFormula, THEOREM_3};
 use blossom::{
-    restrict_curve, restrict_tensor, restrict_triangle_with_formula, BezierCurve, Method, Poly,
-    PowerCurve, PowerSurface, TriangleFormula, THEOREM_3,
+    restrict_power_curve, restrict_power_surface, BezierCurve, Method, Poly, PowerCurve,
+    PowerSurface,
 };
 use blossom_cli::proofs::{
     prove_bezier_input, prove_curve, prove_curve_candidate, prove_tensor, prove_tensor_candidate,
@@ -95,7 +96,7 @@ fn a_misprinted_eq_14_is_not_proved() {
 fn a_curve_with_two_control_points_swapped_is_not_proved() {
     let n = 4;
     let swapped = |c: &PowerCurve<Poly>, a: &Poly, b: &Poly| {
-        let mut points = restrict_curve(c, a, b, Method::Bulk).into_control_points();
+        let mut points = restrict_power_curve(c, a, b, Method::Bulk).into_control_points();
         points.swap(1, 2);
         BezierCurve::new(points).unwrap()
     };
@@ -104,11 +105,12 @@ fn a_curve_with_two_control_points_swapped_is_not_proved() {
     let perturbed = |c: &PowerCurve<Poly>, a: &Poly, b: &Poly| {
         let mut coefficients = c.coefficients().to_vec();
         coefficients[2][0] = coefficients[2][0].clone() + Poly::var("e");
-        restrict_curve(&PowerCurve::new(coefficients).unwrap(), a, b, Method::Bulk)
+        restrict_power_curve(&PowerCurve::new(coefficients).unwrap(), a, b, Method::Bulk)
     };
     let row = prove_curve_candidate(n, "c_2 perturbed", &perturbed);
     assert!(!row.identical, "{row:?}");
-    let bulk = |c: &PowerCurve<Poly>, a: &Poly, b: &Poly| restrict_curve(c, a, b, Method::Bulk);
+    let bulk =
+        |c: &PowerCurve<Poly>, a: &Poly, b: &Poly| restrict_power_curve(c, a, b, Method::Bulk);
     let row = prove_curve_candidate(n, "bulk", &bulk);
     assert!(row.identical, "{row:?}");
     assert_eq!(row.terms, prove_curve(n, &[Method::Bulk])[0].terms);
@@ -120,10 +122,11 @@ fn a_curve_with_two_control_points_swapped_is_not_proved() {
 fn a_tensor_patch_on_the_exchanged_rectangle_is_not_proved() {
     let exchanged = |s: &PowerSurface<Poly>, [a, b, c, d]: &[Poly; 4]| {
         let rect = [c.clone(), d.clone(), a.clone(), b.clone()];
-        restrict_tensor(s, &rect, Method::Bulk)
+        restrict_power_surface(s, &rect, Method::Bulk)
     };
     let row = prove_tensor_candidate(2, 1, "intervals exchanged", &exchanged);
     assert!(!row.identical, "{row:?}");
-    let bulk = |s: &PowerSurface<Poly>, rect: &[Poly; 4]| restrict_tensor(s, rect, Method::Bulk);
+    let bulk =
+        |s: &PowerSurface<Poly>, rect: &[Poly; 4]| restrict_power_surface(s, rect, Method::Bulk);
     assert!(prove_tensor_candidate(2, 1, "bulk", &bulk).identical);
 }

@@ -1,7 +1,7 @@
 //! Degree elevation and reduction of tensor-product Bézier patches over [0, 1]^2, exactly.
 //!
 //! * **Elevation** from bidegree (n, m) to (n', m') >= (n, m): the curve elevation
-//!   ([`crate::elevation_matrix`]) along u for the rows of the net, then along v for each row.
+//!   ([`crate::engine::elevation_matrix`]) along u for the rows of the net, then along v for each row.
 //! * **Reduction** to (n', m') <= (n, m), lower in at least one variable, by a [`Reduction`]:
 //!   - interpolating: eq. (22) of seed 004 in two passes at the lower bidegree, applied to the
 //!     patch as the sampled surface ([`crate::tensor_control_points_from_samples`] on
@@ -9,7 +9,7 @@
 //!     <= (n', m');
 //!   - least squares: the L2-best patch over [0, 1]^2, from the normal equations
 //!     G x = G' b with G = G_n'n' (x) G_m'm' and G' = G_n'n (x) G_m'm, where (x) is the
-//!     Kronecker product and G_ab the curve Gram matrix [`crate::bernstein_gram`]:
+//!     Kronecker product and G_ab the curve Gram matrix [`crate::engine::bernstein_gram`]:
 //!     int int B_i^a(u) B_j^c(v) B_k^b(u) B_l^d(v) du dv = G_ab[i][k] G_cd[j][l]
 //!     (Fubini);
 //!   - least squares keeping the four corners p_00, p_0m, p_n0, p_nm (the end points of the
@@ -55,8 +55,8 @@ fn net_len((n, m): (usize, usize)) -> Result<usize> {
 /// // The bilinear patch u v as a biquadratic: only the corner (2, 2) is 1, the middle 1/4.
 /// let uv = TensorPatch::new(vec![vec![vec![0.0], vec![0.0]], vec![vec![0.0], vec![1.0]]])?;
 /// let e = elevate_tensor(&uv, (2, 2))?;
-/// assert_eq!(e.control_points()[1][1], vec![0.25]);
-/// assert_eq!(e.control_points()[2][2], vec![1.0]);
+/// assert_eq!(e.get(1, 1), &[0.25][..]);
+/// assert_eq!(e.get(2, 2), &[1.0][..]);
 /// # Ok::<(), blossom::Error>(())
 /// ```
 pub fn elevate_tensor<T: Ring>(
@@ -67,11 +67,11 @@ pub fn elevate_tensor<T: Ring>(
     check_higher_degree(n, to_degree.0, "in u")?;
     check_higher_degree(m, to_degree.1, "in v")?;
     net_len(to_degree)?;
-    let dim = patch.control_points()[0][0].len();
+    let dim = patch.dim();
     // Along u: each row of the net is one long point.
     let rows = linalg::apply(
         &elevation_matrix(n, to_degree.0),
-        &point::flatten(patch.control_points()),
+        &point::flatten(&patch.to_nested()),
         dim * (m + 1),
     );
     let ev = elevation_matrix(m, to_degree.1);
@@ -170,8 +170,8 @@ pub fn reduce_tensor<T: Ring>(
         }
         Reduction::LeastSquares | Reduction::LeastSquaresEndpoints => {
             let r = tensor_least_squares_matrix(from, to_degree, method)?;
-            let dim = patch.control_points()[0][0].len();
-            let flat: Vec<Point<T>> = patch.control_points().concat();
+            let dim = patch.dim();
+            let flat: Vec<Point<T>> = patch.points().to_vec();
             let x = linalg::apply(&r, &flat, dim);
             x.chunks(to_degree.1 + 1)
                 .map(<[Point<T>]>::to_vec)
@@ -185,11 +185,11 @@ pub fn reduce_tensor<T: Ring>(
 /// of any bidegrees and one dimension, exactly: both are elevated to the larger degree in
 /// each variable and the difference d of the nets gives d^T G d with G the tensor Gram matrix.
 pub fn tensor_squared_l2_distance<T: Ring>(a: &TensorPatch<T>, b: &TensorPatch<T>) -> Result<T> {
-    check_same_dimension(&a.control_points()[0], &b.control_points()[0], "patches")?;
+    check_same_dimension(&a.row(0).to_vec(), &b.row(0).to_vec(), "patches")?;
     let (da, db) = (a.degree(), b.degree());
     let d = (da.0.max(db.0), da.1.max(db.1));
     let (ea, eb) = (elevate_tensor(a, d)?, elevate_tensor(b, d)?);
-    let diff = linalg::differences(&ea.control_points().concat(), &eb.control_points().concat());
+    let diff = linalg::differences(&ea.points().to_vec(), &eb.points().to_vec());
     Ok(linalg::gram_quadratic_form(
         &tensor_bernstein_gram(d, d),
         &diff,

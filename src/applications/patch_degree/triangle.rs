@@ -109,10 +109,10 @@ pub fn elevate_triangle<T: Ring>(
 ) -> Result<TriangularPatch<T>> {
     check_higher_degree(patch.degree(), to_degree, "")?;
     net_len(to_degree)?;
-    let dim = patch.control_points()[0].len();
+    let dim = patch.dim();
     let points = linalg::apply(
         &triangle_elevation_matrix(patch.degree(), to_degree)?,
-        patch.control_points(),
+        &patch.control_points().to_vec(),
         dim,
     );
     TriangularPatch::new(to_degree, points)
@@ -192,13 +192,12 @@ pub fn reduce_triangle<T: Ring>(
                 [zero.clone(), zero],
             ];
             triangle_control_points_from_samples(to_degree, &tri, &|u, v| {
-                patch.eval(&[u.clone(), v.clone(), one.sub(u).sub(v)])
+                patch.eval(&[u.clone(), v.clone()])
             })
         }
         Reduction::LeastSquares | Reduction::LeastSquaresEndpoints => {
             let r = triangle_least_squares_matrix(from, to_degree, method)?;
-            let dim = patch.control_points()[0].len();
-            linalg::apply(&r, patch.control_points(), dim)
+            linalg::apply(&r, &patch.control_points().to_vec(), patch.dim())
         }
     };
     TriangularPatch::new(to_degree, points)
@@ -211,10 +210,14 @@ pub fn triangle_squared_l2_distance<T: Ring>(
     a: &TriangularPatch<T>,
     b: &TriangularPatch<T>,
 ) -> Result<T> {
-    check_same_dimension(a.control_points(), b.control_points(), "patches")?;
+    check_same_dimension(
+        &a.control_points().to_vec(),
+        &b.control_points().to_vec(),
+        "patches",
+    )?;
     let n = a.degree().max(b.degree());
     let (ea, eb) = (elevate_triangle(a, n)?, elevate_triangle(b, n)?);
-    let diff = linalg::differences(ea.control_points(), eb.control_points());
+    let diff = linalg::differences(&ea.control_points().to_vec(), &eb.control_points().to_vec());
     Ok(linalg::gram_quadratic_form(
         &triangle_bernstein_gram(n, n),
         &diff,

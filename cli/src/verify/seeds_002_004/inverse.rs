@@ -10,7 +10,7 @@ use super::entry;
 use super::expr::{parse, sample_name};
 use crate::verify::report::{Section, Status};
 use blossom::bezier_curve_blossom;
-use blossom::binomial;
+use blossom::engine::binomial;
 use blossom::{
     curve_blossom_from_samples as curve_blossom,
     curve_control_points_from_samples as curve_control_points,

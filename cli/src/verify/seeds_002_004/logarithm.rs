@@ -9,9 +9,10 @@
 use super::expr::parse;
 use super::{entry, sci};
 use crate::verify::report::{Section, Status};
-use blossom::binomial;
 use blossom::curve_control_points_from_samples;
-use blossom::{bernstein_gram, elevate, squared_l2_distance};
+use blossom::engine::bernstein_gram;
+use blossom::engine::binomial;
+use blossom::{elevate, squared_l2_distance};
 use blossom::{BezierCurve, Poly, Rational, Ring};
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -129,7 +130,7 @@ pub fn l2_errors(n: usize, y: &[Poly]) -> L2Errors {
     let dot = |c: &[Poly]| (0..=n).fold(Poly::zero(), |acc, i| acc.add(&c[i].mul(&nu[i][0])));
     let half = q(1, 2);
     let error = quad(y).sub(&dot(y).scale(&q(2, 1))).add(&l2).scale(&half);
-    let best: Vec<Poly> = blossom::solve_rational_system(&g, &nu, 1, "gram")
+    let best: Vec<Poly> = blossom::engine::solve_rational_system(&g, &nu, 1, "gram")
         .expect("the Gram matrix is invertible")
         .into_iter()
         .map(|p| p[0].clone())
@@ -147,7 +148,7 @@ pub fn l2_errors(n: usize, y: &[Poly]) -> L2Errors {
         .collect();
     let mut kept = vec![ends[0].clone()];
     kept.extend(
-        blossom::solve_rational_system(&inner, &rhs, 1, "gram")
+        blossom::engine::solve_rational_system(&inner, &rhs, 1, "gram")
             .expect("invertible")
             .into_iter()
             .map(|p| p[0].clone()),

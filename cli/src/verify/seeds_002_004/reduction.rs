@@ -5,7 +5,7 @@
 use super::expr::parse;
 use super::{entry, point, sci, show};
 use crate::verify::report::{Section, Status};
-use blossom::power_to_bernstein;
+use blossom::engine::power_to_bernstein;
 use blossom::{reduce, squared_l2_distance, Reduction};
 use blossom::{BezierCurve, Poly, Rational};
 
@@ -139,11 +139,11 @@ fn reductions_section() -> Section {
             "a control polygon that oscillates less",
             format!(
                 "sum of |second differences|: inverse formula {}, least squares {}, with end points {}",
-                sci(&wiggle(interp.1.control_points()), 4),
-                sci(&wiggle(ls.1.control_points()), 4),
-                sci(&wiggle(lse.1.control_points()), 4)
+                sci(&wiggle(&interp.1.control_points().to_vec()), 4),
+                sci(&wiggle(&ls.1.control_points().to_vec()), 4),
+                sci(&wiggle(&lse.1.control_points().to_vec()), 4)
             ),
-            wiggle(interp.1.control_points()) < wiggle(ls.1.control_points()),
+            wiggle(&interp.1.control_points().to_vec()) < wiggle(&ls.1.control_points().to_vec()),
         ),
     ];
     let mut findings: Vec<String> = all
