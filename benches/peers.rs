@@ -9,6 +9,10 @@
 //!   `kurbo::CubicBez::subsegment` and
 //!   `lyon_geom::CubicBezierSegment::split_range`. Before timing, every answer is checked
 //!   against kurbo's to 1e-12 (relative to the size of the control points).
+//! * `cubics_end_to_end`: 10^5 2-D cubics in plain arrays restricted to one interval and
+//!   written back to plain arrays: through a [`blossom::Batch`] (packing included), by
+//!   [`blossom::RestrictionMap::restrict_arrays`] (the caller's layout), by a loop of the engine
+//!   without allocation, and by a loop of kurbo's `subsegment`.
 //! * `batch`: 10^6 cubic 3-D curves sharing one interval, [`blossom::Batch`], against a
 //!   plain copy of the same bytes (the memory bound), on one thread and, with the `rayon`
 //!   feature, on a pool of 2 threads.
@@ -199,6 +203,62 @@ fn single_cubic(c: &mut Criterion) {
     group.finish();
 }
 
+const CUBICS: usize = 100_000;
+
+/// 10^5 2-D cubics restricted to one [a, b], end to end in the user's layout (arrays in,
+/// arrays out): a `Batch` packed, restricted and read back; `RestrictionMap::restrict_arrays`;
+/// a plain loop of the engine without allocation; kurbo's `subsegment` in a loop.
+fn cubics_end_to_end(c: &mut Criterion) {
+    let mut rng = Rng(99);
+    let input: Vec<[[f64; 2]; 4]> = (0..CUBICS)
+        .map(|_| std::array::from_fn(|_| [100.0 * rng.unit(), 100.0 * rng.unit()]))
+        .collect();
+    let kurbos: Vec<kurbo::CubicBez> = input
+        .iter()
+        .map(|p| {
+            let q = |i: usize| kurbo::Point::new(p[i][0], p[i][1]);
+            kurbo::CubicBez::new(q(0), q(1), q(2), q(3))
+        })
+        .collect();
+    let (a, b) = (0.25, 0.75);
+    let map = RestrictionMap::curve(3, a, b).expect("a finite interval");
+    let mut out = vec![[[0.0; 2]; 4]; CUBICS];
+    let mut group = c.benchmark_group("cubics_end_to_end");
+    group.throughput(Throughput::Elements(CUBICS as u64));
+    group.sample_size(20);
+    group.bench_function("batch_pack_restrict_unpack", |bench| {
+        bench.iter(|| {
+            let batch = Batch::from_arrays(black_box(&input)).expect("fits");
+            let mut restricted = Batch::zeros(4, 2, CUBICS).expect("fits");
+            batch.restrict_into(&map, &mut restricted).expect("fits");
+            restricted.to_arrays::<4, 2>().expect("fits")
+        })
+    });
+    group.bench_function("restrict_arrays", |bench| {
+        bench.iter(|| {
+            map.restrict_arrays(black_box(&input), &mut out)
+                .expect("fits")
+        })
+    });
+    group.bench_function("loop_subsegment_into", |bench| {
+        let mut scratch = Vec::new();
+        bench.iter(|| {
+            for (p, o) in black_box(&input).iter().zip(out.iter_mut()) {
+                blossom::engine::subsegment_into(&p[..], &a, &b, o, &mut scratch).expect("fits");
+            }
+        })
+    });
+    group.bench_function("loop_kurbo_subsegment", |bench| {
+        bench.iter(|| {
+            for (k, o) in black_box(&kurbos).iter().zip(out.iter_mut()) {
+                let q = k.subsegment(a..b);
+                *o = [q.p0, q.p1, q.p2, q.p3].map(|p| [p.x, p.y]);
+            }
+        })
+    });
+    group.finish();
+}
+
 const CURVES: usize = 1_000_000;
 
 fn batch(c: &mut Criterion) {
@@ -251,6 +311,6 @@ criterion_group! {
     config = Criterion::default()
         .warm_up_time(Duration::from_secs(1))
         .measurement_time(Duration::from_secs(3));
-    targets = single_cubic, batch
+    targets = single_cubic, cubics_end_to_end, batch
 }
 criterion_main!(benches);

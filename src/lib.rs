@@ -27,7 +27,7 @@
 //! The modules are private; everything public is re-exported below, one path per item. Each
 //! layer imports only the layers above it in this list:
 //!
-//! 1. **numbers** (`num/`): [`Ring`], [`Field`], [`Rational`], [`Poly`], [`binomial`];
+//! 1. **numbers** (`num/`): [`Ring`], [`Field`], [`Rational`], [`Poly`], [`engine::binomial`];
 //! 2. **shapes** (`shape/`): [`PowerCurve`], [`PowerSurface`], [`BezierCurve`], [`TensorPatch`],
 //!    [`TriangularPatch`], their evaluation (Horner, de Casteljau) and the changes of basis;
 //! 3. **restriction** (`restrict/`): one file per algorithm, the dispatch on [`Method`];
@@ -236,3 +236,8 @@ pub use interop::points::ForeignPoint;
 #[doc = include_str!("../README.md")]
 #[cfg(doctest)]
 pub struct ReadmeDoctests;
+
+/// The guide's examples (`docs/guide.md`), compiled and run as doc tests.
+#[doc = include_str!("../docs/guide.md")]
+#[cfg(doctest)]
+pub struct GuideDoctests;

@@ -43,7 +43,7 @@ pub fn curve_error(
     method: Method,
 ) -> f64 {
     let exact = restrict_power_curve(curve, a, b, Method::Bulk);
-    let fc = PowerCurve::new(curve.coefficients().iter().map(|p| to_f64(p)).collect())
+    let fc = PowerCurve::new(curve.coefficients().iter().map(to_f64).collect())
         .expect("same shape as the exact curve");
     let float = restrict_power_curve(&fc, &rational_to_f64(a), &rational_to_f64(b), method);
     error_of(

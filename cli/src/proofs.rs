@@ -336,8 +336,8 @@ pub const BEZIER_INPUT: &str = "halving engine on Bézier input";
 /// The restriction engine on *Bézier* input, against the definition on the power input: the
 /// symbolic power form is written in the Bernstein basis over the reference domain
 /// ([`power_to_bernstein`], [`triangle_power_to_bernstein`], exact changes of basis that the
-/// engine never calls), then restricted by [`restrict_bezier_curve`],
-/// [`restrict_bezier_tensor`] and [`restrict_bezier_triangle_affine`], whose de Casteljau
+/// engine never calls), then restricted by [`BezierCurve::subsegment`],
+/// [`TensorPatch::restrict`] and [`TriangularPatch::restrict`], whose de Casteljau
 /// steps never leave the Bernstein basis. Same grid as [`proof_grid`].
 pub fn prove_bezier_input(
     max_curve: usize,
@@ -348,7 +348,7 @@ pub fn prove_bezier_input(
     for n in 0..=max_curve {
         rows.push(
             curve_reference(n).candidate_proof(BEZIER_INPUT, &|(curve, [a, b])| {
-                let bezier = BezierCurve::new(power_to_bernstein(curve.coefficients()))
+                let bezier = BezierCurve::new(power_to_bernstein(&curve.coefficients().to_vec()))
                     .expect("n + 1 points");
                 bezier.subsegment(a.clone()..b.clone())
             }),

@@ -338,7 +338,7 @@ pub fn restrict_curve_specialised<T: Carried>(
     a: &T,
     b: &T,
 ) -> Option<BezierCurve<T>> {
-    run_curve(curve.coefficients(), a, b, &|c, a, b| {
+    run_curve(&curve.coefficients().to_vec(), a, b, &|c, a, b| {
         grid::curve_proved(c, a, b).or_else(|| grid::curve_more(c, a, b))
     })
 }

@@ -139,6 +139,78 @@ impl RestrictionMap {
         check_entries(len, field, "the scratch of the restriction engine")
     }
 
+    /// Restricts objects kept in the caller's own layout, plain arrays of `K` points of `D`
+    /// coordinates (a curve's polygon, a tensor net row by row, a triangular net in its order),
+    /// writing the answers to `output` in the same layout: no [`Batch`] to build or read back.
+    ///
+    /// The objects are packed [`BATCH_LANES`] at a time into one block buffer (which stays in
+    /// the cache), the engine runs on the block as in [`Batch::restrict_into`], and the answers
+    /// are unpacked; every object gets the answer of the engine run on it alone, bit for bit.
+    /// Three allocations per call (the two block buffers and the engine's scratch), none per
+    /// object.
+    ///
+    /// ```
+    /// use blossom::{Bezier, RestrictionMap};
+    /// let curves = vec![[[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 0.0]]; 1000];
+    /// let mut halves = vec![[[0.0; 2]; 4]; 1000];
+    /// RestrictionMap::curve(3, 0.0, 0.5)?.restrict_arrays(&curves, &mut halves)?;
+    /// let alone = Bezier::new(curves[7].to_vec())?.subsegment(0.0..0.5);
+    /// assert_eq!(&halves[7][..], alone.points());
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// `input` when its objects do not have the map's number of points (`K`), `output` when it
+    /// holds another number of objects, `map` when the engine's scratch for a block of this
+    /// dimension exceeds [`MAX_ENTRIES`](crate::MAX_ENTRIES).
+    pub fn restrict_arrays<const K: usize, const D: usize>(
+        &self,
+        input: &[[[f64; D]; K]],
+        output: &mut [[[f64; D]; K]],
+    ) -> Result<()> {
+        if K != self.inputs || K != self.outputs {
+            return Err(Error::of(
+                ErrorKind::Shape,
+                "input",
+                format!(
+                    "the map takes objects of {} control points, found {K}",
+                    self.inputs
+                ),
+            ));
+        }
+        if output.len() != input.len() {
+            return Err(Error::of(
+                ErrorKind::Shape,
+                "output",
+                format!("expected {} objects, found {}", input.len(), output.len()),
+            ));
+        }
+        self.check_scratch(D, "map")?;
+        if input.is_empty() || D == 0 || K == 0 {
+            return Ok(());
+        }
+        let block = K * D * BATCH_LANES;
+        let (mut packed, mut restricted) = (vec![0.0; block], vec![0.0; block]);
+        let mut scratch = Vec::new();
+        for (objects, answers) in input
+            .chunks(BATCH_LANES)
+            .zip(output.chunks_mut(BATCH_LANES))
+        {
+            for (lane, object) in objects.iter().enumerate() {
+                for (i, &x) in object.as_flattened().iter().enumerate() {
+                    packed[i * BATCH_LANES + lane] = x;
+                }
+            }
+            self.apply_block(D, &packed, &mut restricted, &mut scratch);
+            for (lane, answer) in answers.iter_mut().enumerate() {
+                for (i, x) in answer.as_flattened_mut().iter_mut().enumerate() {
+                    *x = restricted[i * BATCH_LANES + lane];
+                }
+            }
+        }
+        Ok(())
+    }
+
     /// Control points per object taken in.
     pub fn inputs(&self) -> usize {
         self.inputs

@@ -151,7 +151,7 @@ macro_rules! float_ring {
 
 float_ring!(
     /// Doubles: every operation rounded once (`scale` multiplies by the constant rounded to
-    /// the nearest double). The README's "Accuracy of f64" and `docs/error_bounds.md` give
+    /// the nearest double). `docs/accuracy.md` and `docs/error_bounds.md` give
     /// the measured errors of every method.
     f64
 );

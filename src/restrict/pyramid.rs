@@ -64,7 +64,7 @@ fn local_ends<T: Ring>(degree: usize) -> [T; 2] {
 pub fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCurve<T> {
     let n = curve.degree();
     let [ra, rb] = reference_interval(a, b, n);
-    let control = bernstein_by_horner(curve.coefficients(), &ra, &rb);
+    let control = bernstein_by_horner(&curve.coefficients().to_vec(), &ra, &rb);
     let [ta, tb] = local_ends::<T>(n);
     let points = (0..=n)
         .map(|v| curve_blossom_unchecked(&control, &repeated(&tb, v, &ta, n - v)))

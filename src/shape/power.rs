@@ -2,61 +2,71 @@
 //! paper: C(u) = sum_i c_i u^i and S(u, v) = sum_ij c_ij u^i v^j, with points of any dimension.
 
 use crate::error::{Error, ErrorKind, Result};
-use crate::shape::point::{self, Point};
+use crate::shape::point::{self, Point, Points};
 use crate::Ring;
 
 pub(crate) use crate::shape::point::check_dims;
 
-/// A polynomial curve C(u) = sum_{i=0..n} c_i u^i of degree `n` (the paper's problem (1)).
+/// A polynomial curve C(u) = sum_{i=0..n} c_i u^i of degree `n` (the paper's problem (1)), its
+/// coefficients in one buffer (`D` coordinates each, c_0 first).
 ///
 /// The degree is the number of coefficients minus one, even when the leading ones are zero:
 /// the paper's convention, under which the Bézier form of degree `n` is asked for.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PowerCurve<T> {
-    coefficients: Vec<Point<T>>,
+    dim: usize,
+    coords: Vec<T>,
 }
 
 impl<T: Ring> PowerCurve<T> {
-    /// A curve from its coefficients `c_0, ..., c_n`, all of one dimension `D >= 1`.
+    /// A curve from its coefficients `c_0, ..., c_n`, all of one dimension `D >= 1` (copied
+    /// once into the curve's buffer).
+    ///
+    /// # Errors
+    /// `coefficients` when it is empty, `coefficients[i]` when coefficient i has no coordinate
+    /// or another dimension than the first.
     pub fn new(coefficients: Vec<Point<T>>) -> Result<Self> {
-        let Some(first) = coefficients.first() else {
-            return Err(Error::of(
-                ErrorKind::Empty,
-                "coefficients",
-                "expected at least one coefficient",
-            ));
-        };
-        let dim = first.len();
-        if dim == 0 {
-            return Err(Error::of(
-                ErrorKind::Dimension,
-                "coefficients[0]",
-                "expected at least 1 coordinate",
-            ));
-        }
-        check_dims(&coefficients, dim, "coefficients")?;
-        Ok(PowerCurve { coefficients })
+        let (dim, coords) = point::flatten_points(&coefficients, "coefficients")?;
+        Ok(PowerCurve { dim, coords })
+    }
+
+    /// A curve from the coordinates of its coefficients, c_0 first, `dim` each.
+    ///
+    /// # Errors
+    /// `dim` when it is 0, `coordinates` when it is empty or not a whole number of points.
+    pub fn from_coordinates(dim: usize, coordinates: Vec<T>) -> Result<Self> {
+        point::check_flat(&coordinates, dim, "coordinates")?;
+        Ok(PowerCurve {
+            dim,
+            coords: coordinates,
+        })
     }
 
     /// The degree `n`.
     pub fn degree(&self) -> usize {
-        self.coefficients.len() - 1
+        self.coords.len() / self.dim - 1
     }
 
     /// The dimension `D` of the points.
     pub fn dim(&self) -> usize {
-        self.coefficients[0].len()
+        self.dim
     }
 
-    /// The coefficients `c_0, ..., c_n`.
-    pub fn coefficients(&self) -> &[Point<T>] {
-        &self.coefficients
+    /// The coefficients `c_0, ..., c_n`, each a `&[T]`.
+    pub fn coefficients(&self) -> Points<'_, T> {
+        Points::new(&self.coords, self.dim)
+    }
+
+    /// Every coordinate, c_0 first.
+    pub fn coordinates(&self) -> &[T] {
+        &self.coords
     }
 
     /// C(u) by Horner's rule.
     pub fn eval(&self, u: &T) -> Point<T> {
-        let mut acc = self.coefficients[self.degree()].clone();
-        for c in self.coefficients.iter().rev().skip(1) {
+        let mut points = self.coords.chunks_exact(self.dim).rev();
+        let mut acc = points.next().expect("at least one coefficient").to_vec();
+        for c in points {
             for (x, ci) in acc.iter_mut().zip(c) {
                 *x = x.mul(u).add(ci);
             }

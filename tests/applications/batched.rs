@@ -204,3 +204,53 @@ fn shapes_that_do_not_fit_are_errors() {
     assert_eq!(Batch::from_curves(&curves).unwrap_err().field, "curves[1]");
     assert_eq!(Batch::from_curves(&[]).unwrap_err().field, "curves");
 }
+
+/// Objects in the caller's own layout (`RestrictionMap::restrict_arrays`): each answer is bit
+/// for bit the engine's on the object alone (`Bezier::subsegment`, `BezierTriangle::restrict`,
+/// which pack nothing), across a partial last block, in 2-D and 3-D.
+#[test]
+fn arrays_in_the_callers_layout_equal_each_object_alone() {
+    let mut rng = Rng(77);
+    let count = LANES + 37;
+    let curves: Vec<[[f64; 2]; 4]> = (0..count)
+        .map(|_| std::array::from_fn(|_| [unit(&mut rng), unit(&mut rng)]))
+        .collect();
+    let (a, b) = (-0.3, 0.8);
+    let mut out = vec![[[f64::NAN; 2]; 4]; count];
+    RestrictionMap::curve(3, a, b)
+        .unwrap()
+        .restrict_arrays(&curves, &mut out)
+        .unwrap();
+    for (curve, answer) in curves.iter().zip(&out) {
+        let alone = Bezier::new(curve.to_vec()).unwrap().subsegment(a..b);
+        assert_eq!(&answer[..], alone.points());
+    }
+    let corners = [[0.1, 0.2], [0.7, 0.1], [0.3, 0.6]];
+    let triangles: Vec<[[f64; 3]; 6]> = (0..count)
+        .map(|_| std::array::from_fn(|_| std::array::from_fn(|_| unit(&mut rng))))
+        .collect();
+    let mut out = vec![[[0.0; 3]; 6]; count];
+    RestrictionMap::triangle(2, corners)
+        .unwrap()
+        .restrict_arrays(&triangles, &mut out)
+        .unwrap();
+    for (t, answer) in triangles.iter().zip(&out) {
+        let alone = blossom::BezierTriangle::new(2, t.to_vec())
+            .unwrap()
+            .restrict(&corners);
+        assert_eq!(&answer[..], alone.points());
+    }
+}
+
+#[test]
+fn arrays_that_do_not_fit_the_map_are_errors() {
+    let map = RestrictionMap::curve(3, 0.0, 1.0).unwrap();
+    let quads = vec![[[0.0; 2]; 3]; 4];
+    let err = map.restrict_arrays(&quads, &mut quads.clone()).unwrap_err();
+    assert_eq!(err.field, "input");
+    let cubics = vec![[[0.0; 2]; 4]; 4];
+    let err = map
+        .restrict_arrays(&cubics, &mut [[[0.0; 2]; 4]; 3])
+        .unwrap_err();
+    assert_eq!(err.field, "output");
+}

@@ -80,7 +80,7 @@ fn intervals(rng: &mut Rng) -> Vec<(&'static str, f32, f32)> {
 
 /// The worst relative errors of f32 restriction of random 3-D curves of degrees 3, 8, 16:
 /// power input by `Method::Bulk` and `Method::Pyramid`, Bézier input by the engine
-/// (`restrict_bezier_curve`).
+/// (`BezierCurve::subsegment`).
 fn measure() -> Vec<Row> {
     let mut rows: Vec<Row> = Vec::new();
     let mut record = |input, method, degree, interval, (error, error_f64): (f64, f64)| match rows

@@ -141,7 +141,7 @@ fn theorem_2_2_example_pieces() {
                     ("interval", show(&p.interval)),
                     (
                         "power_coefficients",
-                        Json::array(p.curve.coefficients().iter().map(|c| show(c)))
+                        Json::array(p.curve.coefficients().iter().map(show))
                     ),
                     (
                         "bezier_points",

@@ -173,9 +173,11 @@ fn a_tensor_point_past_its_row_is_not_the_next_row() {
 
 /// `Ring::UNROLLED`: in `f64` (and `f32`) `Bezier::subsegment` runs the unrolled evaluators of
 /// degrees 1..=24, the other rings the engine; the unrolled code takes the engine's steps in the
-/// engine's order, so in floating point it must agree with the runtime-dimension engine
-/// (`restrict_bezier_curve`, which never dispatches to it) to the last bit, inside [0, 1] and
-/// extrapolating. (The exact tests above run the engine since the rationals do not unroll.)
+/// engine's order, so in floating point it must agree with the engine run with a runtime width
+/// (`blossom::engine::curve_net` with `dim: usize`, which never dispatches to it) to the last
+/// bit, inside [0, 1] and extrapolating. (The exact tests above run the engine since the
+/// rationals do not unroll.) `BezierCurve::subsegment` dispatches to the same unrolled code for
+/// dimensions 1..=4, so it is checked against the engine too.
 #[test]
 fn unrolled_f64_path_equals_the_engine_bit_for_bit() {
     fn check<const D: usize>(rng: &mut Rng, n: usize) {
@@ -185,8 +187,22 @@ fn unrolled_f64_path_equals_the_engine_bit_for_bit() {
         let runtime = BezierCurve::new(points.iter().map(|p| p.to_vec()).collect()).unwrap();
         for (a, b) in [(0.25, 0.75), (rng.unit(), rng.unit()), (-1.5, 2.25)] {
             let unrolled = Bezier::new(points.clone()).unwrap().subsegment(a..b);
-            let engine = runtime.subsegment(a..b);
-            for (u, e) in unrolled.points().iter().zip(engine.control_points()) {
+            let mut engine = vec![0.0; (n + 1) * D];
+            blossom::engine::curve_net(
+                runtime.coordinates(),
+                D,
+                &blossom::engine::BernsteinStep(&a),
+                &blossom::engine::BernsteinStep(&b),
+                &mut engine,
+                &mut Vec::new(),
+            );
+            let flat_front = runtime.subsegment(a..b);
+            assert_eq!(
+                flat_front.coordinates(),
+                &engine[..],
+                "BezierCurve, degree {n}"
+            );
+            for (u, e) in unrolled.points().iter().zip(engine.chunks(D)) {
                 let (u, e): (Vec<u64>, Vec<u64>) = (
                     u.iter().map(|x| x.to_bits()).collect(),
                     e.iter().map(|x| x.to_bits()).collect(),

@@ -1,4 +1,4 @@
-//! Restriction of Bézier input (`blossom::restrict_bezier_curve`, `_tensor`, `_triangle`),
+//! Restriction of Bézier input (`BezierCurve::subsegment`, `TensorPatch::restrict`, `TriangularPatch::restrict`),
 //! through the power basis and the bulk restriction, checked against de Casteljau's pyramid on
 //! the blossom, which never leaves the Bernstein basis: exactly on random rational nets,
 //! symbolically (every control point and the domain are variables), and in f64 with a measured

@@ -1,6 +1,6 @@
 //! The exact error of the peers' `f64` subdivision next to blossom's: kurbo's
 //! `CubicBez::subsegment`, lyon's `CubicBezierSegment::split_range`, blossom's
-//! `restrict_bezier_curve` (runtime dimension) and `subsegment_into` (arrays, the unrolled
+//! `BezierCurve::subsegment` (runtime dimension) and `subsegment_into` (arrays, the unrolled
 //! engine), each on the same random cubics and sub-intervals t0 < t1 of [0, 1], all measured by
 //! [`blossom::check_bezier_restriction`] against the exact restriction of the same doubles.
 //!

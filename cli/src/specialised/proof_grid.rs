@@ -169,9 +169,10 @@ pub fn prove_triangle(n: usize, m: usize) -> ProofRow {
 /// definition (2) of that curve and the inverse formula (22) applied to points of the curve.
 pub fn prove_bezier_curve(n: usize) -> ProofRow {
     let power = symbolic_curve(n);
-    let curve =
-        blossom::BezierCurve::new(blossom::engine::power_to_bernstein(power.coefficients()))
-            .expect("a non-empty polygon");
+    let curve = blossom::BezierCurve::new(blossom::engine::power_to_bernstein(
+        &power.coefficients().to_vec(),
+    ))
+    .expect("a non-empty polygon");
     let (a, b) = (Poly::var("a"), Poly::var("b"));
     let w = restrict_bezier_curve_specialised(&curve, &a, &b).expect("a carried degree");
     ProofRow {

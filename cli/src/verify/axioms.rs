@@ -281,7 +281,8 @@ fn curve_restrictions() -> Vec<CurveRestriction<'static>> {
     out.push((
         "halving engine on Bézier input",
         Box::new(|c, a, b| {
-            let net = BezierCurve::new(power_to_bernstein(c.coefficients())).expect("a net");
+            let net =
+                BezierCurve::new(power_to_bernstein(&c.coefficients().to_vec())).expect("a net");
             net.subsegment(a.clone()..b.clone())
         }),
     ));
@@ -300,7 +301,7 @@ pub fn curve_rows(n: usize) -> Vec<AxiomRow> {
     let c = symbolic_curve(n);
     let diagonal = |p: &[Vec<Poly>]| c.eval(&p[0][0]);
     let scalars = |args: &[Vec<Poly>]| args.iter().map(|x| x[0].clone()).collect::<Vec<_>>();
-    let net = power_to_bernstein(c.coefficients());
+    let net = power_to_bernstein(&c.coefficients().to_vec());
     let blossoms: Vec<(&str, Boxed)> = vec![
         (
             "definition (2)",

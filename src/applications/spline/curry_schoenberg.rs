@@ -102,7 +102,7 @@ fn normalise<T: Field>(p: usize, pieces: &[Piece<T>]) -> Result<Vec<PowerCurve<T
                 format!("the piece has degree above p = {p}"),
             ));
         }
-        let mut padded: Vec<Point<T>> = c.iter().take(p + 1).cloned().collect();
+        let mut padded: Vec<Point<T>> = c.iter().take(p + 1).map(<[T]>::to_vec).collect();
         padded.resize(p + 1, crate::shape::point::zero(dim));
         out.push(PowerCurve::new(padded)?);
     }

@@ -601,7 +601,7 @@ fn ejemplo_2() -> Section {
         ),
         end != d[3] && end == piece.eval(&hi),
     ));
-    let coefficients: Vec<String> = piece.coefficients().iter().map(|c| show(c)).collect();
+    let coefficients: Vec<String> = piece.coefficients().iter().map(show).collect();
     Section::from_entries(
         "Ejemplo 2: the cubic B-spline on T = (0, 1, .., 7), computed",
         format!("{SOURCE}, section 1, Ejemplo 2 (figura 2)"),
