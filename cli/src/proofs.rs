@@ -305,7 +305,7 @@ pub fn bernstein_tensor<T: Ring>(surface: &PowerSurface<T>) -> TensorPatch<T> {
     let rows: Vec<Vec<Vec<T>>> = surface
         .coefficients()
         .iter()
-        .map(|r| power_to_bernstein(r))
+        .map(|r| power_to_bernstein(&r.to_vec()))
         .collect();
     let long: Vec<Vec<T>> = rows.iter().map(|r| r.concat()).collect();
     let net = power_to_bernstein(&long)
@@ -324,7 +324,7 @@ pub fn bernstein_triangle<T: Ring>(surface: &PowerSurface<T>) -> TriangularPatch
     let mut d = vec![vec![T::zero(); surface.dim()]; triangle_len(big_n)];
     for (i, row) in surface.coefficients().iter().enumerate() {
         for (j, c) in row.iter().enumerate() {
-            d[triangle_index(big_n, i, j)] = c.clone();
+            d[triangle_index(big_n, i, j)] = c.to_vec();
         }
     }
     triangle_power_to_bernstein(big_n, &d).expect("a full net of the surface's dimension")

@@ -400,7 +400,7 @@ through_constructor!(
 through_constructor!(
     RationalSurface<T: Ring>,
     |s| {
-        let (numerator, denominator) = split_rows(s.homogeneous().coefficients());
+        let (numerator, denominator) = split_rows(&s.homogeneous().to_nested());
         Quotient { numerator, denominator }
     },
     |doc: Quotient<Vec<Vec<Point<T>>>, Vec<Vec<T>>>| {

@@ -82,7 +82,7 @@ pub fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> Ten
     let [rc, rd] = reference_interval(c, d, m);
     // Along u with whole rows as points, then along v row by row.
     let rows = unflatten(
-        bernstein_by_horner(&flatten(surface.coefficients()), &ra, &rb),
+        bernstein_by_horner(&flatten(&surface.to_nested()), &ra, &rb),
         surface.dim(),
     );
     let net: Vec<Vec<_>> = rows

@@ -47,10 +47,7 @@ pub(crate) fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4])
     let [a, b, c, d] = rect;
     let dim = surface.dim();
     // Along u with whole rows as points, then along v row by row.
-    let rows = unflatten(
-        bulk_curve_points(flatten(surface.coefficients()), a, b),
-        dim,
-    );
+    let rows = unflatten(bulk_curve_points(flatten(&surface.to_nested()), a, b), dim);
     let net = rows
         .into_iter()
         .map(|row| bulk_curve_points(row, c, d))

@@ -75,12 +75,22 @@ impl<T: Ring> PowerCurve<T> {
     }
 }
 
-/// sum_i u^i sum_j v^j rows[i][j] (rows of any lengths) by nested Horner's rule.
-pub(crate) fn nested_horner<T: Ring>(rows: &[Vec<Point<T>>], dim: usize, u: &T, v: &T) -> Point<T> {
+/// sum_i u^i sum_j v^j rows[i][j] (rows of any lengths) by nested Horner's rule; `rows`
+/// yields the rows in order, each yielding its points as `&[T]`.
+pub(crate) fn nested_horner<'a, T: Ring + 'a, R>(
+    rows: impl DoubleEndedIterator<Item = R>,
+    dim: usize,
+    u: &T,
+    v: &T,
+) -> Point<T>
+where
+    R: DoubleEndedIterator<Item = &'a [T]>,
+{
     let mut acc: Point<T> = point::zero(dim);
-    for row in rows.iter().rev() {
-        let mut inner: Point<T> = point::zero(dim);
-        for c in row.iter().rev() {
+    let mut inner: Point<T> = point::zero(dim);
+    for row in rows.rev() {
+        inner.iter_mut().for_each(|x| *x = T::zero());
+        for c in row.rev() {
             for (x, cj) in inner.iter_mut().zip(c) {
                 *x = x.mul(v).add(cj);
             }
@@ -93,10 +103,13 @@ pub(crate) fn nested_horner<T: Ring>(rows: &[Vec<Point<T>>], dim: usize, u: &T, 
 }
 
 /// A polynomial surface S(u, v) = sum_{i=0..n} sum_{j=0..m} c_ij u^i v^j of bidegree (n, m)
-/// (the paper's problems (2) and (3); as a triangular patch its total degree is N = n + m).
+/// (the paper's problems (2) and (3); as a triangular patch its total degree is N = n + m), its
+/// coefficients in one buffer, row by row (c_ij at position i (m + 1) + j).
 #[derive(Clone, Debug, PartialEq)]
 pub struct PowerSurface<T> {
-    coefficients: Vec<Vec<Point<T>>>,
+    cols: usize,
+    dim: usize,
+    coords: Vec<T>,
 }
 
 impl<T: Ring> PowerSurface<T> {
@@ -139,27 +152,59 @@ impl<T: Ring> PowerSurface<T> {
             }
             check_dims(row, dim, &format!("coefficients[{i}]"))?;
         }
-        Ok(PowerSurface { coefficients })
+        let coords = coefficients.iter().flatten().flatten().cloned().collect();
+        Ok(PowerSurface { cols, dim, coords })
     }
 
     /// The bidegree `(n, m)`.
     pub fn degree(&self) -> (usize, usize) {
-        (self.coefficients.len() - 1, self.coefficients[0].len() - 1)
+        (
+            self.coords.len() / (self.cols * self.dim) - 1,
+            self.cols - 1,
+        )
     }
 
     /// The dimension `D` of the points.
     pub fn dim(&self) -> usize {
-        self.coefficients[0][0].len()
+        self.dim
     }
 
-    /// The coefficient grid, `[i][j]` = `c_ij`.
-    pub fn coefficients(&self) -> &[Vec<Point<T>>] {
-        &self.coefficients
+    /// The coefficient grid by rows: `coefficients()[i][j]` is `c_ij` (a `&[T]`).
+    pub fn coefficients(&self) -> Vec<Points<'_, T>> {
+        self.coords
+            .chunks_exact(self.cols * self.dim)
+            .map(|row| Points::new(row, self.dim))
+            .collect()
+    }
+
+    /// The coefficient `c_ij`.
+    ///
+    /// # Panics
+    /// When i > n or j > m.
+    pub fn get(&self, i: usize, j: usize) -> &[T] {
+        let (n, m) = self.degree();
+        assert!(
+            i <= n && j <= m,
+            "coefficient ({i}, {j}) of bidegree ({n}, {m})"
+        );
+        let start = (i * self.cols + j) * self.dim;
+        &self.coords[start..start + self.dim]
+    }
+
+    /// Every coordinate, row by row, coefficient after coefficient.
+    pub fn coordinates(&self) -> &[T] {
+        &self.coords
+    }
+
+    /// The coefficient grid as nested vectors, `[i][j]` = `c_ij`.
+    pub fn to_nested(&self) -> Vec<Vec<Point<T>>> {
+        self.coefficients().iter().map(Points::to_vec).collect()
     }
 
     /// S(u, v) by nested Horner's rule.
     pub fn eval(&self, u: &T, v: &T) -> Point<T> {
-        nested_horner(&self.coefficients, self.dim(), u, v)
+        let rows = self.coords.chunks_exact(self.cols * self.dim);
+        nested_horner(rows.map(|r| r.chunks_exact(self.dim)), self.dim, u, v)
     }
 }
 

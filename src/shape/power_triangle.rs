@@ -80,7 +80,7 @@ impl<T: Ring> PowerTriangle<T> {
         let (n, m) = surface.degree();
         PowerTriangle {
             degree: n + m,
-            rows: surface.coefficients().to_vec(),
+            rows: surface.to_nested(),
         }
     }
 
@@ -159,7 +159,8 @@ impl<T: Ring> PowerTriangle<T> {
 
     /// S(u, v) by nested Horner's rule.
     pub fn eval(&self, u: &T, v: &T) -> Point<T> {
-        nested_horner(&self.rows, self.dim(), u, v)
+        let rows = self.rows.iter().map(|r| r.iter().map(Vec::as_slice));
+        nested_horner(rows, self.dim(), u, v)
     }
 }
 

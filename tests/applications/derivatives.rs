@@ -182,7 +182,7 @@ fn tensor_derivatives_match_power_differentiation() {
                 assert_eq!(got, want, "Bézier ({n}, {m}) order ({k}, {l})");
 
                 let d =
-                    PowerSurface::new(differentiate_grid(surface.coefficients(), [k, l])).unwrap();
+                    PowerSurface::new(differentiate_grid(&surface.to_nested(), [k, l])).unwrap();
                 let want = restrict_power_surface(&d, &rect, method);
                 let got = power_tensor_derivative(&surface, [k, l], &rect).unwrap();
                 assert_eq!(got, want, "power ({n}, {m}) order ({k}, {l})");
@@ -270,7 +270,7 @@ fn power_triangle_derivatives_match_power_differentiation() {
                 let weight = (0..k).fold(q(1, 1), |acc, i| {
                     acc * &directions[i][if mask >> i & 1 == 1 { 0 } else { 1 }]
                 });
-                let d = differentiate_grid(surface.coefficients(), [a, k - a]);
+                let d = differentiate_grid(&surface.to_nested(), [a, k - a]);
                 let term = restrict_power_surface_to_triangle(
                     &PowerSurface::new(d).unwrap(),
                     &tri,

@@ -123,13 +123,13 @@ fn random_case_from(
     // The global polynomial, sometimes of a lower bidegree.
     let low = |d: usize, r: u64| if d > 0 && r % 3 == 0 { d - 1 } else { d };
     let (bp, bq) = (low(p, rng.next()), low(qd, rng.next()));
-    let base = padded(rng.surface(bp, bq, dim).coefficients(), p, qd, dim);
+    let base = padded(&rng.surface(bp, bq, dim).to_nested(), p, qd, dim);
     let mut u_cont = vec![p as isize; nu.saturating_sub(1)];
     let mut v_cont = vec![qd as isize; nv.saturating_sub(1)];
     let mut grids = Vec::new();
     for i in 0..nu {
         for j in 0..nv {
-            let mut c: Grid = base.coefficients().to_vec();
+            let mut c: Grid = base.to_nested();
             if perturb && (i + j) % 2 == 0 && rng.next() % 3 != 0 {
                 let a = (rng.next() % (p as u64 + 1)) as usize;
                 let b = (rng.next() % ((p - a) as u64 + 1)) as usize;
@@ -276,7 +276,7 @@ impl Case {
                 k += 1;
                 assert_eq!(cell.rect, rect, "{label}");
                 let piece = self.piece_at(&rect[0], &rect[2]);
-                let src = padded(piece.surface.coefficients(), self.p, self.qd, self.dim);
+                let src = padded(&piece.surface.to_nested(), self.p, self.qd, self.dim);
                 let want = restrict_power_surface(&src, &rect, Method::ClosedForm);
                 assert_eq!(cell.patch, want, "{label} cell {rect:?}");
             }
@@ -621,8 +621,8 @@ fn rational_case(
         .collect();
     let mut rational = Vec::new();
     for piece in case.pieces.iter_mut() {
-        let num = padded(piece.surface.coefficients(), deg.0, deg.1, 2);
-        let r = RationalSurface::new(num.coefficients(), &den).unwrap();
+        let num = padded(&piece.surface.to_nested(), deg.0, deg.1, 2);
+        let r = RationalSurface::new(&num.to_nested(), &den).unwrap();
         piece.surface = r.homogeneous().clone();
         rational.push(r);
     }

@@ -246,7 +246,7 @@ pub fn prove_bezier_tensor(n: usize, m: usize) -> ProofRow {
     let rows: Vec<Vec<Vec<Poly>>> = s
         .coefficients()
         .iter()
-        .map(|row| blossom::engine::power_to_bernstein(row))
+        .map(|row| blossom::engine::power_to_bernstein(&row.to_vec()))
         .collect();
     let columns: Vec<Vec<Vec<Poly>>> = (0..=m)
         .map(|j| {

@@ -111,7 +111,7 @@ fn normalise<T: Field>(
                     .map(|j| {
                         c.get(i)
                             .and_then(|row| row.get(j))
-                            .cloned()
+                            .map(<[T]>::to_vec)
                             .unwrap_or_else(|| crate::shape::point::zero(dim))
                     })
                     .collect()
