@@ -11,7 +11,7 @@ use blossom::{rational_to_f64, restrict_power_curve, Method, PowerCurve, Rationa
 
 /// The curve of degree `n` in any number type.
 fn curve<T: Ring>(n: usize) -> PowerCurve<T> {
-    let sign = |i: usize| if i % 2 == 0 { 1 } else { -1 };
+    let sign = |i: usize| if i.is_multiple_of(2) { 1 } else { -1 };
     let c = (0..=n)
         .map(|i| {
             let y = Rational::new(sign(i).into(), (i as i64 + 1).into());

@@ -56,7 +56,7 @@ fn surface_to_f64(s: &PowerSurface<Rational>) -> PowerSurface<f64> {
     PowerSurface::new(
         s.coefficients()
             .iter()
-            .map(|row| row.iter().map(|p| to_f64(p)).collect())
+            .map(|row| row.iter().map(to_f64).collect())
             .collect(),
     )
     .expect("same shape as the exact surface")

@@ -196,15 +196,18 @@ impl RestrictionMap {
             .chunks(BATCH_LANES)
             .zip(output.chunks_mut(BATCH_LANES))
         {
-            for (lane, object) in objects.iter().enumerate() {
-                for (i, &x) in object.as_flattened().iter().enumerate() {
-                    packed[i * BATCH_LANES + lane] = x;
+            // One coordinate of every object at a time: the writes (reads) of the block run
+            // along one contiguous row of `BATCH_LANES` numbers, the object side moves by one
+            // object (one cache line for a 2-D cubic) per step.
+            for (i, row) in packed.chunks_exact_mut(BATCH_LANES).enumerate() {
+                for (x, object) in row.iter_mut().zip(objects) {
+                    *x = object.as_flattened()[i];
                 }
             }
             self.apply_block(D, &packed, &mut restricted, &mut scratch);
-            for (lane, answer) in answers.iter_mut().enumerate() {
-                for (i, x) in answer.as_flattened_mut().iter_mut().enumerate() {
-                    *x = restricted[i * BATCH_LANES + lane];
+            for (i, row) in restricted.chunks_exact(BATCH_LANES).enumerate() {
+                for (&x, answer) in row.iter().zip(answers.iter_mut()) {
+                    answer.as_flattened_mut()[i] = x;
                 }
             }
         }

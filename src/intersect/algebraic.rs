@@ -158,7 +158,7 @@ impl AlgebraicReal {
                 return;
             }
             let done = self.width() < bound;
-            if done || step % 8 == 0 {
+            if done || step.is_multiple_of(8) {
                 let c = simplest_between(&self.lo, &self.hi);
                 if sign_at(&self.poly, &c) == Ordering::Equal {
                     *self = Self::from_rational(c);

@@ -389,7 +389,7 @@ fn rational_roots_of(x: &Rational, d: usize) -> Vec<Rational> {
         return Vec::new();
     };
     let r = Rational::new(rn, rd);
-    if d % 2 == 0 {
+    if d.is_multiple_of(2) {
         if x.is_negative() {
             Vec::new()
         } else {

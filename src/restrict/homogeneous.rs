@@ -79,7 +79,7 @@ pub fn multilinear_polar_form<T: Ring>(
                 point::add_assign(&mut sum, x);
             }
         }
-        let sign = if (n - size) % 2 == 0 { 1 } else { -1 };
+        let sign = if (n - size).is_multiple_of(2) { 1 } else { -1 };
         let weight = Rational::new(BigInt::from(sign), factorial.clone());
         let value = q(&sum);
         match acc.as_mut() {

@@ -139,7 +139,7 @@ impl<T: Ring> BezierCurve<T> {
     /// The curve with `coords` as they are (`dim >= 1`, a whole number of at least one point:
     /// the caller's guarantee).
     pub(crate) fn from_raw(dim: usize, coords: Vec<T>) -> Self {
-        debug_assert!(dim >= 1 && !coords.is_empty() && coords.len() % dim == 0);
+        debug_assert!(dim >= 1 && !coords.is_empty() && coords.len().is_multiple_of(dim));
         BezierCurve { dim, coords }
     }
 
@@ -344,7 +344,7 @@ impl<T: Ring> TensorPatch<T> {
     /// caller's guarantee).
     pub(crate) fn from_raw(cols: usize, dim: usize, coords: Vec<T>) -> Self {
         debug_assert!(cols >= 1 && dim >= 1 && !coords.is_empty());
-        debug_assert!(coords.len() % (cols * dim) == 0);
+        debug_assert!(coords.len().is_multiple_of(cols * dim));
         TensorPatch { cols, dim, coords }
     }
 

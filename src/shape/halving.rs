@@ -427,7 +427,7 @@ pub fn tensor_net<T: Ring, S: CurveStep<T>>(
     scratch: &mut Vec<T>,
 ) {
     let row = cols * dim;
-    assert!(row > 0 && src.len() % row == 0 && out.len() == src.len());
+    assert!(row > 0 && src.len().is_multiple_of(row) && out.len() == src.len());
     let rows = src.len() / row;
     let need = tensor_scratch_len(rows - 1, cols - 1, dim);
     if scratch.len() < need {
@@ -789,7 +789,7 @@ pub(crate) fn curve_fix_in_place<T: Ring, S: CurveStep<T>>(
 ) -> usize {
     let len = level.len();
     assert!(
-        dim > 0 && len % dim == 0 && len / dim > args.len(),
+        dim > 0 && len.is_multiple_of(dim) && len / dim > args.len(),
         "at most n arguments for n + 1 points"
     );
     for (r, step) in args.iter().enumerate() {
@@ -829,7 +829,7 @@ pub(crate) fn triangle_fix_in_place<T: Ring, S: TriangleStep<T>>(
 /// # Panics
 /// If the three slices differ in length or are not whole points.
 pub(crate) fn curve_split<T: Ring>(src: &[T], dim: usize, t: &T, left: &mut [T], right: &mut [T]) {
-    assert!(left.len() == src.len() && right.len() == src.len() && src.len() % dim == 0);
+    assert!(left.len() == src.len() && right.len() == src.len() && src.len().is_multiple_of(dim));
     let n = src.len() / dim - 1;
     let step = BernsteinStep(t);
     right.clone_from_slice(src);

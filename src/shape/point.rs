@@ -102,7 +102,7 @@ impl<'a, T> Points<'a, T> {
     /// The view of `coords` as points of `dim >= 1` coordinates (`coords.len()` a multiple of
     /// `dim`; the library's shapes guarantee both).
     pub(crate) fn new(coords: &'a [T], dim: usize) -> Self {
-        debug_assert!(dim >= 1 && coords.len() % dim == 0);
+        debug_assert!(dim >= 1 && coords.len().is_multiple_of(dim));
         Points { coords, dim }
     }
 
@@ -281,7 +281,7 @@ pub(crate) fn check_flat<T>(coords: &[T], dim: usize, field: &str) -> Result<usi
             "expected at least one point",
         ));
     }
-    if coords.len() % dim != 0 {
+    if !coords.len().is_multiple_of(dim) {
         return Err(Error::of(
             ErrorKind::Shape,
             field,

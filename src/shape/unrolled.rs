@@ -10,8 +10,8 @@ macro_rules! unrolled {
         /// `out` = the control points of the curve with flat control points `points` (`D`
         /// coordinates each, degree 1..=24) over [a, b] by the unrolled evaluator of that
         /// degree; `false` (and `out` untouched) for any other degree or when `out` has another
-        /// length. The points are copied into an array on the stack first (a few loads for
-        /// `f64`, the only rings that take this path; see [`crate::Ring::UNROLLED`]).
+        /// length. The flat slices are read as `[T; D]` points in place (`as_chunks`), so
+        /// nothing is copied on the way in.
         #[inline]
         pub(crate) fn restrict_curve_unrolled<T: crate::Ring, const D: usize>(
             points: &[T],
@@ -19,18 +19,21 @@ macro_rules! unrolled {
             b: &T,
             out: &mut [T],
         ) -> bool {
-            if D == 0 || out.len() != points.len() || points.len() % D != 0 {
+            if D == 0 || out.len() != points.len() {
                 return false;
             }
-            match points.len() / D {
-                $(count if count == $n + 1 => {
-                    let ctrl: [[T; D]; $n + 1] = std::array::from_fn(|i| {
-                        std::array::from_fn(|x| points[i * D + x].clone())
-                    });
-                    for (o, q) in out.chunks_exact_mut(D).zip($name(&ctrl, a, b)) {
-                        for (o, x) in o.iter_mut().zip(q) {
-                            *o = x;
-                        }
+            let (points, rest) = points.as_chunks::<D>();
+            let (out, _) = out.as_chunks_mut::<D>();
+            if !rest.is_empty() {
+                return false;
+            }
+            match points.len().wrapping_sub(1) {
+                $($n => {
+                    let Ok(ctrl) = <&[[T; D]; $n + 1]>::try_from(points) else {
+                        return false;
+                    };
+                    for (o, q) in out.iter_mut().zip($name(ctrl, a, b)) {
+                        *o = q;
                     }
                     true
                 })*

@@ -318,7 +318,11 @@ fn points(rng: &mut Rng, n: usize) -> Vec<Vec<f64>> {
     let dim = 1 + (rng.next() % 2) as usize;
     (0..n.min(12))
         .map(|_| {
-            let d = if rng.next() % 10 == 0 { dim + 1 } else { dim };
+            let d = if rng.next().is_multiple_of(10) {
+                dim + 1
+            } else {
+                dim
+            };
             numbers(rng, d)
         })
         .collect()
@@ -335,7 +339,7 @@ fn random_sizes_nan_and_huge_values_never_panic() {
         let pts = points(&mut rng, small + 2);
         let knots = {
             let mut k = numbers(&mut rng, 2 * small + 4);
-            if rng.next() % 2 == 0 {
+            if rng.next().is_multiple_of(2) {
                 k.sort_by(f64::total_cmp);
             }
             k

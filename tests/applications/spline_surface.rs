@@ -121,7 +121,13 @@ fn random_case_from(
     let us = breaks(rng, start.clone(), nu);
     let vs = breaks(rng, start, nv);
     // The global polynomial, sometimes of a lower bidegree.
-    let low = |d: usize, r: u64| if d > 0 && r % 3 == 0 { d - 1 } else { d };
+    let low = |d: usize, r: u64| {
+        if d > 0 && r.is_multiple_of(3) {
+            d - 1
+        } else {
+            d
+        }
+    };
     let (bp, bq) = (low(p, rng.next()), low(qd, rng.next()));
     let base = padded(&rng.surface(bp, bq, dim).to_nested(), p, qd, dim);
     let mut u_cont = vec![p as isize; nu.saturating_sub(1)];
@@ -130,7 +136,7 @@ fn random_case_from(
     for i in 0..nu {
         for j in 0..nv {
             let mut c: Grid = base.to_nested();
-            if perturb && (i + j) % 2 == 0 && rng.next() % 3 != 0 {
+            if perturb && (i + j) % 2 == 0 && !rng.next().is_multiple_of(3) {
                 let a = (rng.next() % (p as u64 + 1)) as usize;
                 let b = (rng.next() % ((p - a) as u64 + 1)) as usize;
                 let cc = (rng.next() % (qd as u64 + 1)) as usize;

@@ -145,7 +145,7 @@ fn factorial(n: usize) -> BigInt {
 fn printed_22(n: usize, i: usize, alpha: &Poly, beta: &Poly) -> Poly {
     let mut acc = Poly::zero();
     for big_n in 1..=n {
-        let sign: i64 = if (n - big_n) % 2 == 0 { 1 } else { -1 };
+        let sign: i64 = if (n - big_n).is_multiple_of(2) { 1 } else { -1 };
         for big_i in 0..=i {
             let c = binomial(i as i64, big_i as i64)
                 * binomial((n - i) as i64, big_n as i64 - big_i as i64);
@@ -170,7 +170,7 @@ fn printed_22(n: usize, i: usize, alpha: &Poly, beta: &Poly) -> Poly {
 fn printed_23(n: usize, (i, j, k): (usize, usize, usize), corners: &[[Poly; 2]; 3]) -> Poly {
     let mut acc = Poly::zero();
     for big_n in 1..=n {
-        let sign: i64 = if (n - big_n) % 2 == 0 { 1 } else { -1 };
+        let sign: i64 = if (n - big_n).is_multiple_of(2) { 1 } else { -1 };
         for big_j in 0..=j {
             for big_k in 0..=k {
                 let rest = big_n as i64 - big_j as i64 - big_k as i64;

@@ -89,7 +89,7 @@ fn moment_u(j: usize) -> Poly {
 fn bernstein_log_moment(n: usize, i: usize) -> Poly {
     let s_moment = |k: usize| {
         (0..=k).fold(Poly::zero(), |acc, j| {
-            let c = binomial(k as i64, j as i64) * if (k - j) % 2 == 0 { 1 } else { -1 };
+            let c = binomial(k as i64, j as i64) * if (k - j).is_multiple_of(2) { 1 } else { -1 };
             acc.add(&moment_u(j).scale(&Rational::from_integer(c)))
         })
     };
