@@ -65,8 +65,8 @@ pub struct IntersectionPoint {
     pub point: [f64; 2],
 }
 
-/// One maximal common stretch: P over [s[0], s[1]] (s[0] < s[1]) traces what Q traces between
-/// t[0] and t[1], with P(s[0]) = Q(t[0]) and P(s[1]) = Q(t[1]).
+/// One maximal common stretch: P over `[s[0], s[1]]` (`s[0] < s[1]`) traces what Q traces
+/// between `t[0]` and `t[1]`, with `P(s[0]) = Q(t[0])` and `P(s[1]) = Q(t[1])`.
 #[derive(Clone, Debug)]
 pub struct Overlap {
     /// The ends on the first curve, increasing.
