@@ -33,7 +33,12 @@
 //! 3. **restriction** (`restrict/`): one file per algorithm, the dispatch on [`Method`];
 //! 4. **applications** (`applications/`): Bézier input, batches, B-splines, rational forms,
 //!    degree change, derivatives;
-//! 5. **interoperation** (`interop/`, optional): conversions to and from mint and kurbo types
+//! 5. **certified zeros and intersections** (`intersect/`): [`bezier_zeros`] (every zero of
+//!    a Bézier function with its multiplicity), [`AlgebraicReal`] (exact comparison, correctly
+//!    rounded `to_f64`), [`intersect_curves`] (isolated points with an exact tangency flag,
+//!    overlaps) and [`self_intersections`], all exact: Descartes' rule on Bernstein
+//!    coefficients, Yun's square-free factorisation, resultants over the integers;
+//! 6. **interoperation** (`interop/`, optional): conversions to and from mint and kurbo types
 //!    and serde support ([Features](#features)); nothing else imports it.
 //!
 //! The `blossom` binary (the papers' report, the JSON jobs, the carried grid of generated
@@ -159,10 +164,12 @@ pub use restrict::polarisation::{
 // Certified zeros and intersections.
 pub use intersect::algebraic::AlgebraicReal;
 pub use intersect::curves::{
-    intersect_curves, intersect_curves_f64, self_intersections, self_intersections_f64,
-    IntersectionPoint, Intersections, Overlap,
+    intersect_curves, intersect_curves_f64, intersection_work, self_intersections,
+    self_intersections_f64, IntersectionPoint, Intersections, Overlap,
 };
-pub use intersect::zeros::{bezier_zeros, bezier_zeros_f64, BezierZeros, PolynomialZero};
+pub use intersect::zeros::{
+    bezier_zeros, bezier_zeros_f64, zeros_work, BezierZeros, PolynomialZero,
+};
 
 // Applications.
 pub use applications::batch::{Batch, RestrictionMap, BATCH_LANES};

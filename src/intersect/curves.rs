@@ -616,3 +616,15 @@ pub fn self_intersections(p: &[[Rational; 2]]) -> Result<Intersections> {
 pub fn self_intersections_f64(p: &[[f64; 2]]) -> Result<Intersections> {
     self_intersections(&exact_points("curve", p)?)
 }
+
+/// A coarse work estimate for [`intersect_curves`] on curves of degrees `n` and `m` whose
+/// power coefficients, after clearing denominators, have at most `bits` bits: the resultant
+/// has degree n m and coefficients of about (n + m) (bits + n + m) bits, and the dominant
+/// steps (interpolation, isolation, subresultant matching) cost about (n m)^3 operations on
+/// numbers of that size. The unit is arbitrary but monotone; measured in release on random
+/// small-integer inputs: n = m = 3 about 1 ms, n = m = 8 about 0.35 s, n = m = 16 over 30 s.
+pub fn intersection_work(n: usize, m: usize, bits: usize) -> u128 {
+    let d = (n as u128) * (m as u128) + 1;
+    let size = ((n + m) as u128) * (bits as u128 + (n + m) as u128) / 64 + 1;
+    d * d * d * size
+}

@@ -402,3 +402,37 @@ fn bad_input_is_refused() {
     let x = intersect_curves(&p, &line_quadratic).unwrap();
     assert_eq!(x.overlaps.len(), 1);
 }
+
+/// Times exact curve pairs of degree 3, 8, 16 and 20 with small integer control points
+/// (deterministic pseudo-random). A measurement, not a check: run it in release with
+/// `cargo test -p blossom --release --lib intersect::tests::timing -- --ignored --nocapture`
+/// (degrees from the environment variable `BLOSSOM_DEGREES`, default "3 8 16 20").
+#[test]
+#[ignore]
+fn timing_exact_pairs() {
+    let degrees: Vec<usize> = std::env::var("BLOSSOM_DEGREES")
+        .unwrap_or_else(|_| "3 8 16 20".into())
+        .split_whitespace()
+        .map(|d| d.parse().unwrap())
+        .collect();
+    let mut state = 0x2545_f491_4f6c_dd1du64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state % 21) as i64 - 10
+    };
+    for n in degrees {
+        let mut curve =
+            || -> Vec<[Rational; 2]> { (0..=n).map(|_| [q(next(), 1), q(next(), 1)]).collect() };
+        let (p, qq) = (curve(), curve());
+        let start = std::time::Instant::now();
+        let x = intersect_curves(&p, &qq).unwrap();
+        println!(
+            "degree {n}: {} points, {} overlaps, {:.3} s",
+            x.points.len(),
+            x.overlaps.len(),
+            start.elapsed().as_secs_f64()
+        );
+    }
+}

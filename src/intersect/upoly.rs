@@ -193,9 +193,16 @@ pub fn exact_div(a: &[BigInt], b: &[BigInt]) -> Option<ZPoly> {
 
 /// The greatest common divisor, primitive with a positive leading coefficient (`[1]` when the
 /// polynomials are coprime, empty when both are zero), by the primitive remainder sequence.
+///
+/// Fast path: when the images modulo a prime p dividing neither leading coefficient are
+/// coprime over F_p, the polynomials are coprime over Z (a common factor g has lc(g) | lc(a),
+/// so g mod p keeps its degree and divides both images).
 pub fn gcd(a: &[BigInt], b: &[BigInt]) -> ZPoly {
     let mut x = primitive(a);
     let mut y = primitive(b);
+    if !x.is_empty() && !y.is_empty() && coprime_modulo_prime(&x, &y) {
+        return vec![BigInt::one()];
+    }
     if degree(&x) < degree(&y) {
         std::mem::swap(&mut x, &mut y);
     }
@@ -205,6 +212,68 @@ pub fn gcd(a: &[BigInt], b: &[BigInt]) -> ZPoly {
         y = primitive(&r);
     }
     primitive(&x)
+}
+
+/// Primes below 2^31 for the modular coprimality test.
+const GCD_PRIMES: [u64; 3] = [2_147_483_647, 2_147_483_629, 2_147_483_587];
+
+/// Whether a and b (non-zero) are proven coprime by their images modulo a prime dividing
+/// neither leading coefficient (see [`gcd`]); `false` means "not proven".
+fn coprime_modulo_prime(a: &[BigInt], b: &[BigInt]) -> bool {
+    let (da, db) = (degree(a).unwrap_or(0), degree(b).unwrap_or(0));
+    if da == 0 || db == 0 {
+        return true;
+    }
+    for &p in &GCD_PRIMES {
+        let pb = BigInt::from(p);
+        let reduce = |v: &[BigInt]| -> Vec<u64> {
+            v.iter()
+                .map(|c| {
+                    let r = c.mod_floor(&pb);
+                    r.iter_u64_digits().next().unwrap_or(0)
+                })
+                .collect()
+        };
+        let (mut x, mut y) = (reduce(a), reduce(b));
+        if x[da] == 0 || y[db] == 0 {
+            continue;
+        }
+        let trim_p = |v: &mut Vec<u64>| {
+            while v.last() == Some(&0) {
+                v.pop();
+            }
+        };
+        trim_p(&mut x);
+        trim_p(&mut y);
+        let inv = |v: u64| -> u64 {
+            // v^(p-2) mod p.
+            let (mut base, mut e, mut acc) = (v % p, p - 2, 1u64);
+            while e > 0 {
+                if e & 1 == 1 {
+                    acc = acc * base % p;
+                }
+                base = base * base % p;
+                e >>= 1;
+            }
+            acc
+        };
+        while !y.is_empty() {
+            // x <- x mod y.
+            let dy = y.len() - 1;
+            let iy = inv(y[dy]);
+            while x.len() > dy {
+                let k = x[x.len() - 1] * iy % p;
+                let shift = x.len() - 1 - dy;
+                for (j, c) in y.iter().enumerate() {
+                    x[j + shift] = (x[j + shift] + p - k * c % p) % p;
+                }
+                trim_p(&mut x);
+            }
+            std::mem::swap(&mut x, &mut y);
+        }
+        return x.len() == 1;
+    }
+    false
 }
 
 /// Yun's square-free factorisation of a non-zero `p`: the list of (f_i, i) with f_i
