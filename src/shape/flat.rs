@@ -13,8 +13,8 @@
 
 use crate::num::meter::charge_points;
 use crate::shape::halving::{
-    curve_blossom_in_place, curve_net, tensor_net, triangle_blossom_in_place, triangle_net,
-    BernsteinPairStep, BernsteinStep, CurveStep, Fixed, TriangleStep,
+    curve_blossom_in_place, curve_net, step_left, tensor_net, triangle_blossom_in_place,
+    triangle_net, BernsteinPairStep, BernsteinStep, CurveStep, Fixed, TriangleStep,
 };
 use crate::shape::unrolled::restrict_curve_unrolled;
 use crate::Ring;
@@ -81,11 +81,7 @@ fn curve_pyramid_in_place<T: Ring, S: CurveStep<T>>(level: &mut [T], dim: usize,
     charge_points(n + 1);
     for r in 0..n {
         charge_points(n - r);
-        let live = &mut level[..len - r * dim];
-        for k in 0..live.len() - dim {
-            let v = step.combine(&live[k], &live[k + dim]);
-            live[k] = v;
-        }
+        step_left(&mut level[..len - r * dim], dim, step);
     }
 }
 

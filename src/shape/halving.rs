@@ -230,7 +230,7 @@ fn step_into<T, S: CurveStep<T>>(src: &[T], dst: &mut [T], dim: usize, step: &S)
 /// for increasing k, so that every read precedes the write that would change it. (For the
 /// blossom at given arguments, which is not on the engine's hot path.)
 #[inline]
-fn step_left<T, S: CurveStep<T>>(buf: &mut [T], dim: usize, step: &S) {
+pub(crate) fn step_left<T, S: CurveStep<T>>(buf: &mut [T], dim: usize, step: &S) {
     let m = buf.len() - dim;
     for k in 0..m {
         let v = step.combine(&buf[k], &buf[k + dim]);
