@@ -37,7 +37,10 @@
 //!    a Bézier function with its multiplicity), [`AlgebraicReal`] (exact comparison, correctly
 //!    rounded `to_f64`), [`intersect_curves`] (isolated points with an exact tangency flag,
 //!    overlaps) and [`self_intersections`], all exact: Descartes' rule on Bernstein
-//!    coefficients, Yun's square-free factorisation, resultants over the integers;
+//!    coefficients, Yun's square-free factorisation, resultants over the integers; for `f64`
+//!    input a float filter, [`certified_crossings_f64`] (subdivision, Krawczyk's test,
+//!    double-double residuals: the transversal case proved without big numbers), and
+//!    [`intersect_curves_f64_rounded`] (the filter, else the exact path, as doubles);
 //! 6. **interoperation** (`interop/`, optional): conversions to and from mint and kurbo types
 //!    and serde support ([Features](#features)); nothing else imports it.
 //!
@@ -166,6 +169,10 @@ pub use intersect::algebraic::AlgebraicReal;
 pub use intersect::curves::{
     intersect_curves, intersect_curves_f64, intersection_work, self_intersections,
     self_intersections_f64, IntersectionPoint, Intersections, Overlap,
+};
+pub use intersect::filter::{certified_crossings_f64, CertifiedCrossing};
+pub use intersect::rounded::{
+    intersect_curves_f64_rounded, RoundedIntersections, RoundedOverlap, RoundedPoint,
 };
 pub use intersect::zeros::{
     bezier_zeros, bezier_zeros_f64, zeros_work, BezierZeros, PolynomialZero,

@@ -5,15 +5,24 @@
 //! * `algebraic`: real algebraic numbers ([`AlgebraicReal`]);
 //! * `zeros`: zeros of a Bézier function with multiplicities ([`bezier_zeros`]);
 //! * `bivariate`: resultants and first subresultants of bivariate integer polynomials;
-//! * `curves`: curve-curve intersection ([`intersect_curves`]).
+//! * `curves`: curve-curve intersection ([`intersect_curves`]);
+//! * `interval`: rigorous intervals, double-doubles and correct rounding for the filter;
+//! * `filter`: the float filter of curve-curve intersection ([`certified_crossings_f64`]);
+//! * `rounded`: the `f64` answer for every input, filter first, exact path otherwise
+//!   ([`intersect_curves_f64_rounded`]).
 
 pub(crate) mod algebraic;
 pub(crate) mod bivariate;
 pub(crate) mod curves;
+pub(crate) mod filter;
+pub(crate) mod interval;
 pub(crate) mod isolate;
+pub(crate) mod rounded;
 pub(crate) mod solve;
 pub(crate) mod upoly;
 pub(crate) mod zeros;
 
+#[cfg(test)]
+mod filter_tests;
 #[cfg(test)]
 mod tests;

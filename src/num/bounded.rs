@@ -47,10 +47,10 @@ use std::cmp::Ordering;
 use std::fmt;
 
 /// The unit roundoff of binary64 with round-to-nearest, u = 2^-53.
-const UNIT_ROUNDOFF: f64 = f64::EPSILON / 2.0;
+pub(crate) const UNIT_ROUNDOFF: f64 = f64::EPSILON / 2.0;
 
 /// The smallest positive subnormal double, 2^-1074 (η of the module documentation).
-const ETA: f64 = 5e-324;
+pub(crate) const ETA: f64 = 5e-324;
 
 /// The factor (1 + 16u) that makes a computed bound an upper bound of the exact expression.
 const SAFETY: f64 = 1.0 + 16.0 * UNIT_ROUNDOFF;
@@ -81,13 +81,13 @@ pub struct BoundedF64 {
 
 /// `(e) * (1 + 16u) + 8η`: the computed bound expression `e`, rounded upwards (module docs).
 #[inline]
-fn upward(e: f64) -> f64 {
+pub(crate) fn upward(e: f64) -> f64 {
     e * SAFETY + 8.0 * ETA
 }
 
 /// The rounding error bound u |v| + η of a result v.
 #[inline]
-fn rounding(v: f64) -> f64 {
+pub(crate) fn rounding(v: f64) -> f64 {
     UNIT_ROUNDOFF * v.abs() + ETA
 }
 

@@ -1,0 +1,279 @@
+//! Tests of the float filter against independent exact answers: the resultant path
+//! ([`intersect_curves_f64`]) for cubic pairs, and for curves of degree 8 and 20 against a
+//! horizontal line, the exact zeros of the Bézier function P_y - c ([`bezier_zeros`], Descartes'
+//! rule) with t = P_x(s) rounded exactly ([`round_polynomial_at`]): no resultant involved.
+
+use super::algebraic::round_polynomial_at;
+use super::curves::intersect_curves_f64;
+use super::filter::{certified_crossings_f64, CertifiedCrossing};
+use super::rounded::{intersect_curves_f64_rounded, RoundedIntersections, RoundedPoint};
+use super::zeros::bezier_zeros_f64;
+use crate::num::ring::Rational;
+use crate::shape::basis::bernstein_to_power;
+use num_traits::FromPrimitive;
+
+/// Deterministic pseudo-random numbers (xorshift64).
+struct Random(u64);
+
+impl Random {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+    /// An integer in [-k, k].
+    fn int(&mut self, k: i64) -> f64 {
+        (self.next() % (2 * k as u64 + 1)) as f64 - k as f64
+    }
+    /// A dyadic number j / 2^bits in [0, 1].
+    fn dyadic(&mut self, bits: u32) -> f64 {
+        (self.next() % ((1u64 << bits) + 1)) as f64 / (1u64 << bits) as f64
+    }
+    /// A uniform double in [0, 1).
+    fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// The filter's answer as rounded points (tangent false).
+fn as_points(x: &[CertifiedCrossing]) -> Vec<RoundedPoint> {
+    x.iter()
+        .map(|c| RoundedPoint {
+            s: c.s,
+            t: c.t,
+            tangent: false,
+            point: c.point,
+        })
+        .collect()
+}
+
+/// Checks one pair against the exact path; returns whether the filter decided.
+fn check_against_exact(p: &[[f64; 2]], q: &[[f64; 2]]) -> bool {
+    let exact = RoundedIntersections::from(&intersect_curves_f64(p, q).unwrap());
+    let Some(filter) = certified_crossings_f64(p, q) else {
+        return false;
+    };
+    assert!(exact.overlaps.is_empty(), "{p:?} {q:?}");
+    assert_eq!(as_points(&filter), exact.points, "{p:?} {q:?}");
+    for c in &filter {
+        assert!(c.s_enclosure[0] <= c.s && c.s <= c.s_enclosure[1]);
+        assert!(c.t_enclosure[0] <= c.t && c.t <= c.t_enclosure[1]);
+    }
+    true
+}
+
+#[test]
+fn cubic_pairs_agree_with_the_exact_path_to_the_bit() {
+    let mut r = Random(0x2545_f491_4f6c_dd1d);
+    let (mut decided, mut crossings) = (0, 0);
+    let pairs = 200;
+    for k in 0..pairs {
+        // Half small integers, half dyadic numbers in [0, 1].
+        let mut point = |r: &mut Random| {
+            if k % 2 == 0 {
+                [r.int(8), r.int(8)]
+            } else {
+                [r.dyadic(6), r.dyadic(6)]
+            }
+        };
+        let p: Vec<[f64; 2]> = (0..4).map(|_| point(&mut r)).collect();
+        let q: Vec<[f64; 2]> = (0..4).map(|_| point(&mut r)).collect();
+        if check_against_exact(&p, &q) {
+            decided += 1;
+            crossings += certified_crossings_f64(&p, &q).unwrap().len();
+        }
+    }
+    println!("decided {decided} of {pairs} cubic pairs, {crossings} crossings");
+    assert!(
+        decided * 10 >= pairs * 9,
+        "decided only {decided} of {pairs}"
+    );
+    assert!(
+        crossings >= pairs / 2,
+        "too few crossings to mean anything: {crossings}"
+    );
+}
+
+#[test]
+fn lines_and_quadratics_agree_with_the_exact_path() {
+    let mut r = Random(0x0123_4567_89ab_cdef);
+    let mut decided = 0;
+    for k in 0..100 {
+        let (n, m) = (1 + k % 2, 1 + (k / 2) % 3);
+        let p: Vec<[f64; 2]> = (0..=n).map(|_| [r.int(6), r.int(6)]).collect();
+        let q: Vec<[f64; 2]> = (0..=m).map(|_| [r.int(6), r.int(6)]).collect();
+        if p.iter().all(|x| x == &p[0]) || q.iter().all(|x| x == &q[0]) {
+            continue;
+        }
+        // Collinear pairs may be overlaps, refused or decided by the exact path: skip errors.
+        if intersect_curves_f64(&p, &q).is_err() {
+            assert!(certified_crossings_f64(&p, &q).is_none());
+            continue;
+        }
+        decided += usize::from(check_against_exact(&p, &q));
+    }
+    assert!(decided >= 60, "decided {decided}");
+}
+
+/// A curve of degree n against the line y = c from (0, c) to (1, c): the exact answer from the
+/// zeros of P_y - c and t = P_x(s).
+fn line_case(r: &mut Random, n: usize) -> (Vec<[f64; 2]>, Vec<[f64; 2]>, Vec<RoundedPoint>) {
+    let p: Vec<[f64; 2]> = (0..=n)
+        .map(|_| {
+            let x = (1.0 + (r.next() % 1023) as f64) / 1024.0;
+            [x, 2.0 * r.dyadic(10) - 1.0]
+        })
+        .collect();
+    let c = 0.5 * r.dyadic(8) - 0.25;
+    let q = vec![[0.0, c], [1.0, c]];
+    let fy: Vec<f64> = p.iter().map(|xy| xy[1] - c).collect();
+    let zeros = bezier_zeros_f64(&fy).unwrap();
+    assert!(!zeros.identically_zero);
+    let px: Vec<Vec<Rational>> = p
+        .iter()
+        .map(|xy| vec![Rational::from_f64(xy[0]).unwrap()])
+        .collect();
+    let power: Vec<Rational> = bernstein_to_power(&px)
+        .into_iter()
+        .map(|v| v[0].clone())
+        .collect();
+    let expected = zeros
+        .zeros
+        .iter()
+        .map(|z| {
+            let t = round_polynomial_at(&power, &z.t);
+            RoundedPoint {
+                s: z.t.to_f64(),
+                t,
+                tangent: z.multiplicity > 1,
+                point: [t, c],
+            }
+        })
+        .collect();
+    (p, q, expected)
+}
+
+#[test]
+fn degree_8_and_20_against_a_line_agree_with_exact_zeros() {
+    let mut r = Random(0x9e37_79b9_7f4a_7c15);
+    for n in [8usize, 20] {
+        let (mut decided, mut crossings, cases) = (0, 0, 40);
+        for _ in 0..cases {
+            let (p, q, expected) = line_case(&mut r, n);
+            if let Some(x) = certified_crossings_f64(&p, &q) {
+                assert_eq!(as_points(&x), expected, "{p:?} {q:?}");
+                // And the same with the curves swapped.
+                let y = certified_crossings_f64(&q, &p).expect("decided one way");
+                let swapped: Vec<(f64, f64)> = y.iter().map(|c| (c.t, c.s)).collect();
+                let mut direct: Vec<(f64, f64)> = x.iter().map(|c| (c.s, c.t)).collect();
+                direct.sort_by(|a, b| a.0.total_cmp(&b.0));
+                let mut swapped = swapped;
+                swapped.sort_by(|a, b| a.0.total_cmp(&b.0));
+                assert_eq!(direct, swapped);
+                decided += 1;
+                crossings += x.len();
+            }
+        }
+        println!("degree {n}: decided {decided} of {cases}, {crossings} crossings");
+        assert!(
+            decided * 10 >= cases * 9,
+            "degree {n}: decided {decided} of {cases}"
+        );
+        assert!(crossings >= cases, "degree {n}: only {crossings} crossings");
+    }
+}
+
+#[test]
+fn random_degree_20_pairs_are_decided_consistently() {
+    // No exact answer at this degree: the filter must decide most pairs, agree with itself
+    // with the curves swapped, and its points must be common points (within their ulps).
+    let mut r = Random(0x5851_f42d_4c95_7f2d);
+    let (mut decided, cases) = (0, 20);
+    for _ in 0..cases {
+        let p: Vec<[f64; 2]> = (0..=20).map(|_| [r.unit(), r.unit()]).collect();
+        let q: Vec<[f64; 2]> = (0..=20).map(|_| [r.unit(), r.unit()]).collect();
+        let Some(x) = certified_crossings_f64(&p, &q) else {
+            continue;
+        };
+        decided += 1;
+        let y = certified_crossings_f64(&q, &p).expect("decided one way");
+        let mut swapped: Vec<(f64, f64, [f64; 2])> =
+            y.iter().map(|c| (c.t, c.s, c.point)).collect();
+        swapped.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+        let direct: Vec<(f64, f64, [f64; 2])> = x.iter().map(|c| (c.s, c.t, c.point)).collect();
+        assert_eq!(direct, swapped);
+    }
+    assert!(decided * 10 >= cases * 9, "decided {decided} of {cases}");
+}
+
+#[test]
+fn undecided_cases_go_to_the_exact_path() {
+    let parabola = [[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]];
+    // Tangent at the apex (1, 1).
+    let tangent_line = [[0.0, 1.0], [2.0, 1.0]];
+    assert!(certified_crossings_f64(&parabola, &tangent_line).is_none());
+    let x = intersect_curves_f64_rounded(&parabola, &tangent_line).unwrap();
+    assert!(!x.by_filter && x.points.len() == 1 && x.points[0].tangent);
+    // An end-point contact.
+    let a = [[0.0, 0.0], [1.0, 1.0]];
+    let b = [[1.0, 1.0], [2.0, 0.0]];
+    assert!(certified_crossings_f64(&a, &b).is_none());
+    // Identical, reversed, and a stretch of one curve.
+    let cubic = [[0.0, 0.0], [1.0, 3.0], [2.0, -1.0], [3.0, 1.0]];
+    let reversed: Vec<[f64; 2]> = cubic.iter().rev().copied().collect();
+    let half = [[0.0, 0.0], [0.5, 1.5], [1.0, 1.25], [1.5, 0.875]];
+    for other in [&cubic[..], &reversed, &half] {
+        assert!(certified_crossings_f64(&cubic, other).is_none());
+        let x = intersect_curves_f64_rounded(&cubic, other).unwrap();
+        assert!(!x.by_filter && x.overlaps.len() == 1);
+    }
+    // A common point with a zero coordinate cannot be rounded from an enclosure.
+    let c = [[-1.0, -1.0], [1.0, 1.0]];
+    let d = [[-1.0, 1.0], [1.0, -1.0]];
+    assert!(certified_crossings_f64(&c, &d).is_none());
+    // Bad input: no answer from the filter, the exact path's error naming the field.
+    assert!(certified_crossings_f64(&[[0.0, f64::NAN], [1.0, 1.0]], &d).is_none());
+    let e = intersect_curves_f64_rounded(&[[0.0, f64::NAN], [1.0, 1.0]], &d).unwrap_err();
+    assert_eq!(e.field, "p[0][1]");
+    assert!(certified_crossings_f64(&[[1.0, 1.0]], &d).is_none());
+    assert!(certified_crossings_f64(&[[1.0, 1.0], [1.0, 1.0]], &d).is_none());
+}
+
+#[test]
+fn near_tangency_is_decided_right_or_left_to_the_exact_path() {
+    // The parabola against lines just below its apex: two crossings 2 sqrt(eps) apart.
+    let parabola = [[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]];
+    let mut decided = 0;
+    for k in 1..40 {
+        let y = 1.0 - 2f64.powi(-k);
+        let line = [[0.0, y], [2.0, y]];
+        let exact = RoundedIntersections::from(&intersect_curves_f64(&parabola, &line).unwrap());
+        assert_eq!(exact.points.len(), 2);
+        if let Some(x) = certified_crossings_f64(&parabola, &line) {
+            assert_eq!(as_points(&x), exact.points, "k = {k}");
+            decided += 1;
+        }
+    }
+    // Roots 2^(1 - k/2) apart are separated by subdivision down to 2^-40 for small k.
+    assert!(decided >= 20, "decided {decided}");
+}
+
+#[test]
+fn rounded_answer_is_the_exact_answer_rounded() {
+    let mut r = Random(0xdead_beef_cafe_f00d);
+    let mut by_filter = 0;
+    for _ in 0..40 {
+        let p: Vec<[f64; 2]> = (0..4).map(|_| [r.int(5), r.int(5)]).collect();
+        let q: Vec<[f64; 2]> = (0..3).map(|_| [r.int(5), r.int(5)]).collect();
+        let Ok(exact) = intersect_curves_f64(&p, &q) else {
+            continue;
+        };
+        let got = intersect_curves_f64_rounded(&p, &q).unwrap();
+        by_filter += usize::from(got.by_filter);
+        let mut want = RoundedIntersections::from(&exact);
+        want.by_filter = got.by_filter;
+        assert_eq!(got, want);
+    }
+    assert!(by_filter >= 20, "by filter {by_filter}");
+}

@@ -1,0 +1,338 @@
+//! Rigorous floating-point enclosures for the float filter ([`super::filter`]): intervals,
+//! double-double values with an error bound, and correct rounding decided from an enclosure.
+//!
+//! **Intervals are [`BoundedF64`].** A `BoundedF64` (v, e) stands for every real x with
+//! |x - v| <= e. Its arithmetic is a running error analysis whose bound formulas are worst
+//! cases over all operands within their bounds (|x y - fl(v_x v_y)| <= |v_x| e_y + |v_y| e_x
+//! + e_x e_y + u |fl(v_x v_y)| + η, and so on, each rounded upwards): that is midpoint-radius
+//! interval arithmetic, inclusion-isotone, so evaluating a polynomial by any sequence of ring
+//! operations on `BoundedF64` arguments (de Casteljau's pyramid with an interval argument, say)
+//! encloses its range over the argument intervals. This module adds the few set operations the
+//! filter needs: the outward-rounded ends [`lower`] and [`upper`] (one `next_down`/`next_up`
+//! after the rounded sum, so that lower <= v - e and upper >= v + e hold exactly), an interval
+//! from its ends ([`from_bounds`]), and the strict tests |x| < r and |x| > r of Krawczyk's test ([`inside_radius`], [`outside_radius`]).
+//!
+//! **Double-double with a bound: [`Dd`].** A value hi + lo (two doubles) with a bound e on its
+//! distance to the exact result of the same operations. The sums and products use the
+//! error-free transformations TwoSum (Knuth: s = fl(a + b), e = (a - (s - b')) + (b - b'),
+//! b' = s - a, then a + b = s + e exactly) and TwoProd (p = fl(a b), e = fl(a b - p) by one
+//! fused multiply-add, exact unless the product underflows, where it is off by at most η / 2).
+//! The low-order terms are added in plain double arithmetic, and every such rounding is charged
+//! to the bound (|fl(z) - z| <= u |fl(z)| for a sum, u |fl(z)| + η for a product, u = 2^-53,
+//! η = 2^-1074), as are the input bounds (|x y - x̂ ŷ| <= |x̂| e_y + |ŷ| e_x + e_x e_y); the
+//! final renormalisation is a TwoSum, exact. The bound is computed in `f64` and pushed up the
+//! way [`BoundedF64`]'s is (times 1 + 16u, plus 8η). For de Casteljau's pyramid of degree n on
+//! doubles of size M the bound is about n^2 u^2 M, some 1e-31 M.
+//!
+//! **Correct rounding: [`round_nearest`].** With x known to lie in base + [d_lo, d_hi]
+//! (base a double, the offset an interval), x rounds to the double c = fl(base + d) when the
+//! offsets of x from c lie strictly between minus half the gap to the double below c and half
+//! the gap to the double above c (both gaps exact doubles for normal c). Anything else (the
+//! enclosure touches a rounding boundary, c is zero, subnormal or the largest double) is
+//! undecided (`None`), never guessed.
+
+use crate::num::bounded::{rounding, upward, BoundedF64, ETA, UNIT_ROUNDOFF};
+use crate::num::ring::{rational_to_f64, Rational, Ring};
+use num_traits::FromPrimitive;
+
+/// The exact lower end of the interval `x` rounded down: a double <= v - e (-∞ without a bound).
+#[inline]
+pub(crate) fn lower(x: &BoundedF64) -> f64 {
+    (x.value() - x.error_bound()).next_down()
+}
+
+/// The exact upper end of the interval `x` rounded up: a double >= v + e (+∞ without a bound).
+#[inline]
+pub(crate) fn upper(x: &BoundedF64) -> f64 {
+    (x.value() + x.error_bound()).next_up()
+}
+
+/// An interval containing [lo, hi] (lo <= hi finite): its midpoint (rounded) and a radius
+/// rounded up past both ends.
+#[inline]
+pub(crate) fn from_bounds(lo: f64, hi: f64) -> BoundedF64 {
+    let mid = 0.5 * lo + 0.5 * hi;
+    let radius = (hi - mid).next_up().max((mid - lo).next_up());
+    BoundedF64::with_bound(mid, radius)
+}
+
+/// Whether every x of the interval satisfies |x| < `radius` (decided conservatively: `false`
+/// when the rounded test cannot tell).
+#[inline]
+pub(crate) fn inside_radius(x: &BoundedF64, radius: f64) -> bool {
+    upper(x) < radius && lower(x) > -radius
+}
+
+/// Whether every x of the interval satisfies |x| > `radius` (conservatively).
+#[inline]
+pub(crate) fn outside_radius(x: &BoundedF64, radius: f64) -> bool {
+    lower(x) > radius || upper(x) < -radius
+}
+
+/// TwoSum: `(s, e)` with s = fl(a + b) and a + b = s + e exactly (finite operands).
+#[inline]
+pub(crate) fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    let e = (a - (s - bb)) + (b - bb);
+    (s, e)
+}
+
+/// TwoProd: `(p, e)` with p = fl(a b) and |a b - (p + e)| <= η / 2 (exact without underflow).
+#[inline]
+fn two_prod(a: f64, b: f64) -> (f64, f64) {
+    let p = a * b;
+    (p, a.mul_add(b, -p))
+}
+
+/// A double-double hi + lo together with a bound on its distance to the exact value of the
+/// same operations on the same inputs (module documentation). Equality compares the values
+/// only, as [`BoundedF64`]'s does.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Dd {
+    hi: f64,
+    lo: f64,
+    bound: f64,
+}
+
+impl Dd {
+    /// The double `x`, exact.
+    pub(crate) fn exact(x: f64) -> Self {
+        Dd {
+            hi: x,
+            lo: 0.0,
+            bound: 0.0,
+        }
+    }
+
+    /// The leading double.
+    pub(crate) fn hi(&self) -> f64 {
+        self.hi
+    }
+
+    /// The rest: the exact value lies in hi + (this interval).
+    pub(crate) fn rest(&self) -> BoundedF64 {
+        BoundedF64::with_bound(self.lo, self.bound_or_infinite())
+    }
+
+    /// The whole value as an interval of one double: fl(hi + lo) with the bound and the
+    /// (exact) rounding residual of that sum.
+    pub(crate) fn to_bounded(&self) -> BoundedF64 {
+        let (v, r) = two_sum(self.hi, self.lo);
+        BoundedF64::with_bound(v, upward(self.bound_or_infinite() + r.abs()))
+    }
+
+    fn bound_or_infinite(&self) -> f64 {
+        if self.hi.is_finite() && self.lo.is_finite() && self.bound >= 0.0 {
+            self.bound
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// Renormalises s + w (exactly) with the given bound.
+    #[inline]
+    fn make(s: f64, w: f64, bound: f64) -> Self {
+        let (hi, lo) = two_sum(s, w);
+        Dd {
+            hi,
+            lo,
+            bound: upward(bound),
+        }
+    }
+}
+
+impl PartialEq for Dd {
+    fn eq(&self, other: &Self) -> bool {
+        self.hi == other.hi && self.lo == other.lo
+    }
+}
+
+impl Ring for Dd {
+    fn zero() -> Self {
+        Dd::exact(0.0)
+    }
+    fn one() -> Self {
+        Dd::exact(1.0)
+    }
+    /// (s, e) = TwoSum(x_hi, y_hi); t = fl(x_lo + y_lo); w = fl(e + t): two roundings,
+    /// u (|t| + |w|).
+    #[inline]
+    fn add(&self, rhs: &Self) -> Self {
+        let (s, e) = two_sum(self.hi, rhs.hi);
+        let t = self.lo + rhs.lo;
+        let w = e + t;
+        let bound = self.bound + rhs.bound + UNIT_ROUNDOFF * (t.abs() + w.abs());
+        Dd::make(s, w, bound)
+    }
+    #[inline]
+    fn sub(&self, rhs: &Self) -> Self {
+        self.add(&rhs.neg())
+    }
+    /// (p, e) = TwoProd(x_hi, y_hi) (η / 2), the three cross products (u |c| + η each) and the
+    /// three sums of the low-order terms (u |fl| each), plus the propagated input bounds.
+    #[inline]
+    fn mul(&self, rhs: &Self) -> Self {
+        let (p, e) = two_prod(self.hi, rhs.hi);
+        let c1 = self.hi * rhs.lo;
+        let c2 = self.lo * rhs.hi;
+        let c3 = self.lo * rhs.lo;
+        let t = c1 + c2;
+        let t2 = t + c3;
+        let w = e + t2;
+        let own = rounding(c1) + rounding(c2) + rounding(c3) + 2.0 * ETA;
+        let sums = UNIT_ROUNDOFF * (t.abs() + t2.abs() + w.abs());
+        let x = upward(self.hi.abs() + self.lo.abs());
+        let y = upward(rhs.hi.abs() + rhs.lo.abs());
+        let propagated = x * rhs.bound + y * self.bound + self.bound * rhs.bound;
+        Dd::make(p, w, propagated + own + sums)
+    }
+    fn neg(&self) -> Self {
+        Dd {
+            hi: -self.hi,
+            lo: -self.lo,
+            bound: self.bound,
+        }
+    }
+    /// Times k as a double-double: c = the nearest double to k, c_lo = the nearest double to
+    /// k - c, off from k by at most u |c_lo| + η (both conversions correctly rounded).
+    fn scale(&self, k: &Rational) -> Self {
+        let c = rational_to_f64(k);
+        let rest = Rational::from_f64(c).map(|cq| k - cq);
+        let constant = match rest {
+            Some(rest) => {
+                let c_lo = rational_to_f64(&rest);
+                Dd {
+                    hi: c,
+                    lo: c_lo,
+                    bound: rounding(c_lo),
+                }
+            }
+            None => Dd {
+                hi: c,
+                lo: 0.0,
+                bound: f64::INFINITY,
+            },
+        };
+        self.mul(&constant)
+    }
+    fn is_zero(&self) -> bool {
+        self.hi == 0.0 && self.lo == 0.0
+    }
+}
+
+/// The double nearest to x (ties to even) for x in `base` + `offset` (exactly, `base` a
+/// double), or `None` when the enclosure does not decide it (module documentation).
+pub(crate) fn round_nearest(base: f64, offset: &BoundedF64) -> Option<f64> {
+    let (d_lo, d_hi) = (lower(offset), upper(offset));
+    if !(base.is_finite() && d_lo.is_finite() && d_hi.is_finite()) {
+        return None;
+    }
+    let c = base + offset.value();
+    // Half gaps are exact for normal c away from the top of the range.
+    if !(c.abs() >= 4.0 * f64::MIN_POSITIVE && c.abs() < f64::MAX) {
+        return None;
+    }
+    // g = c - base exactly, else the shift is not representable: undecided.
+    let (g, r) = two_sum(c, -base);
+    if r != 0.0 {
+        return None;
+    }
+    let (lo, hi) = ((d_lo - g).next_down(), (d_hi - g).next_up());
+    let half_up = 0.5 * (c.next_up() - c);
+    let half_down = 0.5 * (c - c.next_down());
+    (lo > -half_down && hi < half_up).then_some(c)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shape::flat::curve_eval_into;
+    use num_bigint::BigInt;
+
+    fn exact(x: f64) -> Rational {
+        Rational::from_f64(x).unwrap()
+    }
+
+    /// The exact value hi + lo and a check that the exact `truth` lies within the bound.
+    fn encloses(d: &Dd, truth: &Rational) -> bool {
+        let v = exact(d.hi) + exact(d.lo);
+        let diff = if &v > truth { &v - truth } else { truth - &v };
+        diff <= exact(d.bound)
+    }
+
+    #[test]
+    fn double_double_pyramid_bound_holds_and_is_tiny() {
+        // de Casteljau in Dd against exact rationals, on awkward doubles.
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        for n in [1usize, 3, 8, 20] {
+            for _ in 0..20 {
+                let pts: Vec<f64> = (0..=n).map(|_| next()).collect();
+                let s = 0.5 * (next() + 1.0);
+                let dd: Vec<Dd> = pts.iter().map(|&x| Dd::exact(x)).collect();
+                let mut out = [Dd::zero()];
+                curve_eval_into(&dd, 1, &Dd::exact(s), &mut out, &mut Vec::new());
+                let q: Vec<Rational> = pts.iter().map(|&x| exact(x)).collect();
+                let mut out_q = [Rational::from_integer(BigInt::from(0))];
+                curve_eval_into(&q, 1, &exact(s), &mut out_q, &mut Vec::new());
+                assert!(encloses(&out[0], &out_q[0]), "n = {n}");
+                // Some n^3 u^2 |p|: far below the half ulps the filter decides against.
+                assert!(out[0].bound < 1e-28, "bound {:e}", out[0].bound);
+                let b = out[0].to_bounded();
+                let lo = exact(lower(&b));
+                let hi = exact(upper(&b));
+                assert!(lo <= out_q[0] && out_q[0] <= hi);
+            }
+        }
+    }
+
+    #[test]
+    fn scale_by_a_third_is_within_its_bound() {
+        let third = Rational::new(BigInt::from(1), BigInt::from(3));
+        let d = Dd::exact(0.7).scale(&third);
+        assert!(encloses(&d, &(exact(0.7) * third)));
+        assert!(d.bound < 1e-32);
+    }
+
+    #[test]
+    fn rounding_decisions() {
+        // 1/3 enclosed tightly rounds to the nearest double of 1/3.
+        let third = Dd::exact(1.0).scale(&Rational::new(BigInt::from(1), BigInt::from(3)));
+        assert_eq!(round_nearest(third.hi(), &third.rest()), Some(1.0 / 3.0));
+        // An enclosure of a rounding boundary is undecided, one just off it is decided.
+        let half_gap = 0.5 * (1.0f64.next_up() - 1.0);
+        let on = BoundedF64::with_bound(half_gap, 1e-30);
+        assert_eq!(round_nearest(1.0, &on), None);
+        let below = BoundedF64::with_bound(half_gap * (1.0 - 1e-10), 1e-30);
+        assert_eq!(round_nearest(1.0, &below), Some(1.0));
+        let above = BoundedF64::with_bound(half_gap * (1.0 + 1e-10), 1e-30);
+        assert_eq!(round_nearest(1.0, &above), Some(1.0f64.next_up()));
+        // Below a power of two the gap is half as large.
+        let down = BoundedF64::with_bound(-0.75 * half_gap, 1e-30);
+        assert_eq!(round_nearest(1.0, &down), Some(1.0f64.next_down()));
+        // Zero and wide enclosures are undecided.
+        assert_eq!(
+            round_nearest(0.0, &BoundedF64::with_bound(0.0, 1e-300)),
+            None
+        );
+        assert_eq!(
+            round_nearest(0.5, &BoundedF64::with_bound(0.0, 1e-16)),
+            None
+        );
+    }
+
+    #[test]
+    fn interval_helpers_round_outwards() {
+        let x = from_bounds(0.1, 0.3);
+        assert!(lower(&x) <= 0.1 && upper(&x) >= 0.3);
+        assert!(inside_radius(&BoundedF64::with_bound(0.1, 0.1), 0.25));
+        assert!(!inside_radius(&BoundedF64::with_bound(0.1, 0.15), 0.25));
+        assert!(outside_radius(&BoundedF64::with_bound(0.5, 0.1), 0.25));
+    }
+}

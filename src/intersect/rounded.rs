@@ -1,0 +1,112 @@
+//! The `f64` answer of curve-curve intersection for every input: the float filter
+//! ([`super::filter::certified_crossings_f64`]) when it proves the complete answer, otherwise
+//! the exact path ([`super::curves::intersect_curves_f64`]) with every parameter rounded to the
+//! nearest double ([`super::algebraic::AlgebraicReal::to_f64`]). Both give the same doubles:
+//! correctly rounded parameters (ties to even), the exact tangency flag, the common point with
+//! each coordinate correctly rounded. Only the exact path reports overlaps, tangencies and
+//! end-point contacts, and only it returns errors (bad input, undecided common components).
+
+use super::curves::{intersect_curves_f64, Intersections};
+use super::filter::certified_crossings_f64;
+use crate::error::Result;
+
+/// One isolated intersection P(s) = Q(t), rounded.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RoundedPoint {
+    /// The double nearest to the exact parameter on the first curve.
+    pub s: f64,
+    /// The double nearest to the exact parameter on the second curve.
+    pub t: f64,
+    /// Whether P'(s) and Q'(t) are parallel (decided exactly).
+    pub tangent: bool,
+    /// The common point, each coordinate correctly rounded.
+    pub point: [f64; 2],
+}
+
+/// One maximal common stretch, its ends rounded (see [`crate::Overlap`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RoundedOverlap {
+    /// The ends on the first curve, increasing.
+    pub s: [f64; 2],
+    /// The matching ends on the second curve.
+    pub t: [f64; 2],
+}
+
+/// Every intersection of two curves with `f64` control points, rounded.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct RoundedIntersections {
+    /// Isolated points, sorted by s then t.
+    pub points: Vec<RoundedPoint>,
+    /// Overlaps, sorted by their first s.
+    pub overlaps: Vec<RoundedOverlap>,
+    /// Whether the float filter answered (else the exact path did).
+    pub by_filter: bool,
+}
+
+impl From<&Intersections> for RoundedIntersections {
+    /// The exact answer with every parameter rounded to the nearest double.
+    fn from(x: &Intersections) -> Self {
+        RoundedIntersections {
+            points: x
+                .points
+                .iter()
+                .map(|p| RoundedPoint {
+                    s: p.s.to_f64(),
+                    t: p.t.to_f64(),
+                    tangent: p.tangent,
+                    point: p.point,
+                })
+                .collect(),
+            overlaps: x
+                .overlaps
+                .iter()
+                .map(|o| RoundedOverlap {
+                    s: [o.s[0].to_f64(), o.s[1].to_f64()],
+                    t: [o.t[0].to_f64(), o.t[1].to_f64()],
+                })
+                .collect(),
+            by_filter: false,
+        }
+    }
+}
+
+/// Every intersection of the curves with control points `p` and `q` (doubles read exactly),
+/// as doubles: the float filter's certified answer when it decides, else the exact one
+/// rounded (module documentation).
+///
+/// ```
+/// use blossom::intersect_curves_f64_rounded;
+/// // A transversal crossing: the filter answers.
+/// let x = intersect_curves_f64_rounded(&[[0.0, 0.0], [1.0, 1.0]], &[[0.0, 1.0], [1.0, 0.0]])?;
+/// assert!(x.by_filter);
+/// assert_eq!((x.points[0].s, x.points[0].t, x.points[0].point), (0.5, 0.5, [0.5, 0.5]));
+/// // An end-point contact: the exact path answers.
+/// let y = intersect_curves_f64_rounded(&[[0.0, 0.0], [1.0, 1.0]], &[[1.0, 1.0], [2.0, 0.0]])?;
+/// assert!(!y.by_filter);
+/// assert_eq!((y.points[0].s, y.points[0].t), (1.0, 0.0));
+/// # Ok::<(), blossom::Error>(())
+/// ```
+///
+/// # Errors
+/// As [`intersect_curves_f64`].
+pub fn intersect_curves_f64_rounded(
+    p: &[[f64; 2]],
+    q: &[[f64; 2]],
+) -> Result<RoundedIntersections> {
+    if let Some(crossings) = certified_crossings_f64(p, q) {
+        return Ok(RoundedIntersections {
+            points: crossings
+                .iter()
+                .map(|c| RoundedPoint {
+                    s: c.s,
+                    t: c.t,
+                    tangent: false,
+                    point: c.point,
+                })
+                .collect(),
+            overlaps: Vec::new(),
+            by_filter: true,
+        });
+    }
+    Ok(RoundedIntersections::from(&intersect_curves_f64(p, q)?))
+}
