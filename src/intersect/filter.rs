@@ -24,7 +24,8 @@
 //! J = [P'(s) | -Q'(t)] at m,
 //! K(X) = m - Y F(m) + (I - Y J(X)) (X - m),
 //! evaluated in interval arithmetic ([`BoundedF64`] as midpoint-radius intervals, see
-//! [`super::interval`]): F(m) from de Casteljau at the double m, J(X) from de Casteljau of the
+//! [`super::interval`]; de Casteljau's steps in convex form, [`ConvexStep`], so that the
+//! bounds do not grow geometrically with the degree): F(m) from de Casteljau at the double m, J(X) from de Casteljau of the
 //! hodographs n (p_(i+1) - p_i) (the library's [`crate::bezier_derivative`], its rounding
 //! bounded by `BoundedF64`) restricted to S and T by the library's engine, whose control
 //! points' hull encloses P'(S) and Q'(T). By the
@@ -62,12 +63,13 @@
 //! is a single point, non-finite or extreme input.
 
 use super::interval::{
-    from_bounds, inside_radius, lower, outside_radius, round_nearest, upper, Dd,
+    from_bounds, inside_radius, lower, outside_radius, round_nearest, upper, ConvexStep, Dd,
 };
 use crate::num::bounded::{upward, BoundedF64, ETA, UNIT_ROUNDOFF};
 use crate::num::ring::Ring;
 use crate::shape::bezier::BezierCurve;
-use crate::shape::flat::{curve_eval_into, curve_subsegment};
+use crate::shape::flat::{curve_eval_into, curve_pyramid_in_place};
+use crate::shape::halving::curve_net;
 use crate::shape::halving::curve_split;
 
 /// One proved transversal crossing P(s) = Q(t) with s, t in (0, 1).
@@ -238,36 +240,32 @@ impl Curve {
         (point, tangent)
     }
 
-    /// An enclosure of P at the double `s`.
+    /// An enclosure of P at the double `s` (the pyramid in convex form, [`ConvexStep`]).
     fn eval_bounded(&self, s: f64) -> [BoundedF64; 2] {
-        let mut out = [BoundedF64::zero(); 2];
-        curve_eval_into(
-            &self.exact,
-            2,
-            &BoundedF64::exact(s),
-            &mut out,
-            &mut Vec::new(),
-        );
-        out
+        let mut level = self.exact.clone();
+        curve_pyramid_in_place(&mut level, 2, &ConvexStep::new(BoundedF64::exact(s)));
+        [level[0], level[1]]
     }
 
     /// P at the double `s` in double-double with a bound.
     fn eval_dd(&self, s: f64) -> [Dd; 2] {
-        let mut out = [Dd::zero(); 2];
-        curve_eval_into(&self.dd, 2, &Dd::exact(s), &mut out, &mut Vec::new());
-        out
+        let mut level = self.dd.clone();
+        curve_pyramid_in_place(&mut level, 2, &ConvexStep::new(Dd::exact(s)));
+        [level[0], level[1]]
     }
 
     /// An enclosure of P'(s) for every s with |s - mid| <= radius: the hull of the
-    /// hodograph's control points over [a, b] ⊇ [mid - radius, mid + radius] (the library's
-    /// restriction at the exact double ends a, b, its rounding bounded by `BoundedF64`), which
+    /// hodograph's control points over [a, b] ⊇ [mid - radius, mid + radius] (the engine's
+    /// restriction net at the exact double ends a, b in convex form, its rounding bounded by
+    /// `BoundedF64`), which
     /// holds the hodograph over [a, b] by the convex hull property. (De Casteljau's pyramid at
     /// an interval argument would also enclose it, but its width grows like (1 + 2|s|)^n.)
     fn tangent_over(&self, mid: f64, radius: f64) -> [BoundedF64; 2] {
         let a = BoundedF64::exact((mid - radius).next_down());
         let b = BoundedF64::exact((mid + radius).next_up());
         let mut net = vec![BoundedF64::zero(); self.hodograph.len()];
-        curve_subsegment(&self.hodograph, 2, &a, &b, &mut net, &mut Vec::new());
+        let (a, b) = (ConvexStep::new(a), ConvexStep::new(b));
+        curve_net(&self.hodograph, 2, &a, &b, &mut net, &mut Vec::new());
         [0, 1].map(|c| {
             let (lo, hi) = net
                 .iter()

@@ -70,7 +70,7 @@ fn cubic_pairs_agree_with_the_exact_path_to_the_bit() {
     let pairs = 200;
     for k in 0..pairs {
         // Half small integers, half dyadic numbers in [0, 1].
-        let mut point = |r: &mut Random| {
+        let point = |r: &mut Random| {
             if k % 2 == 0 {
                 [r.int(8), r.int(8)]
             } else {

@@ -75,7 +75,11 @@ pub(crate) fn curve_subsegment<T: Ring>(
 
 /// Applies `level.len() / dim - 1` steps of `step` to `level` in place: the de Casteljau
 /// pyramid of a curve at one argument. The answer is `level[..dim]`.
-fn curve_pyramid_in_place<T: Ring, S: CurveStep<T>>(level: &mut [T], dim: usize, step: &S) {
+pub(crate) fn curve_pyramid_in_place<T: Ring, S: CurveStep<T>>(
+    level: &mut [T],
+    dim: usize,
+    step: &S,
+) {
     let len = level.len();
     let n = len / dim - 1;
     charge_points(n + 1);
