@@ -4,7 +4,8 @@
 //! * `isolate`: real root isolation by Descartes' rule on exact Bernstein coefficients;
 //! * `algebraic`: real algebraic numbers ([`AlgebraicReal`]);
 //! * `zeros`: zeros of a Bézier function with multiplicities ([`bezier_zeros`]);
-//! * `bivariate`: resultants and first subresultants of bivariate integer polynomials;
+//! * `modular`: arithmetic modulo word-size primes, interpolation, Chinese remaindering;
+//! * `bivariate`: resultants and first subresultants of bivariate integer polynomials (multi-modular);
 //! * `curves`: curve-curve intersection ([`intersect_curves`]);
 //! * `interval`: rigorous intervals, double-doubles and correct rounding for the filter;
 //! * `filter`: the float filter of curve-curve intersection ([`certified_crossings_f64`]);
@@ -17,6 +18,7 @@ pub(crate) mod curves;
 pub(crate) mod filter;
 pub(crate) mod interval;
 pub(crate) mod isolate;
+pub(crate) mod modular;
 pub(crate) mod rounded;
 pub(crate) mod solve;
 pub(crate) mod upoly;

@@ -403,10 +403,12 @@ fn bad_input_is_refused() {
     assert_eq!(x.overlaps.len(), 1);
 }
 
-/// Times exact curve pairs of degree 3, 8, 16 and 20 with small integer control points
-/// (deterministic pseudo-random). A measurement, not a check: run it in release with
+/// Times exact curve pairs of degree 3, 8, 16 and 20 (deterministic pseudo-random): one pair
+/// with small integer control points in [-10, 10] and one with random doubles in [0, 1) (53-bit
+/// mantissas, read exactly). A measurement, not a check: run it in release with
 /// `cargo test -p blossom --release --lib intersect::tests::timing -- --ignored --nocapture`
-/// (degrees from the environment variable `BLOSSOM_DEGREES`, default "3 8 16 20").
+/// (degrees from the environment variable `BLOSSOM_DEGREES`, default "3 8 16 20"; the kinds
+/// from `BLOSSOM_KINDS`, default "int f64").
 #[test]
 #[ignore]
 fn timing_exact_pairs() {
@@ -415,24 +417,37 @@ fn timing_exact_pairs() {
         .split_whitespace()
         .map(|d| d.parse().unwrap())
         .collect();
+    let kinds = std::env::var("BLOSSOM_KINDS").unwrap_or_else(|_| "int f64".into());
     let mut state = 0x2545_f491_4f6c_dd1du64;
     let mut next = move || {
         state ^= state << 13;
         state ^= state >> 7;
         state ^= state << 17;
-        (state % 21) as i64 - 10
+        state
     };
-    for n in degrees {
-        let mut curve =
-            || -> Vec<[Rational; 2]> { (0..=n).map(|_| [q(next(), 1), q(next(), 1)]).collect() };
-        let (p, qq) = (curve(), curve());
-        let start = std::time::Instant::now();
-        let x = intersect_curves(&p, &qq).unwrap();
-        println!(
-            "degree {n}: {} points, {} overlaps, {:.3} s",
-            x.points.len(),
-            x.overlaps.len(),
-            start.elapsed().as_secs_f64()
-        );
+    for kind in kinds.split_whitespace() {
+        for &n in &degrees {
+            let mut curve = || -> Vec<[Rational; 2]> {
+                (0..=n)
+                    .map(|_| {
+                        let mut c = || match kind {
+                            "int" => q((next() % 21) as i64 - 10, 1),
+                            _ => Rational::from_float((next() >> 11) as f64 / (1u64 << 53) as f64)
+                                .unwrap(),
+                        };
+                        [c(), c()]
+                    })
+                    .collect()
+            };
+            let (p, qq) = (curve(), curve());
+            let start = std::time::Instant::now();
+            let x = intersect_curves(&p, &qq).unwrap();
+            println!(
+                "{kind} degree {n}: {} points, {} overlaps, {:.3} s",
+                x.points.len(),
+                x.overlaps.len(),
+                start.elapsed().as_secs_f64()
+            );
+        }
     }
 }
