@@ -73,6 +73,47 @@ impl AlgebraicReal {
         a
     }
 
+    /// The one root of the square-free integer polynomial `f` in the interval [lo, hi] of
+    /// doubles, when cheap exact tests prove it, else `None` (the caller then isolates the
+    /// roots of `f` from scratch). Proved: lo == hi is a root; or f(lo), f(hi) are non-zero
+    /// and the Bernstein coefficients of f over [lo, hi] have exactly one sign change
+    /// (Descartes' rule: exactly one root, counted with multiplicity, in (lo, hi)).
+    /// Rationality is settled only by the cheap tests of the module docs (degree 1, no root
+    /// modulo a small prime, the simplest rational in the interval is a root): when they do
+    /// not decide, the answer is `None` rather than a long refinement.
+    pub(crate) fn from_double_enclosure(f: &[BigInt], lo: f64, hi: f64) -> Option<Self> {
+        let (lo, hi) = (exact_f64(lo), exact_f64(hi));
+        if lo == hi {
+            return (sign_at(f, &lo) == Ordering::Equal).then(|| Self::from_rational(lo));
+        }
+        let (at_lo, at_hi) = (sign_at(f, &lo), sign_at(f, &hi));
+        if at_lo == Ordering::Equal || at_hi == Ordering::Equal || at_lo == at_hi {
+            return None;
+        }
+        if sign_changes(&bernstein_on(f, &lo, &hi)) != 1 {
+            return None;
+        }
+        let poly = primitive(f);
+        let d = degree(&poly)?;
+        if d == 1 {
+            return Some(Self::from_rational(Rational::new(
+                -poly[0].clone(),
+                poly[1].clone(),
+            )));
+        }
+        let lead = poly[d].abs();
+        let c = simplest_between(&lo, &hi);
+        if sign_at(&poly, &c) == Ordering::Equal {
+            return Some(Self::from_rational(c));
+        }
+        no_root_modulo_small_prime(&poly, &lead).then_some(AlgebraicReal {
+            poly,
+            lo,
+            hi,
+            exact: None,
+        })
+    }
+
     /// The number (x - beta) / alpha for rationals alpha != 0 and beta: a root of
     /// f(alpha t + beta), with the image interval.
     pub(crate) fn affine_preimage(&self, alpha: &Rational, beta: &Rational) -> Self {

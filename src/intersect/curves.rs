@@ -39,10 +39,12 @@
 //! (s - t)^2, so the tangency rule is the same. A curve that retraces itself (collinear case
 //! only) gives overlaps with t0 > t1, s1 <= t1.
 
-use super::algebraic::{round_polynomial_at, upoly_eval_q, AlgebraicReal};
+use super::algebraic::{exact_f64, round_polynomial_at, upoly_eval_q, AlgebraicReal};
+use super::bivariate::{resultant_t, swap};
+use super::filter::certified_crossings_f64;
 use super::bivariate::BiPoly;
 use super::solve::{solve, Solution};
-use super::upoly::{self, derivative, from_rationals};
+use super::upoly::{self, derivative, from_rationals, square_free_part};
 use super::zeros::{rationals_of, roots_with_multiplicity};
 use crate::error::{Error, ErrorKind, Result};
 use crate::num::ring::{rational_to_f64, Rational};
@@ -151,6 +153,9 @@ pub fn intersect_curves(p: &[[Rational; 2]], q: &[[Rational; 2]]) -> Result<Inte
     let qq = Power::of("q", q)?;
     let a = separated(&pp.x, &qq.x);
     let b = separated(&pp.y, &qq.y);
+    if let Some(points) = filtered(p, q, &a, &b) {
+        return Ok(finish(points, Vec::new()));
+    }
     let (zero, one) = (Rational::zero(), Rational::one());
     match solve(&a, &b, (&zero, &one), (&zero, &one), "curves")? {
         Some(solutions) => {
@@ -162,6 +167,52 @@ pub fn intersect_curves(p: &[[Rational; 2]], q: &[[Rational; 2]]) -> Result<Inte
         }
         None => overlap_case(p, q, &pp, &qq),
     }
+}
+
+/// The answer through the float filter, when every coordinate is a double and the filter
+/// proves the complete answer ([`certified_crossings_f64`]: only transversal crossings, all
+/// inside (0, 1)^2). Each parameter is then made an exact [`AlgebraicReal`]: the square-free
+/// part of the resultant Res_t(A, B) (for s) or Res_s(A, B) (for t) with the filter's
+/// enclosure as isolating interval, proved by [`AlgebraicReal::from_double_enclosure`].
+/// No crossing needs no resultant at all. `None` sends the pair to the exact solver.
+fn filtered(
+    p: &[[Rational; 2]],
+    q: &[[Rational; 2]],
+    a: &BiPoly,
+    b: &BiPoly,
+) -> Option<Vec<IntersectionPoint>> {
+    let crossings = certified_crossings_f64(&as_doubles(p)?, &as_doubles(q)?)?;
+    if crossings.is_empty() {
+        return Some(Vec::new());
+    }
+    let parameter_polynomial = |a: &BiPoly, b: &BiPoly| {
+        let r = resultant_t(a, b);
+        (!upoly::is_zero(&r)).then(|| square_free_part(&r))
+    };
+    let fs = parameter_polynomial(a, b)?;
+    let ft = parameter_polynomial(&swap(a), &swap(b))?;
+    crossings
+        .iter()
+        .map(|c| {
+            Some(IntersectionPoint {
+                s: AlgebraicReal::from_double_enclosure(&fs, c.s_enclosure[0], c.s_enclosure[1])?,
+                t: AlgebraicReal::from_double_enclosure(&ft, c.t_enclosure[0], c.t_enclosure[1])?,
+                tangent: false,
+                point: c.point,
+            })
+        })
+        .collect()
+}
+
+/// The points as doubles when every coordinate is exactly a double.
+fn as_doubles(points: &[[Rational; 2]]) -> Option<Vec<[f64; 2]>> {
+    points
+        .iter()
+        .map(|xy| {
+            let d = xy.clone().map(|c| rational_to_f64(&c));
+            (d.iter().zip(xy).all(|(x, c)| x.is_finite() && &exact_f64(*x) == c)).then_some(d)
+        })
+        .collect()
 }
 
 /// [`intersect_curves`] of control points given as doubles, each read exactly.

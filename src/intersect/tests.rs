@@ -451,3 +451,53 @@ fn timing_exact_pairs() {
         }
     }
 }
+
+/// A small deterministic generator (xorshift) for the cross-check below.
+fn next(state: &mut u64) -> u64 {
+    *state ^= *state << 13;
+    *state ^= *state >> 7;
+    *state ^= *state << 17;
+    *state
+}
+
+#[test]
+fn filter_path_agrees_with_the_solver() {
+    // Integer coordinates are doubles, so `intersect_curves` may answer through the float
+    // filter and the resultants' enclosures; the same curves scaled by 1/3 (coordinates that
+    // are not doubles, same parameters) go through the exact solver. Both must give the same
+    // exact parameters and flags.
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let mut filtered = 0;
+    for case in 0..40 {
+        let degree = 2 + case % 3;
+        let curve = |state: &mut u64| -> Vec<[Rational; 2]> {
+            (0..=degree)
+                .map(|_| [0, 1].map(|_| q((next(state) % 17) as i64 - 8, 1)))
+                .collect()
+        };
+        let (p, qq) = (curve(&mut state), curve(&mut state));
+        let third = |c: &[[Rational; 2]]| -> Vec<[Rational; 2]> {
+            c.iter().map(|xy| xy.clone().map(|v| v / q(3, 1))).collect()
+        };
+        let (Ok(x), Ok(y)) = (intersect_curves(&p, &qq), intersect_curves(&third(&p), &third(&qq)))
+        else {
+            continue;
+        };
+        if x.points.iter().all(|pt| !pt.tangent) && x.overlaps.is_empty() && !x.points.is_empty()
+        {
+            filtered += 1;
+        }
+        assert_eq!(x.points.len(), y.points.len(), "case {case}");
+        for (a, b) in x.points.iter().zip(&y.points) {
+            assert!(a.s.equals(&b.s) && a.t.equals(&b.t), "case {case}");
+            assert_eq!(a.tangent, b.tangent, "case {case}");
+            assert_eq!(
+                (a.s.to_f64(), a.t.to_f64()),
+                (b.s.to_f64(), b.t.to_f64()),
+                "case {case}"
+            );
+            assert!(upoly::degree(a.s.polynomial()).is_some());
+        }
+    }
+    assert!(filtered >= 10, "only {filtered} cases had transversal crossings");
+}

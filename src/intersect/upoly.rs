@@ -316,6 +316,16 @@ pub fn square_free_factors(p: &[BigInt]) -> Vec<(ZPoly, usize)> {
     out
 }
 
+/// The square-free part f / gcd(f, f') of a non-zero `f`, primitive.
+pub fn square_free_part(f: &[BigInt]) -> ZPoly {
+    let f = primitive(f);
+    let g = gcd(&f, &derivative(&f));
+    if degree(&g).unwrap_or(0) == 0 {
+        return f;
+    }
+    primitive(&exact_div(&f, &g).expect("a primitive divisor divides exactly"))
+}
+
 /// Whether `p` vanishes identically.
 pub fn is_zero(p: &[BigInt]) -> bool {
     p.iter().all(Zero::is_zero)
