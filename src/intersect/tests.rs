@@ -8,6 +8,7 @@ use super::zeros::{bezier_zeros, bezier_zeros_f64};
 use crate::num::ring::{rational_to_f64, Rational};
 use crate::shape::basis::power_to_bernstein;
 use num_bigint::BigInt;
+use num_integer::Integer;
 use num_traits::{One, Zero};
 use std::cmp::Ordering;
 
@@ -449,5 +450,31 @@ fn timing_exact_pairs() {
                 start.elapsed().as_secs_f64()
             );
         }
+    }
+}
+
+#[test]
+fn integer_interval_horner_is_the_rational_one_scaled() {
+    use super::algebraic::{enclose, enclose_scaled};
+    let p: Vec<BigInt> = [7i64, -30, 0, 41, -5, 2]
+        .iter()
+        .map(|&c| c.into())
+        .collect();
+    let pr: Vec<Rational> = p
+        .iter()
+        .map(|c| Rational::from_integer(c.clone()))
+        .collect();
+    for (lo, hi) in [
+        (q(-3, 2), q(1, 3)),
+        (q(1, 4), q(5, 6)),
+        (q(-7, 3), q(-1, 9)),
+        (q(2, 5), q(2, 5)),
+    ] {
+        let (l, h) = enclose(&pr, &lo, &hi);
+        let d = Rational::from_integer(lo.denom().lcm(hi.denom()));
+        let scale = (0..6).fold(Rational::one(), |acc, _| acc * &d);
+        let (sl, sh) = enclose_scaled(&p, 6, &lo, &hi);
+        assert_eq!(Rational::from_integer(sl), l * &scale);
+        assert_eq!(Rational::from_integer(sh), h * &scale);
     }
 }
