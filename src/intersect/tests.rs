@@ -478,3 +478,44 @@ fn integer_interval_horner_is_the_rational_one_scaled() {
         assert_eq!(Rational::from_integer(sh), h * &scale);
     }
 }
+
+#[test]
+fn integer_bernstein_coefficients_are_the_rational_ones_scaled() {
+    use super::isolate::bernstein_on;
+    use crate::shape::basis::{power_to_bernstein, scale_argument, taylor_shift};
+    let mut state = 0x5eed_1234_abcd_ef01u64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state % 41) as i64 - 20
+    };
+    for n in [1usize, 2, 5, 9] {
+        let f: Vec<BigInt> = (0..=n).map(|_| BigInt::from(next())).collect();
+        for (a, b) in [
+            (q(-1, 1), q(2, 1)),
+            (q(1, 3), q(3, 4)),
+            (q(-5, 8), q(-1, 16)),
+        ] {
+            let mut c: Vec<Vec<Rational>> = f
+                .iter()
+                .map(|x| vec![Rational::from_integer(x.clone())])
+                .collect();
+            taylor_shift(&mut c, &a);
+            scale_argument(&mut c, &(&b - &a));
+            let want: Vec<Rational> = power_to_bernstein(&c)
+                .into_iter()
+                .map(|p| p[0].clone())
+                .collect();
+            let got = bernstein_on(&f, &a, &b);
+            assert_eq!(got.len(), want.len());
+            // got = k * want for one k > 0.
+            let (j, w) = want.iter().enumerate().find(|(_, w)| !w.is_zero()).unwrap();
+            let k = Rational::from_integer(got[j].clone()) / w;
+            assert!(k > Rational::zero());
+            for (g, w) in got.iter().zip(&want) {
+                assert_eq!(Rational::from_integer(g.clone()), w * &k);
+            }
+        }
+    }
+}
