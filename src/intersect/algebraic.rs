@@ -457,6 +457,71 @@ pub(crate) fn enclose(p: &[Rational], lo: &Rational, hi: &Rational) -> (Rational
     (a, b)
 }
 
+/// Encloses p([lo, hi]) for an integer polynomial p (ascending) of degree <= n without
+/// fractions: with D the lcm of the ends' denominators, x = X / D for X in the integer interval
+/// [D lo, D hi], and D^n p(X / D) = sum c_i X^i D^(n - i) is enclosed by interval Horner over
+/// the integers. Returns (l, h) with l <= D^n p(x) <= h for every x in [lo, hi]; two calls with
+/// the same ends and the same n share the positive factor D^n.
+pub(crate) fn enclose_scaled(
+    p: &[BigInt],
+    n: usize,
+    lo: &Rational,
+    hi: &Rational,
+) -> (BigInt, BigInt) {
+    debug_assert!(p.len() <= n + 1 && lo <= hi);
+    let d = lo.denom().lcm(hi.denom());
+    let a = lo.numer() * (&d / lo.denom());
+    let b = hi.numer() * (&d / hi.denom());
+    let (mut l, mut h) = (BigInt::zero(), BigInt::zero());
+    let mut dpow = BigInt::one();
+    for i in (0..=n).rev() {
+        (l, h) = interval_product(&l, &h, &a, &b);
+        if let Some(c) = p.get(i) {
+            if !c.is_zero() {
+                let term = c * &dpow;
+                l += &term;
+                h += &term;
+            }
+        }
+        if i > 0 {
+            dpow *= &d;
+        }
+    }
+    (l, h)
+}
+
+/// [l, h] * [a, b] for integer intervals (l <= h, a <= b): two products unless both
+/// intervals hold zero inside.
+fn interval_product(l: &BigInt, h: &BigInt, a: &BigInt, b: &BigInt) -> (BigInt, BigInt) {
+    if l.is_zero() && h.is_zero() {
+        return (BigInt::zero(), BigInt::zero());
+    }
+    let (l_pos, h_neg) = (!l.is_negative(), !h.is_positive());
+    if !a.is_negative() {
+        if l_pos {
+            (l * a, h * b)
+        } else if h_neg {
+            (l * b, h * a)
+        } else {
+            (l * b, h * b)
+        }
+    } else if !b.is_positive() {
+        if l_pos {
+            (h * a, l * b)
+        } else if h_neg {
+            (h * b, l * a)
+        } else {
+            (h * a, l * a)
+        }
+    } else if l_pos {
+        (h * a, h * b)
+    } else if h_neg {
+        (l * b, l * a)
+    } else {
+        ((l * b).min(h * a), (l * a).max(h * b))
+    }
+}
+
 /// The value p(alpha) of a rational polynomial at an algebraic number, correctly rounded to a
 /// double (ties to even), exactly.
 pub fn round_polynomial_at(p: &[Rational], alpha: &AlgebraicReal) -> f64 {

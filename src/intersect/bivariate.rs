@@ -23,7 +23,8 @@
 //!   1. swap: S_j(F, G)_(p,q) = (-1)^((p-j)(q-j)) S_j(G, F)_(q,p);
 //!   2. pseudo-division: for g = lc(G) != 0 at formal degree q and e = p - q + 1,
 //!      g^e F = Q G + R, the q - j rows of F gain g^e and the multiples of G are row
-//!      operations, so S_j(F, G)_(p,q) = S_j(R, G)_(p,q) / g^(e(q-j)) (R at formal degree p);
+//!      operations, so S_j(F, G)_(p,q) = S_j(R, G)_(p,q) / g^(e(q-j)) (R at formal degree p;
+//!      the divisions of all the points of one prime cost one inversion together);
 //!   3. degree drop: when F has formal degree p but actual degree r, the first p - r rows of
 //!      G form a triangle with diagonal g = the formal leading coefficient of G over the first
 //!      p - r columns, where every other row vanishes: for r > j,
@@ -31,7 +32,6 @@
 //!      p - j rows of G form that triangle and what is left is triangular in F's rows:
 //!      S_j(F, G)_(p,q) = (-1)^((p-j)(q-j)) g^(p-j) lc(F)^(q-j-1) F when r = j or q = j + 1,
 //!      and 0 otherwise.
-//!   The divisions by powers of g of all points are done with one inversion per prime.
 //! * *The degree bound D.* Give s the weight w_s >= 1 and t the weight w_t >= 0, and let W_F
 //!   be the largest weight i w_s + k w_t of a monomial s^i t^k of F. The entry in column t^c
 //!   of the row t^l F has s-degree <= (W_F - (c - l) w_t) / w_s; summed over one entry per
@@ -169,7 +169,7 @@ fn columns_mod(f: Field, a: &BiPoly, dt: usize) -> Vec<Vec<u64>> {
         .map(|k| {
             let mut c: Vec<u64> = a
                 .iter()
-                .map(|row| row.get(k).map_or(0, |x| f.from_bigint(x)))
+                .map(|row| row.get(k).map_or(0, |x| f.of_bigint(x)))
                 .collect();
             while c.last() == Some(&0) {
                 c.pop();
@@ -523,7 +523,7 @@ mod tests {
                 .map(|_| {
                     (0..=dt)
                         .map(|_| {
-                            if self.next() % 2 == 0 {
+                            if self.next().is_multiple_of(2) {
                                 BigInt::zero()
                             } else {
                                 self.small(r)
@@ -607,8 +607,8 @@ mod tests {
                 for row in a.iter_mut() {
                     row[0] = rng.small(r);
                 }
-                for k in 1..=m {
-                    a[0][k] = rng.small(r);
+                for c in a[0].iter_mut().skip(1) {
+                    *c = rng.small(r);
                 }
                 a
             };

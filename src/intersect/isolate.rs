@@ -9,8 +9,9 @@
 //! interval is halved. For a square-free f the bisection terminates (the one- and two-circle
 //! theorems of Ostrowski and Obreshkoff; Eigenwillig, Sharma and Yap, ISSAC 2006).
 //!
-//! The start coefficients come from the library's changes of basis ([`taylor_shift`],
-//! [`scale_argument`], [`power_to_bernstein`]) in exact rationals, scaled to integers once.
+//! The start coefficients are computed in integers ([`bernstein_on`]: an integer Taylor shift,
+//! a scaling, and the power-to-Bernstein change as a shift by 1 of the reversed polynomial),
+//! never through reduced fractions.
 //! The halving is de Casteljau's algorithm at u = 1/2 with **sums instead of averages**: level
 //! k holds 2^k times the true values, so after multiplying the left half by 2^(n - j) and the
 //! right half by 2^j (j the level read) both halves are integer vectors proportional by a
@@ -23,7 +24,6 @@
 
 use super::upoly::{degree, sign_at};
 use crate::num::ring::Rational;
-use crate::shape::basis::{power_to_bernstein, scale_argument, taylor_shift};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
@@ -63,23 +63,74 @@ pub fn sign_changes(b: &[BigInt]) -> usize {
     v
 }
 
-/// The integer Bernstein coefficients over [a, b] of the polynomial f (ascending powers),
-/// up to a positive factor.
+/// The integer Bernstein coefficients over [a, b] (a < b) of the polynomial f (ascending
+/// powers), up to a positive factor, with integer arithmetic only (no fraction is reduced):
+/// 1. with D the lcm of the ends' denominators, a = A / D and b - a = W / D, the polynomial
+///    g(u) = D^n f(a + (b - a) u) is h(A + W u) for h(y) = sum f_i D^(n - i) y^i;
+/// 2. h(A + z) by an integer Taylor shift, then z = W u multiplies the k-th coefficient by
+///    W^k, giving g;
+/// 3. the scaled Bernstein coefficients c_j = C(n, j) b_j of g are the coefficients of
+///    (1 + y)^n g(y / (1 + y)) = sum_k g_k y^k (1 + y)^(n - k), whose reverse is the
+///    reverse of g shifted by 1 (additions only);
+/// 4. b_j = c_j / C(n, j), made integral by the lcm L of the binomials C(n, j):
+///    L b_j = c_j (L / C(n, j)).
 pub fn bernstein_on(f: &[BigInt], a: &Rational, b: &Rational) -> Vec<BigInt> {
-    let mut c: Vec<Vec<Rational>> = f
-        .iter()
-        .map(|x| vec![Rational::from_integer(x.clone())])
-        .collect();
-    taylor_shift(&mut c, a);
-    scale_argument(&mut c, &(b - a));
-    let w = power_to_bernstein(&c);
-    let mut l = BigInt::one();
-    for p in &w {
-        l = l.lcm(p[0].denom());
+    let n = f.len().saturating_sub(1);
+    let d = a.denom().lcm(b.denom());
+    let big_a = a.numer() * (&d / a.denom());
+    let big_w = b.numer() * (&d / b.denom()) - &big_a;
+    let mut g: Vec<BigInt> = f.to_vec();
+    if !d.is_one() {
+        let mut dpow = BigInt::one();
+        for c in g.iter_mut().rev() {
+            *c *= &dpow;
+            dpow *= &d;
+        }
     }
-    w.iter()
-        .map(|p| p[0].numer() * (&l / p[0].denom()))
-        .collect()
+    taylor_shift_integer(&mut g, &big_a);
+    if !big_w.is_one() {
+        let mut wpow = BigInt::one();
+        for c in g.iter_mut().skip(1) {
+            wpow *= &big_w;
+            *c *= &wpow;
+        }
+    }
+    g.reverse();
+    taylor_shift_integer(&mut g, &BigInt::one());
+    g.reverse();
+    // The binomials C(n, j) and their lcm.
+    let mut binomials = Vec::with_capacity(n + 1);
+    let mut c = BigInt::one();
+    for j in 0..=n {
+        binomials.push(c.clone());
+        c = c * BigInt::from(n - j) / BigInt::from(j + 1);
+    }
+    let l = binomials.iter().fold(BigInt::one(), |l, c| l.lcm(c));
+    g.iter_mut().zip(&binomials).for_each(|(x, c)| *x *= &l / c);
+    g
+}
+
+/// The coefficients (ascending) of p(x + a) in place, for an integer a, by repeated synthetic
+/// division (n(n + 1)/2 multiply-adds; additions only when a = 1 or a = -1).
+fn taylor_shift_integer(p: &mut [BigInt], a: &BigInt) {
+    if a.is_zero() {
+        return;
+    }
+    let n = p.len().saturating_sub(1);
+    let one = a.is_one();
+    let minus_one = (-a).is_one();
+    for k in 0..n {
+        for i in (k..n).rev() {
+            let (lo, hi) = p.split_at_mut(i + 1);
+            if one {
+                lo[i] += &hi[0];
+            } else if minus_one {
+                lo[i] -= &hi[0];
+            } else {
+                lo[i] += a * &hi[0];
+            }
+        }
+    }
 }
 
 /// The two halves of the integer Bernstein vector `b` (see the module docs), each scaled by

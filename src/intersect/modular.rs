@@ -119,7 +119,7 @@ impl Field {
 
     /// The Montgomery form of the integer x (any u64).
     #[inline]
-    pub fn from_u64(self, x: u64) -> u64 {
+    pub fn of_u64(self, x: u64) -> u64 {
         self.mul(x % self.p, self.r2)
     }
 
@@ -131,10 +131,10 @@ impl Field {
 
     /// The Montgomery form of an integer of any size: Horner over its 64-bit digits, the
     /// product by 2^64 being the Montgomery product by R^2 (a R * R^2 / R = (a 2^64) R).
-    pub fn from_bigint(self, x: &BigInt) -> u64 {
+    pub fn of_bigint(self, x: &BigInt) -> u64 {
         let mut acc = 0;
         for d in x.magnitude().iter_u64_digits().rev() {
-            acc = self.add(self.mul(acc, self.r2), self.from_u64(d));
+            acc = self.add(self.mul(acc, self.r2), self.of_u64(d));
         }
         if x.sign() == Sign::Minus {
             self.neg(acc)
@@ -197,18 +197,18 @@ impl Field {
         // 1 / k! for k < n: one inversion of (n - 1)!, then downwards.
         let mut fact = self.one;
         for k in 1..n {
-            fact = self.mul(fact, self.from_u64(k as u64));
+            fact = self.mul(fact, self.of_u64(k as u64));
         }
         let mut inv_fact = self.inv(fact);
         for k in (1..n).rev() {
             d[k] = self.mul(d[k], inv_fact);
-            inv_fact = self.mul(inv_fact, self.from_u64(k as u64));
+            inv_fact = self.mul(inv_fact, self.of_u64(k as u64));
         }
         // p <- p (x - k) + c_k from k = n - 2 down to 0.
         let mut p = Vec::with_capacity(n);
         p.push(d[n - 1]);
         for k in (0..n - 1).rev() {
-            let mk = self.neg(self.from_u64(k as u64));
+            let mk = self.neg(self.of_u64(k as u64));
             p.push(0);
             for i in (1..p.len()).rev() {
                 p[i] = self.add(p[i - 1], self.mul(p[i], mk));
@@ -249,7 +249,7 @@ fn is_prime(n: u64) -> bool {
         return false;
     }
     for &b in &BASES {
-        if n % b == 0 {
+        if n.is_multiple_of(b) {
             return n == b;
         }
     }
@@ -292,7 +292,7 @@ pub fn reconstruct_symmetric(fields: &[Field], residues: &[Vec<u64>]) -> Vec<Big
     let radix: Vec<Vec<u64>> = (0..k)
         .map(|j| {
             (0..j)
-                .map(|l| fields[j].from_u64(fields[l].prime()))
+                .map(|l| fields[j].of_u64(fields[l].prime()))
                 .collect()
         })
         .collect();
@@ -303,31 +303,30 @@ pub fn reconstruct_symmetric(fields: &[Field], residues: &[Vec<u64>]) -> Vec<Big
         })
         .collect();
     let modulus: BigUint = fields.iter().map(|f| BigUint::from(f.prime())).product();
-    let mut out = Vec::with_capacity(n);
     let mut digits = vec![0u64; k];
-    for i in 0..n {
-        for j in 0..k {
-            let f = fields[j];
-            // x_(j-1) = v_0 + p_0 (v_1 + p_1 (... + p_(j-2) v_(j-1))) mod p_j, Horner.
-            let mut acc = 0;
-            for l in (0..j).rev() {
-                acc = f.add(f.mul(acc, radix[j][l]), f.from_u64(digits[l]));
+    (0..n)
+        .map(|i| {
+            for j in 0..k {
+                let f = fields[j];
+                // x_(j-1) = v_0 + p_0 (v_1 + p_1 (... + p_(j-2) v_(j-1))) mod p_j, Horner.
+                let mut acc = 0;
+                for l in (0..j).rev() {
+                    acc = f.add(f.mul(acc, radix[j][l]), f.of_u64(digits[l]));
+                }
+                let v = f.mul(f.sub(residues[j][i], acc), garner[j]);
+                digits[j] = f.to_u64(v);
             }
-            let v = f.mul(f.sub(residues[j][i], acc), garner[j]);
-            digits[j] = f.to_u64(v);
-        }
-        let mut x = BigUint::from(0u32);
-        for j in (0..k).rev() {
-            x = x * fields[j].prime() + digits[j];
-        }
-        let value = if &x << 1 > modulus {
-            BigInt::from_biguint(Sign::Minus, &modulus - x)
-        } else {
-            BigInt::from_biguint(Sign::Plus, x)
-        };
-        out.push(value);
-    }
-    out
+            let mut x = BigUint::from(0u32);
+            for j in (0..k).rev() {
+                x = x * fields[j].prime() + digits[j];
+            }
+            if &x << 1 > modulus {
+                BigInt::from_biguint(Sign::Minus, &modulus - x)
+            } else {
+                BigInt::from_biguint(Sign::Plus, x)
+            }
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -343,19 +342,19 @@ mod tests {
             for &a in &xs {
                 for &b in &xs {
                     let want = (a as u128 * b as u128 % p as u128) as u64;
-                    let got = f.to_u64(f.mul(f.from_u64(a), f.from_u64(b)));
+                    let got = f.to_u64(f.mul(f.of_u64(a), f.of_u64(b)));
                     assert_eq!(got, want);
                     assert_eq!(
-                        f.to_u64(f.sub(f.from_u64(a), f.from_u64(b))),
+                        f.to_u64(f.sub(f.of_u64(a), f.of_u64(b))),
                         ((a as u128 + p as u128 - b as u128) % p as u128) as u64
                     );
                 }
                 if a != 0 {
-                    let ia = f.inv(f.from_u64(a));
-                    assert_eq!(f.mul(ia, f.from_u64(a)), f.one());
+                    let ia = f.inv(f.of_u64(a));
+                    assert_eq!(f.mul(ia, f.of_u64(a)), f.one());
                 }
             }
-            let mut v: Vec<u64> = (1..20u64).map(|x| f.from_u64(x * 7919)).collect();
+            let mut v: Vec<u64> = (1..20u64).map(|x| f.of_u64(x * 7919)).collect();
             let w = v.clone();
             f.inv_all(&mut v);
             for (x, y) in v.iter().zip(&w) {
@@ -363,7 +362,7 @@ mod tests {
             }
             let big: BigInt = BigInt::from(-3i64) * (BigInt::from(1u64) << 200) + 12345;
             let want = ((&big % BigInt::from(p)) + BigInt::from(p)) % BigInt::from(p);
-            assert_eq!(BigInt::from(f.to_u64(f.from_bigint(&big))), want);
+            assert_eq!(BigInt::from(f.to_u64(f.of_bigint(&big))), want);
         }
     }
 
@@ -405,10 +404,10 @@ mod tests {
             .map(|&f| {
                 let values: Vec<u64> = (0..c.len() as u64)
                     .map(|x| {
-                        let xm = f.from_u64(x);
+                        let xm = f.of_u64(x);
                         c.iter()
                             .rev()
-                            .fold(0, |acc, ci| f.add(f.mul(acc, xm), f.from_bigint(ci)))
+                            .fold(0, |acc, ci| f.add(f.mul(acc, xm), f.of_bigint(ci)))
                     })
                     .collect();
                 f.interpolate_consecutive(&values)

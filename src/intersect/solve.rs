@@ -23,14 +23,14 @@
 //!    the Jacobian is non-zero. Otherwise the side of t is used, else the Jacobian is
 //!    tested exactly at a rational coordinate, else the pair is refused.
 
-use super::algebraic::AlgebraicReal;
+use super::algebraic::{enclose_scaled, AlgebraicReal};
 use super::bivariate::{coefficient_t, degree_t, resultant_t, subresultant_1, swap, BiPoly};
 use super::upoly::{self, degree, gcd, ZPoly};
 use super::zeros::{roots_with_multiplicity, RootInfo};
 use crate::error::{Error, Result};
 use crate::num::ring::Rational;
 use num_bigint::BigInt;
-use num_traits::{One, Zero};
+use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 
 /// One solution: indices into the s roots and t roots, and whether it is tangential.
@@ -196,6 +196,9 @@ fn find_partners(
 
 /// The in-box root of `other` equal to -n(x)/d(x) at the algebraic x (d(x) != 0 and the
 /// quotient is a root of `other`'s polynomial), or `None` when the quotient is outside the box.
+/// The quotient is enclosed by integer interval Horner ([`enclose_scaled`]: n and d share the
+/// positive scale, which cancels) and compared with rationals by cross-multiplication, so no
+/// fraction is ever reduced.
 fn locate_quotient(
     x: &AlgebraicReal,
     n: &[BigInt],
@@ -204,21 +207,41 @@ fn locate_quotient(
     other_box: (&Rational, &Rational),
 ) -> Option<usize> {
     let mut x = x.clone();
-    let (nq, dq) = (to_rationals(n), to_rationals(d));
+    let deg = n.len().max(d.len()).saturating_sub(1);
+    // a / b < c / e for b, e > 0.
+    let less = |a: &BigInt, b: &BigInt, c: &BigInt, e: &BigInt| a * e < c * b;
     loop {
         let (lo, hi) = x.interval();
-        let (nl, nh) = super::algebraic::enclose(&nq, lo, hi);
-        let (dl, dh) = super::algebraic::enclose(&dq, lo, hi);
-        let zero = Rational::zero();
-        if !(dl <= zero && zero <= dh) {
-            let quotients = [-(&nl / &dl), -(&nl / &dh), -(&nh / &dl), -(&nh / &dh)];
-            let ql = quotients.iter().min().expect("four");
-            let qh = quotients.iter().max().expect("four");
-            if qh < other_box.0 || ql > other_box.1 {
+        let (nl, nh) = enclose_scaled(n, deg, lo, hi);
+        let (dl, dh) = enclose_scaled(d, deg, lo, hi);
+        if dl.is_positive() || dh.is_negative() {
+            // q = m / e with e in [el, eh], el > 0, and m in [ml, mh].
+            let (ml, mh, el, eh) = if dl.is_positive() {
+                (-nh, -nl, dl, dh)
+            } else {
+                (nl, nh, -dh, -dl)
+            };
+            let (ql, ql_den) = if ml.is_negative() {
+                (ml, &el)
+            } else {
+                (ml, &eh)
+            };
+            let (qh, qh_den) = if mh.is_negative() {
+                (mh, &eh)
+            } else {
+                (mh, &el)
+            };
+            let (b0, b1) = other_box;
+            if less(&qh, qh_den, b0.numer(), b0.denom())
+                || less(b1.numer(), b1.denom(), &ql, ql_den)
+            {
                 return None;
             }
             for (j, root) in other.roots.iter().enumerate() {
-                if root.nbhd.0 < *ql && *qh < root.nbhd.1 {
+                let (r0, r1) = &root.nbhd;
+                if less(r0.numer(), r0.denom(), &ql, ql_den)
+                    && less(&qh, qh_den, r1.numer(), r1.denom())
+                {
                     return other.in_box[j].then_some(j);
                 }
             }

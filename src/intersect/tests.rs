@@ -8,6 +8,7 @@ use super::zeros::{bezier_zeros, bezier_zeros_f64};
 use crate::num::ring::{rational_to_f64, Rational};
 use crate::shape::basis::power_to_bernstein;
 use num_bigint::BigInt;
+use num_integer::Integer;
 use num_traits::{One, Zero};
 use std::cmp::Ordering;
 
@@ -500,4 +501,69 @@ fn filter_path_agrees_with_the_solver() {
         }
     }
     assert!(filtered >= 10, "only {filtered} cases had transversal crossings");
+#[test]
+fn integer_interval_horner_is_the_rational_one_scaled() {
+    use super::algebraic::{enclose, enclose_scaled};
+    let p: Vec<BigInt> = [7i64, -30, 0, 41, -5, 2]
+        .iter()
+        .map(|&c| c.into())
+        .collect();
+    let pr: Vec<Rational> = p
+        .iter()
+        .map(|c| Rational::from_integer(c.clone()))
+        .collect();
+    for (lo, hi) in [
+        (q(-3, 2), q(1, 3)),
+        (q(1, 4), q(5, 6)),
+        (q(-7, 3), q(-1, 9)),
+        (q(2, 5), q(2, 5)),
+    ] {
+        let (l, h) = enclose(&pr, &lo, &hi);
+        let d = Rational::from_integer(lo.denom().lcm(hi.denom()));
+        let scale = (0..6).fold(Rational::one(), |acc, _| acc * &d);
+        let (sl, sh) = enclose_scaled(&p, 6, &lo, &hi);
+        assert_eq!(Rational::from_integer(sl), l * &scale);
+        assert_eq!(Rational::from_integer(sh), h * &scale);
+    }
+}
+
+#[test]
+fn integer_bernstein_coefficients_are_the_rational_ones_scaled() {
+    use super::isolate::bernstein_on;
+    use crate::shape::basis::{power_to_bernstein, scale_argument, taylor_shift};
+    let mut state = 0x5eed_1234_abcd_ef01u64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state % 41) as i64 - 20
+    };
+    for n in [1usize, 2, 5, 9] {
+        let f: Vec<BigInt> = (0..=n).map(|_| BigInt::from(next())).collect();
+        for (a, b) in [
+            (q(-1, 1), q(2, 1)),
+            (q(1, 3), q(3, 4)),
+            (q(-5, 8), q(-1, 16)),
+        ] {
+            let mut c: Vec<Vec<Rational>> = f
+                .iter()
+                .map(|x| vec![Rational::from_integer(x.clone())])
+                .collect();
+            taylor_shift(&mut c, &a);
+            scale_argument(&mut c, &(&b - &a));
+            let want: Vec<Rational> = power_to_bernstein(&c)
+                .into_iter()
+                .map(|p| p[0].clone())
+                .collect();
+            let got = bernstein_on(&f, &a, &b);
+            assert_eq!(got.len(), want.len());
+            // got = k * want for one k > 0.
+            let (j, w) = want.iter().enumerate().find(|(_, w)| !w.is_zero()).unwrap();
+            let k = Rational::from_integer(got[j].clone()) / w;
+            assert!(k > Rational::zero());
+            for (g, w) in got.iter().zip(&want) {
+                assert_eq!(Rational::from_integer(g.clone()), w * &k);
+            }
+        }
+    }
 }
