@@ -10,7 +10,7 @@
 //! encloses its range over the argument intervals. This module adds the few set operations the
 //! filter needs: the outward-rounded ends [`lower`] and [`upper`] (one `next_down`/`next_up`
 //! after the rounded sum, so that lower <= v - e and upper >= v + e hold exactly), an interval
-//! from its ends ([`from_bounds`]), and the strict tests |x| < r and |x| > r of Krawczyk's test ([`inside_radius`], [`outside_radius`]).
+//! from its ends ([`from_bounds`]), and the strict test |x| < r of Krawczyk's test ([`inside_radius`]).
 //!
 //! **Double-double with a bound: [`Dd`].** A value hi + lo (two doubles) with a bound e on its
 //! distance to the exact result of the same operations. The sums and products use the
@@ -73,12 +73,6 @@ pub(crate) fn from_bounds(lo: f64, hi: f64) -> BoundedF64 {
 #[inline]
 pub(crate) fn inside_radius(x: &BoundedF64, radius: f64) -> bool {
     upper(x) < radius && lower(x) > -radius
-}
-
-/// Whether every x of the interval satisfies |x| > `radius` (conservatively).
-#[inline]
-pub(crate) fn outside_radius(x: &BoundedF64, radius: f64) -> bool {
-    lower(x) > radius || upper(x) < -radius
 }
 
 /// TwoSum: `(s, e)` with s = fl(a + b) and a + b = s + e exactly (finite operands).
@@ -373,6 +367,5 @@ mod tests {
         assert!(lower(&x) <= 0.1 && upper(&x) >= 0.3);
         assert!(inside_radius(&BoundedF64::with_bound(0.1, 0.1), 0.25));
         assert!(!inside_radius(&BoundedF64::with_bound(0.1, 0.15), 0.25));
-        assert!(outside_radius(&BoundedF64::with_bound(0.5, 0.1), 0.25));
     }
 }
