@@ -9,7 +9,9 @@
 //! library's de Casteljau split ([`crate::shape::halving::curve_split`] at 1/2, in plain
 //! `f64`). A cell S x T is dropped when the bounding boxes of the two pieces' control points,
 //! each enlarged by a rigorous bound E on the split's rounding, are disjoint (a piece lies in
-//! the convex hull of its exact control points). The bound is a priori: one halving step
+//! the convex hull of its exact control points), or when the fat lines (the bands orthogonal to
+//! either piece's chord that hold its control points, with a rigorous rounding margin) are
+//! disjoint. The bound E is a priori: one halving step
 //! computes v' = fl(x + fl(0.5 fl(y - x))) from values |x|, |y| <= M, and
 //! |v' - (x + y) / 2| <= u |y - x| / 2 + η / 2 + u |x + h| <= 2u M (1 + u) + 2η
 //! (u = 2^-53; halving is exact but for underflow; sums have no underflow error), while the
@@ -34,13 +36,14 @@
 //! nonsingular: the radius of K is at least |I - Y A| r, so |I - Y A| r < r for the positive
 //! vector r, hence the spectral radius of I - Y A is below 1. The Jacobian at the root is
 //! then nonsingular, i.e. cross(P'(s), Q'(t)) != 0: the crossing is transversal and
-//! `tangent` is false, exactly. A surviving cell is tried once both its sides are at most
-//! 2^-`PROOF_LEVEL`: Newton's method in `f64` from its centre; when it converges to z near the
+//! `tangent` is false, exactly. A surviving cell whose pieces' chords nearly cross is tried:
+//! Newton's method in `f64` from the chords' crossing; when it converges to z near the
 //! cell, the box B centred at z with radii |z - centre| + half width (rounded up) contains the
 //! cell, and Krawczyk's test on B is tried. A proved B is an *exclusion box*: its one root is
 //! the only one in B, so every later cell inside B is dropped. Boxes centred on the Newton
 //! point keep the root away from the box's boundary, so roots on the cells' dyadic edges need
-//! no special case. Cells whose test fails are halved again (both curves).
+//! no special case. Around a new root a box `INFLATE` times as large is tried too, to settle
+//! the neighbouring cells at once. Cells whose test fails are halved again (both curves).
 //!
 //! **3. A tight enclosure and correct rounding.** For a proved B, a second Krawczyk step on
 //! the small box z ± r' (r' = max(8 |Y F(z)|, 2^-48), inside B) with F(z) evaluated in
@@ -84,14 +87,14 @@ pub struct CertifiedCrossing {
     pub point: [f64; 2],
 }
 
-/// Cells are tried by Newton and Krawczyk once both sides are at most 2^-PROOF_LEVEL.
-const PROOF_LEVEL: u32 = 1;
 /// No side is halved below 2^-MAX_LEVEL.
 const MAX_LEVEL: u32 = 40;
 /// At most this many cells are examined.
 const MAX_CELLS: usize = 4000;
 /// Newton iterations from a cell's start point.
 const NEWTON_STEPS: usize = 12;
+/// The factor of the larger exclusion box tried around a new root.
+const INFLATE: f64 = 4.0;
 /// The least radius of the final Krawczyk box.
 const TIGHT_RADIUS: f64 = 1.0 / (1u64 << 48) as f64;
 
@@ -108,8 +111,6 @@ struct Curve {
     dd: Vec<Dd>,
     /// The hodograph's control points with their rounding bounds.
     hodograph: Vec<BoundedF64>,
-    /// The hodograph's control points as plain doubles (the values of `hodograph`).
-    hodograph_f64: Vec<f64>,
     /// β of the module documentation: the error bound of one halving step.
     step_error: f64,
     /// Control points of the pieces, `2 (n + 1)` doubles each.
@@ -164,7 +165,6 @@ impl Curve {
         let mut curve = Curve {
             degree: p.len() - 1,
             dd: points.iter().map(|&x| Dd::exact(x)).collect(),
-            hodograph_f64: hodograph.iter().map(BoundedF64::value).collect(),
             hodograph,
             exact,
             step_error: upward(2.0 * UNIT_ROUNDOFF * m0 * (1.0 + 2f64.powi(-19)) + 2.0 * ETA),
@@ -563,7 +563,21 @@ impl Search {
             Some(index) => index,
             None => {
                 let root = certify(p, q, &b)?;
-                self.add_root(root)?
+                let index = self.add_root(root)?;
+                let (p, q) = (&mut self.p, &mut self.q);
+                // A new root: try a box INFLATE times as large, whose one root is then this
+                // one too (it contains b), so that the neighbouring cells of the root are
+                // settled without another Newton run.
+                let big = Box2 {
+                    mid: z,
+                    radius: radius.map(|r| INFLATE * r),
+                };
+                let dp = p.tangent_hull(z[0], big.radius[0]);
+                let dq = q.tangent_hull(z[1], big.radius[1]);
+                if krawczyk(&big, f, dp, dq).is_some_and(|k| k.proved) {
+                    self.exclusions.push((big, index));
+                }
+                index
             }
         };
         self.exclusions.push((b, index));
@@ -642,12 +656,10 @@ pub fn certified_crossings_f64(p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<Vec<Cer
         if search.exclusions.iter().any(|(e, _)| e.contains(s, t)) {
             continue;
         }
-        if a.level >= PROOF_LEVEL && b.level >= PROOF_LEVEL {
-            let start = chord_start(search.p.piece(i), search.q.piece(j), s, t);
-            if let Some(start) = start {
-                if search.try_cell(s, t, start)? {
-                    continue;
-                }
+        let start = chord_start(search.p.piece(i), search.q.piece(j), s, t);
+        if let Some(start) = start {
+            if search.try_cell(s, t, start)? {
+                continue;
             }
         }
         if a.level >= MAX_LEVEL || b.level >= MAX_LEVEL {

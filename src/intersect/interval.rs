@@ -3,8 +3,9 @@
 //!
 //! **Intervals are [`BoundedF64`].** A `BoundedF64` (v, e) stands for every real x with
 //! |x - v| <= e. Its arithmetic is a running error analysis whose bound formulas are worst
-//! cases over all operands within their bounds (|x y - fl(v_x v_y)| <= |v_x| e_y + |v_y| e_x
-//! + e_x e_y + u |fl(v_x v_y)| + η, and so on, each rounded upwards): that is midpoint-radius
+//! cases over all operands within their bounds (for a product, |x y - fl(v_x v_y)| is at most
+//! |v_x| e_y + |v_y| e_x + e_x e_y + u |fl(v_x v_y)| + η, and so on, each rounded upwards):
+//! that is midpoint-radius
 //! interval arithmetic, inclusion-isotone, so evaluating a polynomial by any sequence of ring
 //! operations on `BoundedF64` arguments (de Casteljau's pyramid with an interval argument, say)
 //! encloses its range over the argument intervals. This module adds the few set operations the
@@ -123,7 +124,7 @@ impl Dd {
 
     /// The whole value as an interval of one double: fl(hi + lo) with the bound and the
     /// (exact) rounding residual of that sum.
-    pub(crate) fn to_bounded(&self) -> BoundedF64 {
+    pub(crate) fn to_bounded(self) -> BoundedF64 {
         let (v, r) = two_sum(self.hi, self.lo);
         BoundedF64::with_bound(v, upward(self.bound_or_infinite() + r.abs()))
     }
