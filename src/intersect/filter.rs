@@ -9,7 +9,9 @@
 //! library's de Casteljau split ([`crate::shape::halving::curve_split`] at 1/2, in plain
 //! `f64`). A cell S x T is dropped when the bounding boxes of the two pieces' control points,
 //! each enlarged by a rigorous bound E on the split's rounding, are disjoint (a piece lies in
-//! the convex hull of its exact control points). The bound is a priori: one halving step
+//! the convex hull of its exact control points), or when the fat lines (the bands orthogonal to
+//! either piece's chord that hold its control points, with a rigorous rounding margin) are
+//! disjoint. The bound E is a priori: one halving step
 //! computes v' = fl(x + fl(0.5 fl(y - x))) from values |x|, |y| <= M, and
 //! |v' - (x + y) / 2| <= u |y - x| / 2 + η / 2 + u |x + h| <= 2u M (1 + u) + 2η
 //! (u = 2^-53; halving is exact but for underflow; sums have no underflow error), while the
@@ -34,13 +36,14 @@
 //! nonsingular: the radius of K is at least |I - Y A| r, so |I - Y A| r < r for the positive
 //! vector r, hence the spectral radius of I - Y A is below 1. The Jacobian at the root is
 //! then nonsingular, i.e. cross(P'(s), Q'(t)) != 0: the crossing is transversal and
-//! `tangent` is false, exactly. A surviving cell is tried once both its sides are at most
-//! 2^-`PROOF_LEVEL`: Newton's method in `f64` from its centre; when it converges to z near the
+//! `tangent` is false, exactly. A surviving cell whose pieces' chords nearly cross is tried:
+//! Newton's method in `f64` from the chords' crossing; when it converges to z near the
 //! cell, the box B centred at z with radii |z - centre| + half width (rounded up) contains the
 //! cell, and Krawczyk's test on B is tried. A proved B is an *exclusion box*: its one root is
 //! the only one in B, so every later cell inside B is dropped. Boxes centred on the Newton
 //! point keep the root away from the box's boundary, so roots on the cells' dyadic edges need
-//! no special case. Cells whose test fails are halved again (both curves).
+//! no special case. Around a new root a box `INFLATE` times as large is tried too, to settle
+//! the neighbouring cells at once. Cells whose test fails are halved again (both curves).
 //!
 //! **3. A tight enclosure and correct rounding.** For a proved B, a second Krawczyk step on
 //! the small box z ± r' (r' = max(8 |Y F(z)|, 2^-48), inside B) with F(z) evaluated in
@@ -62,15 +65,12 @@
 //! roots, overlapping or identical curves, where Krawczyk's test cannot succeed), a curve that
 //! is a single point, non-finite or extreme input.
 
-use super::interval::{
-    from_bounds, inside_radius, lower, outside_radius, round_nearest, upper, ConvexStep, Dd,
-};
+use super::interval::{from_bounds, inside_radius, lower, round_nearest, upper, ConvexStep, Dd};
 use crate::num::bounded::{upward, BoundedF64, ETA, UNIT_ROUNDOFF};
 use crate::num::ring::Ring;
-use crate::shape::bezier::BezierCurve;
-use crate::shape::flat::{curve_eval_into, curve_pyramid_in_place};
-use crate::shape::halving::curve_net;
+use crate::shape::flat::curve_pyramid_in_place;
 use crate::shape::halving::curve_split;
+use crate::shape::halving::{curve_net, step_left, BernsteinStep};
 
 /// One proved transversal crossing P(s) = Q(t) with s, t in (0, 1).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -87,18 +87,19 @@ pub struct CertifiedCrossing {
     pub point: [f64; 2],
 }
 
-/// Cells are tried by Newton and Krawczyk once both sides are at most 2^-PROOF_LEVEL.
-const PROOF_LEVEL: u32 = 1;
 /// No side is halved below 2^-MAX_LEVEL.
 const MAX_LEVEL: u32 = 40;
 /// At most this many cells are examined.
 const MAX_CELLS: usize = 4000;
-/// Newton iterations from a cell's centre.
-const NEWTON_STEPS: usize = 16;
+/// Newton iterations from a cell's start point.
+const NEWTON_STEPS: usize = 12;
+/// The factor of the larger exclusion box tried around a new root.
+const INFLATE: f64 = 4.0;
 /// The least radius of the final Krawczyk box.
 const TIGHT_RADIUS: f64 = 1.0 / (1u64 << 48) as f64;
 
-/// One curve: its control points in the forms the filter needs, and its subdivision tree.
+/// One curve: its control points in the forms the filter needs, its subdivision tree, and
+/// scratch space.
 struct Curve {
     /// Degree n.
     degree: usize,
@@ -110,26 +111,31 @@ struct Curve {
     dd: Vec<Dd>,
     /// The hodograph's control points with their rounding bounds.
     hodograph: Vec<BoundedF64>,
-    /// The hodograph's control points as plain doubles (the values of `hodograph`).
-    hodograph_f64: Vec<f64>,
     /// β of the module documentation: the error bound of one halving step.
     step_error: f64,
     /// Control points of the pieces, `2 (n + 1)` doubles each.
     pieces: Vec<f64>,
-    /// Per piece: start of its parameter interval, its level (width 2^-level), its enlarged
-    /// bounding box [x_lo, x_hi, y_lo, y_hi], and its halves once split.
+    /// The pieces' parameter intervals, bounding boxes and halves.
     nodes: Vec<Node>,
-    /// Scratch for evaluation and splitting.
+    /// Scratch.
     level: Vec<f64>,
+    level_dd: Vec<Dd>,
+    level_bounded: Vec<BoundedF64>,
+    net_scratch: Vec<BoundedF64>,
     left: Vec<f64>,
     right: Vec<f64>,
 }
 
+/// A piece of a curve: over [start, start + 2^-level], its control points' bounding box
+/// [x_lo, x_hi, y_lo, y_hi] enlarged by the split's error bound, its halves once split.
 #[derive(Clone, Copy)]
 struct Node {
     start: f64,
     level: u32,
     bbox: [f64; 4],
+    /// E(level): the bound on the distance of each computed control point coordinate to the
+    /// exact one.
+    error: f64,
     children: Option<[usize; 2]>,
 }
 
@@ -149,28 +155,31 @@ impl Curve {
         }
         let points: Vec<f64> = p.iter().flatten().copied().collect();
         let exact: Vec<BoundedF64> = points.iter().map(|&x| BoundedF64::exact(x)).collect();
-        let dd = points.iter().map(|&x| Dd::exact(x)).collect();
-        let hodograph = BezierCurve::from_raw(2, exact.clone())
-            .deriv()
-            .coordinates()
-            .to_vec();
-        let hodograph_f64 = hodograph.iter().map(BoundedF64::value).collect();
-        let step_error = upward(2.0 * UNIT_ROUNDOFF * m0 * (1.0 + 2f64.powi(-19)) + 2.0 * ETA);
+        // The hodograph n (p_(i+1) - p_i), its rounding bounded.
+        let n = BoundedF64::exact((p.len() - 1) as f64);
+        let hodograph: Vec<BoundedF64> = exact
+            .iter()
+            .zip(&exact[2..])
+            .map(|(a, b)| b.sub(a).mul(&n))
+            .collect();
         let mut curve = Curve {
             degree: p.len() - 1,
-            points: points.clone(),
-            exact,
-            dd,
+            dd: points.iter().map(|&x| Dd::exact(x)).collect(),
             hodograph,
-            hodograph_f64,
-            step_error,
-            pieces: Vec::new(),
-            nodes: Vec::new(),
+            exact,
+            step_error: upward(2.0 * UNIT_ROUNDOFF * m0 * (1.0 + 2f64.powi(-19)) + 2.0 * ETA),
+            pieces: Vec::with_capacity(64 * points.len()),
+            nodes: Vec::with_capacity(64),
             level: Vec::new(),
+            level_dd: Vec::new(),
+            level_bounded: Vec::new(),
+            net_scratch: Vec::new(),
             left: vec![0.0; points.len()],
             right: vec![0.0; points.len()],
+            points,
         };
-        curve.push_piece(&points, 0.0, 0);
+        let whole = curve.points.clone();
+        curve.push_piece(&whole, 0.0, 0);
         Some(curve)
     }
 
@@ -200,72 +209,83 @@ impl Curve {
             start,
             level,
             bbox,
+            error: e,
             children: None,
         });
         self.nodes.len() - 1
     }
 
-    /// The halves of piece `i`, split on first use.
+    /// The control points of piece `i`.
+    fn piece(&self, i: usize) -> &[f64] {
+        let stride = self.points.len();
+        &self.pieces[i * stride..(i + 1) * stride]
+    }
+
+    /// The halves of piece `i` (the library's de Casteljau split at 1/2), split on first use.
     fn children(&mut self, i: usize) -> [usize; 2] {
         if let Some(c) = self.nodes[i].children {
             return c;
         }
-        let stride = self.points.len();
         let Node { start, level, .. } = self.nodes[i];
-        curve_split(
-            &self.pieces[i * stride..(i + 1) * stride],
-            2,
-            &0.5,
-            &mut self.left,
-            &mut self.right,
-        );
-        let half = width(level + 1);
-        let (left, right) = (
+        let (mut left, mut right) = (
             std::mem::take(&mut self.left),
             std::mem::take(&mut self.right),
         );
+        curve_split(self.piece(i), 2, &0.5, &mut left, &mut right);
         let a = self.push_piece(&left, start, level + 1);
-        let b = self.push_piece(&right, start + half, level + 1);
+        let b = self.push_piece(&right, start + width(level + 1), level + 1);
         (self.left, self.right) = (left, right);
         self.nodes[i].children = Some([a, b]);
         [a, b]
     }
 
-    /// P(s) and P'(s) in plain `f64`.
+    /// P(s) and P'(s) in plain `f64` (for Newton's method only): n - 1 de Casteljau steps
+    /// leave the segment b0 b1 with P(s) = b0 + s (b1 - b0) and P'(s) = n (b1 - b0).
     fn eval_f64(&mut self, s: f64) -> ([f64; 2], [f64; 2]) {
-        let mut point = [0.0; 2];
-        let mut tangent = [0.0; 2];
-        curve_eval_into(&self.points, 2, &s, &mut point, &mut self.level);
-        curve_eval_into(&self.hodograph_f64, 2, &s, &mut tangent, &mut self.level);
-        (point, tangent)
+        let level = &mut self.level;
+        level.clear();
+        level.extend_from_slice(&self.points);
+        let (len, step) = (level.len(), BernsteinStep(&s));
+        for r in 0..self.degree - 1 {
+            step_left(&mut level[..len - 2 * r], 2, &step);
+        }
+        let d = [level[2] - level[0], level[3] - level[1]];
+        let n = self.degree as f64;
+        (
+            [level[0] + s * d[0], level[1] + s * d[1]],
+            [n * d[0], n * d[1]],
+        )
     }
 
     /// An enclosure of P at the double `s` (the pyramid in convex form, [`ConvexStep`]).
-    fn eval_bounded(&self, s: f64) -> [BoundedF64; 2] {
-        let mut level = self.exact.clone();
-        curve_pyramid_in_place(&mut level, 2, &ConvexStep::new(BoundedF64::exact(s)));
+    fn eval_bounded(&mut self, s: f64) -> [BoundedF64; 2] {
+        let level = &mut self.level_bounded;
+        level.clear();
+        level.extend_from_slice(&self.exact);
+        curve_pyramid_in_place(level, 2, &ConvexStep::new(BoundedF64::exact(s)));
         [level[0], level[1]]
     }
 
-    /// P at the double `s` in double-double with a bound.
-    fn eval_dd(&self, s: f64) -> [Dd; 2] {
-        let mut level = self.dd.clone();
-        curve_pyramid_in_place(&mut level, 2, &ConvexStep::new(Dd::exact(s)));
-        [level[0], level[1]]
+    /// P at the double `s` in double-double with a bound (the pyramid in convex form,
+    /// [`ConvexStep`]).
+    fn eval_dd(&mut self, s: f64) -> [Dd; 2] {
+        self.level_dd.clear();
+        self.level_dd.extend_from_slice(&self.dd);
+        curve_pyramid_in_place(&mut self.level_dd, 2, &ConvexStep::new(Dd::exact(s)));
+        [self.level_dd[0], self.level_dd[1]]
     }
 
     /// An enclosure of P'(s) for every s with |s - mid| <= radius: the hull of the
     /// hodograph's control points over [a, b] ⊇ [mid - radius, mid + radius] (the engine's
     /// restriction net at the exact double ends a, b in convex form, its rounding bounded by
-    /// `BoundedF64`), which
-    /// holds the hodograph over [a, b] by the convex hull property. (De Casteljau's pyramid at
-    /// an interval argument would also enclose it, but its width grows like (1 + 2|s|)^n.)
-    fn tangent_over(&self, mid: f64, radius: f64) -> [BoundedF64; 2] {
-        let a = BoundedF64::exact((mid - radius).next_down());
-        let b = BoundedF64::exact((mid + radius).next_up());
-        let mut net = vec![BoundedF64::zero(); self.hodograph.len()];
-        let (a, b) = (ConvexStep::new(a), ConvexStep::new(b));
-        curve_net(&self.hodograph, 2, &a, &b, &mut net, &mut Vec::new());
+    /// `BoundedF64`), which holds the hodograph over [a, b] by the convex hull property.
+    fn tangent_hull(&mut self, mid: f64, radius: f64) -> [BoundedF64; 2] {
+        let a = ConvexStep::new(BoundedF64::exact((mid - radius).next_down()));
+        let b = ConvexStep::new(BoundedF64::exact((mid + radius).next_up()));
+        let net = &mut self.level_bounded;
+        net.clear();
+        net.resize(self.hodograph.len(), BoundedF64::zero());
+        curve_net(&self.hodograph, 2, &a, &b, net, &mut self.net_scratch);
         [0, 1].map(|c| {
             let (lo, hi) = net
                 .iter()
@@ -277,11 +297,55 @@ impl Curve {
             from_bounds(lo, hi)
         })
     }
+
+    /// An enclosure of P'(s) for every s with |s - mid| <= radius: de Casteljau's pyramid at
+    /// the interval argument in convex form, whose width grows only linearly with the degree
+    /// (each level adds about 2 radius max |x|); cheaper than [`Curve::tangent_hull`] and as
+    /// good for the tiny boxes of the final step.
+    fn tangent_pyramid(&mut self, mid: f64, radius: f64) -> [BoundedF64; 2] {
+        let level = &mut self.level_bounded;
+        level.clear();
+        level.extend_from_slice(&self.hodograph);
+        let step = ConvexStep::new(BoundedF64::with_bound(mid, radius));
+        curve_pyramid_in_place(level, 2, &step);
+        [level[0], level[1]]
+    }
 }
 
 /// 2^-level.
 fn width(level: u32) -> f64 {
-    2f64.powi(-(level as i32))
+    // The exponent field of 2^-level (level <= MAX_LEVEL, a normal double).
+    f64::from_bits(u64::from(1023 - level) << 52)
+}
+
+/// Whether the fat line of piece `a` (the band, orthogonal to the chord of `a`, that holds
+/// its exact control points) misses every exact control point of piece `b`; coordinates of
+/// the pieces within `ea` and `eb` of the exact ones. With any double vector n (the chord's
+/// normal, computed), the exact n·x of an exact control point x lies within
+/// (|n_x| + |n_y|) E + 3u (|n_x| |c_x| + |n_y| |c_y|) + 4η of the computed n·c (two
+/// products and a sum, rounded); a curve lies in the hull of its control points, so disjoint
+/// bands of the two pieces mean no common point.
+fn fat_line_separates(a: &[f64], ea: f64, b: &[f64], eb: f64) -> bool {
+    let k = a.len() - 2;
+    let n = [a[1] - a[k + 1], a[k] - a[0]];
+    if n == [0.0, 0.0] {
+        return false;
+    }
+    let weight = n[0].abs() + n[1].abs();
+    let band = |pts: &[f64], e: f64| {
+        let (mut lo, mut hi, mut size) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64);
+        for c in pts.chunks_exact(2) {
+            let d = n[0] * c[0] + n[1] * c[1];
+            lo = lo.min(d);
+            hi = hi.max(d);
+            size = size.max(n[0].abs() * c[0].abs() + n[1].abs() * c[1].abs());
+        }
+        let margin = upward(weight * e + 3.0 * UNIT_ROUNDOFF * size + 4.0 * ETA);
+        ((lo - margin).next_down(), (hi + margin).next_up())
+    };
+    let (a_lo, a_hi) = band(a, ea);
+    let (b_lo, b_hi) = band(b, eb);
+    a_hi < b_lo || b_hi < a_lo
 }
 
 /// A box in (s, t): midpoint and radii, standing for m ± r exactly.
@@ -292,7 +356,7 @@ struct Box2 {
 }
 
 impl Box2 {
-    /// Whether [a0, a1] x [b0, b1] lies inside the box (decided conservatively).
+    /// Whether [s0, s1] x [t0, t1] lies inside the box (decided conservatively).
     fn contains(&self, s: [f64; 2], t: [f64; 2]) -> bool {
         let inside =
             |m: f64, r: f64, lo: f64, hi: f64| (m - r).next_up() <= lo && hi <= (m + r).next_down();
@@ -305,24 +369,21 @@ impl Box2 {
 struct Krawczyk {
     /// K(X) - m, per coordinate.
     offset: [BoundedF64; 2],
-    /// P'(S) over the box's S.
-    tangent_p: [BoundedF64; 2],
     /// K(X) lies in the interior of X: exactly one root in X, a nonsingular Jacobian.
     proved: bool,
-    /// K(X) misses X: no root in X.
-    empty: bool,
 }
 
-/// Krawczyk's operator on the box `x` with F(m) enclosed by `f` (module documentation, 2).
-fn krawczyk(p: &Curve, q: &Curve, x: &Box2, f: [BoundedF64; 2]) -> Option<Krawczyk> {
-    let dp = p.tangent_over(x.mid[0], x.radius[0]);
-    let dq = q.tangent_over(x.mid[1], x.radius[1]);
+/// Krawczyk's operator on the box `x`, with F(m) enclosed by `f`, P'(S) by `dp` and Q'(T) by
+/// `dq` (module documentation, 2). `None` when the midpoint Jacobian is singular.
+fn krawczyk(
+    x: &Box2,
+    f: [BoundedF64; 2],
+    dp: [BoundedF64; 2],
+    dq: [BoundedF64; 2],
+) -> Option<Krawczyk> {
     // J = [[P'_x, -Q'_x], [P'_y, -Q'_y]] over the box; Y the inverse of its midpoint.
     let j = [[dp[0], dq[0].neg()], [dp[1], dq[1].neg()]];
-    let a = [
-        [j[0][0].value(), j[0][1].value()],
-        [j[1][0].value(), j[1][1].value()],
-    ];
+    let a = j.map(|row| row.map(|e| e.value()));
     let det = a[0][0] * a[1][1] - a[0][1] * a[1][0];
     if det == 0.0 || !det.is_finite() {
         return None;
@@ -330,35 +391,26 @@ fn krawczyk(p: &Curve, q: &Curve, x: &Box2, f: [BoundedF64; 2]) -> Option<Krawcz
     let y = [
         [a[1][1] / det, -a[0][1] / det],
         [-a[1][0] / det, a[0][0] / det],
-    ];
-    let yb = y.map(|row| row.map(BoundedF64::exact));
+    ]
+    .map(|row| row.map(BoundedF64::exact));
     let radius = x.radius.map(|r| BoundedF64::with_bound(0.0, r));
-    let mut offset = [BoundedF64::zero(); 2];
-    for i in 0..2 {
+    let offset = [0, 1].map(|i| {
         // -Y F(m) + sum_j (δ_ij - (Y J)_ij) (X - m)_j.
-        let yf = yb[i][0].mul(&f[0]).add(&yb[i][1].mul(&f[1]));
-        let mut k = yf.neg();
-        for col in 0..2 {
-            let yj = yb[i][0].mul(&j[0][col]).add(&yb[i][1].mul(&j[1][col]));
+        let yf = y[i][0].mul(&f[0]).add(&y[i][1].mul(&f[1]));
+        (0..2).fold(yf.neg(), |k, col| {
+            let yj = y[i][0].mul(&j[0][col]).add(&y[i][1].mul(&j[1][col]));
             let identity = BoundedF64::exact(if i == col { 1.0 } else { 0.0 });
-            k = k.add(&identity.sub(&yj).mul(&radius[col]));
-        }
-        offset[i] = k;
-    }
+            k.add(&identity.sub(&yj).mul(&radius[col]))
+        })
+    });
     let proved = (0..2).all(|i| inside_radius(&offset[i], x.radius[i]));
-    let empty = (0..2).any(|i| outside_radius(&offset[i], x.radius[i]));
-    Some(Krawczyk {
-        offset,
-        tangent_p: dp,
-        proved,
-        empty,
-    })
+    Some(Krawczyk { offset, proved })
 }
 
-/// F(m) = P(m_s) - Q(m_t), enclosed in `f64` intervals.
-fn residual(p: &Curve, q: &Curve, m: [f64; 2]) -> [BoundedF64; 2] {
-    let (a, b) = (p.eval_bounded(m[0]), q.eval_bounded(m[1]));
-    [a[0].sub(&b[0]), a[1].sub(&b[1])]
+/// F(m) = P(m_s) - Q(m_t) in double-double with a bound, per coordinate, with P(m_s).
+fn residual_dd(p: &mut Curve, q: &mut Curve, m: [f64; 2]) -> ([Dd; 2], [Dd; 2]) {
+    let (a, b) = (p.eval_dd(m[0]), q.eval_dd(m[1]));
+    ([a[0].sub(&b[0]), a[1].sub(&b[1])], a)
 }
 
 /// Newton's method in `f64` from `start`: the point it converges to, if it does.
@@ -387,42 +439,54 @@ fn newton(p: &mut Curve, q: &mut Curve, start: [f64; 2]) -> Option<[f64; 2]> {
     None
 }
 
-/// A proved root: its exclusion box, its tight enclosure, and the reported crossing when it
-/// lies inside the domain.
+/// Where the chords of the pieces `a` (over `s`) and `b` (over `t`) cross, as parameters, when
+/// they nearly do: the start of Newton's method (a heuristic; nothing is proved from it).
+fn chord_start(a: &[f64], b: &[f64], s: [f64; 2], t: [f64; 2]) -> Option<[f64; 2]> {
+    let (n, m) = (a.len() - 2, b.len() - 2);
+    let da = [a[n] - a[0], a[n + 1] - a[1]];
+    let db = [b[m] - b[0], b[m + 1] - b[1]];
+    let r = [b[0] - a[0], b[1] - a[1]];
+    // a0 + u da = b0 + v db.
+    let det = da[0] * (-db[1]) + db[0] * da[1];
+    if det == 0.0 || !det.is_finite() {
+        return None;
+    }
+    let u = (r[0] * (-db[1]) + db[0] * r[1]) / det;
+    let v = (da[0] * r[1] - da[1] * r[0]) / det;
+    let near = |x: f64| (-0.5..=1.5).contains(&x);
+    (near(u) && near(v)).then(|| [s[0] + u * (s[1] - s[0]), t[0] + v * (t[1] - t[0])])
+}
+
+/// A proved root: its tight enclosure, and the reported crossing when it lies inside the
+/// domain.
 struct Root {
     tight: [[f64; 2]; 2],
     crossing: Option<CertifiedCrossing>,
 }
 
-/// The tight certification of the root proved in `b` (module documentation, 3): `None` when
-/// undecided, else the root (with its crossing when inside (0, 1)^2).
-fn certify(p: &Curve, q: &Curve, b: &Box2) -> Option<Root> {
+/// The tight certification of the root proved in `b` (module documentation, 3), from F and P
+/// at its centre in double-double: `None` when undecided, else the root (with its crossing
+/// when inside (0, 1)^2).
+fn certify(p: &mut Curve, q: &mut Curve, b: &Box2) -> Option<Root> {
     let z = b.mid;
-    let pz = p.eval_dd(z[0]);
-    let qz = q.eval_dd(z[1]);
-    let f = [
-        pz[0].sub(&qz[0]).to_bounded(),
-        pz[1].sub(&qz[1]).to_bounded(),
-    ];
-    // The size of the Newton correction sets the radius.
-    let first = krawczyk(
-        p,
-        q,
-        &Box2 {
-            mid: z,
-            radius: [TIGHT_RADIUS; 2],
-        },
-        f,
-    )?;
-    let radius = [0, 1].map(|i| {
-        let d = first.offset[i].value().abs();
-        (8.0 * d).max(TIGHT_RADIUS)
-    });
-    let k = if radius == [TIGHT_RADIUS; 2] {
-        first
-    } else {
-        krawczyk(p, q, &Box2 { mid: z, radius }, f)?
-    };
+    let (fdd, pz) = residual_dd(p, q, z);
+    let f = fdd.map(|c| c.to_bounded());
+    let mut radius = [TIGHT_RADIUS; 2];
+    let mut k;
+    let mut dp;
+    let mut tries = 0;
+    loop {
+        dp = p.tangent_pyramid(z[0], radius[0]);
+        let dq = q.tangent_pyramid(z[1], radius[1]);
+        k = krawczyk(&Box2 { mid: z, radius }, f, dp, dq)?;
+        // The Newton correction sets the radius: 8 times it, at least TIGHT_RADIUS.
+        let wanted = [0, 1].map(|i| (8.0 * k.offset[i].value().abs()).max(TIGHT_RADIUS));
+        tries += 1;
+        if k.proved || tries == 2 || wanted == radius {
+            break;
+        }
+        radius = wanted;
+    }
     if !k.proved || radius[0] > b.radius[0] || radius[1] > b.radius[1] {
         return None;
     }
@@ -440,8 +504,9 @@ fn certify(p: &Curve, q: &Curve, b: &Box2) -> Option<Root> {
     if !(inside(tight[0]) && inside(tight[1])) {
         return None;
     }
+    // P(s*) in P(z_s) + (s* - z_s) P'(S), coordinate by coordinate (mean value theorem).
     let point = [0, 1].map(|c| {
-        let offset = pz[c].rest().add(&k.offset[0].mul(&k.tangent_p[c]));
+        let offset = pz[c].rest().add(&k.offset[0].mul(&dp[c]));
         round_nearest(pz[c].hi(), &offset)
     });
     Some(Root {
@@ -456,41 +521,87 @@ fn certify(p: &Curve, q: &Curve, b: &Box2) -> Option<Root> {
     })
 }
 
-/// What became of a cell.
-enum Tried {
-    /// Its roots are those of this exclusion box, whose root is proved.
-    Proved(Box2, Root),
-    /// No root in the cell.
-    Empty,
-    /// Nothing decided: halve it.
-    Open,
+/// The search state: both curves, the proved roots and their exclusion boxes.
+struct Search {
+    p: Curve,
+    q: Curve,
+    roots: Vec<Root>,
+    /// Proved boxes, each with the index of its one root.
+    exclusions: Vec<(Box2, usize)>,
 }
 
-/// Newton from the cell's centre, then Krawczyk on the box around the Newton point that
-/// contains the cell (module documentation, 2). `None` when a proved root is undecided.
-fn try_cell(p: &mut Curve, q: &mut Curve, s: [f64; 2], t: [f64; 2]) -> Option<Tried> {
-    let centre = [0.5 * (s[0] + s[1]), 0.5 * (t[0] + t[1])];
-    let half = [0.5 * (s[1] - s[0]), 0.5 * (t[1] - t[0])];
-    let Some(z) = newton(p, q, centre) else {
-        let cell = Box2 {
-            mid: centre,
-            radius: half,
+impl Search {
+    /// Newton from `start`, then Krawczyk on the box around the Newton point that contains the
+    /// cell `s` x `t` (module documentation, 2): whether the cell is settled, `None` when a
+    /// proved root is undecided.
+    fn try_cell(&mut self, s: [f64; 2], t: [f64; 2], start: [f64; 2]) -> Option<bool> {
+        let (p, q) = (&mut self.p, &mut self.q);
+        let centre = [0.5 * (s[0] + s[1]), 0.5 * (t[0] + t[1])];
+        let half = [0.5 * (s[1] - s[0]), 0.5 * (t[1] - t[0])];
+        let Some(z) = newton(p, q, start) else {
+            return Some(false);
         };
-        let k = krawczyk(p, q, &cell, residual(p, q, centre));
-        return Some(match k {
-            Some(k) if k.empty => Tried::Empty,
-            _ => Tried::Open,
-        });
-    };
-    let far = |i: usize| (z[i] - centre[i]).abs() > 2.0 * half[i];
-    if far(0) || far(1) {
-        return Some(Tried::Open);
+        let far = |i: usize| (z[i] - centre[i]).abs() > 2.0 * half[i];
+        if far(0) || far(1) {
+            return Some(false);
+        }
+        let radius = [0, 1].map(|i| ((z[i] - centre[i]).abs().next_up() + half[i]).next_up());
+        let b = Box2 { mid: z, radius };
+        let (pz, qz) = (p.eval_bounded(z[0]), q.eval_bounded(z[1]));
+        let f = [pz[0].sub(&qz[0]), pz[1].sub(&qz[1])];
+        let dp = p.tangent_hull(z[0], radius[0]);
+        let dq = q.tangent_hull(z[1], radius[1]);
+        if !krawczyk(&b, f, dp, dq).is_some_and(|k| k.proved) {
+            return Some(false);
+        }
+        // A known root inside the box is its one root.
+        let known = self
+            .roots
+            .iter()
+            .position(|r| b.contains(r.tight[0], r.tight[1]));
+        let index = match known {
+            Some(index) => index,
+            None => {
+                let root = certify(p, q, &b)?;
+                let index = self.add_root(root)?;
+                let (p, q) = (&mut self.p, &mut self.q);
+                // A new root: try a box INFLATE times as large, whose one root is then this
+                // one too (it contains b), so that the neighbouring cells of the root are
+                // settled without another Newton run.
+                let big = Box2 {
+                    mid: z,
+                    radius: radius.map(|r| INFLATE * r),
+                };
+                let dp = p.tangent_hull(z[0], big.radius[0]);
+                let dq = q.tangent_hull(z[1], big.radius[1]);
+                if krawczyk(&big, f, dp, dq).is_some_and(|k| k.proved) {
+                    self.exclusions.push((big, index));
+                }
+                index
+            }
+        };
+        self.exclusions.push((b, index));
+        Some(b.contains(s, t))
     }
-    let radius = [0, 1].map(|i| ((z[i] - centre[i]).abs().next_up() + half[i]).next_up());
-    let b = Box2 { mid: z, radius };
-    match krawczyk(p, q, &b, residual(p, q, z)) {
-        Some(k) if k.proved => Some(Tried::Proved(b, certify(p, q, &b)?)),
-        _ => Some(Tried::Open),
+
+    /// Adds a newly certified root, or finds it among the known ones: its index, `None` when
+    /// its enclosure meets another's without being the same root.
+    fn add_root(&mut self, root: Root) -> Option<usize> {
+        let meets = |a: &[[f64; 2]; 2], b: &[[f64; 2]; 2]| {
+            (0..2).all(|k| a[k][0] <= b[k][1] && b[k][0] <= a[k][1])
+        };
+        for (index, known) in self.roots.iter().enumerate() {
+            if meets(&known.tight, &root.tight) {
+                // The same root when the new enclosure lies in a box proved for the known one.
+                let same = self
+                    .exclusions
+                    .iter()
+                    .any(|(e, k)| *k == index && e.contains(root.tight[0], root.tight[1]));
+                return same.then_some(index);
+            }
+        }
+        self.roots.push(root);
+        Some(self.roots.len() - 1)
     }
 }
 
@@ -513,10 +624,12 @@ fn try_cell(p: &mut Curve, q: &mut Curve, s: [f64; 2], t: [f64; 2]) -> Option<Tr
 /// assert_eq!(x[0].point[1], 0.5);
 /// ```
 pub fn certified_crossings_f64(p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<Vec<CertifiedCrossing>> {
-    let mut pc = Curve::new(p)?;
-    let mut qc = Curve::new(q)?;
-    let mut exclusions: Vec<(Box2, usize)> = Vec::new();
-    let mut roots: Vec<Root> = Vec::new();
+    let mut search = Search {
+        p: Curve::new(p)?,
+        q: Curve::new(q)?,
+        roots: Vec::new(),
+        exclusions: Vec::new(),
+    };
     let mut stack = vec![(0usize, 0usize)];
     let mut examined = 0usize;
     while let Some((i, j)) = stack.pop() {
@@ -524,7 +637,7 @@ pub fn certified_crossings_f64(p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<Vec<Cer
         if examined > MAX_CELLS {
             return None;
         }
-        let (a, b) = (pc.nodes[i], qc.nodes[j]);
+        let (a, b) = (search.p.nodes[i], search.q.nodes[j]);
         if a.bbox[1] < b.bbox[0]
             || b.bbox[1] < a.bbox[0]
             || a.bbox[3] < b.bbox[2]
@@ -532,63 +645,31 @@ pub fn certified_crossings_f64(p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<Vec<Cer
         {
             continue;
         }
-        let s = [a.start, a.start + width(a.level)];
-        let t = [b.start, b.start + width(b.level)];
-        if exclusions.iter().any(|(e, _)| e.contains(s, t)) {
+        let (pa, qb) = (search.p.piece(i), search.q.piece(j));
+        if fat_line_separates(pa, a.error, qb, b.error)
+            || fat_line_separates(qb, b.error, pa, a.error)
+        {
             continue;
         }
-        if a.level >= PROOF_LEVEL && b.level >= PROOF_LEVEL {
-            match try_cell(&mut pc, &mut qc, s, t)? {
-                Tried::Proved(bx, root) => {
-                    let index = same_root(&roots, &exclusions, &bx, &root)?;
-                    let index = index.unwrap_or_else(|| {
-                        roots.push(root);
-                        roots.len() - 1
-                    });
-                    exclusions.push((bx, index));
-                    if bx.contains(s, t) {
-                        continue;
-                    }
-                }
-                Tried::Empty => continue,
-                Tried::Open => {}
+        let s = [a.start, a.start + width(a.level)];
+        let t = [b.start, b.start + width(b.level)];
+        if search.exclusions.iter().any(|(e, _)| e.contains(s, t)) {
+            continue;
+        }
+        let start = chord_start(search.p.piece(i), search.q.piece(j), s, t);
+        if let Some(start) = start {
+            if search.try_cell(s, t, start)? {
+                continue;
             }
         }
         if a.level >= MAX_LEVEL || b.level >= MAX_LEVEL {
             return None;
         }
-        let [p0, p1] = pc.children(i);
-        let [q0, q1] = qc.children(j);
+        let [p0, p1] = search.p.children(i);
+        let [q0, q1] = search.q.children(j);
         stack.extend([(p1, q1), (p1, q0), (p0, q1), (p0, q0)]);
     }
-    let mut out: Vec<CertifiedCrossing> = roots.iter().filter_map(|r| r.crossing).collect();
+    let mut out: Vec<CertifiedCrossing> = search.roots.iter().filter_map(|r| r.crossing).collect();
     out.sort_by(|x, y| x.s.total_cmp(&y.s).then(x.t.total_cmp(&y.t)));
     Some(out)
-}
-
-/// Whether the new `root` proved in `bx` is one already known: `Some(Some(index))` when it is,
-/// `Some(None)` when it is new (its enclosure meets no other), `None` when undecided.
-fn same_root(
-    roots: &[Root],
-    exclusions: &[(Box2, usize)],
-    bx: &Box2,
-    root: &Root,
-) -> Option<Option<usize>> {
-    let meets = |a: &[[f64; 2]; 2], b: &[[f64; 2]; 2]| {
-        (0..2).all(|k| a[k][0] <= b[k][1] && b[k][0] <= a[k][1])
-    };
-    for (index, known) in roots.iter().enumerate() {
-        if !meets(&known.tight, &root.tight) {
-            continue;
-        }
-        let known_in_new = bx.contains(known.tight[0], known.tight[1]);
-        let new_in_known = exclusions
-            .iter()
-            .any(|(e, k)| *k == index && e.contains(root.tight[0], root.tight[1]));
-        if known_in_new || new_in_known {
-            return Some(Some(index));
-        }
-        return None;
-    }
-    Some(None)
 }

@@ -277,3 +277,88 @@ fn rounded_answer_is_the_exact_answer_rounded() {
     }
     assert!(by_filter >= 20, "by filter {by_filter}");
 }
+
+/// Times the filter on 10^4 random cubic pairs (coordinates uniform doubles in [0, 1]) and on
+/// random pairs of degree 8 and 20, with lyon_geom's uncertified `cubic_intersections_t` on
+/// the same cubic pairs for reference, and the exact path on the pairs the filter leaves. A
+/// measurement, not a check:
+/// `cargo test -p blossom --release --lib intersect::filter_tests::timing -- --ignored --nocapture`
+/// (pairs from `BLOSSOM_PAIRS`, default 10000; degrees from `BLOSSOM_DEGREES`, default "8 20").
+#[test]
+#[ignore]
+fn timing_filter() {
+    use lyon_geom::{point, CubicBezierSegment};
+    use std::time::Instant;
+    let pairs: usize = std::env::var("BLOSSOM_PAIRS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(10_000);
+    let mut r = Random(0x2545_f491_4f6c_dd1d);
+    let cubics: Vec<[[f64; 2]; 4]> = (0..2 * pairs)
+        .map(|_| std::array::from_fn(|_| [r.unit(), r.unit()]))
+        .collect();
+    let start = Instant::now();
+    let (mut crossings, mut undecided) = (0usize, Vec::new());
+    for pq in cubics.chunks_exact(2) {
+        match certified_crossings_f64(&pq[0], &pq[1]) {
+            Some(x) => crossings += x.len(),
+            None => undecided.push(pq),
+        }
+    }
+    let filter = start.elapsed().as_secs_f64() / pairs as f64;
+    let segment = |c: &[[f64; 2]; 4]| CubicBezierSegment {
+        from: point(c[0][0], c[0][1]),
+        ctrl1: point(c[1][0], c[1][1]),
+        ctrl2: point(c[2][0], c[2][1]),
+        to: point(c[3][0], c[3][1]),
+    };
+    let segments: Vec<CubicBezierSegment<f64>> = cubics.iter().map(segment).collect();
+    let start = Instant::now();
+    let mut lyon_crossings = 0usize;
+    for pq in segments.chunks_exact(2) {
+        lyon_crossings += std::hint::black_box(pq[0].cubic_intersections_t(&pq[1])).len();
+    }
+    let lyon = start.elapsed().as_secs_f64() / pairs as f64;
+    println!(
+        "cubic: {pairs} pairs, filter {:.2} us/pair ({crossings} crossings, {} undecided), lyon {:.2} us/pair ({lyon_crossings} crossings), filter/lyon {:.2}",
+        filter * 1e6,
+        undecided.len(),
+        lyon * 1e6,
+        filter / lyon
+    );
+    let start = Instant::now();
+    for pq in &undecided {
+        intersect_curves_f64(&pq[0], &pq[1]).unwrap();
+    }
+    if !undecided.is_empty() {
+        println!(
+            "exact path on the undecided pairs: {:.1} ms/pair",
+            start.elapsed().as_secs_f64() / undecided.len() as f64 * 1e3
+        );
+    }
+    let degrees = std::env::var("BLOSSOM_DEGREES").unwrap_or_else(|_| "8 20".into());
+    for n in degrees
+        .split_whitespace()
+        .map(|d| d.parse::<usize>().unwrap())
+    {
+        let count = 200;
+        let curves: Vec<Vec<[f64; 2]>> = (0..2 * count)
+            .map(|_| (0..=n).map(|_| [r.unit(), r.unit()]).collect())
+            .collect();
+        let start = Instant::now();
+        let (mut undecided, mut crossings, mut worst) = (0usize, 0usize, 0f64);
+        for pq in curves.chunks_exact(2) {
+            let one = Instant::now();
+            match certified_crossings_f64(&pq[0], &pq[1]) {
+                Some(x) => crossings += x.len(),
+                None => undecided += 1,
+            }
+            worst = worst.max(one.elapsed().as_secs_f64());
+        }
+        println!(
+            "degree {n}: {count} pairs, filter {:.1} us/pair (worst {:.1} us), {crossings} crossings, {undecided} undecided",
+            start.elapsed().as_secs_f64() / count as f64 * 1e6,
+            worst * 1e6
+        );
+    }
+}

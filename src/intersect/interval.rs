@@ -3,14 +3,15 @@
 //!
 //! **Intervals are [`BoundedF64`].** A `BoundedF64` (v, e) stands for every real x with
 //! |x - v| <= e. Its arithmetic is a running error analysis whose bound formulas are worst
-//! cases over all operands within their bounds (|x y - fl(v_x v_y)| <= |v_x| e_y + |v_y| e_x
-//! + e_x e_y + u |fl(v_x v_y)| + η, and so on, each rounded upwards): that is midpoint-radius
+//! cases over all operands within their bounds (for a product, |x y - fl(v_x v_y)| is at most
+//! |v_x| e_y + |v_y| e_x + e_x e_y + u |fl(v_x v_y)| + η, and so on, each rounded upwards):
+//! that is midpoint-radius
 //! interval arithmetic, inclusion-isotone, so evaluating a polynomial by any sequence of ring
 //! operations on `BoundedF64` arguments (de Casteljau's pyramid with an interval argument, say)
 //! encloses its range over the argument intervals. This module adds the few set operations the
 //! filter needs: the outward-rounded ends [`lower`] and [`upper`] (one `next_down`/`next_up`
 //! after the rounded sum, so that lower <= v - e and upper >= v + e hold exactly), an interval
-//! from its ends ([`from_bounds`]), and the strict tests |x| < r and |x| > r of Krawczyk's test ([`inside_radius`], [`outside_radius`]).
+//! from its ends ([`from_bounds`]), and the strict test |x| < r of Krawczyk's test ([`inside_radius`]).
 //!
 //! **Double-double with a bound: [`Dd`].** A value hi + lo (two doubles) with a bound e on its
 //! distance to the exact result of the same operations. The sums and products use the
@@ -75,12 +76,6 @@ pub(crate) fn inside_radius(x: &BoundedF64, radius: f64) -> bool {
     upper(x) < radius && lower(x) > -radius
 }
 
-/// Whether every x of the interval satisfies |x| > `radius` (conservatively).
-#[inline]
-pub(crate) fn outside_radius(x: &BoundedF64, radius: f64) -> bool {
-    lower(x) > radius || upper(x) < -radius
-}
-
 /// TwoSum: `(s, e)` with s = fl(a + b) and a + b = s + e exactly (finite operands).
 #[inline]
 pub(crate) fn two_sum(a: f64, b: f64) -> (f64, f64) {
@@ -129,7 +124,7 @@ impl Dd {
 
     /// The whole value as an interval of one double: fl(hi + lo) with the bound and the
     /// (exact) rounding residual of that sum.
-    pub(crate) fn to_bounded(&self) -> BoundedF64 {
+    pub(crate) fn to_bounded(self) -> BoundedF64 {
         let (v, r) = two_sum(self.hi, self.lo);
         BoundedF64::with_bound(v, upward(self.bound_or_infinite() + r.abs()))
     }
@@ -373,6 +368,5 @@ mod tests {
         assert!(lower(&x) <= 0.1 && upper(&x) >= 0.3);
         assert!(inside_radius(&BoundedF64::with_bound(0.1, 0.1), 0.25));
         assert!(!inside_radius(&BoundedF64::with_bound(0.1, 0.15), 0.25));
-        assert!(outside_radius(&BoundedF64::with_bound(0.5, 0.1), 0.25));
     }
 }
