@@ -167,8 +167,9 @@ pub use restrict::polarisation::{
 // Certified zeros and intersections.
 pub use intersect::algebraic::AlgebraicReal;
 pub use intersect::curves::{
-    intersect_curves, intersect_curves_f64, intersection_work, self_intersections,
-    self_intersections_f64, IntersectionPoint, Intersections, Overlap,
+    curve_pair_work, filtered_intersection_work, intersect_curves, intersect_curves_f64,
+    intersection_work, self_intersections, self_intersections_f64, IntersectionPoint,
+    Intersections, Overlap,
 };
 pub use intersect::filter::{certified_crossings_f64, CertifiedCrossing};
 pub use intersect::rounded::{

@@ -480,12 +480,13 @@ fn filter_path_agrees_with_the_solver() {
         let third = |c: &[[Rational; 2]]| -> Vec<[Rational; 2]> {
             c.iter().map(|xy| xy.clone().map(|v| v / q(3, 1))).collect()
         };
-        let (Ok(x), Ok(y)) = (intersect_curves(&p, &qq), intersect_curves(&third(&p), &third(&qq)))
-        else {
+        let (Ok(x), Ok(y)) = (
+            intersect_curves(&p, &qq),
+            intersect_curves(&third(&p), &third(&qq)),
+        ) else {
             continue;
         };
-        if x.points.iter().all(|pt| !pt.tangent) && x.overlaps.is_empty() && !x.points.is_empty()
-        {
+        if x.points.iter().all(|pt| !pt.tangent) && x.overlaps.is_empty() && !x.points.is_empty() {
             filtered += 1;
         }
         assert_eq!(x.points.len(), y.points.len(), "case {case}");
@@ -500,7 +501,12 @@ fn filter_path_agrees_with_the_solver() {
             assert!(upoly::degree(a.s.polynomial()).is_some());
         }
     }
-    assert!(filtered >= 10, "only {filtered} cases had transversal crossings");
+    assert!(
+        filtered >= 10,
+        "only {filtered} cases had transversal crossings"
+    );
+}
+
 #[test]
 fn integer_interval_horner_is_the_rational_one_scaled() {
     use super::algebraic::{enclose, enclose_scaled};

@@ -14,8 +14,10 @@
 //! Exact intersection costs grow with the product of the degrees (the resultant of two curves
 //! of degrees n and m has degree n m) and with the bit length of the input numbers, so a job
 //! is refused up front when a curve's degree is over [`MAX_CURVE_DEGREE`] or a Bézier
-//! function's over [`MAX_FUNCTION_DEGREE`] (naming the field), and the work budget
-//! ([`super::budget`]) applies to what is accepted.
+//! function's over [`MAX_FUNCTION_DEGREE`] (naming the field), and a curve job whose estimated
+//! work ([`blossom::curve_pair_work`]: the float filter runs first, and when it decides only
+//! the two resultants and one Descartes test per crossing remain) is over twice `--max-work`
+//! is refused before computing, naming `curves` or `curve`.
 
 use super::args::Arithmetic;
 use super::job::{array, expect_fields, field, object_and_kind};
@@ -31,13 +33,13 @@ pub const INTERSECT_FIELDS: [(&str, &[&str]); 3] = [
 ];
 
 /// The largest degree of a curve of a `curve-curve` or `self` job.
-pub const MAX_CURVE_DEGREE: usize = 8;
+pub const MAX_CURVE_DEGREE: usize = 20;
 
 /// The largest degree of the Bézier function of a `roots` job.
 pub const MAX_FUNCTION_DEGREE: usize = 200;
 
 /// Answers the `blossom intersect` job `document` as one JSON value.
-pub fn answer(document: &Value, arithmetic: Arithmetic) -> Result<Value, Error> {
+pub fn answer(document: &Value, arithmetic: Arithmetic, max_work: u64) -> Result<Value, Error> {
     let (job, kind) = object_and_kind(document)?;
     let Some((kind, accepted)) = INTERSECT_FIELDS.iter().find(|(k, _)| *k == kind) else {
         let kinds: Vec<&str> = INTERSECT_FIELDS.iter().map(|(k, _)| *k).collect();
@@ -54,8 +56,8 @@ pub fn answer(document: &Value, arithmetic: Arithmetic) -> Result<Value, Error> 
     expect_fields(job, "", accepted)?;
     match *kind {
         "roots" => roots(job, arithmetic),
-        "curve-curve" => curve_curve(job, arithmetic),
-        _ => self_job(job, arithmetic),
+        "curve-curve" => curve_curve(job, arithmetic, max_work),
+        _ => self_job(job, arithmetic, max_work),
     }
 }
 
@@ -112,7 +114,11 @@ fn roots(job: &Map<String, Value>, arithmetic: Arithmetic) -> Result<Value, Erro
 }
 
 /// `"curve-curve"`: two curves.
-fn curve_curve(job: &Map<String, Value>, arithmetic: Arithmetic) -> Result<Value, Error> {
+fn curve_curve(
+    job: &Map<String, Value>,
+    arithmetic: Arithmetic,
+    max_work: u64,
+) -> Result<Value, Error> {
     let items = array(field(job, "curves")?, "curves", "an array of two curves")?;
     if items.len() != 2 {
         return Err(Error::new(
@@ -122,6 +128,7 @@ fn curve_curve(job: &Map<String, Value>, arithmetic: Arithmetic) -> Result<Value
     }
     let p = curve(&items[0], "curves[0]", arithmetic)?;
     let q = curve(&items[1], "curves[1]", arithmetic)?;
+    within_budget("curves", blossom::curve_pair_work(&p, &q), max_work)?;
     let found = blossom::intersect_curves(&p, &q).map_err(|e| {
         let path = match e.path() {
             "p" => "curves[0]",
@@ -134,10 +141,46 @@ fn curve_curve(job: &Map<String, Value>, arithmetic: Arithmetic) -> Result<Value
 }
 
 /// `"self"`: one curve with itself.
-fn self_job(job: &Map<String, Value>, arithmetic: Arithmetic) -> Result<Value, Error> {
+fn self_job(
+    job: &Map<String, Value>,
+    arithmetic: Arithmetic,
+    max_work: u64,
+) -> Result<Value, Error> {
     let p = curve(field(job, "curve")?, "curve", arithmetic)?;
+    // The divided difference (P(s) - P(t)) / (s - t) has degree n - 1 in each variable and
+    // goes through the exact solver.
+    let n = p.len() - 1;
+    let bits = p
+        .iter()
+        .flatten()
+        .map(|c| (c.numer().bits() + c.denom().bits()) as usize)
+        .max()
+        .unwrap_or(1);
+    within_budget(
+        "curve",
+        blossom::intersection_work(n.max(2) - 1, n.max(2) - 1, bits),
+        max_work,
+    )?;
     let found = blossom::self_intersections(&p).map_err(|e| at("curve", e))?;
     intersections("self", &found)
+}
+
+/// Refuses a job whose estimated work (nanoseconds of a 2-core machine, see
+/// [`blossom::curve_pair_work`]) is over twice the limit: the estimates are within a factor
+/// of about two of the measured time at the degrees the limit lets through, and the exact
+/// solver is not metered as it runs, so the check is made up front only.
+fn within_budget(path: &str, work: u128, max_work: u64) -> Result<(), Error> {
+    if work <= 2 * u128::from(max_work) {
+        return Ok(());
+    }
+    Err(Error::new(
+        path,
+        format!(
+            "the job's work is estimated at {:.1e} units, over the limit of {:.1e} units \
+             (about a nanosecond each; raise it with --max-work if you mean it)",
+            work as f64, max_work as f64
+        ),
+    ))
 }
 
 /// A 2-D curve's control points.

@@ -112,7 +112,9 @@ pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
         Ok(Command::Intersect(options)) => {
             match read_input(options.input.as_deref(), &options.limits, stdin)
                 .and_then(|bytes| parse_json(&bytes))
-                .and_then(|document| intersect_jobs::answer(&document, options.arithmetic))
+                .and_then(|document| {
+                    intersect_jobs::answer(&document, options.arithmetic, options.limits.max_work)
+                })
                 .and_then(|answer| {
                     serde_json::to_string(&answer).map_err(|e| {
                         Error::new("internal", format!("cannot write the answer: {e}"))
