@@ -417,7 +417,7 @@ fn the_pictures_in_docs_are_what_the_binary_draws() {
 
 #[test]
 fn the_intersection_marks_and_the_overlap_are_where_the_exact_answers_say() {
-    use figures::intersections::{OVERLAP_BASE, OFFSETS};
+    use figures::intersections::{OFFSETS, OVERLAP_BASE};
     let figure = &figure_named("intersections.svg");
     let pixmap = render(figure);
     let marks = intersection_marks();
@@ -435,7 +435,10 @@ fn the_intersection_marks_and_the_overlap_are_where_the_exact_answers_say() {
         }
         let t = bernstein(TOUCHING[1], OFFSETS[1], 0.5);
         assert!(near(&bernstein(TOUCHING[0], OFFSETS[1], 0.5), &t));
-        assert!(near(&bernstein(LOOP, OFFSETS[3], a), &bernstein(LOOP, OFFSETS[3], b)));
+        assert!(near(
+            &bernstein(LOOP, OFFSETS[3], a),
+            &bernstein(LOOP, OFFSETS[3], b)
+        ));
     }
     // The overlap: the base cubic over [1/3, 2/3] (both stretches trace it) is highlighted,
     // the rest of both stretches is not.
@@ -501,7 +504,4 @@ fn the_intersection_marks_and_the_overlap_are_where_the_exact_answers_say() {
     }
     // Five discs of radius 6 (about 113 pixels each, less where one covers a curve).
     assert!(marked > 5 * 80, "only {marked} mark pixels");
-    if let Ok(path) = std::env::var("BLOSSOM_FIGURE_PNG") {
-        pixmap.save_png(path).expect("a writable PNG path");
-    }
 }
