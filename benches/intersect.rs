@@ -53,6 +53,8 @@ const EXACT_LIMIT: Duration = Duration::from_secs(20);
 const EXACT_BUDGET: Duration = Duration::from_secs(10);
 
 type Cubic = [[f64; 2]; 4];
+/// The (s, t) parameters of one pair's intersections.
+type Answer = Vec<(f64, f64)>;
 
 /// The certified intersections of two cubics as f64 parameter pairs (s on `p`, t on `q`),
 /// each the correctly rounded double of the exact value, sorted by s then t. Overlaps (none
@@ -156,10 +158,10 @@ impl Agreement {
 
 /// Every certified answer, computed on as many threads as the machine has (the exact path is
 /// slow), and the mean time of one pair, each pair timed alone on its thread.
-fn reference_pass(pairs: &[(Cubic, Cubic)]) -> (Vec<Vec<(f64, f64)>>, f64) {
+fn reference_pass(pairs: &[(Cubic, Cubic)]) -> (Vec<Answer>, f64) {
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     let chunk = pairs.len().div_ceil(threads).max(1);
-    let parts: Vec<(Vec<Vec<(f64, f64)>>, Duration)> = std::thread::scope(|scope| {
+    let parts: Vec<(Vec<Answer>, Duration)> = std::thread::scope(|scope| {
         let workers: Vec<_> = pairs
             .chunks(chunk)
             .map(|part| {
