@@ -354,6 +354,10 @@ fn main() {
     }
 
     let lyon_each = per_pair(5, &pairs, lyon);
+    // The ratio on the same pairs, one thread each: the criterion subset.
+    let subset = &pairs[..OURS_SUBSET.min(count)];
+    let ours_subset = per_pair(3, subset, ours);
+    let lyon_subset = per_pair(5, subset, lyon);
     let total_points: usize = certified.iter().map(Vec::len).sum();
     let mut summary = String::new();
     let lines = [
@@ -364,7 +368,13 @@ fn main() {
             OURS_SUBSET.min(count)
         ),
         format!("lyon cubic_intersections_t: {} per pair (median of 5 passes)", time_text(lyon_each)),
-        format!("ratio certified / lyon: {:.1}", ours_full / lyon_each),
+        format!(
+            "ratio certified / lyon on the first {} pairs, one thread: {:.1} ({} / {} per pair)",
+            subset.len(),
+            ours_subset / lyon_subset,
+            time_text(ours_subset),
+            time_text(lyon_subset)
+        ),
         format!(
             "lyon wrong count: {} of {count} pairs ({} too few, missing {} points; {} too many, {} extra points)",
             agreement.too_few + agreement.too_many,
