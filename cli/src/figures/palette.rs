@@ -21,6 +21,8 @@ pub const NET_2: Rgb = Rgb(160, 130, 150);
 pub const CURVE: Rgb = Rgb(30, 60, 110);
 /// A reference curve (the exact circle, ln t).
 pub const REFERENCE: Rgb = Rgb(120, 170, 120);
+/// A stretch drawn over curves to single it out (the overlap of two curves).
+pub const HIGHLIGHT: Rgb = Rgb(0, 190, 190);
 
 /// The control points of the first net of a picture.
 pub const DOTS: Rgb = Rgb(230, 0, 40);
@@ -29,8 +31,11 @@ pub const DOTS_2: Rgb = Rgb(0, 90, 255);
 /// Points marked on a curve (the images of the knots).
 pub const DOTS_3: Rgb = Rgb(255, 150, 0);
 
+/// Points marked differently from [`DOTS_3`] (tangencies).
+pub const DOTS_4: Rgb = Rgb(150, 0, 210);
+
 /// Every dot colour: none is used for anything but dots.
-pub const DOT_COLOURS: [Rgb; 3] = [DOTS, DOTS_2, DOTS_3];
+pub const DOT_COLOURS: [Rgb; 4] = [DOTS, DOTS_2, DOTS_3, DOTS_4];
 
 #[cfg(test)]
 mod tests {
@@ -38,7 +43,9 @@ mod tests {
 
     #[test]
     fn dot_colours_are_used_by_nothing_else() {
-        let others = [BACKGROUND, TEXT, MESH, MESH_2, NET, NET_2, CURVE, REFERENCE];
+        let others = [
+            BACKGROUND, TEXT, MESH, MESH_2, NET, NET_2, CURVE, REFERENCE, HIGHLIGHT,
+        ];
         for d in DOT_COLOURS {
             assert!(!others.contains(&d));
         }

@@ -19,8 +19,8 @@ use plotters::prelude::*;
 
 /// The size of every page in pixels, width and height.
 pub const SIZE: (u32, u32) = (800, 640);
-/// The height of the header band (title and legend).
-const HEADER: u32 = 84;
+/// The height of the header band (title and legend), in pixels from the top of the page.
+pub const HEADER: u32 = 84;
 /// Legend entries per row of the header.
 const LEGEND_COLUMNS: usize = 3;
 

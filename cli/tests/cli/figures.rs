@@ -10,7 +10,11 @@
 //! recurrence of the basis functions (the figure uses the library's de Boor algorithm). The de
 //! Boor points are the figure's input itself, so for them only the page position is tested.
 //! The error curve of the ln t cubic is recomputed here from the printed polygon by Bernstein
-//! sums.
+//! sums. The marks of the intersection picture are placed by the library's exact intersection
+//! (resultants); here they come from closed forms of the chosen inputs (the crossing pair and
+//! the loop are symmetric, so their parameters solve 20 s^3 - 30 s^2 + 12 s - 1 = 0, i.e.
+//! s = 1/2 and 1/2 -+ sqrt(15)/10; the touching arcs meet at s = t = 1/2; the overlapping
+//! stretches share the base cubic over [1/3, 2/3]), evaluated by Bernstein sums here.
 //!
 //! Each expected point must be one of the figure's dots (to 1e-12), and the pixel at its page
 //! position, computed through the chart the drawing uses ([`figures::pixels`]: this checks
@@ -130,6 +134,44 @@ fn ln_polygon() -> Vec<Point3> {
         .collect()
 }
 
+/// sum_i b_i B_i^n(s) of integer control points moved by `offset`, by Bernstein sums.
+fn bernstein(points: &[[i64; 2]], offset: [f64; 2], s: f64) -> Point3 {
+    let n = points.len() - 1;
+    let mut out = [0.0; 3];
+    let mut binomial = 1.0;
+    for (i, p) in points.iter().enumerate() {
+        let w = binomial * s.powi(i as i32) * (1.0 - s).powi((n - i) as i32);
+        out[0] += w * (p[0] as f64 + offset[0]);
+        out[1] += w * (p[1] as f64 + offset[1]);
+        binomial = binomial * (n - i) as f64 / (i + 1) as f64;
+    }
+    out
+}
+
+/// The parameters where the symmetric crossing pair and the loop meet themselves or each
+/// other, besides 1/2: the roots of 10 s^2 - 10 s + 1.
+fn outer_roots() -> [f64; 2] {
+    let r = 15f64.sqrt() / 10.0;
+    [0.5 - r, 0.5 + r]
+}
+
+/// The marks of the intersection picture: crossings, tangencies, self-intersections.
+fn intersection_marks() -> Vec<(Rgb, Vec<Point3>)> {
+    use figures::intersections::{CROSSING, LOOP, OFFSETS, TOUCHING};
+    let [a, b] = outer_roots();
+    let crossings = [a, 0.5, b]
+        .iter()
+        .map(|&s| bernstein(CROSSING[0], OFFSETS[0], s))
+        .collect();
+    let touching = vec![bernstein(TOUCHING[0], OFFSETS[1], 0.5)];
+    let looped = vec![bernstein(LOOP, OFFSETS[3], a)];
+    vec![
+        (palette::DOTS, crossings),
+        (palette::DOTS_4, touching),
+        (palette::DOTS_3, looped),
+    ]
+}
+
 /// The expected dots of each figure, by file name: (dot colour, points).
 fn expected(file: &str) -> Vec<(Rgb, Vec<Point3>)> {
     let (first, second, marks) = (palette::DOTS, palette::DOTS_2, palette::DOTS_3);
@@ -151,6 +193,7 @@ fn expected(file: &str) -> Vec<(Rgb, Vec<Point3>)> {
         "circle_quartic.svg" => vec![(first, printed_polygon(&UNIT_QUARTIC.0))],
         "ln_cubic.svg" => vec![(first, ln_polygon())],
         "ln_cubic_error.svg" => vec![],
+        "intersections.svg" => intersection_marks(),
         other => panic!("a figure this test does not know: {other}"),
     }
 }
@@ -204,7 +247,7 @@ fn file_names(dir: &std::path::Path) -> Vec<String> {
 #[test]
 fn every_figure_is_a_picture_with_its_control_points_in_place() {
     let all = figures::figures().expect("the figures compute");
-    assert_eq!(all.len(), 11);
+    assert_eq!(all.len(), 12);
     for figure in &all {
         let pixmap = render(figure);
         let background = palette::BACKGROUND;
@@ -331,9 +374,9 @@ fn figures_writes_every_svg_and_refuses_a_file_as_directory() {
     let run = run_binary(&["figures", "--out", arg], b"");
     assert_eq!(run.code, 0, "{}", run.stderr);
     let files = file_names(&out);
-    assert_eq!(files.len(), 11, "{files:?}");
+    assert_eq!(files.len(), 12, "{files:?}");
     assert!(files.iter().all(|f| f.ends_with(".svg")));
-    assert_eq!(run.stdout.lines().count(), 11, "{}", run.stdout);
+    assert_eq!(run.stdout.lines().count(), 12, "{}", run.stdout);
 
     let file = dir.join("a_file");
     std::fs::write(&file, "not a directory").expect("a scratch file");
@@ -370,4 +413,95 @@ fn the_pictures_in_docs_are_what_the_binary_draws() {
             figure.file
         );
     }
+}
+
+#[test]
+fn the_intersection_marks_and_the_overlap_are_where_the_exact_answers_say() {
+    use figures::intersections::{OFFSETS, OVERLAP_BASE};
+    let figure = &figure_named("intersections.svg");
+    let pixmap = render(figure);
+    let marks = intersection_marks();
+    // The closed forms are right: the crossing pair, the touching arcs and the loop really
+    // meet there (the other curve or the mirror parameter gives the same point).
+    {
+        use figures::intersections::{CROSSING, LOOP, TOUCHING};
+        let [a, b] = outer_roots();
+        for s in [a, 0.5, b] {
+            let (p, q) = (
+                bernstein(CROSSING[0], OFFSETS[0], s),
+                bernstein(CROSSING[1], OFFSETS[0], s),
+            );
+            assert!(near(&p, &q), "{p:?} {q:?}");
+        }
+        let t = bernstein(TOUCHING[1], OFFSETS[1], 0.5);
+        assert!(near(&bernstein(TOUCHING[0], OFFSETS[1], 0.5), &t));
+        assert!(near(
+            &bernstein(LOOP, OFFSETS[3], a),
+            &bernstein(LOOP, OFFSETS[3], b)
+        ));
+    }
+    // The overlap: the base cubic over [1/3, 2/3] (both stretches trace it) is highlighted,
+    // the rest of both stretches is not.
+    let on_base = |u: f64| bernstein(OVERLAP_BASE, OFFSETS[2], u);
+    let inside: Vec<Point3> = (1..40)
+        .map(|k| on_base(1.0 / 3.0 + f64::from(k) / 40.0 / 3.0))
+        .collect();
+    let outside: Vec<Point3> = (0..=20)
+        .flat_map(|k| {
+            let u = 0.03 + f64::from(k) / 20.0 * 0.27;
+            [on_base(u), on_base(1.0 - u)]
+        })
+        .collect();
+    let highlighted = |c: Option<Rgb>| c.is_some_and(|c| within(c, palette::HIGHLIGHT, 24));
+    for at in figures::pixels(figure, &inside).expect("page positions") {
+        assert!(
+            highlighted(colour_at(&pixmap, at)),
+            "no highlight at pixel {at:?} of the overlap"
+        );
+    }
+    for at in figures::pixels(figure, &outside).expect("page positions") {
+        assert!(
+            !highlighted(colour_at(&pixmap, at)),
+            "highlight at pixel {at:?}, off the overlap"
+        );
+    }
+    // Nowhere else: a pixel of the chart in a mark colour is within a mark's radius of an
+    // expected mark of that colour, and a highlighted pixel is within the stroke of the
+    // overlap.
+    let dense: Vec<Point3> = (0..=400)
+        .map(|k| on_base(1.0 / 3.0 + f64::from(k) / 400.0 / 3.0))
+        .collect();
+    let stretch = figures::pixels(figure, &dense).expect("page positions");
+    let placed: Vec<(Rgb, Vec<(i32, i32)>)> = marks
+        .iter()
+        .map(|(c, points)| (*c, figures::pixels(figure, points).expect("page positions")))
+        .collect();
+    let distance = |a: (i32, i32), b: (i32, i32)| f64::from(a.0 - b.0).hypot(f64::from(a.1 - b.1));
+    let mut marked = 0;
+    for y in figures::HEADER as i32..SIZE.1 as i32 {
+        for x in 0..SIZE.0 as i32 {
+            let Some(c) = colour_at(&pixmap, (x, y)) else {
+                continue;
+            };
+            for (colour, centres) in &placed {
+                if close(c, *colour) {
+                    marked += 1;
+                    assert!(
+                        centres.iter().any(|&m| distance(m, (x, y)) <= 7.0),
+                        "pixel {:?} has the mark colour {colour:?} away from every mark",
+                        (x, y)
+                    );
+                }
+            }
+            if highlighted(Some(c)) {
+                assert!(
+                    stretch.iter().any(|&m| distance(m, (x, y)) <= 5.0),
+                    "pixel {:?} is highlighted away from the overlap",
+                    (x, y)
+                );
+            }
+        }
+    }
+    // Five discs of radius 6 (about 113 pixels each, less where one covers a curve).
+    assert!(marked > 5 * 80, "only {marked} mark pixels");
 }
