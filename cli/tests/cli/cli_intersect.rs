@@ -272,11 +272,11 @@ fn bad_input_names_the_field() {
     }
     assert!(error(&[], r#"{"kind": "root", "control_points": [1]}"#)
         .contains("did you mean \"roots\"?"));
-    // A curve of degree 25 is over the documented limit of 8.
+    // A curve of degree 25 is over the documented limit of 20.
     let long: Vec<Value> = (0..26).map(|i| json!([i, i * i % 7])).collect();
     let e = error(&[], &json!({"kind": "self", "curve": long}).to_string());
     assert!(
-        e.starts_with("error: curve: degree 25 is over the limit of 8"),
+        e.starts_with("error: curve: degree 25 is over the limit of 20"),
         "{e}"
     );
     // Options.
@@ -293,4 +293,70 @@ fn bad_input_names_the_field() {
     for word in ["roots", "curve-curve", "self", "--arithmetic"] {
         assert!(r.stdout.contains(word), "{word}");
     }
+}
+
+#[test]
+fn degree_20_pairs_are_answered_and_the_budget_refuses_up_front() {
+    // Two degree-20 curves with small random integer coordinates (xorshift): the float
+    // filter decides, and the answer comes back within the default budget. Every reported
+    // point must be a common point: P(s) and Q(t) evaluated here (Horner on the Bernstein
+    // form in f64 at the reported values) agree to rounding.
+    let mut state = 0x2545_f491_4f6c_dd1du64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state
+    };
+    let mut curve = || -> Vec<[i64; 2]> {
+        (0..=20)
+            .map(|_| [0, 1].map(|_| (next() % 21) as i64 - 10))
+            .collect()
+    };
+    let (p, qq) = (curve(), curve());
+    let job = json!({"kind": "curve-curve", "curves": [p, qq]});
+    let floats =
+        |c: &[[i64; 2]]| -> Vec<[f64; 2]> { c.iter().map(|xy| xy.map(|v| v as f64)).collect() };
+    let (pf, qf) = (floats(&p), floats(&qq));
+    let x = answer(&[], &job);
+    let points = x["points"].as_array().unwrap();
+    assert!(!points.is_empty());
+    let at = |c: &[[f64; 2]], t: f64| -> [f64; 2] {
+        // de Casteljau in f64.
+        let mut level: Vec<[f64; 2]> = c.to_vec();
+        while level.len() > 1 {
+            level = level
+                .windows(2)
+                .map(|w| [0, 1].map(|k| (1.0 - t) * w[0][k] + t * w[1][k]))
+                .collect();
+        }
+        level[0]
+    };
+    for pt in points {
+        let (s, t) = (
+            pt["s"]["value"].as_f64().unwrap(),
+            pt["t"]["value"].as_f64().unwrap(),
+        );
+        assert!((0.0..=1.0).contains(&s) && (0.0..=1.0).contains(&t));
+        let (a, b) = (at(&pf, s), at(&qf, t));
+        for k in 0..2 {
+            assert!((a[k] - b[k]).abs() < 1e-9, "{pt}");
+            assert!(
+                (a[k] - pt["point"][k].as_f64().unwrap()).abs() < 1e-9,
+                "{pt}"
+            );
+        }
+    }
+    // The same job under a small budget, and a degree-20 self-intersection (exact solver,
+    // estimated far over the default budget), are refused before computing, naming the field.
+    let e = error(&["--max-work", "1000"], &job.to_string());
+    assert!(
+        e.starts_with("error: curves: the job's work is estimated at"),
+        "{e}"
+    );
+    let e = error(&[], &json!({"kind": "self", "curve": p}).to_string());
+    assert!(
+        e.starts_with("error: curve: the job's work is estimated at"),
+        "{e}"
+    );
 }
