@@ -87,7 +87,7 @@
 //!   nothing; with it and no meter started, a charge is one read of a thread-local cell.
 //!
 //! `cargo test -p blossom --features mint,kurbo,serde` runs the tests of these features alone
-//! (`tests/applications/interop.rs`); `cargo test --workspace` runs them too, because the
+//! (`tests/suite/applications/interop.rs`); `cargo test --workspace` runs them too, because the
 //! application crate's dev-dependency on this crate turns the three features on and Cargo
 //! builds one `blossom` for the whole workspace.
 //!

@@ -34,6 +34,23 @@ pub trait Ring: Clone + PartialEq + Debug {
     /// unrolled functions are not even compiled for the others (the answer is the same bit
     /// for bit either way: the unrolled code runs the engine's steps in the engine's order).
     const UNROLLED: bool = false;
+    /// `out` = the control points of the Bézier curve with flat control points `points` (`dim`
+    /// numbers per point) over [a, b] by the unrolled evaluators of the types that set
+    /// [`Ring::UNROLLED`], or `false` (and `out` untouched) when there is none for this
+    /// degree and dimension; the caller then runs the engine, which gives the same answer.
+    /// The default has none; `f64` and `f32` have them for degrees 1..=24 in dimensions
+    /// 1..=4, in functions that are compiled once, in this crate, rather than in every crate
+    /// that restricts a float curve.
+    fn restrict_unrolled(
+        points: &[Self],
+        dim: usize,
+        a: &Self,
+        b: &Self,
+        out: &mut [Self],
+    ) -> bool {
+        let _ = (points, dim, a, b, out);
+        false
+    }
     /// The additive identity.
     fn zero() -> Self;
     /// The multiplicative identity.
@@ -97,10 +114,14 @@ pub fn rational_to_f64(k: &Rational) -> f64 {
 }
 
 macro_rules! float_ring {
-    ($(#[$doc:meta])* $t:ty) => {
+    ($(#[$doc:meta])* $t:ty => $unrolled:path) => {
         $(#[$doc])*
         impl Ring for $t {
             const UNROLLED: bool = true;
+            #[inline]
+            fn restrict_unrolled(points: &[Self], dim: usize, a: &Self, b: &Self, out: &mut [Self]) -> bool {
+                $unrolled(points, dim, a, b, out)
+            }
             #[inline]
             fn zero() -> Self {
                 0.0
@@ -153,7 +174,7 @@ float_ring!(
     /// Doubles: every operation rounded once (`scale` multiplies by the constant rounded to
     /// the nearest double). `docs/accuracy.md` and `docs/error_bounds.md` give
     /// the measured errors of every method.
-    f64
+    f64 => crate::shape::unrolled::restrict_f64
 );
 float_ring!(
     /// Single precision: every operation rounded once, with unit roundoff u = 2^-24 ≈ 6.0e-8
@@ -162,10 +183,10 @@ float_ring!(
     /// Restriction in `f32` keeps 6 to 7 digits: on random 3-D curves of degree 3 to 16, on
     /// sub-intervals of [0, 1] and on [-1, 2], the error max |got - exact| / max |exact| against
     /// the exact answer on the same `f32` inputs stays within 150 n u at degree n (asserted by
-    /// `tests/applications/f32_accuracy.rs`; the measured table is in `docs/error_bounds.md`,
+    /// `tests/suite/applications/f32_accuracy.rs`; the measured table is in `docs/error_bounds.md`,
     /// section "f32", printed by
-    /// `cargo test -p blossom --test applications f32_restriction -- --nocapture`).
-    f32
+    /// `cargo test -p blossom --test suite f32_restriction -- --nocapture`).
+    f32 => crate::shape::unrolled::restrict_f32
 );
 
 /// Every operation but `zero`, `one` and `is_zero` charges the work meter first

@@ -16,7 +16,6 @@ use crate::shape::halving::{
     curve_blossom_in_place, curve_net, step_left, tensor_net, triangle_blossom_in_place,
     triangle_net, BernsteinPairStep, BernsteinStep, CurveStep, Fixed, TriangleStep,
 };
-use crate::shape::unrolled::restrict_curve_unrolled;
 use crate::Ring;
 
 /// `out` = the control points f(a^(n-j), b^j) of the curve `points` (`D` numbers per point)
@@ -29,7 +28,7 @@ pub(crate) fn curve_subsegment_fixed<T: Ring, const D: usize>(
     out: &mut [T],
     scratch: &mut Vec<T>,
 ) {
-    if T::UNROLLED && restrict_curve_unrolled::<T, D>(points, a, b, out) {
+    if T::UNROLLED && T::restrict_unrolled(points, D, a, b, out) {
         return;
     }
     curve_net(

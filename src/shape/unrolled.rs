@@ -2,6 +2,14 @@
 //! `blossom::restriction!` generates: the engine's halving unrolled for one degree (the same
 //! steps in the same order, so the same answer bit for bit), with every level in registers
 //! instead of scratch buffers. [`crate::Bezier`] dispatches here first.
+//!
+//! The evaluators are generic, but only `f64` and `f32` run them ([`crate::Ring::UNROLLED`]),
+//! and only in dimensions 1..=4: [`restrict_f64`] and [`restrict_f32`] instantiate them and
+//! are neither generic nor inlined, so the grid of 24 degrees x 4 dimensions is compiled once,
+//! in this crate. (Reached from generic code instead, it was monomorphised anew in every crate
+//! that restricts a float curve: about 100 s of CPU at `opt-level = 2` for a program of a few
+//! lines, in every example and test crate.) The front ends reach them through
+//! [`crate::Ring::restrict_unrolled`].
 
 macro_rules! unrolled {
     ($($n:literal => $name:ident,)*) => {
@@ -13,7 +21,7 @@ macro_rules! unrolled {
         /// length. The flat slices are read as `[T; D]` points in place (`as_chunks`), so
         /// nothing is copied on the way in.
         #[inline]
-        pub(crate) fn restrict_curve_unrolled<T: crate::Ring, const D: usize>(
+        fn restrict_curve_unrolled<T: crate::Ring, const D: usize>(
             points: &[T],
             a: &T,
             b: &T,
@@ -49,4 +57,31 @@ unrolled! {
     12 => degree_12, 13 => degree_13, 14 => degree_14, 15 => degree_15, 16 => degree_16,
     17 => degree_17, 18 => degree_18, 19 => degree_19, 20 => degree_20, 21 => degree_21,
     22 => degree_22, 23 => degree_23, 24 => degree_24,
+}
+
+/// `out` = the control points of the curve with flat control points `points` (`dim` numbers
+/// each) over [a, b] by the unrolled evaluator of its degree, for a dimension `dim` in 1..=4
+/// and a degree in 1..=24 of `T` = `f64` or `f32`; `false` (and `out` untouched) otherwise.
+/// Called by the two non-generic entry points only, so that it is instantiated twice.
+#[inline]
+fn restrict_flat<T: crate::Ring>(points: &[T], dim: usize, a: &T, b: &T, out: &mut [T]) -> bool {
+    match dim {
+        1 => restrict_curve_unrolled::<T, 1>(points, a, b, out),
+        2 => restrict_curve_unrolled::<T, 2>(points, a, b, out),
+        3 => restrict_curve_unrolled::<T, 3>(points, a, b, out),
+        4 => restrict_curve_unrolled::<T, 4>(points, a, b, out),
+        _ => false,
+    }
+}
+
+/// [`restrict_flat`] in `f64`, compiled in this crate only (see the module documentation).
+#[inline(never)]
+pub(crate) fn restrict_f64(points: &[f64], dim: usize, a: &f64, b: &f64, out: &mut [f64]) -> bool {
+    restrict_flat(points, dim, a, b, out)
+}
+
+/// [`restrict_flat`] in `f32`, compiled in this crate only (see the module documentation).
+#[inline(never)]
+pub(crate) fn restrict_f32(points: &[f32], dim: usize, a: &f32, b: &f32, out: &mut [f32]) -> bool {
+    restrict_flat(points, dim, a, b, out)
 }

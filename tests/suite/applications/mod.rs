@@ -1,8 +1,6 @@
 //! The applications layer of the library: batches, degree change, derivatives, rational
 //! curves and surfaces, B-splines and the inverse formula for closures.
 
-#[path = "../common/mod.rs"]
-mod common;
 mod json;
 
 mod batched;

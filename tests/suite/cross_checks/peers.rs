@@ -10,7 +10,7 @@
 //! judged. The table (max and median of both errors per library) prints with
 //!
 //! ```text
-//! cargo test -p blossom --test cross_checks peers -- --nocapture
+//! cargo test -p blossom --test suite peers -- --nocapture
 //! ```
 
 use crate::common::Rng;

@@ -10,9 +10,9 @@ use blossom::{
 };
 
 mod expanded {
-    include!("../macros_expanded/curve_3.rs");
-    include!("../macros_expanded/tensor_3_2.rs");
-    include!("../macros_expanded/triangle_3_2.rs");
+    include!("../../macros_expanded/curve_3.rs");
+    include!("../../macros_expanded/tensor_3_2.rs");
+    include!("../../macros_expanded/triangle_3_2.rs");
 }
 
 #[test]

@@ -1,9 +1,6 @@
 //! Restriction of Bézier input (curves, tensor patches, triangles) against de Casteljau's
 //! pyramid on the blossom, exactly, symbolically and in f64.
 
-#[path = "../common/mod.rs"]
-mod common;
-
 mod arrays;
 mod bezier_restrict;
 mod subdivide;

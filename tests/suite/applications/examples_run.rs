@@ -7,21 +7,21 @@
 //! keeps working on the same file. `cargo test` compiles the examples as programs as well, so a
 //! file that only works as a module would still fail the build.
 
-#[path = "../../examples/batch_of_curves.rs"]
+#[path = "../../../examples/batch_of_curves.rs"]
 mod batch_of_curves;
-#[path = "../../examples/bspline_from_pieces.rs"]
+#[path = "../../../examples/bspline_from_pieces.rs"]
 mod bspline_from_pieces;
-#[path = "../../examples/degree_reduction.rs"]
+#[path = "../../../examples/degree_reduction.rs"]
 mod degree_reduction;
 // Its `main` reads the command line and is not called here (see the test).
 #[allow(dead_code)]
-#[path = "../../examples/restrict_runtime_degree.rs"]
+#[path = "../../../examples/restrict_runtime_degree.rs"]
 mod restrict_runtime_degree;
-#[path = "../../examples/restriction_macro.rs"]
+#[path = "../../../examples/restriction_macro.rs"]
 mod restriction_macro;
-#[path = "../../examples/symbolic_proof.rs"]
+#[path = "../../../examples/symbolic_proof.rs"]
 mod symbolic_proof;
-#[path = "../../examples/triangle_subpatch.rs"]
+#[path = "../../../examples/triangle_subpatch.rs"]
 mod triangle_subpatch;
 
 #[test]

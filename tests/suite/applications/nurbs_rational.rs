@@ -2,8 +2,8 @@
 //! with N/w at every parameter, elevation through the degree argument agrees with exact
 //! elevation of the homogeneous points, and the circle arc of seed 004 (with a snapshot).
 
+use super::json::Json;
 use crate::common::{q, Rng};
-use crate::json::Json;
 use blossom::{
     elevate, BSpline, BezierCurve, ErrorKind, Rational, RationalBSpline, RationalCurve,
     RationalPowerTriangle, RationalSurface, Ring,

@@ -4,7 +4,7 @@
 //! `Ring for f32` state.
 //!
 //! Print the table with
-//! `cargo test -p blossom --test applications f32_restriction -- --nocapture`.
+//! `cargo test -p blossom --test suite f32_restriction -- --nocapture`.
 
 use crate::common::Rng;
 use blossom::{rational_to_f64, restrict_power_curve, BezierCurve, Method};

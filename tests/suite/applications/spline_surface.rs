@@ -6,8 +6,8 @@
 //! insertion against the surface before it; the rational form against N / w by Horner and
 //! against eq. (22) on the homogeneous pieces.
 
+use super::json::Json;
 use crate::common::{q, Rng};
-use crate::json::Json;
 use blossom::engine::bspline_basis_on_span;
 use blossom::{
     bezier_tensor_blossom, bspline_surface_from_pieces, restrict_power_surface,

@@ -3,7 +3,7 @@
 //! curves, JSON round trips of every geometry type and the refusal of invalid documents.
 //!
 //! Each part compiles only with its feature: `cargo test -p blossom --features mint,kurbo,serde
-//! --test applications interop`. `cargo test --workspace` runs them too (the application's
+//! --test suite interop`. `cargo test --workspace` runs them too (the application's
 //! dev-dependency on `blossom` turns the features on; see cli/Cargo.toml).
 
 #[cfg(feature = "mint")]

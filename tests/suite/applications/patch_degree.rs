@@ -4,8 +4,8 @@
 //! integrals of the power form of products of polynomials, with no Gram matrix), the bad
 //! inputs, and a snapshot of two reductions with exact L2 errors derived by hand.
 
+use super::json::Json;
 use crate::common::{q, Rng};
-use crate::json::Json;
 use blossom::engine::{bernstein_to_power, triangle_index, triangle_len};
 use blossom::engine::{
     least_squares_matrix, tensor_bernstein_gram, tensor_least_squares_matrix,

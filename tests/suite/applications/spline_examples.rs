@@ -1,7 +1,7 @@
 //! Seed 002's worked examples as exact values, with snapshots, and the errors on bad input.
 
+use super::json::Json;
 use crate::common::q;
-use crate::json::Json;
 use blossom::{bspline_from_pieces, BSpline, KnotVector, Piece};
 use blossom::{PowerCurve, Rational};
 

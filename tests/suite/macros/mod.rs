@@ -1,9 +1,6 @@
 //! `blossom::restriction!`: the Bézier-input evaluators proved symbolically, the printed
 //! expansion compiled against the library, and the compile errors of its misuses.
 
-#[path = "../common/mod.rs"]
-mod common;
-
 mod macros_bezier;
 mod macros_expanded_compiles;
 mod macros_ui;
