@@ -27,7 +27,7 @@
 //! Run: `cargo bench -p blossom --bench intersect` (BENCHMARKS.md, "Intersections", has the
 //! figures). `INTERSECT_PAIRS=1000` runs on fewer pairs.
 
-use blossom::{intersect_curves, intersect_curves_f64, Rational, Ring};
+use blossom::{intersect_curves, intersect_curves_f64_rounded, Rational, Ring};
 use criterion::{black_box, Criterion, SamplingMode, Throughput};
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -60,15 +60,13 @@ type Answer = Vec<(f64, f64)>;
 /// each the correctly rounded double of the exact value, sorted by s then t. Overlaps (none
 /// occur in random data) are not counted.
 ///
-/// This is the one place the bench calls the certified path: swap in the faster certified
-/// function here when it lands (the float filter with exact fallback).
+/// This is the one place the bench calls the certified path:
+/// [`intersect_curves_f64_rounded`], the float filter (subdivision, Krawczyk's test,
+/// double-double residuals, correct rounding from the enclosures) with the exact path where
+/// the filter does not decide.
 fn ours(p: &Cubic, q: &Cubic) -> Vec<(f64, f64)> {
-    let found = intersect_curves_f64(p, q).expect("random cubics intersect exactly");
-    found
-        .points
-        .iter()
-        .map(|x| (x.s.to_f64(), x.t.to_f64()))
-        .collect()
+    let found = intersect_curves_f64_rounded(p, q).expect("random cubics intersect exactly");
+    found.points.iter().map(|x| (x.s, x.t)).collect()
 }
 
 fn lyon_of(c: &Cubic) -> lyon_geom::CubicBezierSegment<f64> {
