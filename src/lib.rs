@@ -168,8 +168,8 @@ pub use restrict::polarisation::{
 pub use intersect::algebraic::AlgebraicReal;
 pub use intersect::curves::{
     curve_pair_work, filtered_intersection_work, intersect_curves, intersect_curves_f64,
-    intersection_work, self_intersections, self_intersections_f64, IntersectionPoint,
-    Intersections, Overlap,
+    intersection_work, self_intersection_work, self_intersections, self_intersections_f64,
+    IntersectionPoint, Intersections, Overlap,
 };
 pub use intersect::filter::{certified_crossings_f64, CertifiedCrossing};
 pub use intersect::rounded::{

@@ -700,13 +700,7 @@ pub fn filtered_intersection_work(n: usize, m: usize, bits: usize, crossings: us
 /// number of crossings, else [`intersection_work`]. `bits` is the longest coordinate's
 /// numerator and denominator together.
 pub fn curve_pair_work(p: &[[Rational; 2]], q: &[[Rational; 2]]) -> u128 {
-    let bits = p
-        .iter()
-        .chain(q)
-        .flatten()
-        .map(|c| (c.numer().bits() + c.denom().bits()) as usize)
-        .max()
-        .unwrap_or(1);
+    let bits = longest_coordinate(p).max(longest_coordinate(q));
     let (n, m) = (p.len().saturating_sub(1), q.len().saturating_sub(1));
     let filtered = as_doubles(p)
         .zip(as_doubles(q))
@@ -715,6 +709,23 @@ pub fn curve_pair_work(p: &[[Rational; 2]], q: &[[Rational; 2]]) -> u128 {
         Some(crossings) => filtered_intersection_work(n, m, bits, crossings.len()),
         None => intersection_work(n, m, bits),
     }
+}
+
+/// The estimated work of [`self_intersections`] on `p`, in nanoseconds as
+/// [`intersection_work`]: the divided difference (P(s) - P(t)) / (s - t) has degree n - 1 in
+/// each variable and always goes through the exact solver.
+pub fn self_intersection_work(p: &[[Rational; 2]]) -> u128 {
+    let d = p.len().saturating_sub(2).max(1);
+    intersection_work(d, d, longest_coordinate(p))
+}
+
+/// The bits of the longest coordinate, numerator and denominator together (at least 1).
+fn longest_coordinate(p: &[[Rational; 2]]) -> usize {
+    p.iter()
+        .flatten()
+        .map(|c| (c.numer().bits() + c.denom().bits()) as usize)
+        .max()
+        .unwrap_or(1)
 }
 
 /// The 64-bit words of a resultant coefficient (see [`intersection_work`]).

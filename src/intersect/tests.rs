@@ -420,12 +420,7 @@ fn timing_exact_pairs() {
         .collect();
     let kinds = std::env::var("BLOSSOM_KINDS").unwrap_or_else(|_| "int f64".into());
     let mut state = 0x2545_f491_4f6c_dd1du64;
-    let mut next = move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        state
-    };
+    let mut next = move || next(&mut state);
     for kind in kinds.split_whitespace() {
         for &n in &degrees {
             let mut curve = || -> Vec<[Rational; 2]> {

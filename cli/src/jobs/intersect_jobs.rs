@@ -147,20 +147,7 @@ fn self_job(
     max_work: u64,
 ) -> Result<Value, Error> {
     let p = curve(field(job, "curve")?, "curve", arithmetic)?;
-    // The divided difference (P(s) - P(t)) / (s - t) has degree n - 1 in each variable and
-    // goes through the exact solver.
-    let n = p.len() - 1;
-    let bits = p
-        .iter()
-        .flatten()
-        .map(|c| (c.numer().bits() + c.denom().bits()) as usize)
-        .max()
-        .unwrap_or(1);
-    within_budget(
-        "curve",
-        blossom::intersection_work(n.max(2) - 1, n.max(2) - 1, bits),
-        max_work,
-    )?;
+    within_budget("curve", blossom::self_intersection_work(&p), max_work)?;
     let found = blossom::self_intersections(&p).map_err(|e| at("curve", e))?;
     intersections("self", &found)
 }
