@@ -40,7 +40,7 @@ use crate::shape::power::{check_dims, PowerCurve, PowerSurface};
 use crate::shape::power_triangle::PowerTriangle;
 use crate::{Rational, Ring};
 use num_bigint::BigInt;
-use num_traits::{One, Signed};
+use num_traits::One;
 
 /// Groups equal arguments: `(distinct value, multiplicity)` in order of first appearance.
 fn group<P: PartialEq + Clone>(args: &[P]) -> Vec<(P, usize)> {
@@ -120,7 +120,9 @@ fn polar_form_unchecked<T: Ring>(
         if (n - size) % 2 == 1 {
             weight = -weight;
         }
-        let weight = Rational::new(weight, fact.clone());
+        // Built once and converted once, then used on every coordinate of the sample (a
+        // weight of about n log2(n) bits: its reduction is the dearest step of a term).
+        let weight = T::from_rational(&Rational::new(weight, fact.clone()));
         // The average (sum_r k_r x_r) / size.
         let inv = Rational::new(BigInt::one(), BigInt::from(size));
         let mut avg = vec![T::zero(); groups[0].0.len()];
@@ -131,11 +133,8 @@ fn polar_form_unchecked<T: Ring>(
             }
         }
         let value = q(&avg);
-        match acc.as_mut() {
-            Some(acc) => point::add_scaled_rational(acc, &weight, &value),
-            None => acc = Some(point::scaled_rational(&value, &weight)),
-        }
-        debug_assert!(!weight.is_negative() || (n - size) % 2 == 1);
+        let acc = acc.get_or_insert_with(|| point::zero(value.len()));
+        point::add_scaled(acc, &weight, &value);
     });
     acc.expect("n >= 1 gives at least one term")
 }
