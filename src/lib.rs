@@ -171,6 +171,10 @@ pub use intersect::curves::{
     intersection_work, self_intersection_work, self_intersections, self_intersections_f64,
     IntersectionPoint, Intersections, Overlap,
 };
+pub use intersect::extrema::{
+    nearest_point, nearest_point_f64, tight_bounding_box, tight_bounding_box_f64, Extreme,
+    NearestPoint, TightBox,
+};
 pub use intersect::filter::{certified_crossings_f64, CertifiedCrossing};
 pub use intersect::rounded::{
     intersect_curves_f64_rounded, RoundedIntersections, RoundedOverlap, RoundedPoint,

@@ -21,7 +21,8 @@
 //! between the ends, the sign of f at m tells the side (m itself would be a rational root,
 //! already detected).
 
-use super::isolate::{bernstein_on, sign_changes, Isolated};
+use super::bivariate::{resultant_t, BiPoly};
+use super::isolate::{bernstein_on, isolate, sign_changes, Isolated};
 use super::upoly::{self, degree, gcd, primitive, sign_at, ZPoly};
 use crate::num::ring::{rational_to_f64, Rational};
 use num_bigint::BigInt;
@@ -349,6 +350,74 @@ impl AlgebraicReal {
             }
         }
     }
+
+    /// The largest double not above the number (rounding toward -∞), exactly; -∞ below the
+    /// range of doubles.
+    pub fn to_f64_down(&self) -> f64 {
+        self.directed(Direction::Down)
+    }
+
+    /// The smallest double not below the number (rounding toward +∞), exactly; +∞ above the
+    /// range of doubles.
+    pub fn to_f64_up(&self) -> f64 {
+        self.directed(Direction::Up)
+    }
+
+    /// Directed rounding: the ends of the isolating interval are rounded the same way; when
+    /// they differ by one double, that double d is the only rounding boundary in between, and
+    /// the exact comparison with d decides (the number is irrational when not exact, so it is
+    /// not d).
+    fn directed(&self, direction: Direction) -> f64 {
+        let mut a = self.clone();
+        loop {
+            if let Some(r) = &a.exact {
+                return round_rational(r, direction);
+            }
+            let (x, y) = (
+                round_rational(&a.lo, direction),
+                round_rational(&a.hi, direction),
+            );
+            if x == y {
+                return x;
+            }
+            if x.is_finite() && y.is_finite() && next_up(x) == y {
+                return match direction {
+                    Direction::Down if a.cmp_rational(&exact_f64(y)) == Ordering::Less => x,
+                    Direction::Down => y,
+                    Direction::Up if a.cmp_rational(&exact_f64(x)) == Ordering::Greater => y,
+                    Direction::Up => x,
+                };
+            }
+            a.refine();
+        }
+    }
+}
+
+/// A direction of rounding.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Direction {
+    /// Toward -∞.
+    Down,
+    /// Toward +∞.
+    Up,
+}
+
+/// The rational `r` rounded to a double in `direction`, exactly.
+fn round_rational(r: &Rational, direction: Direction) -> f64 {
+    let x = rational_to_f64(r);
+    if !x.is_finite() {
+        // Beyond the largest double: the largest finite double on the side toward zero.
+        return match (direction, x > 0.0) {
+            (Direction::Down, true) => f64::MAX,
+            (Direction::Up, false) => f64::MIN,
+            _ => x,
+        };
+    }
+    match (direction, exact_f64(x).cmp(r)) {
+        (Direction::Down, Ordering::Greater) => -next_up(-x),
+        (Direction::Up, Ordering::Less) => next_up(x),
+        _ => x,
+    }
 }
 
 /// What the rounding of the numbers in [lo, hi] looks like.
@@ -548,4 +617,44 @@ pub fn round_polynomial_at(p: &[Rational], alpha: &AlgebraicReal) -> f64 {
 /// p(r) for a rational polynomial (ascending) at a rational.
 pub(crate) fn upoly_eval_q(p: &[Rational], r: &Rational) -> Rational {
     p.iter().rev().fold(Rational::zero(), |acc, c| acc * r + c)
+}
+
+/// The value p(alpha) of a rational polynomial (ascending) at an algebraic number, as an
+/// algebraic number, exactly. With N = c p an integer polynomial (c > 0) and f the polynomial
+/// of alpha, v = p(alpha) is a root of R(v) = Res_t(f(t), c v - N(t)), which is not zero (the
+/// second argument is of degree 1 in v with a constant leading coefficient); v is isolated
+/// among the roots of the square-free part of R by interval Horner enclosures of p over
+/// alpha's interval, refined until exactly one root of R lies in the enclosure.
+pub fn value_at(p: &[Rational], alpha: &AlgebraicReal) -> AlgebraicReal {
+    if let Some(r) = &alpha.exact {
+        return AlgebraicReal::from_rational(upoly_eval_q(p, r));
+    }
+    let mut scale = BigInt::one();
+    for c in p {
+        scale = scale.lcm(c.denom());
+    }
+    let n: ZPoly = p.iter().map(|c| c.numer() * (&scale / c.denom())).collect();
+    if degree(&n).unwrap_or(0) == 0 {
+        return AlgebraicReal::from_rational(upoly_eval_q(p, &Rational::zero()));
+    }
+    // A(v, t) = f(t) and B(v, t) = c v - N(t), as a[i][j] = coefficient of v^i t^j.
+    let a: BiPoly = vec![alpha.poly.clone()];
+    let mut linear = vec![BigInt::zero(); n.len()];
+    linear[0] = scale;
+    let b: BiPoly = vec![n.iter().map(|x| -x).collect(), linear];
+    let r = upoly::square_free_part(&resultant_t(&a, &b));
+    let mut t = alpha.clone();
+    loop {
+        if t.exact.is_some() {
+            return value_at(p, &t);
+        }
+        let (lo, hi) = enclose(p, &t.lo, &t.hi);
+        if lo == hi {
+            return AlgebraicReal::from_rational(lo);
+        }
+        if let [one] = isolate(&r, &lo, &hi).as_slice() {
+            return AlgebraicReal::from_isolated(&r, one);
+        }
+        t.refine();
+    }
 }

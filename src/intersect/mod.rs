@@ -7,6 +7,8 @@
 //! * `modular`: arithmetic modulo word-size primes, interpolation, Chinese remaindering;
 //! * `bivariate`: resultants and first subresultants of bivariate integer polynomials (multi-modular);
 //! * `curves`: curve-curve intersection ([`intersect_curves`]);
+//! * `extrema`: the tight bounding box and the nearest point of a curve
+//!   ([`tight_bounding_box`], [`nearest_point`]);
 //! * `interval`: rigorous intervals, double-doubles and correct rounding for the filter;
 //! * `filter`: the float filter of curve-curve intersection ([`certified_crossings_f64`]);
 //! * `rounded`: the `f64` answer for every input, filter first, exact path otherwise
@@ -15,6 +17,7 @@
 pub(crate) mod algebraic;
 pub(crate) mod bivariate;
 pub(crate) mod curves;
+pub(crate) mod extrema;
 pub(crate) mod filter;
 pub(crate) mod interval;
 pub(crate) mod isolate;
@@ -24,6 +27,8 @@ pub(crate) mod solve;
 pub(crate) mod upoly;
 pub(crate) mod zeros;
 
+#[cfg(test)]
+mod extrema_tests;
 #[cfg(test)]
 mod filter_tests;
 #[cfg(test)]

@@ -107,12 +107,7 @@ pub fn bezier_zeros(coefficients: &[Rational]) -> Result<BezierZeros> {
             "expected at least one coefficient",
         ));
     }
-    let points: Vec<Vec<Rational>> = coefficients.iter().map(|c| vec![c.clone()]).collect();
-    let power: Vec<Rational> = bernstein_to_power(&points)
-        .into_iter()
-        .map(|p| p[0].clone())
-        .collect();
-    let p = upoly::from_rationals(&power);
+    let p = upoly::from_rationals(&power_coefficients(coefficients));
     if p.is_empty() {
         return Ok(BezierZeros {
             identically_zero: true,
@@ -130,6 +125,16 @@ pub fn bezier_zeros(coefficients: &[Rational]) -> Result<BezierZeros> {
         identically_zero: false,
         zeros,
     })
+}
+
+/// The power coefficients a_0..a_n (ascending) of the Bézier function with Bernstein
+/// coefficients `coefficients` over [0, 1]: sum b_i B_i^n(t) = sum a_k t^k, exactly.
+pub(crate) fn power_coefficients(coefficients: &[Rational]) -> Vec<Rational> {
+    let points: Vec<Vec<Rational>> = coefficients.iter().map(|c| vec![c.clone()]).collect();
+    bernstein_to_power(&points)
+        .into_iter()
+        .map(|p| p[0].clone())
+        .collect()
 }
 
 /// [`bezier_zeros`] of doubles, each read exactly (every finite double is a rational).
