@@ -140,9 +140,30 @@ struct Node {
 }
 
 impl Curve {
-    /// The curve with control points `p`, or `None` when the filter does not take it (fewer
-    /// than two points, a non-finite or extreme coordinate, a single point).
-    fn new(p: &[[f64; 2]]) -> Option<Self> {
+    /// A curve with no control points and empty storage, to be [`Curve::reset`].
+    fn empty() -> Self {
+        Curve {
+            degree: 0,
+            points: Vec::new(),
+            exact: Vec::new(),
+            dd: Vec::new(),
+            hodograph: Vec::new(),
+            step_error: 0.0,
+            pieces: Vec::new(),
+            nodes: Vec::new(),
+            level: Vec::new(),
+            level_dd: Vec::new(),
+            level_bounded: Vec::new(),
+            net_scratch: Vec::new(),
+            left: Vec::new(),
+            right: Vec::new(),
+        }
+    }
+
+    /// Makes this the curve with control points `p`, reusing the storage, or `None` when the
+    /// filter does not take it (fewer than two points, a non-finite or extreme coordinate, a
+    /// single point).
+    fn reset(&mut self, p: &[[f64; 2]]) -> Option<()> {
         if p.len() < 2 || p.iter().flatten().any(|c| !c.is_finite()) {
             return None;
         }
@@ -153,34 +174,35 @@ impl Curve {
         if !(m0 >= 2f64.powi(-900) && m0 <= 2f64.powi(900)) {
             return None;
         }
-        let points: Vec<f64> = p.iter().flatten().copied().collect();
-        let exact: Vec<BoundedF64> = points.iter().map(|&x| BoundedF64::exact(x)).collect();
+        self.degree = p.len() - 1;
+        self.points.clear();
+        self.points.extend(p.iter().flatten());
+        self.exact.clear();
+        self.exact
+            .extend(self.points.iter().map(|&x| BoundedF64::exact(x)));
+        self.dd.clear();
+        self.dd.extend(self.points.iter().map(|&x| Dd::exact(x)));
         // The hodograph n (p_(i+1) - p_i), its rounding bounded.
-        let n = BoundedF64::exact((p.len() - 1) as f64);
-        let hodograph: Vec<BoundedF64> = exact
-            .iter()
-            .zip(&exact[2..])
-            .map(|(a, b)| b.sub(a).mul(&n))
-            .collect();
-        let mut curve = Curve {
-            degree: p.len() - 1,
-            dd: points.iter().map(|&x| Dd::exact(x)).collect(),
-            hodograph,
-            exact,
-            step_error: upward(2.0 * UNIT_ROUNDOFF * m0 * (1.0 + 2f64.powi(-19)) + 2.0 * ETA),
-            pieces: Vec::with_capacity(64 * points.len()),
-            nodes: Vec::with_capacity(64),
-            level: Vec::new(),
-            level_dd: Vec::new(),
-            level_bounded: Vec::new(),
-            net_scratch: Vec::new(),
-            left: vec![0.0; points.len()],
-            right: vec![0.0; points.len()],
-            points,
-        };
-        let whole = curve.points.clone();
-        curve.push_piece(&whole, 0.0, 0);
-        Some(curve)
+        let n = BoundedF64::exact(self.degree as f64);
+        self.hodograph.clear();
+        self.hodograph.extend(
+            self.exact
+                .iter()
+                .zip(&self.exact[2..])
+                .map(|(a, b)| b.sub(a).mul(&n)),
+        );
+        self.step_error = upward(2.0 * UNIT_ROUNDOFF * m0 * (1.0 + 2f64.powi(-19)) + 2.0 * ETA);
+        self.pieces.clear();
+        self.nodes.clear();
+        let len = self.points.len();
+        self.left.resize(len, 0.0);
+        self.right.resize(len, 0.0);
+        let whole = std::mem::take(&mut self.left);
+        let mut whole = whole;
+        whole.copy_from_slice(&self.points);
+        self.push_piece(&whole, 0.0, 0);
+        self.left = whole;
+        Some(())
     }
 
     /// Appends a piece with control points `coords` over [start, start + 2^-level].
@@ -521,34 +543,83 @@ fn certify(p: &mut Curve, q: &mut Curve, b: &Box2) -> Option<Root> {
     })
 }
 
-/// The search state: both curves, the proved roots and their exclusion boxes.
+/// A point where Newton's method converged, with an enclosure of F there: the centre of the
+/// Krawczyk boxes tried for the cells that contain it (a heuristic choice of centre; nothing is
+/// proved from it).
+#[derive(Clone, Copy)]
+struct Guess {
+    z: [f64; 2],
+    f: [BoundedF64; 2],
+}
+
+/// The search state: both curves, the proved roots and their exclusion boxes, the Newton
+/// points found so far, the stack of cells. Kept per thread and reused ([`with_search`]), so
+/// that a call allocates only on its first use (or for larger curves than before).
 struct Search {
     p: Curve,
     q: Curve,
     roots: Vec<Root>,
     /// Proved boxes, each with the index of its one root.
     exclusions: Vec<(Box2, usize)>,
+    guesses: Vec<Guess>,
+    stack: Vec<(usize, usize)>,
 }
 
+/// Two Newton points closer than this (in s and t) are taken as the same point (a heuristic:
+/// it only decides whether a Krawczyk box is tried or the cell is halved).
+const SAME_POINT: f64 = 1e-12;
+
 impl Search {
-    /// Newton from `start`, then Krawczyk on the box around the Newton point that contains the
-    /// cell `s` x `t` (module documentation, 2): whether the cell is settled, `None` when a
-    /// proved root is undecided.
-    fn try_cell(&mut self, s: [f64; 2], t: [f64; 2], start: [f64; 2]) -> Option<bool> {
-        let (p, q) = (&mut self.p, &mut self.q);
+    fn empty() -> Self {
+        Search {
+            p: Curve::empty(),
+            q: Curve::empty(),
+            roots: Vec::new(),
+            exclusions: Vec::new(),
+            guesses: Vec::new(),
+            stack: Vec::new(),
+        }
+    }
+
+    /// The centre of the Krawczyk box for the cell `s` x `t`: a known Newton point inside the
+    /// cell, else Newton's method from `start` (the chords' crossing) when it converges to a
+    /// new point, or to a known one inside the cell's neighbourhood (a known point outside the
+    /// cell is left to the cell that holds it: `None`, the cell is halved).
+    fn guess(&mut self, s: [f64; 2], t: [f64; 2], start: Option<[f64; 2]>) -> Option<Guess> {
+        let inside = |z: [f64; 2]| s[0] <= z[0] && z[0] <= s[1] && t[0] <= z[1] && z[1] <= t[1];
+        if let Some(g) = self.guesses.iter().find(|g| inside(g.z)) {
+            return Some(*g);
+        }
+        let z = newton(&mut self.p, &mut self.q, start?)?;
+        let same = |g: &Guess| (0..2).all(|i| (g.z[i] - z[i]).abs() <= SAME_POINT);
+        if self.guesses.iter().any(same) {
+            return None;
+        }
+        let (pz, qz) = (self.p.eval_bounded(z[0]), self.q.eval_bounded(z[1]));
+        let g = Guess {
+            z,
+            f: [pz[0].sub(&qz[0]), pz[1].sub(&qz[1])],
+        };
+        self.guesses.push(g);
+        Some(g)
+    }
+
+    /// Krawczyk's test on the box around a Newton point that contains the cell `s` x `t`
+    /// (module documentation, 2): whether the cell is settled, `None` when a proved root is
+    /// undecided.
+    fn try_cell(&mut self, s: [f64; 2], t: [f64; 2], start: Option<[f64; 2]>) -> Option<bool> {
         let centre = [0.5 * (s[0] + s[1]), 0.5 * (t[0] + t[1])];
         let half = [0.5 * (s[1] - s[0]), 0.5 * (t[1] - t[0])];
-        let Some(z) = newton(p, q, start) else {
+        let Some(Guess { z, f }) = self.guess(s, t, start) else {
             return Some(false);
         };
         let far = |i: usize| (z[i] - centre[i]).abs() > 2.0 * half[i];
         if far(0) || far(1) {
             return Some(false);
         }
+        let (p, q) = (&mut self.p, &mut self.q);
         let radius = [0, 1].map(|i| ((z[i] - centre[i]).abs().next_up() + half[i]).next_up());
         let b = Box2 { mid: z, radius };
-        let (pz, qz) = (p.eval_bounded(z[0]), q.eval_bounded(z[1]));
-        let f = [pz[0].sub(&qz[0]), pz[1].sub(&qz[1])];
         let dp = p.tangent_hull(z[0], radius[0]);
         let dq = q.tangent_hull(z[1], radius[1]);
         if !krawczyk(&b, f, dp, dq).is_some_and(|k| k.proved) {
@@ -624,52 +695,71 @@ impl Search {
 /// assert_eq!(x[0].point[1], 0.5);
 /// ```
 pub fn certified_crossings_f64(p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<Vec<CertifiedCrossing>> {
-    let mut search = Search {
-        p: Curve::new(p)?,
-        q: Curve::new(q)?,
-        roots: Vec::new(),
-        exclusions: Vec::new(),
-    };
-    let mut stack = vec![(0usize, 0usize)];
-    let mut examined = 0usize;
-    while let Some((i, j)) = stack.pop() {
-        examined += 1;
-        if examined > MAX_CELLS {
-            return None;
-        }
-        let (a, b) = (search.p.nodes[i], search.q.nodes[j]);
-        if a.bbox[1] < b.bbox[0]
-            || b.bbox[1] < a.bbox[0]
-            || a.bbox[3] < b.bbox[2]
-            || b.bbox[3] < a.bbox[2]
-        {
-            continue;
-        }
-        let (pa, qb) = (search.p.piece(i), search.q.piece(j));
-        if fat_line_separates(pa, a.error, qb, b.error)
-            || fat_line_separates(qb, b.error, pa, a.error)
-        {
-            continue;
-        }
-        let s = [a.start, a.start + width(a.level)];
-        let t = [b.start, b.start + width(b.level)];
-        if search.exclusions.iter().any(|(e, _)| e.contains(s, t)) {
-            continue;
-        }
-        let start = chord_start(search.p.piece(i), search.q.piece(j), s, t);
-        if let Some(start) = start {
-            if search.try_cell(s, t, start)? {
+    with_search(|search| search.run(p, q))
+}
+
+thread_local! {
+    /// The search state of [`certified_crossings_f64`] on this thread, reused across calls.
+    static SEARCH: std::cell::RefCell<Option<Search>> = const { std::cell::RefCell::new(None) };
+}
+
+/// Runs `f` on this thread's reused [`Search`] (a fresh one when it is in use already).
+fn with_search<R>(f: impl FnOnce(&mut Search) -> R) -> R {
+    SEARCH.with(|cell| match cell.try_borrow_mut() {
+        Ok(mut slot) => f(slot.get_or_insert_with(Search::empty)),
+        Err(_) => f(&mut Search::empty()),
+    })
+}
+
+impl Search {
+    /// [`certified_crossings_f64`] on this search state, which it resets first.
+    fn run(&mut self, p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<Vec<CertifiedCrossing>> {
+        self.p.reset(p)?;
+        self.q.reset(q)?;
+        self.roots.clear();
+        self.exclusions.clear();
+        self.guesses.clear();
+        self.stack.clear();
+        self.stack.push((0, 0));
+        let mut examined = 0usize;
+        while let Some((i, j)) = self.stack.pop() {
+            examined += 1;
+            if examined > MAX_CELLS {
+                return None;
+            }
+            let (a, b) = (self.p.nodes[i], self.q.nodes[j]);
+            if a.bbox[1] < b.bbox[0]
+                || b.bbox[1] < a.bbox[0]
+                || a.bbox[3] < b.bbox[2]
+                || b.bbox[3] < a.bbox[2]
+            {
                 continue;
             }
+            let (pa, qb) = (self.p.piece(i), self.q.piece(j));
+            if fat_line_separates(pa, a.error, qb, b.error)
+                || fat_line_separates(qb, b.error, pa, a.error)
+            {
+                continue;
+            }
+            let s = [a.start, a.start + width(a.level)];
+            let t = [b.start, b.start + width(b.level)];
+            if self.exclusions.iter().any(|(e, _)| e.contains(s, t)) {
+                continue;
+            }
+            let start = chord_start(pa, qb, s, t);
+            if self.try_cell(s, t, start)? {
+                continue;
+            }
+            if a.level >= MAX_LEVEL || b.level >= MAX_LEVEL {
+                return None;
+            }
+            let [p0, p1] = self.p.children(i);
+            let [q0, q1] = self.q.children(j);
+            self.stack.extend([(p1, q1), (p1, q0), (p0, q1), (p0, q0)]);
         }
-        if a.level >= MAX_LEVEL || b.level >= MAX_LEVEL {
-            return None;
-        }
-        let [p0, p1] = search.p.children(i);
-        let [q0, q1] = search.q.children(j);
-        stack.extend([(p1, q1), (p1, q0), (p0, q1), (p0, q0)]);
+        let mut out: Vec<CertifiedCrossing> =
+            self.roots.iter().filter_map(|r| r.crossing).collect();
+        out.sort_by(|x, y| x.s.total_cmp(&y.s).then(x.t.total_cmp(&y.t)));
+        Some(out)
     }
-    let mut out: Vec<CertifiedCrossing> = search.roots.iter().filter_map(|r| r.crossing).collect();
-    out.sort_by(|x, y| x.s.total_cmp(&y.s).then(x.t.total_cmp(&y.t)));
-    Some(out)
 }
