@@ -111,6 +111,9 @@ struct Curve {
     dd: Vec<Dd>,
     /// The hodograph's control points with their rounding bounds.
     hodograph: Vec<BoundedF64>,
+    /// n (n - 1) max |Δ² p_i| over both coordinates: a bound on |P''| (plain `f64`, for the
+    /// heuristic reach of a Newton point only).
+    second_bound: f64,
     /// β of the module documentation: the error bound of one halving step.
     step_error: f64,
     /// Control points of the pieces, `2 (n + 1)` doubles each.
@@ -149,6 +152,7 @@ impl Curve {
             dd: Vec::new(),
             hodograph: Vec::new(),
             step_error: 0.0,
+            second_bound: 0.0,
             pieces: Vec::new(),
             nodes: Vec::new(),
             level: Vec::new(),
@@ -191,6 +195,12 @@ impl Curve {
                 .zip(&self.exact[2..])
                 .map(|(a, b)| b.sub(a).mul(&n)),
         );
+        let n = self.degree as f64;
+        self.second_bound = n
+            * (n - 1.0)
+            * p.windows(3)
+                .flat_map(|w| (0..2).map(move |c| (w[2][c] - 2.0 * w[1][c] + w[0][c]).abs()))
+                .fold(0.0, f64::max);
         self.step_error = upward(2.0 * UNIT_ROUNDOFF * m0 * (1.0 + 2f64.powi(-19)) + 2.0 * ETA);
         self.pieces.clear();
         self.nodes.clear();
@@ -308,16 +318,18 @@ impl Curve {
         net.clear();
         net.resize(self.hodograph.len(), BoundedF64::zero());
         curve_net(&self.hodograph, 2, &a, &b, net, &mut self.net_scratch);
-        [0, 1].map(|c| {
-            let (lo, hi) = net
-                .iter()
-                .skip(c)
-                .step_by(2)
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| {
-                    (lo.min(lower(x)), hi.max(upper(x)))
-                });
-            from_bounds(lo, hi)
-        })
+        // The least and largest fl(v -+ e) per coordinate, pushed outwards once: next_down and
+        // next_up are monotone, so this is the hull of the intervals [lower, upper].
+        let mut lo = [f64::INFINITY; 2];
+        let mut hi = [f64::NEG_INFINITY; 2];
+        for xy in net.chunks_exact(2) {
+            for c in 0..2 {
+                let (v, e) = (xy[c].value(), xy[c].error_bound());
+                lo[c] = lo[c].min(v - e);
+                hi[c] = hi[c].max(v + e);
+            }
+        }
+        [0, 1].map(|c| from_bounds(lo[c].next_down(), hi[c].next_up()))
     }
 
     /// An enclosure of P'(s) for every s with |s - mid| <= radius: de Casteljau's pyramid at
@@ -353,16 +365,19 @@ fn fat_line_separates(a: &[f64], ea: f64, b: &[f64], eb: f64) -> bool {
     if n == [0.0, 0.0] {
         return false;
     }
-    let weight = n[0].abs() + n[1].abs();
+    let weight = [n[0].abs(), n[1].abs()];
+    // |n_x| |c_x| + |n_y| |c_y| <= |n_x| max |c_x| + |n_y| max |c_y| =: size.
     let band = |pts: &[f64], e: f64| {
-        let (mut lo, mut hi, mut size) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64);
+        let (mut lo, mut hi, mut cx, mut cy) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64, 0.0f64);
         for c in pts.chunks_exact(2) {
             let d = n[0] * c[0] + n[1] * c[1];
             lo = lo.min(d);
             hi = hi.max(d);
-            size = size.max(n[0].abs() * c[0].abs() + n[1].abs() * c[1].abs());
+            cx = cx.max(c[0].abs());
+            cy = cy.max(c[1].abs());
         }
-        let margin = upward(weight * e + 3.0 * UNIT_ROUNDOFF * size + 4.0 * ETA);
+        let size = weight[0] * cx + weight[1] * cy;
+        let margin = upward((weight[0] + weight[1]) * e + 3.0 * UNIT_ROUNDOFF * size + 4.0 * ETA);
         ((lo - margin).next_down(), (hi + margin).next_up())
     };
     let (a_lo, a_hi) = band(a, ea);
@@ -435,10 +450,12 @@ fn residual_dd(p: &mut Curve, q: &mut Curve, m: [f64; 2]) -> ([Dd; 2], [Dd; 2]) 
     ([a[0].sub(&b[0]), a[1].sub(&b[1])], a)
 }
 
-/// Newton's method in `f64` from `start`: the point it converges to, if it does.
-fn newton(p: &mut Curve, q: &mut Curve, start: [f64; 2]) -> Option<[f64; 2]> {
+/// Newton's method in `f64` from `start`: the point it converges to, if it does, and the
+/// last Jacobian [[P'_x, -Q'_x], [P'_y, -Q'_y]] as (P', Q').
+fn newton(p: &mut Curve, q: &mut Curve, start: [f64; 2]) -> Option<([f64; 2], [[f64; 2]; 2])> {
     let [mut s, mut t] = start;
-    for _ in 0..NEWTON_STEPS {
+    let mut previous = f64::INFINITY;
+    for k in 0..NEWTON_STEPS {
         let (ps, dps) = p.eval_f64(s);
         let (qt, dqt) = q.eval_f64(t);
         let f = [ps[0] - qt[0], ps[1] - qt[1]];
@@ -451,12 +468,19 @@ fn newton(p: &mut Curve, q: &mut Curve, start: [f64; 2]) -> Option<[f64; 2]> {
         let dt = (-dps[1] * f[0] + dps[0] * f[1]) / det;
         s -= ds;
         t -= dt;
-        if !(s.abs() < 4.0 && t.abs() < 4.0) {
+        if !((-1.0..=2.0).contains(&s) && (-1.0..=2.0).contains(&t)) {
             return None;
         }
-        if ds.abs() <= 1e-15 && dt.abs() <= 1e-15 {
-            return Some([s, t]);
+        let step = ds.abs().max(dt.abs());
+        if step <= 1e-15 {
+            return Some(([s, t], [dps, dqt]));
         }
+        // Past the first steps the iteration must contract (it converges quadratically near a
+        // regular root); one that does not is abandoned.
+        if k >= 2 && step > 0.5 * previous {
+            return None;
+        }
+        previous = step;
     }
     None
 }
@@ -550,6 +574,9 @@ fn certify(p: &mut Curve, q: &mut Curve, b: &Box2) -> Option<Root> {
 struct Guess {
     z: [f64; 2],
     f: [BoundedF64; 2],
+    /// The radius below which Krawczyk's test is expected to succeed around z (an estimate
+    /// from the second derivatives, [`REACH`]).
+    reach: f64,
 }
 
 /// The search state: both curves, the proved roots and their exclusion boxes, the Newton
@@ -564,6 +591,10 @@ struct Search {
     guesses: Vec<Guess>,
     stack: Vec<(usize, usize)>,
 }
+
+/// Krawczyk's test is tried on boxes up to this many times a Newton point's reach (a
+/// heuristic that saves tests bound to fail; a skipped cell is halved).
+const REACH: f64 = 4.0;
 
 /// Two Newton points closer than this (in s and t) are taken as the same point (a heuristic:
 /// it only decides whether a Krawczyk box is tried or the cell is halved).
@@ -590,15 +621,21 @@ impl Search {
         if let Some(g) = self.guesses.iter().find(|g| inside(g.z)) {
             return Some(*g);
         }
-        let z = newton(&mut self.p, &mut self.q, start?)?;
+        let (z, [dp, dq]) = newton(&mut self.p, &mut self.q, start?)?;
         let same = |g: &Guess| (0..2).all(|i| (g.z[i] - z[i]).abs() <= SAME_POINT);
         if self.guesses.iter().any(same) {
             return None;
         }
         let (pz, qz) = (self.p.eval_bounded(z[0]), self.q.eval_bounded(z[1]));
+        // Krawczyk's contraction on a box of radius r is about 2 |J^-1| D r, D bounding the
+        // second derivatives: the reach r = 1 / (2 |J^-1| D).
+        let det = (-dp[0] * dq[1] + dq[0] * dp[1]).abs();
+        let inverse = (dq[1].abs() + dq[0].abs()).max(dp[1].abs() + dp[0].abs()) / det;
+        let curvature = self.p.second_bound.max(self.q.second_bound);
         let g = Guess {
             z,
             f: [pz[0].sub(&qz[0]), pz[1].sub(&qz[1])],
+            reach: 1.0 / (2.0 * inverse * curvature),
         };
         self.guesses.push(g);
         Some(g)
@@ -610,7 +647,7 @@ impl Search {
     fn try_cell(&mut self, s: [f64; 2], t: [f64; 2], start: Option<[f64; 2]>) -> Option<bool> {
         let centre = [0.5 * (s[0] + s[1]), 0.5 * (t[0] + t[1])];
         let half = [0.5 * (s[1] - s[0]), 0.5 * (t[1] - t[0])];
-        let Some(Guess { z, f }) = self.guess(s, t, start) else {
+        let Some(Guess { z, f, reach }) = self.guess(s, t, start) else {
             return Some(false);
         };
         let far = |i: usize| (z[i] - centre[i]).abs() > 2.0 * half[i];
@@ -619,6 +656,9 @@ impl Search {
         }
         let (p, q) = (&mut self.p, &mut self.q);
         let radius = [0, 1].map(|i| ((z[i] - centre[i]).abs().next_up() + half[i]).next_up());
+        if radius[0].max(radius[1]) > REACH * reach {
+            return Some(false);
+        }
         let b = Box2 { mid: z, radius };
         let dp = p.tangent_hull(z[0], radius[0]);
         let dq = q.tangent_hull(z[1], radius[1]);
