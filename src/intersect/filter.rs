@@ -36,10 +36,16 @@
 //! nonsingular: the radius of K is at least |I - Y A| r, so |I - Y A| r < r for the positive
 //! vector r, hence the spectral radius of I - Y A is below 1. The Jacobian at the root is
 //! then nonsingular, i.e. cross(P'(s), Q'(t)) != 0: the crossing is transversal and
-//! `tangent` is false, exactly. A surviving cell whose pieces' chords nearly cross is tried:
-//! Newton's method in `f64` from the chords' crossing; when it converges to z near the
-//! cell, the box B centred at z with radii |z - centre| + half width (rounded up) contains the
-//! cell, and Krawczyk's test on B is tried. A proved B is an *exclusion box*: its one root is
+//! `tangent` is false, exactly. A surviving cell is tried around a Newton point z: one found
+//! before that lies in the cell, else Newton's method in `f64` from the chords' crossing
+//! when they nearly cross (a new point; one that converges to a known point outside the cell
+//! leaves the cell to be halved). When z is near the cell, the box B centred at z with radii
+//! |z - centre| + half width (rounded up) contains the cell, and Krawczyk's test on B is
+//! tried unless B is more than `REACH` times larger than z's *reach* 1 / (2 |J(z)^-1| D), D
+//! bounding |P''| and |Q''| (a plain-`f64` estimate of where the test can succeed, used
+//! only to skip tests bound to fail: the cell is then halved). Newton points, their F
+//! enclosures and all storage are kept per thread and reused, so a call allocates nothing
+//! after the first (but its answer). A proved B is an *exclusion box*: its one root is
 //! the only one in B, so every later cell inside B is dropped. Boxes centred on the Newton
 //! point keep the root away from the box's boundary, so roots on the cells' dyadic edges need
 //! no special case. Around a new root a box `INFLATE` times as large is tried too, to settle

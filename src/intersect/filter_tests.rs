@@ -278,6 +278,41 @@ fn rounded_answer_is_the_exact_answer_rounded() {
     assert!(by_filter >= 20, "by filter {by_filter}");
 }
 
+#[test]
+fn reused_search_state_does_not_change_answers() {
+    // The per-thread search state is reused: the same pairs in another order, mixed with
+    // curves of other degrees, and on another thread, give the same answers.
+    let mut r = Random(0x7f4a_7c15_9e37_79b9);
+    let curves: Vec<Vec<[f64; 2]>> = (0..60)
+        .map(|k| (0..=1 + k % 6).map(|_| [r.unit(), r.unit()]).collect())
+        .collect();
+    let pairs: Vec<&[Vec<[f64; 2]>]> = curves.chunks_exact(2).collect();
+    let forward: Vec<_> = pairs
+        .iter()
+        .map(|c| certified_crossings_f64(&c[0], &c[1]))
+        .collect();
+    let mut backward: Vec<_> = pairs
+        .iter()
+        .rev()
+        .map(|c| certified_crossings_f64(&c[0], &c[1]))
+        .collect();
+    backward.reverse();
+    assert_eq!(forward, backward);
+    let threaded = std::thread::scope(|scope| {
+        scope
+            .spawn(|| {
+                pairs
+                    .iter()
+                    .map(|c| certified_crossings_f64(&c[0], &c[1]))
+                    .collect::<Vec<_>>()
+            })
+            .join()
+            .unwrap()
+    });
+    assert_eq!(forward, threaded);
+    assert!(forward.iter().filter(|x| x.is_some()).count() >= 25);
+}
+
 /// Times the filter on 10^4 random cubic pairs (coordinates uniform doubles in [0, 1]) and on
 /// random pairs of degree 8 and 20, with lyon_geom's uncertified `cubic_intersections_t` on
 /// the same cubic pairs for reference, and the exact path on the pairs the filter leaves. A
