@@ -3,11 +3,10 @@
 //! * `intersect_cubics`: 10^4 random 2-D cubic pairs, every coordinate an f64 uniform in
 //!   [0, 1) from the shared SplitMix64 generator (seed 26). Our certified answer ([`ours`])
 //!   against lyon_geom's `CubicBezierSegment::cubic_intersections_t` (fat-line clipping,
-//!   uncertified) on the same pairs. The certified path is timed on a fixed subset of the
-//!   first [`OURS_SUBSET`] pairs (it is far slower than lyon today), lyon on all 10^4; both
-//!   are reported per pair. A reference pass of [`ours`] over all 10^4 pairs, outside
-//!   criterion, on every core of the machine (each pair timed alone on its thread), gives the
-//!   certified answers and a mean time per pair over the whole set.
+//!   uncertified) on the same pairs, both on all 10^4 pairs, in criterion and in a summary
+//!   line: the median of 5 wall-clock passes of each over all pairs, one thread, and their
+//!   ratio. A reference pass of [`ours`] over all 10^4 pairs, outside criterion, on every core
+//!   of the machine (each pair timed alone on its thread), gives the certified answers.
 //! * The wrong counts of lyon against the certified answers: pairs where lyon's number of
 //!   intersections differs (split into too few and too many), and the largest |s - s_lyon|,
 //!   |t - t_lyon| over the points of pairs with equal counts (each certified point matched to
@@ -41,8 +40,6 @@ use common::Rng;
 const PAIRS: usize = 10_000;
 /// The seed of the generator.
 const SEED: u64 = 26;
-/// The pairs of the criterion timing of [`ours`].
-const OURS_SUBSET: usize = 20;
 /// The exact-input degrees.
 const DEGREES: [usize; 3] = [3, 8, 16];
 /// Exact-input pairs per degree (fewer when one is slow, see [`exact_inputs`]).
@@ -326,20 +323,17 @@ fn main() {
     {
         let mut group = c.benchmark_group("intersect_cubics");
         group.sampling_mode(SamplingMode::Flat);
-        let subset = &pairs[..OURS_SUBSET.min(count)];
-        group.throughput(Throughput::Elements(subset.len() as u64));
-        group.sample_size(10);
+        group.throughput(Throughput::Elements(count as u64));
+        group.sample_size(20);
         group.warm_up_time(Duration::from_secs(1));
         group.measurement_time(Duration::from_secs(5));
-        group.bench_function(format!("certified/{}", subset.len()), |b| {
+        group.bench_function(format!("certified/{count}"), |b| {
             b.iter(|| {
-                for (p, q) in subset {
+                for (p, q) in &pairs {
                     black_box(ours(black_box(p), black_box(q)));
                 }
             })
         });
-        group.throughput(Throughput::Elements(count as u64));
-        group.sample_size(20);
         group.measurement_time(Duration::from_secs(5));
         group.bench_function(format!("lyon/{count}"), |b| {
             b.iter(|| {
@@ -351,27 +345,22 @@ fn main() {
         group.finish();
     }
 
+    // The ratio on the same pairs, one thread each, all pairs.
+    let ours_each = per_pair(5, &pairs, ours);
     let lyon_each = per_pair(5, &pairs, lyon);
-    // The ratio on the same pairs, one thread each: the criterion subset.
-    let subset = &pairs[..OURS_SUBSET.min(count)];
-    let ours_subset = per_pair(3, subset, ours);
-    let lyon_subset = per_pair(5, subset, lyon);
     let total_points: usize = certified.iter().map(Vec::len).sum();
     let mut summary = String::new();
     let lines = [
         format!("pairs: {count} random cubic pairs in [0, 1)^2, seed {SEED}, {total_points} certified intersections"),
         format!(
-            "certified (ours): {} per pair (all {count}, each timed alone; criterion: the first {})",
-            time_text(ours_full),
-            OURS_SUBSET.min(count)
+            "certified (ours): {} per pair (median of 5 passes over all {count}, one thread; reference pass on every core, each pair timed alone: {})",
+            time_text(ours_each),
+            time_text(ours_full)
         ),
         format!("lyon cubic_intersections_t: {} per pair (median of 5 passes)", time_text(lyon_each)),
         format!(
-            "ratio certified / lyon on the first {} pairs, one thread: {:.1} ({} / {} per pair)",
-            subset.len(),
-            ours_subset / lyon_subset,
-            time_text(ours_subset),
-            time_text(lyon_subset)
+            "ratio certified / lyon on all {count} pairs, one thread: {:.2}",
+            ours_each / lyon_each
         ),
         format!(
             "lyon wrong count: {} of {count} pairs ({} too few, missing {} points; {} too many, {} extra points)",

@@ -36,10 +36,16 @@
 //! nonsingular: the radius of K is at least |I - Y A| r, so |I - Y A| r < r for the positive
 //! vector r, hence the spectral radius of I - Y A is below 1. The Jacobian at the root is
 //! then nonsingular, i.e. cross(P'(s), Q'(t)) != 0: the crossing is transversal and
-//! `tangent` is false, exactly. A surviving cell whose pieces' chords nearly cross is tried:
-//! Newton's method in `f64` from the chords' crossing; when it converges to z near the
-//! cell, the box B centred at z with radii |z - centre| + half width (rounded up) contains the
-//! cell, and Krawczyk's test on B is tried. A proved B is an *exclusion box*: its one root is
+//! `tangent` is false, exactly. A surviving cell is tried around a Newton point z: one found
+//! before that lies in the cell, else Newton's method in `f64` from the chords' crossing
+//! when they nearly cross (a new point; one that converges to a known point outside the cell
+//! leaves the cell to be halved). When z is near the cell, the box B centred at z with radii
+//! |z - centre| + half width (rounded up) contains the cell, and Krawczyk's test on B is
+//! tried unless B is more than `REACH` times larger than z's *reach* 1 / (2 |J(z)^-1| D), D
+//! bounding |P''| and |Q''| (a plain-`f64` estimate of where the test can succeed, used
+//! only to skip tests bound to fail: the cell is then halved). Newton points, their F
+//! enclosures and all storage are kept per thread and reused, so a call allocates nothing
+//! after the first (but its answer). A proved B is an *exclusion box*: its one root is
 //! the only one in B, so every later cell inside B is dropped. Boxes centred on the Newton
 //! point keep the root away from the box's boundary, so roots on the cells' dyadic edges need
 //! no special case. Around a new root a box `INFLATE` times as large is tried too, to settle
@@ -111,6 +117,9 @@ struct Curve {
     dd: Vec<Dd>,
     /// The hodograph's control points with their rounding bounds.
     hodograph: Vec<BoundedF64>,
+    /// n (n - 1) max |Δ² p_i| over both coordinates: a bound on |P''| (plain `f64`, for the
+    /// heuristic reach of a Newton point only).
+    second_bound: f64,
     /// β of the module documentation: the error bound of one halving step.
     step_error: f64,
     /// Control points of the pieces, `2 (n + 1)` doubles each.
@@ -140,9 +149,31 @@ struct Node {
 }
 
 impl Curve {
-    /// The curve with control points `p`, or `None` when the filter does not take it (fewer
-    /// than two points, a non-finite or extreme coordinate, a single point).
-    fn new(p: &[[f64; 2]]) -> Option<Self> {
+    /// A curve with no control points and empty storage, to be [`Curve::reset`].
+    fn empty() -> Self {
+        Curve {
+            degree: 0,
+            points: Vec::new(),
+            exact: Vec::new(),
+            dd: Vec::new(),
+            hodograph: Vec::new(),
+            step_error: 0.0,
+            second_bound: 0.0,
+            pieces: Vec::new(),
+            nodes: Vec::new(),
+            level: Vec::new(),
+            level_dd: Vec::new(),
+            level_bounded: Vec::new(),
+            net_scratch: Vec::new(),
+            left: Vec::new(),
+            right: Vec::new(),
+        }
+    }
+
+    /// Makes this the curve with control points `p`, reusing the storage, or `None` when the
+    /// filter does not take it (fewer than two points, a non-finite or extreme coordinate, a
+    /// single point).
+    fn reset(&mut self, p: &[[f64; 2]]) -> Option<()> {
         if p.len() < 2 || p.iter().flatten().any(|c| !c.is_finite()) {
             return None;
         }
@@ -153,34 +184,41 @@ impl Curve {
         if !(m0 >= 2f64.powi(-900) && m0 <= 2f64.powi(900)) {
             return None;
         }
-        let points: Vec<f64> = p.iter().flatten().copied().collect();
-        let exact: Vec<BoundedF64> = points.iter().map(|&x| BoundedF64::exact(x)).collect();
+        self.degree = p.len() - 1;
+        self.points.clear();
+        self.points.extend(p.iter().flatten());
+        self.exact.clear();
+        self.exact
+            .extend(self.points.iter().map(|&x| BoundedF64::exact(x)));
+        self.dd.clear();
+        self.dd.extend(self.points.iter().map(|&x| Dd::exact(x)));
         // The hodograph n (p_(i+1) - p_i), its rounding bounded.
-        let n = BoundedF64::exact((p.len() - 1) as f64);
-        let hodograph: Vec<BoundedF64> = exact
-            .iter()
-            .zip(&exact[2..])
-            .map(|(a, b)| b.sub(a).mul(&n))
-            .collect();
-        let mut curve = Curve {
-            degree: p.len() - 1,
-            dd: points.iter().map(|&x| Dd::exact(x)).collect(),
-            hodograph,
-            exact,
-            step_error: upward(2.0 * UNIT_ROUNDOFF * m0 * (1.0 + 2f64.powi(-19)) + 2.0 * ETA),
-            pieces: Vec::with_capacity(64 * points.len()),
-            nodes: Vec::with_capacity(64),
-            level: Vec::new(),
-            level_dd: Vec::new(),
-            level_bounded: Vec::new(),
-            net_scratch: Vec::new(),
-            left: vec![0.0; points.len()],
-            right: vec![0.0; points.len()],
-            points,
-        };
-        let whole = curve.points.clone();
-        curve.push_piece(&whole, 0.0, 0);
-        Some(curve)
+        let n = BoundedF64::exact(self.degree as f64);
+        self.hodograph.clear();
+        self.hodograph.extend(
+            self.exact
+                .iter()
+                .zip(&self.exact[2..])
+                .map(|(a, b)| b.sub(a).mul(&n)),
+        );
+        let n = self.degree as f64;
+        self.second_bound = n
+            * (n - 1.0)
+            * p.windows(3)
+                .flat_map(|w| (0..2).map(move |c| (w[2][c] - 2.0 * w[1][c] + w[0][c]).abs()))
+                .fold(0.0, f64::max);
+        self.step_error = upward(2.0 * UNIT_ROUNDOFF * m0 * (1.0 + 2f64.powi(-19)) + 2.0 * ETA);
+        self.pieces.clear();
+        self.nodes.clear();
+        let len = self.points.len();
+        self.left.resize(len, 0.0);
+        self.right.resize(len, 0.0);
+        let whole = std::mem::take(&mut self.left);
+        let mut whole = whole;
+        whole.copy_from_slice(&self.points);
+        self.push_piece(&whole, 0.0, 0);
+        self.left = whole;
+        Some(())
     }
 
     /// Appends a piece with control points `coords` over [start, start + 2^-level].
@@ -286,16 +324,18 @@ impl Curve {
         net.clear();
         net.resize(self.hodograph.len(), BoundedF64::zero());
         curve_net(&self.hodograph, 2, &a, &b, net, &mut self.net_scratch);
-        [0, 1].map(|c| {
-            let (lo, hi) = net
-                .iter()
-                .skip(c)
-                .step_by(2)
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| {
-                    (lo.min(lower(x)), hi.max(upper(x)))
-                });
-            from_bounds(lo, hi)
-        })
+        // The least and largest fl(v -+ e) per coordinate, pushed outwards once: next_down and
+        // next_up are monotone, so this is the hull of the intervals [lower, upper].
+        let mut lo = [f64::INFINITY; 2];
+        let mut hi = [f64::NEG_INFINITY; 2];
+        for xy in net.chunks_exact(2) {
+            for c in 0..2 {
+                let (v, e) = (xy[c].value(), xy[c].error_bound());
+                lo[c] = lo[c].min(v - e);
+                hi[c] = hi[c].max(v + e);
+            }
+        }
+        [0, 1].map(|c| from_bounds(lo[c].next_down(), hi[c].next_up()))
     }
 
     /// An enclosure of P'(s) for every s with |s - mid| <= radius: de Casteljau's pyramid at
@@ -331,16 +371,19 @@ fn fat_line_separates(a: &[f64], ea: f64, b: &[f64], eb: f64) -> bool {
     if n == [0.0, 0.0] {
         return false;
     }
-    let weight = n[0].abs() + n[1].abs();
+    let weight = [n[0].abs(), n[1].abs()];
+    // |n_x| |c_x| + |n_y| |c_y| <= |n_x| max |c_x| + |n_y| max |c_y| =: size.
     let band = |pts: &[f64], e: f64| {
-        let (mut lo, mut hi, mut size) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64);
+        let (mut lo, mut hi, mut cx, mut cy) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64, 0.0f64);
         for c in pts.chunks_exact(2) {
             let d = n[0] * c[0] + n[1] * c[1];
             lo = lo.min(d);
             hi = hi.max(d);
-            size = size.max(n[0].abs() * c[0].abs() + n[1].abs() * c[1].abs());
+            cx = cx.max(c[0].abs());
+            cy = cy.max(c[1].abs());
         }
-        let margin = upward(weight * e + 3.0 * UNIT_ROUNDOFF * size + 4.0 * ETA);
+        let size = weight[0] * cx + weight[1] * cy;
+        let margin = upward((weight[0] + weight[1]) * e + 3.0 * UNIT_ROUNDOFF * size + 4.0 * ETA);
         ((lo - margin).next_down(), (hi + margin).next_up())
     };
     let (a_lo, a_hi) = band(a, ea);
@@ -413,10 +456,12 @@ fn residual_dd(p: &mut Curve, q: &mut Curve, m: [f64; 2]) -> ([Dd; 2], [Dd; 2]) 
     ([a[0].sub(&b[0]), a[1].sub(&b[1])], a)
 }
 
-/// Newton's method in `f64` from `start`: the point it converges to, if it does.
-fn newton(p: &mut Curve, q: &mut Curve, start: [f64; 2]) -> Option<[f64; 2]> {
+/// Newton's method in `f64` from `start`: the point it converges to, if it does, and the
+/// last Jacobian [[P'_x, -Q'_x], [P'_y, -Q'_y]] as (P', Q').
+fn newton(p: &mut Curve, q: &mut Curve, start: [f64; 2]) -> Option<([f64; 2], [[f64; 2]; 2])> {
     let [mut s, mut t] = start;
-    for _ in 0..NEWTON_STEPS {
+    let mut previous = f64::INFINITY;
+    for k in 0..NEWTON_STEPS {
         let (ps, dps) = p.eval_f64(s);
         let (qt, dqt) = q.eval_f64(t);
         let f = [ps[0] - qt[0], ps[1] - qt[1]];
@@ -429,12 +474,19 @@ fn newton(p: &mut Curve, q: &mut Curve, start: [f64; 2]) -> Option<[f64; 2]> {
         let dt = (-dps[1] * f[0] + dps[0] * f[1]) / det;
         s -= ds;
         t -= dt;
-        if !(s.abs() < 4.0 && t.abs() < 4.0) {
+        if !((-1.0..=2.0).contains(&s) && (-1.0..=2.0).contains(&t)) {
             return None;
         }
-        if ds.abs() <= 1e-15 && dt.abs() <= 1e-15 {
-            return Some([s, t]);
+        let step = ds.abs().max(dt.abs());
+        if step <= 1e-15 {
+            return Some(([s, t], [dps, dqt]));
         }
+        // Past the first steps the iteration must contract (it converges quadratically near a
+        // regular root); one that does not is abandoned.
+        if k >= 2 && step > 0.5 * previous {
+            return None;
+        }
+        previous = step;
     }
     None
 }
@@ -521,34 +573,99 @@ fn certify(p: &mut Curve, q: &mut Curve, b: &Box2) -> Option<Root> {
     })
 }
 
-/// The search state: both curves, the proved roots and their exclusion boxes.
+/// A point where Newton's method converged, with an enclosure of F there: the centre of the
+/// Krawczyk boxes tried for the cells that contain it (a heuristic choice of centre; nothing is
+/// proved from it).
+#[derive(Clone, Copy)]
+struct Guess {
+    z: [f64; 2],
+    f: [BoundedF64; 2],
+    /// The radius below which Krawczyk's test is expected to succeed around z (an estimate
+    /// from the second derivatives, [`REACH`]).
+    reach: f64,
+}
+
+/// The search state: both curves, the proved roots and their exclusion boxes, the Newton
+/// points found so far, the stack of cells. Kept per thread and reused ([`with_search`]), so
+/// that a call allocates only on its first use (or for larger curves than before).
 struct Search {
     p: Curve,
     q: Curve,
     roots: Vec<Root>,
     /// Proved boxes, each with the index of its one root.
     exclusions: Vec<(Box2, usize)>,
+    guesses: Vec<Guess>,
+    stack: Vec<(usize, usize)>,
 }
 
+/// Krawczyk's test is tried on boxes up to this many times a Newton point's reach (a
+/// heuristic that saves tests bound to fail; a skipped cell is halved).
+const REACH: f64 = 4.0;
+
+/// Two Newton points closer than this (in s and t) are taken as the same point (a heuristic:
+/// it only decides whether a Krawczyk box is tried or the cell is halved).
+const SAME_POINT: f64 = 1e-12;
+
 impl Search {
-    /// Newton from `start`, then Krawczyk on the box around the Newton point that contains the
-    /// cell `s` x `t` (module documentation, 2): whether the cell is settled, `None` when a
-    /// proved root is undecided.
-    fn try_cell(&mut self, s: [f64; 2], t: [f64; 2], start: [f64; 2]) -> Option<bool> {
-        let (p, q) = (&mut self.p, &mut self.q);
+    fn empty() -> Self {
+        Search {
+            p: Curve::empty(),
+            q: Curve::empty(),
+            roots: Vec::new(),
+            exclusions: Vec::new(),
+            guesses: Vec::new(),
+            stack: Vec::new(),
+        }
+    }
+
+    /// The centre of the Krawczyk box for the cell `s` x `t`: a known Newton point inside the
+    /// cell, else Newton's method from `start` (the chords' crossing) when it converges to a
+    /// new point, or to a known one inside the cell's neighbourhood (a known point outside the
+    /// cell is left to the cell that holds it: `None`, the cell is halved).
+    fn guess(&mut self, s: [f64; 2], t: [f64; 2], start: Option<[f64; 2]>) -> Option<Guess> {
+        let inside = |z: [f64; 2]| s[0] <= z[0] && z[0] <= s[1] && t[0] <= z[1] && z[1] <= t[1];
+        if let Some(g) = self.guesses.iter().find(|g| inside(g.z)) {
+            return Some(*g);
+        }
+        let (z, [dp, dq]) = newton(&mut self.p, &mut self.q, start?)?;
+        let same = |g: &Guess| (0..2).all(|i| (g.z[i] - z[i]).abs() <= SAME_POINT);
+        if self.guesses.iter().any(same) {
+            return None;
+        }
+        let (pz, qz) = (self.p.eval_bounded(z[0]), self.q.eval_bounded(z[1]));
+        // Krawczyk's contraction on a box of radius r is about 2 |J^-1| D r, D bounding the
+        // second derivatives: the reach r = 1 / (2 |J^-1| D).
+        let det = (-dp[0] * dq[1] + dq[0] * dp[1]).abs();
+        let inverse = (dq[1].abs() + dq[0].abs()).max(dp[1].abs() + dp[0].abs()) / det;
+        let curvature = self.p.second_bound.max(self.q.second_bound);
+        let g = Guess {
+            z,
+            f: [pz[0].sub(&qz[0]), pz[1].sub(&qz[1])],
+            reach: 1.0 / (2.0 * inverse * curvature),
+        };
+        self.guesses.push(g);
+        Some(g)
+    }
+
+    /// Krawczyk's test on the box around a Newton point that contains the cell `s` x `t`
+    /// (module documentation, 2): whether the cell is settled, `None` when a proved root is
+    /// undecided.
+    fn try_cell(&mut self, s: [f64; 2], t: [f64; 2], start: Option<[f64; 2]>) -> Option<bool> {
         let centre = [0.5 * (s[0] + s[1]), 0.5 * (t[0] + t[1])];
         let half = [0.5 * (s[1] - s[0]), 0.5 * (t[1] - t[0])];
-        let Some(z) = newton(p, q, start) else {
+        let Some(Guess { z, f, reach }) = self.guess(s, t, start) else {
             return Some(false);
         };
         let far = |i: usize| (z[i] - centre[i]).abs() > 2.0 * half[i];
         if far(0) || far(1) {
             return Some(false);
         }
+        let (p, q) = (&mut self.p, &mut self.q);
         let radius = [0, 1].map(|i| ((z[i] - centre[i]).abs().next_up() + half[i]).next_up());
+        if radius[0].max(radius[1]) > REACH * reach {
+            return Some(false);
+        }
         let b = Box2 { mid: z, radius };
-        let (pz, qz) = (p.eval_bounded(z[0]), q.eval_bounded(z[1]));
-        let f = [pz[0].sub(&qz[0]), pz[1].sub(&qz[1])];
         let dp = p.tangent_hull(z[0], radius[0]);
         let dq = q.tangent_hull(z[1], radius[1]);
         if !krawczyk(&b, f, dp, dq).is_some_and(|k| k.proved) {
@@ -624,52 +741,71 @@ impl Search {
 /// assert_eq!(x[0].point[1], 0.5);
 /// ```
 pub fn certified_crossings_f64(p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<Vec<CertifiedCrossing>> {
-    let mut search = Search {
-        p: Curve::new(p)?,
-        q: Curve::new(q)?,
-        roots: Vec::new(),
-        exclusions: Vec::new(),
-    };
-    let mut stack = vec![(0usize, 0usize)];
-    let mut examined = 0usize;
-    while let Some((i, j)) = stack.pop() {
-        examined += 1;
-        if examined > MAX_CELLS {
-            return None;
-        }
-        let (a, b) = (search.p.nodes[i], search.q.nodes[j]);
-        if a.bbox[1] < b.bbox[0]
-            || b.bbox[1] < a.bbox[0]
-            || a.bbox[3] < b.bbox[2]
-            || b.bbox[3] < a.bbox[2]
-        {
-            continue;
-        }
-        let (pa, qb) = (search.p.piece(i), search.q.piece(j));
-        if fat_line_separates(pa, a.error, qb, b.error)
-            || fat_line_separates(qb, b.error, pa, a.error)
-        {
-            continue;
-        }
-        let s = [a.start, a.start + width(a.level)];
-        let t = [b.start, b.start + width(b.level)];
-        if search.exclusions.iter().any(|(e, _)| e.contains(s, t)) {
-            continue;
-        }
-        let start = chord_start(search.p.piece(i), search.q.piece(j), s, t);
-        if let Some(start) = start {
-            if search.try_cell(s, t, start)? {
+    with_search(|search| search.run(p, q))
+}
+
+thread_local! {
+    /// The search state of [`certified_crossings_f64`] on this thread, reused across calls.
+    static SEARCH: std::cell::RefCell<Option<Search>> = const { std::cell::RefCell::new(None) };
+}
+
+/// Runs `f` on this thread's reused [`Search`] (a fresh one when it is in use already).
+fn with_search<R>(f: impl FnOnce(&mut Search) -> R) -> R {
+    SEARCH.with(|cell| match cell.try_borrow_mut() {
+        Ok(mut slot) => f(slot.get_or_insert_with(Search::empty)),
+        Err(_) => f(&mut Search::empty()),
+    })
+}
+
+impl Search {
+    /// [`certified_crossings_f64`] on this search state, which it resets first.
+    fn run(&mut self, p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<Vec<CertifiedCrossing>> {
+        self.p.reset(p)?;
+        self.q.reset(q)?;
+        self.roots.clear();
+        self.exclusions.clear();
+        self.guesses.clear();
+        self.stack.clear();
+        self.stack.push((0, 0));
+        let mut examined = 0usize;
+        while let Some((i, j)) = self.stack.pop() {
+            examined += 1;
+            if examined > MAX_CELLS {
+                return None;
+            }
+            let (a, b) = (self.p.nodes[i], self.q.nodes[j]);
+            if a.bbox[1] < b.bbox[0]
+                || b.bbox[1] < a.bbox[0]
+                || a.bbox[3] < b.bbox[2]
+                || b.bbox[3] < a.bbox[2]
+            {
                 continue;
             }
+            let (pa, qb) = (self.p.piece(i), self.q.piece(j));
+            if fat_line_separates(pa, a.error, qb, b.error)
+                || fat_line_separates(qb, b.error, pa, a.error)
+            {
+                continue;
+            }
+            let s = [a.start, a.start + width(a.level)];
+            let t = [b.start, b.start + width(b.level)];
+            if self.exclusions.iter().any(|(e, _)| e.contains(s, t)) {
+                continue;
+            }
+            let start = chord_start(pa, qb, s, t);
+            if self.try_cell(s, t, start)? {
+                continue;
+            }
+            if a.level >= MAX_LEVEL || b.level >= MAX_LEVEL {
+                return None;
+            }
+            let [p0, p1] = self.p.children(i);
+            let [q0, q1] = self.q.children(j);
+            self.stack.extend([(p1, q1), (p1, q0), (p0, q1), (p0, q0)]);
         }
-        if a.level >= MAX_LEVEL || b.level >= MAX_LEVEL {
-            return None;
-        }
-        let [p0, p1] = search.p.children(i);
-        let [q0, q1] = search.q.children(j);
-        stack.extend([(p1, q1), (p1, q0), (p0, q1), (p0, q0)]);
+        let mut out: Vec<CertifiedCrossing> =
+            self.roots.iter().filter_map(|r| r.crossing).collect();
+        out.sort_by(|x, y| x.s.total_cmp(&y.s).then(x.t.total_cmp(&y.t)));
+        Some(out)
     }
-    let mut out: Vec<CertifiedCrossing> = search.roots.iter().filter_map(|r| r.crossing).collect();
-    out.sort_by(|x, y| x.s.total_cmp(&y.s).then(x.t.total_cmp(&y.t)));
-    Some(out)
 }

@@ -278,6 +278,41 @@ fn rounded_answer_is_the_exact_answer_rounded() {
     assert!(by_filter >= 20, "by filter {by_filter}");
 }
 
+#[test]
+fn reused_search_state_does_not_change_answers() {
+    // The per-thread search state is reused: the same pairs in another order, mixed with
+    // curves of other degrees, and on another thread, give the same answers.
+    let mut r = Random(0x7f4a_7c15_9e37_79b9);
+    let curves: Vec<Vec<[f64; 2]>> = (0..60)
+        .map(|k| (0..=1 + k % 6).map(|_| [r.unit(), r.unit()]).collect())
+        .collect();
+    let pairs: Vec<&[Vec<[f64; 2]>]> = curves.chunks_exact(2).collect();
+    let forward: Vec<_> = pairs
+        .iter()
+        .map(|c| certified_crossings_f64(&c[0], &c[1]))
+        .collect();
+    let mut backward: Vec<_> = pairs
+        .iter()
+        .rev()
+        .map(|c| certified_crossings_f64(&c[0], &c[1]))
+        .collect();
+    backward.reverse();
+    assert_eq!(forward, backward);
+    let threaded = std::thread::scope(|scope| {
+        scope
+            .spawn(|| {
+                pairs
+                    .iter()
+                    .map(|c| certified_crossings_f64(&c[0], &c[1]))
+                    .collect::<Vec<_>>()
+            })
+            .join()
+            .unwrap()
+    });
+    assert_eq!(forward, threaded);
+    assert!(forward.iter().filter(|x| x.is_some()).count() >= 25);
+}
+
 /// Times the filter on 10^4 random cubic pairs (coordinates uniform doubles in [0, 1]) and on
 /// random pairs of degree 8 and 20, with lyon_geom's uncertified `cubic_intersections_t` on
 /// the same cubic pairs for reference, and the exact path on the pairs the filter leaves. A
@@ -297,7 +332,6 @@ fn timing_filter() {
     let cubics: Vec<[[f64; 2]; 4]> = (0..2 * pairs)
         .map(|_| std::array::from_fn(|_| [r.unit(), r.unit()]))
         .collect();
-    let start = Instant::now();
     let (mut crossings, mut undecided) = (0usize, Vec::new());
     for pq in cubics.chunks_exact(2) {
         match certified_crossings_f64(&pq[0], &pq[1]) {
@@ -305,7 +339,6 @@ fn timing_filter() {
             None => undecided.push(pq),
         }
     }
-    let filter = start.elapsed().as_secs_f64() / pairs as f64;
     let segment = |c: &[[f64; 2]; 4]| CubicBezierSegment {
         from: point(c[0][0], c[0][1]),
         ctrl1: point(c[1][0], c[1][1]),
@@ -313,14 +346,26 @@ fn timing_filter() {
         to: point(c[3][0], c[3][1]),
     };
     let segments: Vec<CubicBezierSegment<f64>> = cubics.iter().map(segment).collect();
-    let start = Instant::now();
-    let mut lyon_crossings = 0usize;
-    for pq in segments.chunks_exact(2) {
-        lyon_crossings += std::hint::black_box(pq[0].cubic_intersections_t(&pq[1])).len();
+    let lyon_crossings: usize = segments
+        .chunks_exact(2)
+        .map(|pq| pq[0].cubic_intersections_t(&pq[1]).len())
+        .sum();
+    // Five interleaved rounds on the shared machine; the fastest pass of each.
+    let (mut filter, mut lyon) = (f64::INFINITY, f64::INFINITY);
+    for _ in 0..5 {
+        let start = Instant::now();
+        for pq in cubics.chunks_exact(2) {
+            std::hint::black_box(certified_crossings_f64(&pq[0], &pq[1]));
+        }
+        filter = filter.min(start.elapsed().as_secs_f64() / pairs as f64);
+        let start = Instant::now();
+        for pq in segments.chunks_exact(2) {
+            std::hint::black_box(pq[0].cubic_intersections_t(&pq[1]));
+        }
+        lyon = lyon.min(start.elapsed().as_secs_f64() / pairs as f64);
     }
-    let lyon = start.elapsed().as_secs_f64() / pairs as f64;
     println!(
-        "cubic: {pairs} pairs, filter {:.2} us/pair ({crossings} crossings, {} undecided), lyon {:.2} us/pair ({lyon_crossings} crossings), filter/lyon {:.2}",
+        "cubic: {pairs} pairs, filter {:.2} us/pair ({crossings} crossings, {} undecided), lyon {:.2} us/pair ({lyon_crossings} crossings), filter/lyon {:.2} (fastest of 5 interleaved passes)",
         filter * 1e6,
         undecided.len(),
         lyon * 1e6,
