@@ -7,13 +7,13 @@
 //! ([`prove_curve_candidate`], [`prove_tensor_candidate`], [`prove_triangle_candidate`]), so
 //! that a wrong one, e.g. eq. (14) with a misprinted ingredient, can be shown to fail it.
 
-use blossom::engine::{
-    power_to_bernstein, triangle_index, triangle_len, triangle_power_to_bernstein,
-};
+use blossom::engine::{power_to_bernstein, power_to_bernstein_flat, triangle_power_to_bernstein};
 use blossom::{
     restrict_power_curve, restrict_power_surface, restrict_power_surface_to_triangle, Method, Ring,
 };
-use blossom::{BezierCurve, Poly, PowerCurve, PowerSurface, TensorPatch, TriangularPatch};
+use blossom::{
+    BezierCurve, Poly, PowerCurve, PowerSurface, PowerTriangle, TensorPatch, TriangularPatch,
+};
 
 /// The shape a proof is about.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -55,8 +55,8 @@ use blossom::{
     triangle_control_points_from_samples,
 };
 use blossom::{Error, Field, Method, Point, Rational, Ring};
-use blossom::{PowerSurface, PowerTriangle, TensorPatch, TriangularPatch};
 use blossom::{RationalPowerTriangle, RationalSurface};
+use blossom::{TensorPatch, TriangularPatch};
 use serde_json::{Map, Value};
 
 /// The kinds answered here.
