@@ -231,9 +231,10 @@ pub mod engine {
     pub use crate::restrict::homogeneous::{multilinear_term_count, MAX_MULTILINEAR_DEGREE};
     pub use crate::shape::array::subsegment_into;
     pub use crate::shape::basis::{
-        bernstein_by_horner, bernstein_to_power, power_to_bernstein, scale_argument, taylor_shift,
-        tensor_bernstein_to_power, triangle_bernstein_by_horner, triangle_bernstein_to_power,
-        triangle_power_to_bernstein,
+        bernstein_by_horner, bernstein_to_power, bernstein_to_power_flat, power_to_bernstein,
+        power_to_bernstein_flat, scale_argument, scale_argument_flat, taylor_shift,
+        taylor_shift_flat, tensor_bernstein_to_power, triangle_bernstein_by_horner,
+        triangle_bernstein_to_power, triangle_power_to_bernstein,
     };
     pub use crate::shape::halving::{
         curve_net, curve_scratch_len, tensor_net, tensor_scratch_len, triangle_net,

@@ -630,26 +630,16 @@ impl<T: Ring> Shape<T> {
             },
             Shape::BezierTensor(p, rect) => match variant {
                 None => flat(p.restrict(rect)),
-                Some(method) => {
-                    let power = PowerSurface::new(tensor_bernstein_to_power(&p.to_nested()))
-                        .expect("the power form of a patch");
-                    flat(restrict_power_surface(&power, rect, method))
-                }
+                Some(method) => flat(restrict_power_surface(
+                    &tensor_bernstein_to_power(p),
+                    rect,
+                    method,
+                )),
             },
             Shape::BezierTriangle(p, tri) => match variant {
                 None => p.restrict(tri).control_points().concat(),
                 Some(method) => {
-                    let n = p.degree();
-                    let flat = triangle_bernstein_to_power(p);
-                    let rows = (0..=n)
-                        .map(|i| {
-                            (0..=n - i)
-                                .map(|j| flat[triangle_index(n, i, j)].clone())
-                                .collect()
-                        })
-                        .collect();
-                    let power = PowerTriangle::new(rows).expect("the power form of a triangle");
-                    restrict_power_triangle(&power, tri, method)
+                    restrict_power_triangle(&triangle_bernstein_to_power(p), tri, method)
                         .control_points()
                         .concat()
                 }

@@ -7,13 +7,13 @@
 //! ([`prove_curve_candidate`], [`prove_tensor_candidate`], [`prove_triangle_candidate`]), so
 //! that a wrong one, e.g. eq. (14) with a misprinted ingredient, can be shown to fail it.
 
-use blossom::engine::{
-    power_to_bernstein, triangle_index, triangle_len, triangle_power_to_bernstein,
-};
+use blossom::engine::{power_to_bernstein, power_to_bernstein_flat, triangle_power_to_bernstein};
 use blossom::{
     restrict_power_curve, restrict_power_surface, restrict_power_surface_to_triangle, Method, Ring,
 };
-use blossom::{BezierCurve, Poly, PowerCurve, PowerSurface, TensorPatch, TriangularPatch};
+use blossom::{
+    BezierCurve, Poly, PowerCurve, PowerSurface, PowerTriangle, TensorPatch, TriangularPatch,
+};
 
 /// The shape a proof is about.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -302,32 +302,22 @@ pub fn proof_grid(max_curve: usize, max_tensor: usize, max_triangle: usize) -> V
 /// The surface as a tensor-product Bézier patch over [0, 1]^2: rows to the Bernstein basis
 /// along v, then columns along u ([`power_to_bernstein`], an exact change of basis).
 pub fn bernstein_tensor<T: Ring>(surface: &PowerSurface<T>) -> TensorPatch<T> {
-    let rows: Vec<Vec<Vec<T>>> = surface
-        .coefficients()
-        .iter()
-        .map(|r| power_to_bernstein(&r.to_vec()))
-        .collect();
-    let long: Vec<Vec<T>> = rows.iter().map(|r| r.concat()).collect();
-    let net = power_to_bernstein(&long)
-        .into_iter()
-        .map(|r| r.chunks(surface.dim()).map(<[T]>::to_vec).collect())
-        .collect();
-    TensorPatch::new(net).expect("a rectangular net")
+    let (dim, (n, m)) = (surface.dim(), surface.degree());
+    let cols = m + 1;
+    let mut net = surface.coordinates().to_vec();
+    for row in net.chunks_exact_mut(cols * dim) {
+        power_to_bernstein_flat(row, dim);
+    }
+    power_to_bernstein_flat(&mut net, cols * dim);
+    TensorPatch::from_coordinates((n, m), dim, net).expect("a rectangular net")
 }
 
 /// The surface, of total degree N = n + m, as a triangular Bézier patch on the reference
 /// triangle a = (1, 0), b = (0, 1), c = (0, 0): a point (u, v) has barycentric coordinates
 /// (u, v, 1 - u - v) ([`triangle_power_to_bernstein`], an exact change of basis).
 pub fn bernstein_triangle<T: Ring>(surface: &PowerSurface<T>) -> TriangularPatch<T> {
-    let (n, m) = surface.degree();
-    let big_n = n + m;
-    let mut d = vec![vec![T::zero(); surface.dim()]; triangle_len(big_n)];
-    for (i, row) in surface.coefficients().iter().enumerate() {
-        for (j, c) in row.iter().enumerate() {
-            d[triangle_index(big_n, i, j)] = c.to_vec();
-        }
-    }
-    triangle_power_to_bernstein(big_n, &d).expect("a full net of the surface's dimension")
+    triangle_power_to_bernstein(&PowerTriangle::from_surface(surface))
+        .expect("a net of the surface's total degree")
 }
 
 /// The name of the Bézier-input proofs in [`prove_bezier_input`].

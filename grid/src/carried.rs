@@ -457,13 +457,7 @@ pub fn restrict_power_triangle_specialised<T: Carried>(
     tri: &[[T; 2]; 3],
 ) -> Option<TriangularPatch<T>> {
     let big_n = surface.degree();
-    let rows = surface.rows();
-    if rows.len() != big_n + 1
-        || rows
-            .iter()
-            .enumerate()
-            .any(|(i, r)| r.len() != big_n + 1 - i)
-    {
+    if !surface.is_triangular() {
         return None;
     }
     let tri = tri
@@ -471,7 +465,13 @@ pub fn restrict_power_triangle_specialised<T: Carried>(
         .map(|corner| corner.each_ref().map(Carried::wrap));
     let mut points = vec![Vec::with_capacity(surface.dim()); blossom::engine::triangle_len(big_n)];
     for x in 0..surface.dim() {
-        let coef: Vec<Scalar> = rows.iter().flatten().map(|c| c[x].wrap()).collect();
+        let coef: Vec<Scalar> = surface
+            .coordinates()
+            .iter()
+            .skip(x)
+            .step_by(surface.dim())
+            .map(Carried::wrap)
+            .collect();
         let out = grid::triangle_total_carried(big_n, &coef, &tri)?;
         for (p, w) in points.iter_mut().zip(out) {
             p.push(T::unwrap(w));

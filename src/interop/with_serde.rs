@@ -239,7 +239,7 @@ fn triangular_rows<T: Ring>(s: &PowerTriangle<T>) -> Vec<Vec<Point<T>>> {
     let zero = point::zero::<T>(s.dim());
     (0..=big_n)
         .map(|i| {
-            let mut row = s.rows().get(i).cloned().unwrap_or_default();
+            let mut row = s.rows().nth(i).map(|r| r.to_vec()).unwrap_or_default();
             row.resize(big_n + 1 - i, zero.clone());
             row
         })

@@ -119,7 +119,7 @@ fn power_triangle_blossom_unchecked<T: Ring>(
 ) -> Point<T> {
     let big_n = surface.degree();
     let n = surface.rows().len() - 1;
-    let m = surface.rows().iter().map(Vec::len).max().unwrap_or(1) - 1;
+    let m = surface.rows().map(|r| r.len()).max().unwrap_or(1) - 1;
     // e[i][j] = E_ij over the arguments seen so far, truncated to the array's rows and columns.
     let mut e = vec![vec![T::zero(); m + 1]; n + 1];
     e[0][0] = T::one();

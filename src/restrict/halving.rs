@@ -120,7 +120,7 @@ pub(crate) fn scaled_triangle<T: Ring>(surface: &PowerTriangle<T>) -> Vec<T> {
     let mut scaled = vec![T::zero(); triangle_len(big_n) * dim];
     // 1 / M(N; i, j) = 1 / (C(N, i) C(N - i, j)).
     let first: Vec<T> = reciprocal_binomials(big_n).collect();
-    for (i, row) in surface.rows().iter().enumerate() {
+    for (i, row) in surface.rows().enumerate() {
         let second: Vec<T> = reciprocal_binomials(big_n - i).collect();
         for (j, c) in row.iter().enumerate() {
             let k = first[i].mul(&second[j]);

@@ -27,11 +27,8 @@
 
 use crate::restrict::nets::{repeated, tensor_net, triangle_net};
 use crate::shape::basis::{bernstein_by_horner, triangle_bernstein_by_horner};
-use crate::shape::bezier::{
-    curve_blossom_unchecked, tensor_blossom_unchecked, triangle_blossom_unchecked, BezierCurve,
-    TensorPatch, TriangularPatch,
-};
-use crate::shape::point::{flatten, unflatten};
+use crate::shape::bezier::{triangle_blossom_unchecked, BezierCurve, TensorPatch, TriangularPatch};
+use crate::shape::flat::{curve_blossom, tensor_blossom};
 use crate::shape::power::{PowerCurve, PowerSurface};
 use crate::shape::power_triangle::PowerTriangle;
 use crate::Ring;
@@ -64,10 +61,11 @@ fn local_ends<T: Ring>(degree: usize) -> [T; 2] {
 pub fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCurve<T> {
     let n = curve.degree();
     let [ra, rb] = reference_interval(a, b, n);
-    let control = bernstein_by_horner(&curve.coefficients().to_vec(), &ra, &rb);
+    let dim = curve.dim();
+    let control = bernstein_by_horner(curve.coordinates(), dim, &ra, &rb);
     let [ta, tb] = local_ends::<T>(n);
     let points = (0..=n)
-        .map(|v| curve_blossom_unchecked(&control, &repeated(&tb, v, &ta, n - v)))
+        .map(|v| curve_blossom(&control, dim, &repeated(&tb, v, &ta, n - v)))
         .collect();
     BezierCurve::new(points).expect("n + 1 points of one dimension")
 }
@@ -80,20 +78,18 @@ pub fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> Ten
     let [a, b, c, d] = rect;
     let [ra, rb] = reference_interval(a, b, n);
     let [rc, rd] = reference_interval(c, d, m);
+    let dim = surface.dim();
     // Along u with whole rows as points, then along v row by row.
-    let rows = unflatten(
-        bernstein_by_horner(&flatten(&surface.to_nested()), &ra, &rb),
-        surface.dim(),
-    );
-    let net: Vec<Vec<_>> = rows
-        .iter()
-        .map(|row| bernstein_by_horner(row, &rc, &rd))
+    let rows = bernstein_by_horner(surface.coordinates(), (m + 1) * dim, &ra, &rb);
+    let net: Vec<T> = rows
+        .chunks_exact((m + 1) * dim)
+        .flat_map(|row| bernstein_by_horner(row, dim, &rc, &rd))
         .collect();
     let net = &net;
     let [ta, tb] = local_ends::<T>(n);
     let [tc, td] = local_ends::<T>(m);
     let points = tensor_net((n, m), &[ta, tb, tc, td], |us, vs| {
-        tensor_blossom_unchecked(net, us, vs)
+        tensor_blossom(net, m + 1, dim, us, vs)
     });
     TensorPatch::new(points).expect("a rectangular net")
 }
@@ -117,7 +113,7 @@ pub fn restrict_triangle<T: Ring>(
         })
     };
     let reference_corners = [enlarged(a, b, c), enlarged(b, a, c), enlarged(c, a, b)];
-    let reference = triangle_bernstein_by_horner(surface.rows(), big_n, &reference_corners);
+    let reference = triangle_bernstein_by_horner(surface, &reference_corners);
     let (major, minor) = (
         T::one().scale_frac(3 * k + 1, 3 * (k + 1)),
         T::one().scale_frac(1, 3 * (k + 1)),

@@ -18,52 +18,51 @@
 //! degree (`BENCHMARKS.md` has the measured figures).
 
 use crate::shape::basis::{
-    power_to_bernstein_in_place, scale_argument, taylor_shift, triangle_power_to_bernstein,
+    power_to_bernstein_flat, scale_argument_flat, taylor_shift_flat,
+    triangle_power_to_bernstein_flat,
 };
 use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
-use crate::shape::point::{self, flatten, unflatten, Point};
+use crate::shape::point;
 use crate::shape::power::{PowerCurve, PowerSurface};
 use crate::shape::power_triangle::PowerTriangle;
 use crate::shape::simplex::{triangle_index, triangle_len};
 use crate::Ring;
 
-/// Bézier control points over [0, 1] of C(a + (b - a) t), given the coefficients of C.
-/// The coefficients are taken by value and transformed in place.
-pub(crate) fn bulk_curve_points<T: Ring>(mut d: Vec<Point<T>>, a: &T, b: &T) -> Vec<Point<T>> {
-    taylor_shift(&mut d, a);
-    scale_argument(&mut d, &b.sub(a));
-    power_to_bernstein_in_place(&mut d);
-    d
+/// Replaces the coefficients `d` of C (flat, `stride` coordinates each) by the Bézier control
+/// points over [0, 1] of C(a + (b - a) t), in place.
+pub(crate) fn bulk_curve_points<T: Ring>(d: &mut [T], stride: usize, a: &T, b: &T) {
+    taylor_shift_flat(d, stride, a);
+    scale_argument_flat(d, stride, &b.sub(a));
+    power_to_bernstein_flat(d, stride);
 }
 
 /// `curve` restricted to [a, b] by the Taylor shift.
 pub(crate) fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> BezierCurve<T> {
-    BezierCurve::new(bulk_curve_points(curve.coefficients().to_vec(), a, b))
-        .expect("n + 1 points of one dimension")
+    let mut d = curve.coordinates().to_vec();
+    bulk_curve_points(&mut d, curve.dim(), a, b);
+    BezierCurve::from_raw(curve.dim(), d)
 }
 
 /// `surface` restricted to `rect = [a, b, c, d]` by the curve path along u, then along v.
 pub(crate) fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4]) -> TensorPatch<T> {
     let [a, b, c, d] = rect;
-    let dim = surface.dim();
+    let (dim, cols) = (surface.dim(), surface.degree().1 + 1);
     // Along u with whole rows as points, then along v row by row.
-    let rows = unflatten(bulk_curve_points(flatten(&surface.to_nested()), a, b), dim);
-    let net = rows
-        .into_iter()
-        .map(|row| bulk_curve_points(row, c, d))
-        .collect();
-    TensorPatch::new(net).expect("a rectangular net")
+    let mut net = surface.coordinates().to_vec();
+    bulk_curve_points(&mut net, cols * dim, a, b);
+    for row in net.chunks_exact_mut(cols * dim) {
+        bulk_curve_points(row, dim, c, d);
+    }
+    TensorPatch::from_raw(cols, dim, net)
 }
 
-/// Multiplies the binary form `form` (coefficients of s^alpha t^(l - alpha), alpha = 0..=l)
-/// by the linear form `p s + q t`.
-fn times_linear<T: Ring>(form: &[Point<T>], p: &T, q: &T) -> Vec<Point<T>> {
-    let l = form.len() - 1;
-    let dim = form[0].len();
-    let mut out = vec![point::zero::<T>(dim); l + 2];
-    for (alpha, f) in form.iter().enumerate() {
-        point::add_scaled(&mut out[alpha + 1], p, f);
-        point::add_scaled(&mut out[alpha], q, f);
+/// Multiplies the binary form `form` (coefficients of s^alpha t^(l - alpha), alpha = 0..=l,
+/// flat, `dim` coordinates each) by the linear form `p s + q t`.
+fn times_linear<T: Ring>(form: &[T], dim: usize, p: &T, q: &T) -> Vec<T> {
+    let mut out = vec![T::zero(); form.len() + dim];
+    for (alpha, f) in form.chunks_exact(dim).enumerate() {
+        point::add_scaled(&mut out[(alpha + 1) * dim..(alpha + 2) * dim], p, f);
+        point::add_scaled(&mut out[alpha * dim..(alpha + 1) * dim], q, f);
     }
     out
 }
@@ -78,25 +77,26 @@ pub(crate) fn restrict_triangle<T: Ring>(
 }
 
 /// The bulk triangle restriction of the polynomial sum c_ij u^i v^j with the coefficient grid
-/// `coefficients[i][j]` (i <= n, j <= m), as a triangular patch of total degree `big_n`: n + m
+/// `coefficients` (c_ij, i <= n, j <= m) as a triangular patch of total degree `big_n`: n + m
 /// for the paper's convention, or N for a grid of total degree N padded with zeros (the power
 /// form of a triangular Bézier patch, or of a triangular array). Terms with i + j > N are
 /// zero by that convention and never visited.
 pub(crate) fn bulk_triangle_grid<T: Ring>(
-    coefficients: &[Vec<Point<T>>],
+    coefficients: &PowerSurface<T>,
     big_n: usize,
     tri: &[[T; 2]; 3],
 ) -> TriangularPatch<T> {
-    let (n, m) = (coefficients.len() - 1, coefficients[0].len() - 1);
-    let dim = coefficients[0][0].len();
+    let (n, m) = coefficients.degree();
+    let dim = coefficients.dim();
     let [[a1, a2], [b1, b2], [c1, c2]] = tri;
     // 1. S(c1 + x, c2 + y): Taylor shift along u with rows as points, then along v.
-    let mut long = flatten(coefficients);
-    taylor_shift(&mut long, c1);
-    let mut shifted = unflatten(long, dim);
-    for row in shifted.iter_mut() {
-        taylor_shift(row, c2);
+    let width = (m + 1) * dim;
+    let mut shifted = coefficients.coordinates().to_vec();
+    taylor_shift_flat(&mut shifted, width, c1);
+    for row in shifted.chunks_exact_mut(width) {
+        taylor_shift_flat(row, dim, c2);
     }
+    let c_shifted = |i: usize, j: usize| &shifted[i * width + j * dim..i * width + (j + 1) * dim];
     // 2. x = p s + q t, y = r s + w t applied to every homogeneous part.
     let (p, q) = (a1.sub(c1), b1.sub(c1));
     let (r, w) = (a2.sub(c2), b2.sub(c2));
@@ -111,7 +111,7 @@ pub(crate) fn bulk_triangle_grid<T: Ring>(
         }
         y_powers.push(next);
     }
-    let mut d = vec![point::zero::<T>(dim); triangle_len(big_n)];
+    let mut d = vec![T::zero(); triangle_len(big_n) * dim];
     for k in 0..=big_n {
         // f_k = sum_{i + j = k} c'_ij x^i y^j, i <= n, j <= m; Horner over descending i.
         let i_top = k.min(n);
@@ -120,25 +120,25 @@ pub(crate) fn bulk_triangle_grid<T: Ring>(
             continue;
         }
         // acc = c'_{i_top, j_low} X^0 Y^{j_low}.
-        let mut acc: Vec<Point<T>> = y_powers[j_low]
+        let mut acc: Vec<T> = y_powers[j_low]
             .iter()
-            .map(|y| shifted[i_top][j_low].iter().map(|c| c.mul(y)).collect())
+            .flat_map(|y| c_shifted(i_top, j_low).iter().map(move |c| c.mul(y)))
             .collect();
         for i in (0..i_top).rev() {
             let j = k - i;
-            acc = times_linear(&acc, &p, &q);
+            acc = times_linear(&acc, dim, &p, &q);
             if j <= m {
                 for (alpha, y) in y_powers[j].iter().enumerate() {
-                    point::add_scaled(&mut acc[alpha], y, &shifted[i][j]);
+                    point::add_scaled(&mut acc[alpha * dim..(alpha + 1) * dim], y, c_shifted(i, j));
                 }
             }
         }
         // acc[alpha] is the coefficient of s^alpha t^(k - alpha).
-        for (alpha, coef) in acc.into_iter().enumerate() {
-            d[triangle_index(big_n, alpha, k - alpha)] = coef;
+        for (alpha, coef) in acc.chunks_exact(dim).enumerate() {
+            let at = triangle_index(big_n, alpha, k - alpha) * dim;
+            d[at..at + dim].clone_from_slice(coef);
         }
     }
     // 3. Bernstein form on the triangle (s <-> a, t <-> b, 1 - s - t <-> c).
-    triangle_power_to_bernstein(big_n, &d)
-        .expect("a full triangular net of the surface's dimension")
+    triangle_power_to_bernstein_flat(big_n, dim, d)
 }

@@ -53,7 +53,7 @@ fn check_net<T>(net: &[Vec<Point<T>>], field: &str) -> Result<(usize, usize, usi
 
 /// The number of points (N + 1)(N + 2) / 2 of a triangular net of degree `degree`, checked
 /// against overflow and [`MAX_ENTRIES`](crate::MAX_ENTRIES) (about `degree_field`).
-fn triangle_points(degree: usize, degree_field: &str) -> Result<usize> {
+pub(crate) fn triangle_points(degree: usize, degree_field: &str) -> Result<usize> {
     check_entries(
         checked_triangle_len(degree),
         degree_field,
@@ -61,7 +61,7 @@ fn triangle_points(degree: usize, degree_field: &str) -> Result<usize> {
     )
 }
 
-fn wrong_count(field: &str, what: String, found: usize) -> Error {
+pub(crate) fn wrong_count(field: &str, what: String, found: usize) -> Error {
     Error::of(ErrorKind::Shape, field, format!("{what}, found {found}"))
 }
 

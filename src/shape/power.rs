@@ -156,6 +156,14 @@ impl<T: Ring> PowerSurface<T> {
         Ok(PowerSurface { cols, dim, coords })
     }
 
+    /// The surface with `coords` as they are (rows of `cols >= 1` points of `dim >= 1`: the
+    /// caller's guarantee).
+    pub(crate) fn from_raw(cols: usize, dim: usize, coords: Vec<T>) -> Self {
+        debug_assert!(cols >= 1 && dim >= 1 && !coords.is_empty());
+        debug_assert!(coords.len().is_multiple_of(cols * dim));
+        PowerSurface { cols, dim, coords }
+    }
+
     /// The bidegree `(n, m)`.
     pub fn degree(&self) -> (usize, usize) {
         (

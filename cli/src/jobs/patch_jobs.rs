@@ -55,8 +55,8 @@ use blossom::{
     triangle_control_points_from_samples,
 };
 use blossom::{Error, Field, Method, Point, Rational, Ring};
-use blossom::{PowerSurface, PowerTriangle, TensorPatch, TriangularPatch};
 use blossom::{RationalPowerTriangle, RationalSurface};
+use blossom::{TensorPatch, TriangularPatch};
 use serde_json::{Map, Value};
 
 /// The kinds answered here.
@@ -195,7 +195,7 @@ fn bezier_tensor<T: JsonNumber + Field>(
             }
         }
         MethodChoice::Library(method) => {
-            let power = PowerSurface::new(tensor_bernstein_to_power(&patch.to_nested()))?;
+            let power = tensor_bernstein_to_power(&patch);
             restrict_power_surface(&power, &rect, method).into_control_points()
         }
     };
@@ -399,15 +399,7 @@ fn bezier_triangle<T: JsonNumber + Field>(
             }
         }
         MethodChoice::Library(method) => {
-            let flat = triangle_bernstein_to_power(&patch);
-            let rows = (0..=big_n)
-                .map(|i| {
-                    (0..=big_n - i)
-                        .map(|j| flat[triangle_index(big_n, i, j)].clone())
-                        .collect()
-                })
-                .collect();
-            restrict_power_triangle(&PowerTriangle::new(rows)?, &plane, method)
+            restrict_power_triangle(&triangle_bernstein_to_power(&patch), &plane, method)
         }
     };
     out.insert("degree".into(), Value::from(big_n));

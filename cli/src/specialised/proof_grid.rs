@@ -279,9 +279,8 @@ pub fn prove_bezier_tensor(n: usize, m: usize) -> ProofRow {
 /// checks are the definition (13) of the array and the inverse formula (23) on its points.
 pub fn prove_bezier_triangle(big_n: usize) -> ProofRow {
     let s = symbolic_power_triangle(big_n);
-    let flat: Vec<Vec<Poly>> = s.rows().iter().flatten().cloned().collect();
-    let patch = blossom::engine::triangle_power_to_bernstein(big_n, &flat)
-        .expect("the rows of a power triangle of degree N: a full net of one dimension");
+    let patch = blossom::engine::triangle_power_to_bernstein(&s)
+        .expect("a power triangle of a carried degree");
     let tri = symbolic_triangle();
     let q = restrict_bezier_triangle_specialised(&patch, &tri).expect("a carried degree");
     ProofRow {

@@ -147,17 +147,21 @@ fn pyramid_blossoms_with_the_wrong_number_of_arguments() {
 
 #[test]
 fn triangle_power_to_bernstein_with_a_short_list() {
-    let e = triangle_power_to_bernstein(2, &vec![vec![1.0]; 5]).unwrap_err();
-    assert_eq!(what(e), kind_field(ErrorKind::Shape, "d"));
-    let e = triangle_power_to_bernstein(usize::MAX, &[vec![1.0]]).unwrap_err();
-    assert_eq!(what(e), kind_field(ErrorKind::TooLarge, "n"));
-    let e = triangle_power_to_bernstein(1, &[vec![1.0], vec![1.0, 2.0], vec![3.0]]).unwrap_err();
-    assert_eq!(what(e), kind_field(ErrorKind::Dimension, "d[1]"));
+    // The array's own constructor refuses a short list, an impossible degree and a zero
+    // dimension; the conversion refuses a grid whose total degree makes too large a net.
+    let e = PowerTriangle::from_coordinates(2, 1, vec![1.0; 5]).unwrap_err();
+    assert_eq!(what(e), kind_field(ErrorKind::Shape, "coordinates"));
+    let e = PowerTriangle::from_coordinates(usize::MAX, 1, vec![1.0]).unwrap_err();
+    assert_eq!(what(e), kind_field(ErrorKind::TooLarge, "degree"));
+    let e = PowerTriangle::from_coordinates(1, 0, vec![1.0; 3]).unwrap_err();
+    assert_eq!(what(e), kind_field(ErrorKind::Dimension, "dim"));
+    let long_row = PowerSurface::new(vec![vec![vec![1.0]; 8192]]).unwrap();
+    let e = triangle_power_to_bernstein(&PowerTriangle::from_surface(&long_row)).unwrap_err();
+    assert_eq!(what(e), kind_field(ErrorKind::TooLarge, "degree"));
+    let single = PowerTriangle::from_coordinates(0, 1, vec![7.0]).unwrap();
     assert_eq!(
-        triangle_power_to_bernstein(0, &[vec![7.0]])
-            .unwrap()
-            .get(0, 0),
-        &vec![7.0]
+        triangle_power_to_bernstein(&single).unwrap().get(0, 0),
+        &[7.0][..]
     );
 }
 
@@ -356,7 +360,8 @@ fn random_sizes_nan_and_huge_values_never_panic() {
                 4 => RestrictionMap::curve(a, xs[0], 1.0).is_err(),
                 5 => RestrictionMap::triangle(a, [[xs[0], 0.0], [0.0, 1.0], [0.0, 0.0]]).is_err(),
                 6 => RestrictionMap::tensor((a, b), [0.0, 1.0, xs[0], 1.0]).is_err(),
-                7 => triangle_power_to_bernstein(small, &pts).is_err(),
+                7 => PowerTriangle::from_coordinates(small, 1, pts.concat())
+                    .map_or(true, |s| triangle_power_to_bernstein(&s).is_err()),
                 8 => bezier_curve_blossom(&pts, &xs).is_err(),
                 9 => bspline_basis_on_span(&knots, small, a % 8).is_err(),
                 10 => {

@@ -75,7 +75,7 @@ fn tensor_power(p: &TensorPatch<Rational>, d: usize) -> Poly2 {
 /// The power form in (u, v) = (s, t) of coordinate `d` of a triangular patch.
 fn triangle_power(p: &TriangularPatch<Rational>, d: usize) -> Poly2 {
     let n = p.degree();
-    let c = triangle_bernstein_to_power(p);
+    let c = triangle_bernstein_to_power(p).to_nested().concat();
     (0..=n)
         .flat_map(|i| (0..=n - i).map(move |j| (i, j)))
         .map(|(i, j)| ((i, j), c[triangle_index(n, i, j)][d].clone()))
