@@ -1,7 +1,7 @@
 //! Zeros of a polynomial in Bernstein form over [0, 1], with multiplicities.
 //!
 //! The Bernstein coefficients b_0..b_n (exact rationals) are turned into power coefficients
-//! by the library's [`bernstein_to_power`], scaled to a primitive integer polynomial p, and
+//! by the library's [`bernstein_to_power_flat`], scaled to a primitive integer polynomial p, and
 //! split by Yun's square-free factorisation p = c f_1 f_2^2 ... f_k^k. The square-free part
 //! f_1 f_2 ... f_k is isolated on [0, 1] by Descartes' rule (see `isolate`); each isolated
 //! root belongs to exactly one f_i (they are pairwise coprime), which gives its multiplicity
@@ -12,7 +12,7 @@ use super::isolate::{isolate, Isolated};
 use super::upoly::{self, mul, sign_at, ZPoly};
 use crate::error::{Error, ErrorKind, Result};
 use crate::num::ring::Rational;
-use crate::shape::basis::bernstein_to_power;
+use crate::shape::basis::bernstein_to_power_flat;
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
 use std::cmp::Ordering;
@@ -130,11 +130,9 @@ pub fn bezier_zeros(coefficients: &[Rational]) -> Result<BezierZeros> {
 /// The power coefficients a_0..a_n (ascending) of the Bézier function with Bernstein
 /// coefficients `coefficients` over [0, 1]: sum b_i B_i^n(t) = sum a_k t^k, exactly.
 pub(crate) fn power_coefficients(coefficients: &[Rational]) -> Vec<Rational> {
-    let points: Vec<Vec<Rational>> = coefficients.iter().map(|c| vec![c.clone()]).collect();
-    bernstein_to_power(&points)
-        .into_iter()
-        .map(|p| p[0].clone())
-        .collect()
+    let mut power = coefficients.to_vec();
+    bernstein_to_power_flat(&mut power, 1);
+    power
 }
 
 /// [`bezier_zeros`] of doubles, each read exactly (every finite double is a rational).
