@@ -19,8 +19,11 @@
 //!    estimate below, refused when it is over [`UP_FRONT_FACTOR`] times the limit. The factor
 //!    is calibrated with the sweep (`cli_budget::budget_sweep`, which records the largest ratio
 //!    of estimate to measured time) so that no job of 0.5 s or less is refused by it, while
-//!    huge inputs (a decimal exponent of 100000, degree 200 under `definition`) are refused at
-//!    once without reading or computing anything.
+//!    hopeless inputs (degree 2000 under `definition`, an `elevate` to degree 200 of
+//!    332,000-bit numbers) are refused at once without reading or computing anything. A job
+//!    between the two (a curve on an interval with ends of exponent 100000 under
+//!    `taylor-shift`) goes to the meter, which stops it after the one or two operations that
+//!    fit in the limit (1.2 s).
 //! 2. **Metered** ([`metered`]): the computation runs under [`blossom::meter::metered`]. The
 //!    library's generic algorithms compute through [`blossom::Ring`] in [`blossom::Rational`]
 //!    (`--arithmetic exact`, and the jobs that decide exactly) or [`blossom::BoundedF64`]
