@@ -109,17 +109,8 @@ pub(crate) fn check_triangle_net<T: Clone>(
 #[derive(Clone, Debug, PartialEq)]
 pub struct BezierCurve<T> {
     dim: usize,
-    coords: Coordinates<T>,
+    coords: Vec<T>,
 }
-
-/// How many coordinates a [`BezierCurve`] keeps inline, without a heap allocation: a planar
-/// cubic (4 points of 2 coordinates) or a quadratic in space fit. Returning a new curve then
-/// costs no allocation, as kurbo's and lyon's stack values do; longer curves use the heap.
-pub const INLINE_COORDINATES: usize = 8;
-
-/// The coordinate buffer of a [`BezierCurve`]: inline up to [`INLINE_COORDINATES`], then one
-/// heap allocation.
-type Coordinates<T> = smallvec::SmallVec<[T; INLINE_COORDINATES]>;
 
 impl<T: Ring> BezierCurve<T> {
     /// A curve from its control points `w_0, ..., w_n`, all of one dimension `D >= 1` (copied
@@ -130,7 +121,7 @@ impl<T: Ring> BezierCurve<T> {
     /// another dimension than the first.
     pub fn new(control_points: Vec<Point<T>>) -> Result<Self> {
         let (dim, coords) = flatten_points(&control_points, "control_points")?;
-        Ok(BezierCurve::from_raw(dim, coords))
+        Ok(BezierCurve { dim, coords })
     }
 
     /// A curve from the coordinates of its control points, point after point, `dim` each.
@@ -139,26 +130,17 @@ impl<T: Ring> BezierCurve<T> {
     /// `dim` when it is 0, `coordinates` when it is empty or not a whole number of points.
     pub fn from_coordinates(dim: usize, coordinates: Vec<T>) -> Result<Self> {
         check_flat(&coordinates, dim, "coordinates")?;
-        Ok(BezierCurve::from_raw(dim, coordinates))
+        Ok(BezierCurve {
+            dim,
+            coords: coordinates,
+        })
     }
 
     /// The curve with `coords` as they are (`dim >= 1`, a whole number of at least one point:
-    /// the caller's guarantee); a buffer of at most [`INLINE_COORDINATES`] is moved inline and
-    /// released, a longer one is kept as it is.
+    /// the caller's guarantee).
     pub(crate) fn from_raw(dim: usize, coords: Vec<T>) -> Self {
         debug_assert!(dim >= 1 && !coords.is_empty() && coords.len().is_multiple_of(dim));
-        BezierCurve {
-            dim,
-            coords: Coordinates::from_vec(coords),
-        }
-    }
-
-    /// The curve of `len` zero coordinates, `dim` each (inline when they fit).
-    fn zeros(dim: usize, len: usize) -> Self {
-        BezierCurve {
-            dim,
-            coords: Coordinates::from_elem(T::zero(), len),
-        }
+        BezierCurve { dim, coords }
     }
 
     /// The degree `n`.
@@ -186,10 +168,9 @@ impl<T: Ring> BezierCurve<T> {
         &mut self.coords
     }
 
-    /// Consumes the curve, returning its coordinates (moved out of a heap buffer; copied into
-    /// a new `Vec` from the inline one of a short curve).
+    /// Consumes the curve, returning its coordinates.
     pub fn into_coordinates(self) -> Vec<T> {
-        self.coords.into_vec()
+        self.coords
     }
 
     /// Consumes the curve, returning its control points as nested vectors.
@@ -226,7 +207,10 @@ impl<T: Ring> BezierCurve<T> {
     /// The same curve over `range` = a..b, reparametrised over [0, 1]: control points
     /// b[a^(n-j), b^j], j = 0..=n. Any a, b, also outside [0, 1] or with a > b.
     pub fn subsegment(&self, range: Range<T>) -> Self {
-        let mut out = BezierCurve::zeros(self.dim, self.coords.len());
+        let mut out = BezierCurve {
+            dim: self.dim,
+            coords: vec![T::zero(); self.coords.len()],
+        };
         flat::curve_subsegment(
             &self.coords,
             self.dim,
@@ -267,7 +251,10 @@ impl<T: Ring> BezierCurve<T> {
     /// constant curve, the zero curve of degree 0.
     pub fn deriv(&self) -> Self {
         if self.degree() == 0 {
-            return BezierCurve::zeros(self.dim, self.dim);
+            return BezierCurve {
+                dim: self.dim,
+                coords: vec![T::zero(); self.dim],
+            };
         }
         crate::bezier_derivative(self, 1).expect("order 1 <= degree")
     }
@@ -739,32 +726,5 @@ mod tests {
         assert_eq!(t.eval(&[1.0, 0.0]), vec![3.0]);
         assert_eq!(t.eval(&[0.0, 0.0]), vec![1.0]);
         assert!(TriangularPatch::new(2, vec![vec![1.0]; 5]).is_err());
-    }
-
-    #[test]
-    fn short_curves_live_inline_and_long_ones_on_the_heap() {
-        // A planar cubic and its subsegment, split and derivative need no heap buffer.
-        let cubic =
-            BezierCurve::from_coordinates(2, vec![0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 4.0, 0.0]).unwrap();
-        assert!(!cubic.coords.spilled());
-        let middle = cubic.subsegment(0.25..0.75);
-        assert!(!middle.coords.spilled());
-        let (left, right) = cubic.split(&0.5);
-        assert!(!left.coords.spilled() && !right.coords.spilled());
-        assert!(!cubic.deriv().coords.spilled());
-        // Both forms give the same coordinates: the left half by de Casteljau is
-        // (0,0), (1/2,1), (5/4,7/4), (2,15/8).
-        assert_eq!(
-            left.coordinates(),
-            [0.0, 0.0, 0.5, 1.0, 1.25, 1.75, 2.0, 1.875]
-        );
-        assert_eq!(cubic.subsegment(0.0..0.5), left);
-        // A planar quartic does not fit: one heap buffer, the same answers.
-        let quartic = cubic.elevate(4).unwrap();
-        assert!(quartic.coords.spilled());
-        assert_eq!(quartic.eval(&0.5), cubic.eval(&0.5));
-        assert_eq!(quartic.into_coordinates().len(), 10);
-        // The whole curve stays small.
-        assert!(std::mem::size_of::<BezierCurve<f64>>() <= 8 * INLINE_COORDINATES + 16);
     }
 }
