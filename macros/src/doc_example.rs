@@ -1,5 +1,5 @@
 fn main() {
-    use blossom::{Rational, Ring};
+    use blossom::Rational;
 
     blossom::restriction! {
         /// The cubic restriction of eq. (3).
