@@ -363,7 +363,7 @@ through_constructor!(
         degree: f.degree(),
         u_knots: f.u_knots(),
         v_knots: f.v_knots(),
-        control_points: f.rows().collect::<Vec<_>>(),
+        control_points: f.control_points().collect::<Vec<_>>(),
     },
     |doc: SplineSurface<Vec<T>, Vec<Vec<Point<T>>>>| {
         BSplineSurface::new(doc.degree, doc.u_knots, doc.v_knots, doc.control_points)

@@ -48,7 +48,7 @@ fn rename_points(mut e: Error) -> Error {
 /// The first zero weight (last coordinate) of a homogeneous grid, as (k, l).
 fn zero_weight<T: Field>(grid: &BSplineSurface<T>) -> Option<(usize, usize)> {
     let n = grid.grid_size().1;
-    grid.control_points()
+    grid.points()
         .iter()
         .position(|h| h.last().is_some_and(|w| w.is_zero()))
         .map(|i| (i / n, i % n))
@@ -151,7 +151,7 @@ impl<T: Field> RationalBSplineSurface<T> {
     /// The weights w_kl.
     pub fn weights(&self) -> Vec<Vec<T>> {
         self.homogeneous
-            .rows()
+            .control_points()
             .map(|row| {
                 row.iter()
                     .map(|h| h.last().expect("D + 1 >= 2 coordinates").clone())
@@ -163,7 +163,7 @@ impl<T: Field> RationalBSplineSurface<T> {
     /// The de Boor points d_kl (the homogeneous points divided by their weights).
     pub fn points(&self) -> Vec<Vec<Point<T>>> {
         self.homogeneous
-            .rows()
+            .control_points()
             .map(|row| {
                 row.iter()
                     .map(|h| {

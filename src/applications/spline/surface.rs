@@ -266,15 +266,16 @@ impl<T: Field> BSplineSurface<T> {
         Points::new(&self.coords[k * width..(k + 1) * width], self.dim)
     }
 
-    /// The rows of the grid, k = 0..m.
-    pub fn rows(&self) -> impl ExactSizeIterator<Item = Points<'_, T>> + '_ {
+    /// The de Boor grid row by row, k = 0..m: row k is the view of d_k0, ..., d_k(n-1), each
+    /// point a `&[T]`.
+    pub fn control_points(&self) -> impl ExactSizeIterator<Item = Points<'_, T>> + '_ {
         self.coords
             .chunks_exact(self.cols * self.dim)
             .map(|r| Points::new(r, self.dim))
     }
 
-    /// All de Boor points, row by row, each a `&[T]`.
-    pub fn control_points(&self) -> Points<'_, T> {
+    /// All de Boor points in one view, row by row (point (k, l) at k n + l).
+    pub fn points(&self) -> Points<'_, T> {
         Points::new(&self.coords, self.dim)
     }
 
@@ -290,7 +291,7 @@ impl<T: Field> BSplineSurface<T> {
 
     /// The de Boor grid as nested vectors, `[k][l]` = d_kl (one allocation per point).
     pub fn to_nested(&self) -> Vec<Vec<Point<T>>> {
-        self.rows().map(|r| r.to_vec()).collect()
+        self.control_points().map(|r| r.to_vec()).collect()
     }
 
     /// The dimension D of the points.
