@@ -1023,7 +1023,7 @@ fn bicubic_by_biquadratic_worked_example() {
             ("degree", Json::strings(&[3, 2])),
             ("u_knots", sh(f.u_knots())),
             ("v_knots", sh(f.v_knots())),
-            ("de_boor_points", Json::array(f.control_points().map(|row| Json::array(row.iter().map(|d| sh(d)))))),
+            ("de_boor_points", Json::array(f.control_points().map(|row| Json::array(row.iter().map(&sh))))),
             ("bezier_cells", Json::array(f.bezier_patches().iter().map(|c| sh(&c.rect)))),
             ("F(3/2, 1/2)", sh(&value)),
         ]).pretty());
