@@ -227,7 +227,7 @@ through_constructor!(
 
 through_constructor!(
     PowerSurface<T: Ring>,
-    |s| Coefficients { coefficients: s.coefficients() },
+    |s| Coefficients { coefficients: s.rows().collect::<Vec<_>>() },
     |doc: Coefficients<Vec<Vec<Point<T>>>>| PowerSurface::new(doc.coefficients)
 );
 

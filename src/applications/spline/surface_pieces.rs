@@ -93,8 +93,9 @@ fn normalise<T: Field>(
                 format!("expected {dim} coordinates, found {}", piece.surface.dim()),
             ));
         }
-        let c = piece.surface.coefficients();
-        for (i, row) in c.iter().enumerate() {
+        let surface = &piece.surface;
+        let n = surface.degree().0;
+        for (i, row) in surface.rows().enumerate() {
             for (j, x) in row.iter().enumerate() {
                 if (i > p || j > q) && x.iter().any(|y| !y.is_zero()) {
                     return Err(Error::of(
@@ -109,7 +110,8 @@ fn normalise<T: Field>(
             .map(|i| {
                 (0..cols)
                     .map(|j| {
-                        c.get(i)
+                        (i <= n)
+                            .then(|| surface.row(i))
                             .and_then(|row| row.get(j))
                             .map(<[T]>::to_vec)
                             .unwrap_or_else(|| crate::shape::point::zero(dim))
