@@ -32,7 +32,7 @@ use crate::shape::point::{check_flat, flatten_points, Point, Points};
 /// let f = BSpline::from_coordinates(2, knots, 2, vec![1.0, 1.0, 2.0, 3.0, 4.0, 3.0, 3.0, 1.0])?;
 /// assert_eq!(f.control_point(1), &[2.0, 3.0]);
 /// // F(0.8) with no allocation once `scratch` has grown.
-/// let (mut x, mut scratch) = ([0.0; 2], Vec::new());
+/// let (mut x, mut scratch) = ([0.0f64; 2], Vec::new());
 /// f.eval_into(&0.8, &mut x, &mut scratch)?;
 /// assert!((x[0] - 2.6).abs() < 1e-12 && (x[1] - 2.92).abs() < 1e-12);
 /// # Ok::<(), blossom::Error>(())
