@@ -16,7 +16,7 @@
 //! (the order of [`crate::bezier_tensor_blossom`]). The blossom is the same in the other order;
 //! with all u_r = u and v_r = v it is F(u, v).
 //!
-//! Knot insertion and the Bézier patches run the curve algorithms of `bspline.rs` in one
+//! Knot insertion and the Bézier patches run the curve algorithms of `de_boor.rs` in one
 //! variable at a time: a whole row of the grid, flattened into one long point, is a single
 //! de Boor point of a curve in u.
 
