@@ -14,6 +14,7 @@
 //! [`crate::RationalBSplineSurface`], are in `spline/rational_surface.rs`).
 
 use crate::applications::degree::elevate;
+use crate::applications::spline::bspline::wrong_out;
 use crate::applications::spline::BSpline;
 use crate::error::{Error, ErrorKind, Result};
 use crate::num::linalg::Field;
@@ -22,7 +23,7 @@ use crate::restrict::polarisation::{
     tensor_control_points_from_samples, triangle_control_points_from_samples,
 };
 use crate::shape::bezier::{curve_blossom_unchecked, tensor_blossom_unchecked};
-use crate::shape::point::Point;
+use crate::shape::point::{check_flat, flatten_points, Point};
 use crate::shape::power::{PowerCurve, PowerSurface};
 use crate::shape::power_triangle::PowerTriangle;
 use crate::shape::simplex::triangle_len;
@@ -262,9 +263,29 @@ fn project<T: Field>(
 
 /// The homogeneous point (w b, w).
 pub(crate) fn lift<T: Ring>(b: &[T], w: &T) -> Point<T> {
-    let mut h: Point<T> = b.iter().map(|x| x.mul(w)).collect();
-    h.push(w.clone());
+    let mut h = Vec::with_capacity(b.len() + 1);
+    push_lifted(&mut h, b, w);
     h
+}
+
+/// Appends the homogeneous point (w b, w) to `out`.
+pub(crate) fn push_lifted<T: Ring>(out: &mut Vec<T>, b: &[T], w: &T) {
+    out.extend(b.iter().map(|x| x.mul(w)));
+    out.push(w.clone());
+}
+
+/// Writes the central projection N / w of the homogeneous point `h` = (N, w) into `out`
+/// (`h.len() - 1` numbers); `false`, with `out` untouched, when w is zero.
+pub(crate) fn project_into<T: Field>(h: &[T], out: &mut [T]) -> bool {
+    let (w, n) = h.split_last().expect("D + 1 >= 2 coordinates");
+    debug_assert_eq!(out.len(), n.len());
+    if w.is_zero() {
+        return false;
+    }
+    for (o, x) in out.iter_mut().zip(n) {
+        *o = x.divide(w);
+    }
+    true
 }
 
 /// A rational Bézier curve sum w_i b_i B_i^n(t) / sum w_i B_i^n(t) over t in [0, 1].
@@ -579,35 +600,66 @@ pub struct RationalBSpline<T> {
 
 impl<T: Field> RationalBSpline<T> {
     /// The NURBS curve of degree `degree` on `knots` with control points `points` and weights
-    /// `weights`; a zero weight is an error naming `weights[i]`.
+    /// `weights`; a zero weight is an error naming `weights[i]`. The homogeneous points are
+    /// written once into one buffer.
     pub fn new(
         degree: usize,
         knots: Vec<T>,
         points: Vec<Point<T>>,
         weights: Vec<T>,
     ) -> Result<Self> {
-        if weights.len() != points.len() {
-            return Err(Error::of(
-                ErrorKind::Shape,
-                "weights",
-                format!("expected {} weights, found {}", points.len(), weights.len()),
-            ));
+        check_weights(&weights, points.len())?;
+        let (dim, coords) = flatten_points(&points, "control_points")?;
+        Self::lifted(degree, knots, dim, &coords, &weights, "control_points")
+    }
+
+    /// The NURBS curve of degree `degree` on `knots` from the coordinates of its control
+    /// points, point after point, `dim` each, and one weight per point.
+    ///
+    /// # Errors
+    /// As [`BSpline::from_coordinates`] on `dim` and `coordinates`; [`ErrorKind::Shape`] on
+    /// `weights` when there is not one per point, [`ErrorKind::ZeroWeight`] on `weights[i]`.
+    ///
+    /// ```
+    /// use blossom::RationalBSpline;
+    /// // A quarter circle: (1, 0), (1, 1), (0, 1) with weights 1, 1/sqrt 2, 1.
+    /// let w = std::f64::consts::FRAC_1_SQRT_2;
+    /// let f = RationalBSpline::from_coordinates(
+    ///     2, vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0], 2, vec![1.0, 0.0, 1.0, 1.0, 0.0, 1.0], vec![1.0, w, 1.0],
+    /// )?;
+    /// let (mut x, mut scratch) = ([0.0; 2], Vec::new());
+    /// f.eval_into(&0.5, &mut x, &mut scratch)?;
+    /// assert!((x[0].hypot(x[1]) - 1.0).abs() < 1e-15);
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
+    pub fn from_coordinates(
+        degree: usize,
+        knots: Vec<T>,
+        dim: usize,
+        coordinates: Vec<T>,
+        weights: Vec<T>,
+    ) -> Result<Self> {
+        let points = check_flat(&coordinates, dim, "coordinates")?;
+        check_weights(&weights, points)?;
+        Self::lifted(degree, knots, dim, &coordinates, &weights, "coordinates")
+    }
+
+    /// The spline of the homogeneous points (w d, w) of checked flat points `coords` and
+    /// non-zero `weights`, one per point.
+    fn lifted(
+        degree: usize,
+        knots: Vec<T>,
+        dim: usize,
+        coords: &[T],
+        weights: &[T],
+        points_field: &str,
+    ) -> Result<Self> {
+        let mut h = Vec::with_capacity(weights.len() * (dim + 1));
+        for (b, w) in coords.chunks_exact(dim).zip(weights) {
+            push_lifted(&mut h, b, w);
         }
-        if let Some(i) = weights.iter().position(Ring::is_zero) {
-            return Err(Error::of(
-                ErrorKind::ZeroWeight,
-                format!("weights[{i}]"),
-                "a weight must be non-zero",
-            ));
-        }
-        crate::BezierCurve::new(points.clone())?;
-        let h = points
-            .iter()
-            .zip(&weights)
-            .map(|(b, w)| lift(b, w))
-            .collect();
         Ok(RationalBSpline {
-            homogeneous: BSpline::new(degree, knots, h)?,
+            homogeneous: BSpline::checked(degree, knots, dim + 1, h, points_field)?,
         })
     }
 
@@ -619,11 +671,51 @@ impl<T: Field> RationalBSpline<T> {
     /// The point at `t` (de Boor on the homogeneous points, then projection); an error outside
     /// the domain or where the denominator vanishes.
     pub fn eval(&self, t: &T) -> Result<Point<T>> {
-        let mut h = self.homogeneous.eval(t)?;
-        let w = h.pop().expect("D + 1 >= 2 coordinates");
-        divide_point(h, &w)
-            .ok_or_else(|| Error::of(ErrorKind::ZeroWeight, "t", "the denominator vanishes there"))
+        let mut out = vec![T::zero(); self.homogeneous.dim() - 1];
+        self.eval_into(t, &mut out, &mut Vec::new())?;
+        Ok(out)
     }
+
+    /// [`RationalBSpline::eval`] into `out` (D numbers), with `scratch` as the working copy of
+    /// the homogeneous de Boor points of the span: no allocation once `scratch` has grown.
+    ///
+    /// # Errors
+    /// [`ErrorKind::Dimension`] on `out` when it does not hold D numbers; otherwise as
+    /// [`RationalBSpline::eval`].
+    pub fn eval_into(&self, t: &T, out: &mut [T], scratch: &mut Vec<T>) -> Result<()> {
+        let dim = self.homogeneous.dim() - 1;
+        if out.len() != dim {
+            return Err(wrong_out(dim, out.len()));
+        }
+        if project_into(self.homogeneous.eval_in(t, scratch)?, out) {
+            Ok(())
+        } else {
+            Err(Error::of(
+                ErrorKind::ZeroWeight,
+                "t",
+                "the denominator vanishes there",
+            ))
+        }
+    }
+}
+
+/// Checks one non-zero weight per point (`count` points).
+fn check_weights<T: Ring>(weights: &[T], count: usize) -> Result<()> {
+    if weights.len() != count {
+        return Err(Error::of(
+            ErrorKind::Shape,
+            "weights",
+            format!("expected {count} weights, found {}", weights.len()),
+        ));
+    }
+    if let Some(i) = weights.iter().position(Ring::is_zero) {
+        return Err(Error::of(
+            ErrorKind::ZeroWeight,
+            format!("weights[{i}]"),
+            "a weight must be non-zero",
+        ));
+    }
+    Ok(())
 }
 
 #[cfg(test)]

@@ -227,7 +227,7 @@ through_constructor!(
 
 through_constructor!(
     PowerSurface<T: Ring>,
-    |s| Coefficients { coefficients: s.coefficients() },
+    |s| Coefficients { coefficients: s.rows().collect::<Vec<_>>() },
     |doc: Coefficients<Vec<Vec<Point<T>>>>| PowerSurface::new(doc.coefficients)
 );
 
@@ -363,7 +363,7 @@ through_constructor!(
         degree: f.degree(),
         u_knots: f.u_knots(),
         v_knots: f.v_knots(),
-        control_points: f.control_points(),
+        control_points: f.control_points().collect::<Vec<_>>(),
     },
     |doc: SplineSurface<Vec<T>, Vec<Vec<Point<T>>>>| {
         BSplineSurface::new(doc.degree, doc.u_knots, doc.v_knots, doc.control_points)
@@ -426,7 +426,7 @@ through_constructor!(
 );
 
 /// The de Boor points d and weights w of homogeneous points (w d, w), all weights non-zero.
-fn project_all<T: Field>(homogeneous: &[Point<T>]) -> (Vec<Point<T>>, Vec<T>) {
+fn project_all<T: Field>(homogeneous: FlatPoints<'_, T>) -> (Vec<Point<T>>, Vec<T>) {
     homogeneous
         .iter()
         .map(|h| {
@@ -484,6 +484,9 @@ mod tests {
     fn homogeneous_points_split_into_numerator_and_weight() {
         assert_eq!(split(&[1.0, 2.0, 4.0]), (vec![1.0, 2.0], 4.0));
         let lifted = lift(&[1.0, 2.0], &4.0);
-        assert_eq!(project_all(&[lifted]), (vec![vec![1.0, 2.0]], vec![4.0]));
+        assert_eq!(
+            project_all(FlatPoints::new(&lifted, 3)),
+            (vec![vec![1.0, 2.0]], vec![4.0])
+        );
     }
 }

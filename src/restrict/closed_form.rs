@@ -70,7 +70,7 @@ pub fn tensor_point<T: Ring>(
     let (pc, pd) = (powers(c, m), powers(d, m));
     let wv: Vec<T> = (0..=m).map(|j| curve_weight(m, mu, j, &pc, &pd)).collect();
     let mut acc = point::zero(surface.dim());
-    for (i, row) in surface.coefficients().iter().enumerate() {
+    for (i, row) in surface.rows().enumerate() {
         let wu = curve_weight(n, nu, i, &pa, &pb);
         for (j, cij) in row.iter().enumerate() {
             point::add_scaled(&mut acc, &wu.mul(&wv[j]), cij);

@@ -75,7 +75,7 @@ fn tensor_blossom_unchecked<T: Ring>(surface: &PowerSurface<T>, us: &[T], vs: &[
     let eu = subset_sums(us);
     let ev = subset_sums(vs);
     let mut acc = point::zero(surface.dim());
-    for (i, row) in surface.coefficients().iter().enumerate() {
+    for (i, row) in surface.rows().enumerate() {
         for (j, c) in row.iter().enumerate() {
             let k = Rational::new(
                 1.into(),

@@ -81,7 +81,7 @@ pub(crate) fn scaled_tensor<T: Ring>(surface: &PowerSurface<T>) -> Vec<T> {
     let along_u: Vec<T> = reciprocal_binomials(n).collect();
     let along_v: Vec<T> = reciprocal_binomials(m).collect();
     let mut scaled = Vec::with_capacity((n + 1) * (m + 1) * dim);
-    for (row, ku) in surface.coefficients().iter().zip(&along_u) {
+    for (row, ku) in surface.rows().zip(&along_u) {
         for (c, kv) in row.iter().zip(&along_v) {
             let k = ku.mul(kv);
             scaled.extend(c.iter().map(|x| x.mul(&k)));

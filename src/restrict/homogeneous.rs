@@ -107,7 +107,7 @@ pub fn homogeneous_curve<T: Ring>(curve: &PowerCurve<T>, x: &[T; 2]) -> Point<T>
 pub fn homogeneous_surface<T: Ring>(surface: &PowerSurface<T>, x: &[T; 3]) -> Point<T> {
     let (n, m) = surface.degree();
     let mut acc = point::zero(surface.dim());
-    for (i, row) in surface.coefficients().iter().enumerate() {
+    for (i, row) in surface.rows().enumerate() {
         for (j, c) in row.iter().enumerate() {
             let w = x[0]
                 .pow(i as u32)

@@ -33,14 +33,6 @@ pub fn add_assign<T: Ring>(acc: &mut [T], p: &[T]) {
     }
 }
 
-/// The affine combination `(1 - t) p + t q`, computed as `p + t (q - p)`.
-pub fn lerp<T: Ring>(p: &[T], q: &[T], t: &T) -> Point<T> {
-    p.iter()
-        .zip(q)
-        .map(|(x, y)| x.add(&t.mul(&y.sub(x))))
-        .collect()
-}
-
 /// `k * p`, coordinate-wise, for an exact rational constant `k`.
 pub fn scaled_rational<T: Ring>(p: &[T], k: &crate::Rational) -> Point<T> {
     p.iter().map(|x| x.scale(k)).collect()

@@ -177,12 +177,36 @@ impl<T: Ring> PowerSurface<T> {
         self.dim
     }
 
-    /// The coefficient grid by rows: `coefficients()[i][j]` is `c_ij` (a `&[T]`).
+    /// The coefficient grid by rows: `coefficients()[i][j]` is `c_ij` (a `&[T]`). This collects
+    /// the row views into a vector; [`PowerSurface::rows`] walks them with no allocation.
     pub fn coefficients(&self) -> Vec<Points<'_, T>> {
+        self.rows().collect()
+    }
+
+    /// The rows of the coefficient grid, i = 0..=n: row i is the view of c_i0, ..., c_im, each
+    /// a `&[T]`. No allocation.
+    ///
+    /// ```
+    /// use blossom::PowerSurface;
+    /// // 1 + 2v + 3u + 4uv.
+    /// let s = PowerSurface::new(vec![vec![vec![1.0], vec![2.0]], vec![vec![3.0], vec![4.0]]])?;
+    /// let sums: Vec<f64> = s.rows().map(|row| row.iter().map(|c| c[0]).sum()).collect();
+    /// assert_eq!((sums, s.row(1)[0][0]), (vec![3.0, 7.0], 3.0));
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
+    pub fn rows(&self) -> impl ExactSizeIterator<Item = Points<'_, T>> + '_ {
         self.coords
             .chunks_exact(self.cols * self.dim)
             .map(|row| Points::new(row, self.dim))
-            .collect()
+    }
+
+    /// Row i of the coefficient grid: c_i0, ..., c_im.
+    ///
+    /// # Panics
+    /// When i > n.
+    pub fn row(&self, i: usize) -> Points<'_, T> {
+        let width = self.cols * self.dim;
+        Points::new(&self.coords[i * width..(i + 1) * width], self.dim)
     }
 
     /// The coefficient `c_ij`.
@@ -206,7 +230,7 @@ impl<T: Ring> PowerSurface<T> {
 
     /// The coefficient grid as nested vectors, `[i][j]` = `c_ij`.
     pub fn to_nested(&self) -> Vec<Vec<Point<T>>> {
-        self.coefficients().iter().map(Points::to_vec).collect()
+        self.rows().map(|row| row.to_vec()).collect()
     }
 
     /// S(u, v) by nested Horner's rule.

@@ -99,7 +99,7 @@ fn surface_point(surface: &blossom::PowerSurface<Poly>, u: &Poly, v: &Poly) -> V
         .take(m + 1)
         .collect();
     let mut terms = Vec::with_capacity((n + 1) * (m + 1));
-    for (i, row) in surface.coefficients().iter().enumerate() {
+    for (i, row) in surface.rows().enumerate() {
         for (j, c) in row.iter().enumerate() {
             terms.push(c[0].mul(&pu[i].mul(&pv[j])));
         }

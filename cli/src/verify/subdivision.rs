@@ -60,7 +60,7 @@ fn coefficients_section() -> Section {
                 label: label.to_string(),
                 printed: printed(p),
                 computed: format_point(&from_text[i][j]),
-                matches: surface.coefficients()[i][j] == from_text[i][j],
+                matches: surface.get(i, j) == from_text[i][j],
             }
         })
         .collect();

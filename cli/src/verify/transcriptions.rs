@@ -71,7 +71,7 @@ pub fn tensor_by_9(
             (0..=m)
                 .map(|mu| {
                     let mut acc = Poly::zero();
-                    for (i, row) in surface.coefficients().iter().enumerate() {
+                    for (i, row) in surface.rows().enumerate() {
                         let wu = weight(n as i64, nu as i64, i as i64, a, b, eleven.a_exponent);
                         for (j, cij) in row.iter().enumerate() {
                             let wv = weight(m as i64, mu as i64, j as i64, c, d, |_, j, r| j - r);

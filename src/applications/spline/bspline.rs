@@ -15,17 +15,33 @@
 //!
 //! Knot insertion and the split into Bézier pieces are further blossom values of the spans.
 
+use super::de_boor::{self, bezier_points_into, de_boor_in_place, insert_points, insertion};
 use super::knots::KnotVector;
 use crate::error::{Error, ErrorKind, Result};
 use crate::num::linalg::Field;
 use crate::shape::bezier::BezierCurve;
-use crate::shape::point::Point;
+use crate::shape::point::{check_flat, flatten_points, Point, Points};
 
-/// A B-spline curve of degree p: a validated knot vector and m de Boor points.
+/// A B-spline curve of degree p: a validated knot vector and m de Boor points of dimension
+/// D >= 1, stored in one buffer (`D` coordinates per point, point after point).
+///
+/// ```
+/// use blossom::BSpline;
+/// // The de Boor algorithm example of seed 002, from nested points or from one buffer.
+/// let knots = vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0];
+/// let f = BSpline::from_coordinates(2, knots, 2, vec![1.0, 1.0, 2.0, 3.0, 4.0, 3.0, 3.0, 1.0])?;
+/// assert_eq!(f.control_point(1), &[2.0, 3.0]);
+/// // F(0.8) with no allocation once `scratch` has grown.
+/// let (mut x, mut scratch) = ([0.0f64; 2], Vec::new());
+/// f.eval_into(&0.8, &mut x, &mut scratch)?;
+/// assert!((x[0] - 2.6).abs() < 1e-12 && (x[1] - 2.92).abs() < 1e-12);
+/// # Ok::<(), blossom::Error>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct BSpline<T> {
     knots: KnotVector<T>,
-    control_points: Vec<Point<T>>,
+    dim: usize,
+    coords: Vec<T>,
 }
 
 /// One polynomial piece of a spline, in Bézier form over [0, 1] for the parameter
@@ -49,9 +65,19 @@ pub struct BezierPiece<T> {
     pub curve: BezierCurve<T>,
 }
 
+/// The error for an output buffer `out` that does not hold one point of `dim` coordinates.
+pub(crate) fn wrong_out(dim: usize, found: usize) -> Error {
+    Error::of(
+        ErrorKind::Dimension,
+        "out",
+        format!("the output holds one point of {dim} coordinates, found {found}"),
+    )
+}
+
 impl<T: Field> BSpline<T> {
     /// The B-spline of degree `degree` with knots `knots` (m + p + 1 of them) and de Boor points
-    /// `control_points` (m of them, all of one dimension D >= 1).
+    /// `control_points` (m of them, all of one dimension D >= 1), copied once into the
+    /// spline's buffer ([`BSpline::from_coordinates`] takes a buffer as it is).
     ///
     /// # Errors
     /// [`ErrorKind::Empty`] or [`ErrorKind::Dimension`] on `control_points` as
@@ -72,12 +98,42 @@ impl<T: Field> BSpline<T> {
     /// # Ok::<(), blossom::Error>(())
     /// ```
     pub fn new(degree: usize, knots: Vec<T>, control_points: Vec<Point<T>>) -> Result<Self> {
-        // The same points as a Bézier polygon: at least one, all of one dimension D >= 1.
-        let control_points = BezierCurve::new(control_points)?.into_control_points();
-        let m = control_points.len();
+        // The same checks as a Bézier polygon: at least one point, all of one dimension D >= 1.
+        let (dim, coords) = flatten_points(&control_points, "control_points")?;
+        Self::checked(degree, knots, dim, coords, "control_points")
+    }
+
+    /// The B-spline of degree `degree` with knots `knots` (m + p + 1 of them) and the
+    /// coordinates of its m de Boor points, point after point, `dim` each.
+    ///
+    /// # Errors
+    /// [`ErrorKind::Dimension`] on `dim` when it is 0; [`ErrorKind::Empty`] or
+    /// [`ErrorKind::Shape`] on `coordinates` when it is empty, not a whole number of points
+    /// or fewer than p + 1 points; otherwise as [`BSpline::new`] on `knots`.
+    pub fn from_coordinates(
+        degree: usize,
+        knots: Vec<T>,
+        dim: usize,
+        coordinates: Vec<T>,
+    ) -> Result<Self> {
+        check_flat(&coordinates, dim, "coordinates")?;
+        Self::checked(degree, knots, dim, coordinates, "coordinates")
+    }
+
+    /// The spline from checked flat points (`dim >= 1`, a whole number of at least one point):
+    /// the counts of points and knots and the knot vector are checked here, an error about the
+    /// number of points naming `points_field`.
+    pub(crate) fn checked(
+        degree: usize,
+        knots: Vec<T>,
+        dim: usize,
+        coords: Vec<T>,
+        points_field: &str,
+    ) -> Result<Self> {
+        let m = coords.len() / dim;
         if m <= degree {
             return Err(Error::of(ErrorKind::Shape,
-                "control_points",
+                points_field,
                 format!(
                     "a B-spline of degree {degree} needs at least p + 1 = {} de Boor points (Theorem 2.3, ii), found {m}",
                     degree as u128 + 1
@@ -97,7 +153,8 @@ impl<T: Field> BSpline<T> {
         }
         Ok(BSpline {
             knots: KnotVector::new(degree, knots)?,
-            control_points,
+            dim,
+            coords,
         })
     }
 
@@ -116,14 +173,40 @@ impl<T: Field> BSpline<T> {
         &self.knots
     }
 
-    /// The de Boor points d_1..d_m (0-based).
-    pub fn control_points(&self) -> &[Point<T>] {
-        &self.control_points
+    /// The de Boor points d_1..d_m (0-based), each a `&[T]`.
+    pub fn control_points(&self) -> Points<'_, T> {
+        Points::new(&self.coords, self.dim)
+    }
+
+    /// The de Boor point d_(i+1) (0-based `i`).
+    ///
+    /// # Panics
+    /// When `i` >= m, as slice indexing does.
+    pub fn control_point(&self, i: usize) -> &[T] {
+        let m = self.control_points().len();
+        self.control_points()
+            .get(i)
+            .unwrap_or_else(|| panic!("de Boor point {i} out of range for {m} points"))
+    }
+
+    /// Every coordinate of the de Boor points, point after point.
+    pub fn coordinates(&self) -> &[T] {
+        &self.coords
+    }
+
+    /// Consumes the spline, returning the coordinates of its de Boor points.
+    pub fn into_coordinates(self) -> Vec<T> {
+        self.coords
+    }
+
+    /// The de Boor points as nested vectors (one allocation per point).
+    pub fn to_nested(&self) -> Vec<Point<T>> {
+        self.control_points().to_vec()
     }
 
     /// The dimension D of the points.
     pub fn dim(&self) -> usize {
-        self.control_points[0].len()
+        self.dim
     }
 
     /// The domain [t_{p+1}, t_{m+1}].
@@ -131,16 +214,9 @@ impl<T: Field> BSpline<T> {
         self.knots.domain()
     }
 
-    /// De Boor's table on span `s` with one argument per level: `table[r][j]` is d_i^r for
-    /// i = s - p + r + j (Theorem 2.3), the de Boor points at level 0 and f_s(args) at level p.
-    /// `s` must be a non-empty domain span and `args.len()` the degree.
-    pub(crate) fn de_boor_table(&self, s: usize, args: &[T]) -> Vec<Vec<Point<T>>> {
-        de_boor_table(&self.knots, s, self.window(s), args)
-    }
-
-    /// The de Boor points d_{s-p}..d_s that act on span `s`.
-    fn window(&self, s: usize) -> &[Point<T>] {
-        &self.control_points[s - self.degree()..=s]
+    /// The de Boor points d_{s-p}..d_s that act on span `s`, point after point.
+    fn window(&self, s: usize) -> &[T] {
+        &self.coords[(s - self.degree()) * self.dim..(s + 1) * self.dim]
     }
 
     /// The blossom f_s(args) of the polynomial piece on the non-empty domain span `s`
@@ -168,18 +244,39 @@ impl<T: Field> BSpline<T> {
                 ),
             ));
         }
-        Ok(self.blossom_unchecked(s, args))
-    }
-
-    pub(crate) fn blossom_unchecked(&self, s: usize, args: &[T]) -> Point<T> {
-        de_boor_blossom(&self.knots, s, self.window(s), args)
+        let mut level = self.window(s).to_vec();
+        de_boor_in_place(&self.knots, s, &mut level, self.dim, args);
+        level.truncate(self.dim);
+        Ok(level)
     }
 
     /// De Boor's full table at parameter t: the span k (0-based) with t_k <= t < t_{k+1} and
     /// `table[r][j]` = d_i^r(t) for i = k - p + r + j; F(t) = `table[p][0]`.
     pub fn de_boor(&self, t: &T) -> Result<(usize, Vec<Vec<Point<T>>>)> {
         let k = self.knots.span(t)?;
-        Ok((k, self.de_boor_table(k, &vec![t.clone(); self.degree()])))
+        let args = std::iter::repeat_n(t, self.degree());
+        let table = de_boor::de_boor_table(&self.knots, k, self.window(k), self.dim, args);
+        let nested = table
+            .iter()
+            .map(|level| Points::new(level, self.dim).to_vec())
+            .collect();
+        Ok((k, nested))
+    }
+
+    /// F(t) by de Boor's algorithm (Theorem 2.3), left in the first D numbers of `level`, which
+    /// is the working copy of the p + 1 de Boor points of the span.
+    pub(crate) fn eval_in<'a>(&self, t: &T, level: &'a mut Vec<T>) -> Result<&'a [T]> {
+        let k = self.knots.span(t)?;
+        level.clear();
+        level.extend_from_slice(self.window(k));
+        de_boor_in_place(
+            &self.knots,
+            k,
+            level,
+            self.dim,
+            std::iter::repeat_n(t, self.degree()),
+        );
+        Ok(&level[..self.dim])
     }
 
     /// F(t) by de Boor's algorithm (Theorem 2.3). At the right end of the domain the last span
@@ -189,20 +286,48 @@ impl<T: Field> BSpline<T> {
     /// As [`KnotVector::span`]: [`ErrorKind::NotFinite`] on `t` for a NaN or an infinity,
     /// [`ErrorKind::Domain`] on `t` outside the domain.
     pub fn eval(&self, t: &T) -> Result<Point<T>> {
-        let k = self.knots.span(t)?;
-        Ok(self.blossom_unchecked(k, &vec![t.clone(); self.degree()]))
+        let mut level = Vec::with_capacity((self.degree() + 1) * self.dim);
+        self.eval_in(t, &mut level)?;
+        level.truncate(self.dim);
+        Ok(level)
+    }
+
+    /// [`BSpline::eval`] into `out` (D numbers), with `scratch` as the working copy of the
+    /// de Boor points of the span: no allocation once `scratch` has grown to (p + 1) D.
+    ///
+    /// # Errors
+    /// [`ErrorKind::Dimension`] on `out` when it does not hold D numbers; otherwise as
+    /// [`BSpline::eval`].
+    pub fn eval_into(&self, t: &T, out: &mut [T], scratch: &mut Vec<T>) -> Result<()> {
+        if out.len() != self.dim {
+            return Err(wrong_out(self.dim, out.len()));
+        }
+        out.clone_from_slice(self.eval_in(t, scratch)?);
+        Ok(())
     }
 
     /// The Bézier pieces: on every non-empty domain span [a, b], b_i = f_s(a^(p-i), b^i).
     pub fn bezier_pieces(&self) -> Vec<BezierPiece<T>> {
         let t = self.knots();
+        let len = (self.degree() + 1) * self.dim;
+        let mut scratch = Vec::with_capacity(len);
         self.knots
             .spans()
             .into_iter()
-            .map(|s| BezierPiece {
-                interval: [t[s].clone(), t[s + 1].clone()],
-                curve: BezierCurve::new(bezier_points(&self.knots, s, self.window(s)))
-                    .expect("p + 1 points of one dimension"),
+            .map(|s| {
+                let mut points = vec![T::zero(); len];
+                bezier_points_into(
+                    &self.knots,
+                    s,
+                    self.window(s),
+                    self.dim,
+                    &mut points,
+                    &mut scratch,
+                );
+                BezierPiece {
+                    interval: [t[s].clone(), t[s + 1].clone()],
+                    curve: BezierCurve::from_raw(self.dim, points),
+                }
             })
             .collect()
     }
@@ -214,106 +339,24 @@ impl<T: Field> BSpline<T> {
     /// are old points (their knot windows do not contain x). An error names `x` outside the
     /// domain, or `knots` when x would exceed multiplicity p + 1.
     pub fn insert_knot(&self, x: &T) -> Result<BSpline<T>> {
-        let (knots, control_points) = insert_knot(&self.knots, &self.control_points, x)?;
+        let (s, knots) = insertion(&self.knots, x)?;
+        let mut coords = Vec::with_capacity(self.coords.len() + self.dim);
+        let mut scratch = Vec::with_capacity((self.degree() + 1) * self.dim);
+        insert_points(
+            &self.knots,
+            &knots,
+            s,
+            &self.coords,
+            self.dim,
+            &mut coords,
+            &mut scratch,
+        );
         Ok(BSpline {
             knots,
-            control_points,
+            dim: self.dim,
+            coords,
         })
     }
-}
-
-// The algorithms on a knot vector and a list of de Boor points of any length. Every step is an
-// affine combination taken coordinate by coordinate, so a point may be a whole row of a
-// surface's control grid flattened into one long point (the tensor-product surfaces of
-// `surface.rs` run the curve algorithms this way, one variable at a time).
-
-/// De Boor's table (Theorem 2.3) on the non-empty domain span `s` of `knots` from the
-/// de Boor points `window` = d_{s-p}..d_s, one argument x_r per level: `table[r][j]` is d_i^r
-/// for i = s - p + r + j, so level 0 is `window` and level p is f_s(args).
-pub(crate) fn de_boor_table<T: Field>(
-    knots: &KnotVector<T>,
-    s: usize,
-    window: &[Point<T>],
-    args: &[T],
-) -> Vec<Vec<Point<T>>> {
-    let p = knots.degree();
-    let t = knots.knots();
-    debug_assert!(knots.is_span(s) && args.len() == p && window.len() == p + 1);
-    let mut table = vec![window.to_vec()];
-    for (r, x) in (1..=p).zip(args) {
-        let prev = &table[r - 1];
-        let level = (s - p + r..=s)
-            .map(|i| {
-                let j = i - (s - p + r);
-                let w = x.sub(&t[i]).divide(&t[i + p + 1 - r].sub(&t[i]));
-                crate::shape::point::lerp(&prev[j], &prev[j + 1], &w)
-            })
-            .collect();
-        table.push(level);
-    }
-    table
-}
-
-/// The blossom f_s(args) on the non-empty domain span `s` from the de Boor points
-/// `window` = d_{s-p}..d_s: the last level of [`de_boor_table`].
-pub(crate) fn de_boor_blossom<T: Field>(
-    knots: &KnotVector<T>,
-    s: usize,
-    window: &[Point<T>],
-    args: &[T],
-) -> Point<T> {
-    de_boor_table(knots, s, window, args)
-        .pop()
-        .and_then(|mut l| l.pop())
-        .expect("level p has one point")
-}
-
-/// The Bézier points b_i = f_s(a^(p-i), b^i), i = 0..=p, of the piece on the non-empty domain
-/// span `s` = [a, b] from the de Boor points `window` = d_{s-p}..d_s.
-pub(crate) fn bezier_points<T: Field>(
-    knots: &KnotVector<T>,
-    s: usize,
-    window: &[Point<T>],
-) -> Vec<Point<T>> {
-    let p = knots.degree();
-    let (a, b) = (&knots.knots()[s], &knots.knots()[s + 1]);
-    (0..=p)
-        .map(|i| {
-            de_boor_blossom(
-                knots,
-                s,
-                window,
-                &crate::restrict::nets::repeated(a, p - i, b, i),
-            )
-        })
-        .collect()
-}
-
-/// The knot vector and de Boor points `points` (all m of them) with `x` inserted once:
-/// with x in the span s, d'_k = f_s(t'_{k+1}, ..., t'_{k+p}) for k = s - p + 1..=s (Theorem
-/// 2.2 on the new knot vector T'), the other points unchanged. An error names `x` outside the
-/// domain, or `knots[i]` when x would exceed multiplicity p + 1.
-pub(crate) fn insert_knot<T: Field>(
-    knots: &KnotVector<T>,
-    points: &[Point<T>],
-    x: &T,
-) -> Result<(KnotVector<T>, Vec<Point<T>>)> {
-    let p = knots.degree();
-    let s = knots
-        .span(x)
-        .map_err(|e| Error::of(e.kind, "x", e.message))?;
-    let mut new = knots.knots().to_vec();
-    new.insert(s + 1, x.clone());
-    let new = KnotVector::new(p, new)?;
-    let t = new.knots();
-    let window = &points[s - p..=s];
-    let mut out = Vec::with_capacity(points.len() + 1);
-    out.extend_from_slice(&points[..=s - p]);
-    for k in s - p + 1..=s {
-        out.push(de_boor_blossom(knots, s, window, &t[k + 1..=k + p]));
-    }
-    out.extend_from_slice(&points[s..]);
-    Ok((new, out))
 }
 
 #[cfg(test)]

@@ -135,7 +135,7 @@ impl<T: Field> BSpline<T> {
                 let coefficients: Vec<Point<T>> = (0..=p)
                     .map(|e| {
                         let mut c = point::zero::<T>(self.dim());
-                        for (n, dk) in basis.iter().zip(&d[s - p..=s]) {
+                        for (n, dk) in basis.iter().zip(d.slice(s - p..s + 1)) {
                             point::add_scaled(&mut c, &n[e], dk);
                         }
                         c

@@ -245,14 +245,15 @@ fn de_boor_points<T: Field>(
             }
         }
     }
-    let control_points = points
-        .into_iter()
-        .map(|d| {
+    let dim = curves[0].dim();
+    let mut coords = Vec::with_capacity(m * dim);
+    for d in points {
+        coords.extend(
             d.expect("every de Boor point is defined by a span of the domain")
-                .1
-        })
-        .collect();
-    BSpline::new(p, kv.knots().to_vec(), control_points)
+                .1,
+        );
+    }
+    BSpline::checked(p, kv.knots().to_vec(), dim, coords, "control_points")
 }
 
 fn show<T: Field>(p: &[T]) -> String {

@@ -12,6 +12,9 @@
 pub(crate) mod bspline;
 pub(crate) mod cox_de_boor;
 pub(crate) mod curry_schoenberg;
+pub(crate) mod de_boor;
+#[cfg(test)]
+mod flat_tests;
 pub(crate) mod knots;
 pub(crate) mod rational_surface;
 pub(crate) mod surface;

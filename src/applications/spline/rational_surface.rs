@@ -9,8 +9,9 @@
 //! weight: of the surface at a point, of a new de Boor point after insertion (the
 //! constructor's invariant: every weight non-zero), or of a Bézier control point.
 
+use super::bspline::wrong_out;
 use super::surface::BSplineSurface;
-use crate::applications::rational::{divide_point, lift, RationalTensorPatch};
+use crate::applications::rational::{divide_point, project_into, push_lifted, RationalTensorPatch};
 use crate::error::{Error, ErrorKind, Result};
 use crate::num::linalg::Field;
 use crate::shape::bezier::TensorPatch;
@@ -45,12 +46,12 @@ fn rename_points(mut e: Error) -> Error {
 }
 
 /// The first zero weight (last coordinate) of a homogeneous grid, as (k, l).
-fn zero_weight<T: Field>(grid: &[Vec<Point<T>>]) -> Option<(usize, usize)> {
-    grid.iter().enumerate().find_map(|(k, row)| {
-        row.iter()
-            .position(|h| h.last().is_some_and(|w| w.is_zero()))
-            .map(|l| (k, l))
-    })
+fn zero_weight<T: Field>(grid: &BSplineSurface<T>) -> Option<(usize, usize)> {
+    let n = grid.grid_size().1;
+    grid.points()
+        .iter()
+        .position(|h| h.last().is_some_and(|w| w.is_zero()))
+        .map(|i| (i / n, i % n))
 }
 
 impl<T: Field> RationalBSplineSurface<T> {
@@ -79,17 +80,15 @@ impl<T: Field> RationalBSplineSurface<T> {
         points: Vec<Vec<Point<T>>>,
         weights: Vec<Vec<T>>,
     ) -> Result<Self> {
-        let points = TensorPatch::new(points)
-            .map_err(rename_points)?
-            .into_control_points();
-        if weights.len() != points.len() {
+        let net = TensorPatch::new(points).map_err(rename_points)?;
+        let (rows, cols) = (net.degree().0 + 1, net.degree().1 + 1);
+        if weights.len() != rows {
             return Err(Error::of(
                 ErrorKind::Shape,
                 "weights",
-                format!("expected {} rows, found {}", points.len(), weights.len()),
+                format!("expected {rows} rows, found {}", weights.len()),
             ));
         }
-        let cols = points[0].len();
         for (k, row) in weights.iter().enumerate() {
             if row.len() != cols {
                 return Err(Error::of(
@@ -106,13 +105,14 @@ impl<T: Field> RationalBSplineSurface<T> {
                 ));
             }
         }
-        let h = points
-            .iter()
-            .zip(&weights)
-            .map(|(pr, wr)| pr.iter().zip(wr).map(|(b, w)| lift(b, w)).collect())
-            .collect();
+        // The homogeneous points (w d, w), copied once into one buffer, row by row.
+        let mut h = Vec::with_capacity(rows * cols * (net.dim() + 1));
+        for (b, w) in net.points().iter().zip(weights.iter().flatten()) {
+            push_lifted(&mut h, b, w);
+        }
         let homogeneous =
-            BSplineSurface::new(degree, u_knots, v_knots, h).map_err(rename_points)?;
+            BSplineSurface::from_grid(degree, u_knots, v_knots, (rows, cols), net.dim() + 1, h)
+                .map_err(rename_points)?;
         Ok(RationalBSplineSurface { homogeneous })
     }
 
@@ -128,7 +128,7 @@ impl<T: Field> RationalBSplineSurface<T> {
                 "homogeneous points (w d, w) need at least 2 coordinates, found 1",
             ));
         }
-        if let Some((k, l)) = zero_weight(homogeneous.control_points()) {
+        if let Some((k, l)) = zero_weight(&homogeneous) {
             return Err(Error::of(
                 ErrorKind::ZeroWeight,
                 format!("control_points[{k}][{l}]"),
@@ -152,7 +152,6 @@ impl<T: Field> RationalBSplineSurface<T> {
     pub fn weights(&self) -> Vec<Vec<T>> {
         self.homogeneous
             .control_points()
-            .iter()
             .map(|row| {
                 row.iter()
                     .map(|h| h.last().expect("D + 1 >= 2 coordinates").clone())
@@ -165,7 +164,6 @@ impl<T: Field> RationalBSplineSurface<T> {
     pub fn points(&self) -> Vec<Vec<Point<T>>> {
         self.homogeneous
             .control_points()
-            .iter()
             .map(|row| {
                 row.iter()
                     .map(|h| {
@@ -180,19 +178,35 @@ impl<T: Field> RationalBSplineSurface<T> {
     /// x(u, v) = N(u, v) / w(u, v), with H = (N, w) by de Boor's algorithm in two passes; an
     /// error naming `u` or `v` outside the domain, or `(u, v)` where the denominator vanishes.
     pub fn eval(&self, u: &T, v: &T) -> Result<Point<T>> {
-        let mut h = self.homogeneous.eval(u, v)?;
-        let w = h.pop().expect("D + 1 >= 2 coordinates");
-        divide_point(h, &w).ok_or_else(|| {
-            Error::of(
+        let mut out = vec![T::zero(); self.homogeneous.dim() - 1];
+        self.eval_into(u, v, &mut out, &mut Vec::new())?;
+        Ok(out)
+    }
+
+    /// [`RationalBSplineSurface::eval`] into `out` (D numbers), with `scratch` as the working
+    /// space of de Boor's two passes on H: no allocation once `scratch` has grown.
+    ///
+    /// # Errors
+    /// [`ErrorKind::Dimension`] on `out` when it does not hold D numbers; otherwise as
+    /// [`RationalBSplineSurface::eval`].
+    pub fn eval_into(&self, u: &T, v: &T, out: &mut [T], scratch: &mut Vec<T>) -> Result<()> {
+        let dim = self.homogeneous.dim() - 1;
+        if out.len() != dim {
+            return Err(wrong_out(dim, out.len()));
+        }
+        if project_into(self.homogeneous.eval_in(u, v, scratch)?, out) {
+            Ok(())
+        } else {
+            Err(Error::of(
                 ErrorKind::ZeroWeight,
                 "(u, v)",
                 format!("the denominator vanishes at ({u}, {v})"),
-            )
-        })
+            ))
+        }
     }
 
     fn checked(homogeneous: BSplineSurface<T>, x: &T) -> Result<Self> {
-        match zero_weight(homogeneous.control_points()) {
+        match zero_weight(&homogeneous) {
             Some((k, l)) => Err(Error::of(
                 ErrorKind::ZeroWeight,
                 "x",

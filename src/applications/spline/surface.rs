@@ -16,24 +16,45 @@
 //! (the order of [`crate::bezier_tensor_blossom`]). The blossom is the same in the other order;
 //! with all u_r = u and v_r = v it is F(u, v).
 //!
-//! Knot insertion and the Bézier patches run the curve algorithms of `bspline.rs` in one
+//! Knot insertion and the Bézier patches run the curve algorithms of `de_boor.rs` in one
 //! variable at a time: a whole row of the grid, flattened into one long point, is a single
 //! de Boor point of a curve in u.
 
-use super::bspline::{bezier_points, de_boor_blossom, insert_knot};
+use super::bspline::wrong_out;
+use super::de_boor::{bezier_points_into, de_boor_in_place, insert_points, insertion};
 use super::knots::KnotVector;
 use crate::error::{Error, ErrorKind, Result};
 use crate::num::linalg::Field;
 use crate::shape::bezier::TensorPatch;
-use crate::shape::point::{flatten, unflatten, Point};
+use crate::shape::point::{check_flat, Point, Points};
 
 /// A tensor-product B-spline surface of bidegree (p, q): two validated knot vectors and an
-/// m x n grid of de Boor points, `control_points[k][l]` = d_kl (k along u, l along v).
+/// m x n grid of de Boor points d_kl (k along u, l along v), stored in one buffer row by row
+/// (point (k, l) at position k n + l, `D` coordinates each).
+///
+/// ```
+/// use blossom::BSplineSurface;
+/// // Bilinear on [0, 1]^2 from one buffer: d_00 = 0, d_01 = 1, d_10 = 2, d_11 = 4.
+/// let f = BSplineSurface::from_coordinates(
+///     (1, 1),
+///     vec![0.0, 0.0, 1.0, 1.0],
+///     vec![0.0, 0.0, 1.0, 1.0],
+///     1,
+///     vec![0.0, 1.0, 2.0, 4.0],
+/// )?;
+/// assert_eq!((f.grid_size(), f.control_point(1, 0)), ((2, 2), &[2.0][..]));
+/// let (mut x, mut scratch) = ([0.0], Vec::new());
+/// f.eval_into(&0.5, &0.5, &mut x, &mut scratch)?;
+/// assert_eq!(x, [1.75]);
+/// # Ok::<(), blossom::Error>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct BSplineSurface<T> {
     u_knots: KnotVector<T>,
     v_knots: KnotVector<T>,
-    control_points: Vec<Vec<Point<T>>>,
+    cols: usize,
+    dim: usize,
+    coords: Vec<T>,
 }
 
 /// The Bézier patch of a surface on one non-empty cell [a, b] x [c, d], over [0, 1]^2 in the
@@ -68,8 +89,8 @@ fn rename_knots(mut e: Error, to: &str) -> Error {
 impl<T: Field> BSplineSurface<T> {
     /// The surface of bidegree `degree` = (p, q) with knots `u_knots` (m + p + 1 of them) and
     /// `v_knots` (n + q + 1) and the de Boor grid `control_points` (m rows of n points, all of
-    /// one dimension D >= 1). Errors name `control_points[...]`, `u_knots[...]` or
-    /// `v_knots[...]`.
+    /// one dimension D >= 1), copied once into the surface's buffer. Errors name
+    /// `control_points[...]`, `u_knots[...]` or `v_knots[...]`.
     ///
     /// ```
     /// use blossom::BSplineSurface;
@@ -89,10 +110,31 @@ impl<T: Field> BSplineSurface<T> {
         v_knots: Vec<T>,
         control_points: Vec<Vec<Point<T>>>,
     ) -> Result<Self> {
-        // The same grid as a Bézier net: non-empty, rectangular, one dimension D >= 1.
-        let control_points = TensorPatch::new(control_points)?.into_control_points();
-        let (p, q) = degree;
-        let (m, n) = (control_points.len(), control_points[0].len());
+        // The same checks as a Bézier net: non-empty, rectangular, one dimension D >= 1.
+        let net = TensorPatch::new(control_points)?;
+        let (rows, cols) = (net.degree().0 + 1, net.degree().1 + 1);
+        let dim = net.dim();
+        Self::from_grid(
+            degree,
+            u_knots,
+            v_knots,
+            (rows, cols),
+            dim,
+            net.into_coordinates(),
+        )
+    }
+
+    /// The surface from a checked grid of `m` x `n` points of `dim >= 1` coordinates, row by
+    /// row: the counts against the degrees and knots, and the knot vectors, are checked here.
+    pub(crate) fn from_grid(
+        (p, q): (usize, usize),
+        u_knots: Vec<T>,
+        v_knots: Vec<T>,
+        (m, n): (usize, usize),
+        dim: usize,
+        coords: Vec<T>,
+    ) -> Result<Self> {
+        debug_assert_eq!(coords.len(), m * n * dim);
         for (field, deg, count, var, what) in [
             ("control_points", p, m, "u", "rows"),
             ("control_points[0]", q, n, "v", "points a row"),
@@ -128,7 +170,46 @@ impl<T: Field> BSplineSurface<T> {
         Ok(BSplineSurface {
             u_knots,
             v_knots,
-            control_points,
+            cols: n,
+            dim,
+            coords,
+        })
+    }
+
+    /// The surface of bidegree `degree` = (p, q) on `u_knots` and `v_knots` from the
+    /// coordinates of its de Boor grid, row by row (point (k, l) at k n + l), `dim` each; the
+    /// grid is m x n with m = `u_knots.len()` - p - 1 and n = `v_knots.len()` - q - 1.
+    ///
+    /// # Errors
+    /// [`ErrorKind::Dimension`] on `dim` when it is 0; [`ErrorKind::Empty`] or
+    /// [`ErrorKind::Shape`] on `coordinates` when it is empty, not a whole number of points or
+    /// not m n points; as [`KnotVector::new`] on `u_knots[...]` and `v_knots[...]`.
+    pub fn from_coordinates(
+        (p, q): (usize, usize),
+        u_knots: Vec<T>,
+        v_knots: Vec<T>,
+        dim: usize,
+        coordinates: Vec<T>,
+    ) -> Result<Self> {
+        let points = check_flat(&coordinates, dim, "coordinates")?;
+        let u_knots = KnotVector::new(p, u_knots).map_err(|e| rename_knots(e, "u_knots"))?;
+        let v_knots = KnotVector::new(q, v_knots).map_err(|e| rename_knots(e, "v_knots"))?;
+        let (m, n) = (u_knots.control_count(), v_knots.control_count());
+        if m.checked_mul(n) != Some(points) {
+            return Err(Error::of(
+                ErrorKind::Shape,
+                "coordinates",
+                format!(
+                    "the knots of bidegree ({p}, {q}) need a grid of {m} x {n} de Boor points, found {points} points of dimension {dim}"
+                ),
+            ));
+        }
+        Ok(BSplineSurface {
+            u_knots,
+            v_knots,
+            cols: n,
+            dim,
+            coords: coordinates,
         })
     }
 
@@ -157,14 +238,65 @@ impl<T: Field> BSplineSurface<T> {
         &self.v_knots
     }
 
-    /// The de Boor grid, `[k][l]` = d_kl (0-based).
-    pub fn control_points(&self) -> &[Vec<Point<T>>] {
-        &self.control_points
+    /// The size (m, n) of the de Boor grid: m rows (along u) of n points (along v).
+    pub fn grid_size(&self) -> (usize, usize) {
+        (self.coords.len() / (self.cols * self.dim), self.cols)
+    }
+
+    /// The de Boor point d_kl (0-based).
+    ///
+    /// # Panics
+    /// When k >= m or l >= n, as slice indexing does.
+    pub fn control_point(&self, k: usize, l: usize) -> &[T] {
+        let (m, n) = self.grid_size();
+        assert!(
+            k < m && l < n,
+            "de Boor point ({k}, {l}) of a {m} x {n} grid"
+        );
+        let start = (k * n + l) * self.dim;
+        &self.coords[start..start + self.dim]
+    }
+
+    /// Row k of the grid: the points d_k0, ..., d_k(n-1).
+    ///
+    /// # Panics
+    /// When k >= m.
+    pub fn row(&self, k: usize) -> Points<'_, T> {
+        let width = self.cols * self.dim;
+        Points::new(&self.coords[k * width..(k + 1) * width], self.dim)
+    }
+
+    /// The de Boor grid row by row, k = 0..m: row k is the view of d_k0, ..., d_k(n-1), each
+    /// point a `&[T]`.
+    pub fn control_points(&self) -> impl ExactSizeIterator<Item = Points<'_, T>> + '_ {
+        self.coords
+            .chunks_exact(self.cols * self.dim)
+            .map(|r| Points::new(r, self.dim))
+    }
+
+    /// All de Boor points in one view, row by row (point (k, l) at k n + l).
+    pub fn points(&self) -> Points<'_, T> {
+        Points::new(&self.coords, self.dim)
+    }
+
+    /// Every coordinate, row by row, point after point.
+    pub fn coordinates(&self) -> &[T] {
+        &self.coords
+    }
+
+    /// Consumes the surface, returning the coordinates of its grid.
+    pub fn into_coordinates(self) -> Vec<T> {
+        self.coords
+    }
+
+    /// The de Boor grid as nested vectors, `[k][l]` = d_kl (one allocation per point).
+    pub fn to_nested(&self) -> Vec<Vec<Point<T>>> {
+        self.control_points().map(|r| r.to_vec()).collect()
     }
 
     /// The dimension D of the points.
     pub fn dim(&self) -> usize {
-        self.control_points[0][0].len()
+        self.dim
     }
 
     /// The domain [t_{p+1}, t_{m+1}] x [s_{q+1}, s_{n+1}] as `[a, b, c, d]`.
@@ -207,16 +339,37 @@ impl<T: Field> BSplineSurface<T> {
                 ));
             }
         }
-        Ok(self.blossom_unchecked(span, us, vs))
+        let mut scratch = Vec::new();
+        self.blossom_in(span, us, vs.iter(), &mut scratch);
+        scratch.truncate(self.dim);
+        Ok(scratch)
     }
 
-    fn blossom_unchecked(&self, (s, t): (usize, usize), us: &[T], vs: &[T]) -> Point<T> {
+    /// The blossom on the cell (σ, τ) in `scratch`: the column of p + 1 points in its first
+    /// (p + 1) D numbers and the working row after it. De Boor along v on the p + 1 rows
+    /// k = σ - p..=σ (each window d_k,τ-q..d_kτ is contiguous), each answer one point of the
+    /// column, then along u on the column; the answer is the first D numbers of `scratch`.
+    fn blossom_in<'a>(
+        &self,
+        (s, t): (usize, usize),
+        us: impl IntoIterator<Item = &'a T>,
+        vs: impl Iterator<Item = &'a T> + Clone,
+        scratch: &mut Vec<T>,
+    ) where
+        T: 'a,
+    {
         let (p, q) = self.degree();
-        let column: Vec<Point<T>> = self.control_points[s - p..=s]
-            .iter()
-            .map(|row| de_boor_blossom(&self.v_knots, t, &row[t - q..=t], vs))
-            .collect();
-        de_boor_blossom(&self.u_knots, s, &column, us)
+        let (d, n) = (self.dim, self.cols);
+        scratch.clear();
+        scratch.resize((p + q + 2) * d, T::zero());
+        let (column, row) = scratch.split_at_mut((p + 1) * d);
+        for (j, k) in (s - p..=s).enumerate() {
+            let start = (k * n + t - q) * d;
+            row.clone_from_slice(&self.coords[start..start + (q + 1) * d]);
+            de_boor_in_place(&self.v_knots, t, row, d, vs.clone());
+            column[j * d..(j + 1) * d].clone_from_slice(&row[..d]);
+        }
+        de_boor_in_place(&self.u_knots, s, column, d, us);
     }
 
     /// The non-empty cell (σ, τ) of the point (u, v) (the last span at the right or top end),
@@ -233,30 +386,69 @@ impl<T: Field> BSplineSurface<T> {
         Ok((s, t))
     }
 
+    /// F(u, v) left in the first D numbers of `scratch` (see [`BSplineSurface::eval`]).
+    pub(crate) fn eval_in<'a>(&self, u: &T, v: &T, scratch: &'a mut Vec<T>) -> Result<&'a [T]> {
+        let span = self.span(u, v)?;
+        let (p, q) = self.degree();
+        self.blossom_in(
+            span,
+            std::iter::repeat_n(u, p),
+            std::iter::repeat_n(v, q),
+            scratch,
+        );
+        Ok(&scratch[..self.dim])
+    }
+
     /// F(u, v) = f_στ(u^p; v^q) by de Boor's algorithm in two passes (rows along v, then the
     /// column along u); an error naming `u` or `v` outside the domain.
     pub fn eval(&self, u: &T, v: &T) -> Result<Point<T>> {
-        let span = self.span(u, v)?;
-        let (p, q) = self.degree();
-        Ok(self.blossom_unchecked(span, &vec![u.clone(); p], &vec![v.clone(); q]))
+        let mut scratch = Vec::new();
+        self.eval_in(u, v, &mut scratch)?;
+        scratch.truncate(self.dim);
+        Ok(scratch)
+    }
+
+    /// [`BSplineSurface::eval`] into `out` (D numbers), with `scratch` as the working space of
+    /// de Boor's two passes: no allocation once `scratch` has grown to (p + q + 2) D.
+    ///
+    /// # Errors
+    /// [`ErrorKind::Dimension`] on `out` when it does not hold D numbers; otherwise as
+    /// [`BSplineSurface::eval`].
+    pub fn eval_into(&self, u: &T, v: &T, out: &mut [T], scratch: &mut Vec<T>) -> Result<()> {
+        if out.len() != self.dim {
+            return Err(wrong_out(self.dim, out.len()));
+        }
+        out.clone_from_slice(self.eval_in(u, v, scratch)?);
+        Ok(())
     }
 
     /// The Bézier patches, one per non-empty cell (σ, τ) = [a, b] x [c, d], in the order of the
     /// u spans and within each of the v spans: the net f_στ(a^(p-nu) b^nu; c^(q-mu) d^mu), by
     /// the curve's Bézier points of every row along v (p + 1 rows of q + 1 points), then of
-    /// the column of those rows (each flattened into one long point) along u.
+    /// the column of those rows (each row one long point of (q + 1) D numbers) along u.
     pub fn bezier_patches(&self) -> Vec<BezierCell<T>> {
         let (p, q) = self.degree();
+        let (d, n) = (self.dim, self.cols);
         let (tu, tv) = (self.u_knots(), self.v_knots());
+        let width = (q + 1) * d;
+        let mut rows = vec![T::zero(); (p + 1) * width];
+        let mut scratch = Vec::new();
         let mut out = Vec::new();
         for s in self.u_knots.spans() {
             for t in self.v_knots.spans() {
-                let rows: Vec<Vec<Point<T>>> = self.control_points[s - p..=s]
-                    .iter()
-                    .map(|row| bezier_points(&self.v_knots, t, &row[t - q..=t]))
-                    .collect();
-                let column = bezier_points(&self.u_knots, s, &flatten(&rows));
-                let net = unflatten(column, self.dim());
+                for (j, k) in (s - p..=s).enumerate() {
+                    let start = (k * n + t - q) * d;
+                    bezier_points_into(
+                        &self.v_knots,
+                        t,
+                        &self.coords[start..start + width],
+                        d,
+                        &mut rows[j * width..(j + 1) * width],
+                        &mut scratch,
+                    );
+                }
+                let mut net = vec![T::zero(); rows.len()];
+                bezier_points_into(&self.u_knots, s, &rows, width, &mut net, &mut scratch);
                 out.push(BezierCell {
                     rect: [
                         tu[s].clone(),
@@ -264,7 +456,7 @@ impl<T: Field> BSplineSurface<T> {
                         tv[t].clone(),
                         tv[t + 1].clone(),
                     ],
-                    patch: TensorPatch::new(net).expect("a (p + 1) x (q + 1) net"),
+                    patch: TensorPatch::from_raw(q + 1, d, net),
                 });
             }
         }
@@ -276,12 +468,25 @@ impl<T: Field> BSplineSurface<T> {
     /// An error names `x` outside the u domain, or `u_knots[i]` when x would exceed
     /// multiplicity p + 1.
     pub fn insert_u_knot(&self, x: &T) -> Result<Self> {
-        let (u_knots, long) = insert_knot(&self.u_knots, &flatten(&self.control_points), x)
-            .map_err(|e| rename_knots(e, "u_knots"))?;
+        let (s, u_knots) = insertion(&self.u_knots, x).map_err(|e| rename_knots(e, "u_knots"))?;
+        let width = self.cols * self.dim;
+        let mut coords = Vec::with_capacity(self.coords.len() + width);
+        let mut scratch = Vec::new();
+        insert_points(
+            &self.u_knots,
+            &u_knots,
+            s,
+            &self.coords,
+            width,
+            &mut coords,
+            &mut scratch,
+        );
         Ok(BSplineSurface {
             u_knots,
             v_knots: self.v_knots.clone(),
-            control_points: unflatten(long, self.dim()),
+            cols: self.cols,
+            dim: self.dim,
+            coords,
         })
     }
 
@@ -289,18 +494,27 @@ impl<T: Field> BSplineSurface<T> {
     /// on every row. An error names `x` outside the v domain, or `v_knots[i]` when x would
     /// exceed multiplicity q + 1.
     pub fn insert_v_knot(&self, x: &T) -> Result<Self> {
-        let mut v_knots = None;
-        let mut control_points = Vec::with_capacity(self.control_points.len());
-        for row in &self.control_points {
-            let (kv, new) =
-                insert_knot(&self.v_knots, row, x).map_err(|e| rename_knots(e, "v_knots"))?;
-            control_points.push(new);
-            v_knots = Some(kv);
+        let (t, v_knots) = insertion(&self.v_knots, x).map_err(|e| rename_knots(e, "v_knots"))?;
+        let m = self.grid_size().0;
+        let mut coords = Vec::with_capacity(self.coords.len() + m * self.dim);
+        let mut scratch = Vec::new();
+        for row in self.coords.chunks_exact(self.cols * self.dim) {
+            insert_points(
+                &self.v_knots,
+                &v_knots,
+                t,
+                row,
+                self.dim,
+                &mut coords,
+                &mut scratch,
+            );
         }
         Ok(BSplineSurface {
             u_knots: self.u_knots.clone(),
-            v_knots: v_knots.expect("at least one row"),
-            control_points,
+            v_knots,
+            cols: self.cols + 1,
+            dim: self.dim,
+            coords,
         })
     }
 }

@@ -93,8 +93,9 @@ fn normalise<T: Field>(
                 format!("expected {dim} coordinates, found {}", piece.surface.dim()),
             ));
         }
-        let c = piece.surface.coefficients();
-        for (i, row) in c.iter().enumerate() {
+        let surface = &piece.surface;
+        let n = surface.degree().0;
+        for (i, row) in surface.rows().enumerate() {
             for (j, x) in row.iter().enumerate() {
                 if (i > p || j > q) && x.iter().any(|y| !y.is_zero()) {
                     return Err(Error::of(
@@ -109,7 +110,8 @@ fn normalise<T: Field>(
             .map(|i| {
                 (0..cols)
                     .map(|j| {
-                        c.get(i)
+                        (i <= n)
+                            .then(|| surface.row(i))
                             .and_then(|row| row.get(j))
                             .map(<[T]>::to_vec)
                             .unwrap_or_else(|| crate::shape::point::zero(dim))
@@ -242,7 +244,7 @@ fn knots<T: Field>(p: usize, breaks: &[T], continuity: impl Fn(usize) -> isize) 
 /// ])?;
 /// assert_eq!(f.u_knots(), &[0, 0, 0, 1, 2, 2, 2].map(q));
 /// assert_eq!(f.v_knots(), &[0, 0, 1, 1].map(q));
-/// assert_eq!(f.control_points()[2], vec![vec![q(0)], vec![q(2)]]);
+/// assert_eq!(f.row(2), vec![vec![q(0)], vec![q(2)]]);
 /// # Ok::<(), blossom::Error>(())
 /// ```
 pub fn bspline_surface_from_pieces<T: Field>(
@@ -308,15 +310,12 @@ pub fn bspline_surface_from_pieces<T: Field>(
             }
         }
     }
-    let control_points = points
-        .into_iter()
-        .map(|row| {
-            row.into_iter()
-                .map(|d| d.expect("every de Boor point acts on a span of the domain"))
-                .collect()
-        })
-        .collect();
-    BSplineSurface::new(degree, t.to_vec(), s.to_vec(), control_points)
+    let dim = pieces[0].surface.dim();
+    let mut coords = Vec::with_capacity(m * n * dim);
+    for d in points.into_iter().flatten() {
+        coords.extend(d.expect("every de Boor point acts on a span of the domain"));
+    }
+    BSplineSurface::from_grid(degree, t.to_vec(), s.to_vec(), (m, n), dim, coords)
 }
 
 #[cfg(test)]

@@ -79,7 +79,7 @@ fn curry_schoenberg_example() {
             ("knots", show(f.knots())),
             (
                 "de_boor_points",
-                Json::array(f.control_points().iter().map(|p| show(p)))
+                Json::array(f.control_points().iter().map(show))
             ),
             (
                 "bezier_pieces",

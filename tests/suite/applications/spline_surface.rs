@@ -516,7 +516,7 @@ fn knot_insertion_keeps_values_and_bezier_patches() {
         let xv = &c + (&d - &c) * q(64, 103);
         let g = f.insert_u_knot(&xu).unwrap().insert_v_knot(&xv).unwrap();
         assert_eq!(g.control_points().len(), f.control_points().len() + 1);
-        assert_eq!(g.control_points()[0].len(), f.control_points()[0].len() + 1);
+        assert_eq!(g.row(0).len(), f.row(0).len() + 1);
         case.check_values(&g, &mut rng, &label);
         case.check_bezier(&g, &label);
         let new: Vec<BezierCell<Rational>> = g.bezier_patches();
@@ -542,9 +542,8 @@ fn knot_insertion_keeps_values_and_bezier_patches() {
         let mut k = 0;
         for s in h.u_knot_vector().spans() {
             for t in h.v_knot_vector().spans() {
-                let block: Grid = h.control_points()[s - p..=s]
-                    .iter()
-                    .map(|row| row[t - qd..=t].to_vec())
+                let block: Grid = (s - p..=s)
+                    .map(|k| h.row(k).slice(t - qd..t + 1).to_vec())
                     .collect();
                 assert_eq!(block, cells[k].patch.to_nested(), "{label} cell {k}");
                 k += 1;
@@ -1009,7 +1008,7 @@ fn bicubic_by_biquadratic_worked_example() {
     // x = u and y = v: the de Boor points' first coordinates are the Greville abscissae
     // (t_{k+1} + t_{k+2} + t_{k+3}) / 3 and (s_{l+1} + s_{l+2}) / 2.
     let (t, s) = (f.u_knots(), f.v_knots());
-    for (kk, row) in f.control_points().iter().enumerate() {
+    for (kk, row) in f.control_points().enumerate() {
         for (l, d) in row.iter().enumerate() {
             assert_eq!(d[0], (&t[kk + 1] + &t[kk + 2] + &t[kk + 3]) / q(3, 1));
             assert_eq!(d[1], (&s[l + 1] + &s[l + 2]) / q(2, 1));
@@ -1024,7 +1023,7 @@ fn bicubic_by_biquadratic_worked_example() {
             ("degree", Json::strings(&[3, 2])),
             ("u_knots", sh(f.u_knots())),
             ("v_knots", sh(f.v_knots())),
-            ("de_boor_points", Json::array(f.control_points().iter().map(|row| Json::array(row.iter().map(|d| sh(d)))))),
+            ("de_boor_points", Json::array(f.control_points().map(|row| Json::array(row.iter().map(&sh))))),
             ("bezier_cells", Json::array(f.bezier_patches().iter().map(|c| sh(&c.rect)))),
             ("F(3/2, 1/2)", sh(&value)),
         ]).pretty());
