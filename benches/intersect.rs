@@ -58,7 +58,7 @@ type Answer = Vec<(f64, f64)>;
 /// occur in random data) are not counted.
 ///
 /// This is the one place the bench calls the certified path:
-/// [`intersect_curves_f64_rounded`], the float filter (subdivision, Krawczyk's test,
+/// [`intersect_curves_f64_rounded`], the float filter (Bézier clipping, Krawczyk's test,
 /// double-double residuals, correct rounding from the enclosures) with the exact path where
 /// the filter does not decide.
 fn ours(p: &Cubic, q: &Cubic) -> Vec<(f64, f64)> {

@@ -5,21 +5,36 @@
 //! *proved* the complete answer; otherwise it says `None` and the exact path
 //! ([`super::curves::intersect_curves_f64`]) answers. What it proves:
 //!
-//! **1. Every root lies in a surviving cell.** P over S and Q over T are halved by the
-//! library's de Casteljau split ([`crate::shape::halving::curve_split`] at 1/2, in plain
-//! `f64`). A cell S x T is dropped when the bounding boxes of the two pieces' control points,
-//! each enlarged by a rigorous bound E on the split's rounding, are disjoint (a piece lies in
-//! the convex hull of its exact control points), or when the fat lines (the bands orthogonal to
-//! either piece's chord that hold its control points, with a rigorous rounding margin) are
-//! disjoint. The bound E is a priori: one halving step
-//! computes v' = fl(x + fl(0.5 fl(y - x))) from values |x|, |y| <= M, and
-//! |v' - (x + y) / 2| <= u |y - x| / 2 + η / 2 + u |x + h| <= 2u M (1 + u) + 2η
-//! (u = 2^-53; halving is exact but for underflow; sums have no underflow error), while the
-//! exact average of perturbed inputs moves by at most the inputs' error. A control point of a
-//! piece after d halvings has gone through at most d n such steps, so
-//! E(d) = d n β with β = 2u M0 (1 + 2^-19) + 2η, M0 the largest input coordinate (computed
-//! values stay within M0 (1 + 2^-20), which the margin covers; inputs with M0 outside
-//! [2^-900, 2^900] are left to the exact path).
+//! **1. Every root lies in a surviving cell (rigorous Bézier clipping).** A cell is S x T,
+//! S = [a, b] and T = [c, d] with double ends. The piece of P over S is computed from P's
+//! control points as the blossom values P(a^(n-k), b^k), k = 0..n ([`Curve::restrict`]): each
+//! after exactly n de Casteljau steps v' = fl(x + fl(τ fl(y - x))) at the double τ = a or b
+//! in [0, 1]. From values |x|, |y| <= M one step is off the exact x + τ (y - x) by at most
+//! u |τ (y - x)| (2 + u) + η/2 + u |x + fl(τ fl(y - x))| <= 5u M (1 + u) + η (u = 2^-53,
+//! η = 2^-1074; sums have no underflow error), and an exact convex combination of perturbed
+//! inputs moves by at most their error, so every computed control point coordinate lies
+//! within E = n β, β = 5u M0 (1 + 2^-38) + η, of the exact one (M0 the largest input
+//! coordinate; computed values stay within M0 (1 + 2^-40) for n <= 256, which β covers).
+//! The exact interval of a piece is exactly [a, b]: no parameter is rounded. The cell is
+//! dropped when the bounding boxes of the two pieces' control points, each enlarged by E
+//! and rounded outwards, are disjoint (a piece lies in the convex hull of its exact control
+//! points). Otherwise it is *clipped* ([`clip`]): with the double vector ν normal to the
+//! chord of the Q piece, every exact control point q of that piece has ν·q within
+//! [lo - m_q, hi + m_q], lo and hi the least and largest computed ν·q and
+//! m_q = |ν|_1 (E_q + 3u M_q) + 4η (two products and a sum, rounded; the error of the
+//! control points), so Q(T) lies in that band (the fat line). A common point P(s) = Q(t)
+//! with s = a + u (b - a) has ν·P(s) = Σ δ_k B_k(u) in the band, the δ_k = ν·p_k of the
+//! exact P piece, which lie within m_p of the computed D_k: so Σ D_k B_k(u) lies in the band
+//! [L, H] widened by m_p, rounded outwards. The graph of Σ D_k B_k lies in the convex hull
+//! of the points (k/n, D_k); the least and largest u of that hull inside the band are among
+//! the points inside the band and the crossings of the band's edges by the segments between
+//! two points (the hull meets the band in a convex polygon whose vertices are of these
+//! kinds); they are computed in `f64` within 10u, and widened by 2^-48, then mapped to the
+//! global parameter with a margin of 4u b + η and `next_down`/`next_up`, clamped to S. No
+//! point of the hull in the band: the cell holds no root and is dropped. S is clipped so,
+//! then T against the new P piece's fat line; cells that a round of clipping shrinks by less
+//! than 20% on both sides are halved (the wider side), so every root in [0, 1]^2 stays in
+//! some cell. Cells inside a box proved below (its one root known) are dropped.
 //!
 //! **2. Krawczyk's test proves one root in a box.** For a box X = m ± r (midpoint m and
 //! radius r > 0 doubles, in (s, t)), with Y an approximate inverse of the Jacobian
@@ -27,56 +42,56 @@
 //! K(X) = m - Y F(m) + (I - Y J(X)) (X - m),
 //! evaluated in interval arithmetic ([`BoundedF64`] as midpoint-radius intervals, see
 //! [`super::interval`]; de Casteljau's steps in convex form, [`ConvexStep`], so that the
-//! bounds do not grow geometrically with the degree): F(m) from de Casteljau at the double m, J(X) from de Casteljau of the
-//! hodographs n (p_(i+1) - p_i) (the library's [`crate::bezier_derivative`], its rounding
-//! bounded by `BoundedF64`) restricted to S and T by the library's engine, whose control
-//! points' hull encloses P'(S) and Q'(T). By the
-//! mean value theorem row by row, every root of F in X lies in K(X); K(X) ⊂ X gives a root
-//! (Brouwer), and K(X) in the interior of X gives exactly one, with every matrix A of J(X)
-//! nonsingular: the radius of K is at least |I - Y A| r, so |I - Y A| r < r for the positive
-//! vector r, hence the spectral radius of I - Y A is below 1. The Jacobian at the root is
-//! then nonsingular, i.e. cross(P'(s), Q'(t)) != 0: the crossing is transversal and
-//! `tangent` is false, exactly. A surviving cell is tried around a Newton point z: one found
-//! before that lies in the cell, else Newton's method in `f64` from the chords' crossing
-//! when they nearly cross (a new point; one that converges to a known point outside the cell
-//! leaves the cell to be halved). When z is near the cell, the box B centred at z with radii
-//! |z - centre| + half width (rounded up) contains the cell, and Krawczyk's test on B is
-//! tried unless B is more than `REACH` times larger than z's *reach* 1 / (2 |J(z)^-1| D), D
-//! bounding |P''| and |Q''| (a plain-`f64` estimate of where the test can succeed, used
-//! only to skip tests bound to fail: the cell is then halved). Newton points, their F
-//! enclosures and all storage are kept per thread and reused, so a call allocates nothing
-//! after the first (but its answer). A proved B is an *exclusion box*: its one root is
-//! the only one in B, so every later cell inside B is dropped. Boxes centred on the Newton
-//! point keep the root away from the box's boundary, so roots on the cells' dyadic edges need
-//! no special case. Around a new root a box `INFLATE` times as large is tried too, to settle
-//! the neighbouring cells at once. Cells whose test fails are halved again (both curves).
+//! bounds do not grow geometrically with the degree): F(m) from de Casteljau at the double m
+//! in double-double ([`Dd`], with a rigorous bound near n^2 u^2 M), J(X) from de Casteljau
+//! of the hodographs n (p_(i+1) - p_i) (their rounding bounded by `BoundedF64`) at the
+//! interval arguments m ± r, which encloses P'(S) and Q'(T) (interval evaluation is
+//! inclusion isotone). By the mean value theorem row by row, every root of F in X lies in
+//! K(X); K(X) ⊂ X gives a root (Brouwer), and K(X) in the interior of X gives exactly one,
+//! with every matrix A of J(X) nonsingular: the radius of K is at least |I - Y A| r, so
+//! |I - Y A| r < r for the positive vector r, hence the spectral radius of I - Y A is
+//! below 1. The Jacobian at the root is then nonsingular, i.e. cross(P'(s), Q'(t)) != 0: the
+//! crossing is transversal and `tangent` is false, exactly. A cell is tried
+//! ([`Search::settle`]) when both sides are at most 2^-40 wide, or when clipping has stalled
+//! on a cell at most 2^-20 wide: X is centred at z (the cell's centre when tiny, else a
+//! Newton point near it, found in plain `f64`: a heuristic choice) with radii 1.25 times
+//! |z - centre| + half width, rounded up, at least 2^-48, so that X contains the cell. A
+//! proved X is an *exclusion box*: the cell's roots are its one root. A cell whose test
+//! fails is halved, or left undecided below 2^-40.
 //!
-//! **3. A tight enclosure and correct rounding.** For a proved B, a second Krawczyk step on
-//! the small box z ± r' (r' = max(8 |Y F(z)|, 2^-48), inside B) with F(z) evaluated in
-//! double-double ([`Dd`], de Casteljau with a rigorous bound near n^2 u^2 M) encloses the root
-//! as s* in z_s + Δ_s, t* in z_t + Δ_t with |Δ| ~ 1e-16 and a width near 1e-28. The correctly
-//! rounded s and t (ties to even) are decided from these offsets against the half-ulp
-//! boundaries ([`round_nearest`]); the common point from P(s*) in P(z_s) + Δ_s P'(S'), also
-//! correctly rounded, so that the filter's answer equals the exact path's bit for bit.
+//! **3. A tight enclosure and correct rounding.** When X is wider than 8 times the Newton
+//! correction |Y F(z)|, a second Krawczyk step on z ± max(8 |Y F(z)|, 2^-48) (inside X, so
+//! its root is X's root) gives the enclosure; else X's own. It encloses the root as s* in
+//! z_s + Δ_s, t* in z_t + Δ_t with a width near 1e-28. The correctly rounded s and t (ties
+//! to even) are decided from these offsets against the half-ulp boundaries
+//! ([`round_nearest`]); the common point from P(s*) in P(z_s) + Δ_s P'(S'), also correctly
+//! rounded, so that the filter's answer equals the exact path's bit for bit.
 //!
 //! **4. The answer.** Distinct proved roots have disjoint tight enclosures; two whose
 //! enclosures meet are one root when one enclosure lies in the other's exclusion box. A root
 //! whose enclosure lies outside [0, 1]^2 is not reported; one inside (0, 1)^2 is. Once every
-//! cell is dropped, the proved roots inside are all the intersections, sorted by s then t.
+//! cell is dropped or settled, the proved roots inside are all the intersections, sorted by
+//! s then t.
 //!
 //! **Undecided (`None`)**, for the exact path: a tight enclosure touching s or t in {0, 1}
-//! (end-point contacts are decided exactly), enclosures that meet without being the same root,
-//! a rounding not decided by the enclosure (a common point with a zero coordinate among them),
-//! more than `MAX_CELLS` cells or a side below 2^-`MAX_LEVEL` (tangency, near-coincident
-//! roots, overlapping or identical curves, where Krawczyk's test cannot succeed), a curve that
-//! is a single point, non-finite or extreme input.
+//! (end-point contacts are decided exactly), enclosures that meet without being the same
+//! root, a rounding not decided by the enclosure (a common point with a zero coordinate
+//! among them), more than `MAX_STEPS` rounds of clipping or a cell of side 2^-40 that
+//! Krawczyk's test does not settle (tangency, near-coincident roots, overlapping or
+//! identical curves, where the test cannot succeed), a curve that is a single point, a
+//! degree above 256, non-finite or extreme input (largest coordinate outside
+//! [1e-90, 1e90], so that no product of the filter overflows or loses its bound).
+//!
+//! The speed comes from clipping (Sederberg and Nishita's Bézier clipping, with the
+//! rigorous margins above): a transversal crossing is cut down quadratically to a cell of
+//! about 1e-15, so that a random pair of cubics costs a few rounds of clipping and, per
+//! crossing, one Krawczyk test and one double-double evaluation; the search state is kept
+//! per thread and reused, so a call allocates nothing after the first (but its answer).
 
-use super::interval::{from_bounds, inside_radius, lower, round_nearest, upper, ConvexStep, Dd};
+use super::interval::{inside_radius, lower, round_nearest, upper, ConvexStep, Dd};
 use crate::num::bounded::{upward, BoundedF64, ETA, UNIT_ROUNDOFF};
 use crate::num::ring::Ring;
 use crate::shape::flat::curve_pyramid_in_place;
-use crate::shape::halving::curve_split;
-use crate::shape::halving::{curve_net, step_left, BernsteinStep};
 
 /// One proved transversal crossing P(s) = Q(t) with s, t in (0, 1).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -93,59 +108,54 @@ pub struct CertifiedCrossing {
     pub point: [f64; 2],
 }
 
-/// No side is halved below 2^-MAX_LEVEL.
-const MAX_LEVEL: u32 = 40;
-/// At most this many cells are examined.
-const MAX_CELLS: usize = 4000;
-/// Newton iterations from a cell's start point.
-const NEWTON_STEPS: usize = 12;
-/// The factor of the larger exclusion box tried around a new root.
-const INFLATE: f64 = 4.0;
-/// The least radius of the final Krawczyk box.
+/// At most this many clipping steps (each clips both curves once) per call.
+const MAX_STEPS: usize = 4000;
+/// No cell side is halved below this width; a cell this small that Krawczyk's test does not
+/// settle is undecided.
+const MIN_WIDTH: f64 = 1.0 / (1u64 << 40) as f64;
+/// A cell whose sides are both at most this wide is tried by Krawczyk's test at once.
+const TINY_WIDTH: f64 = MIN_WIDTH;
+/// A cell that clipping no longer shrinks is tried by Krawczyk's test when its sides are at
+/// most this wide (else halved).
+const SETTLE_WIDTH: f64 = 1.0 / (1u64 << 20) as f64;
+/// Clipping that leaves more than this fraction of both sides has stalled: the cell is halved.
+const PROGRESS: f64 = 0.8;
+/// The outward margin of a clipped range in the local parameter (module documentation, 1).
+const CLIP_SLACK: f64 = 1.0 / (1u64 << 48) as f64;
+/// The least radius of a Krawczyk box.
 const TIGHT_RADIUS: f64 = 1.0 / (1u64 << 48) as f64;
+/// The factor of a Krawczyk box's radii over the distances to the cell's corners (a margin
+/// that keeps a root near the cell's edge away from the box's edge).
+const COVER: f64 = 1.25;
+/// Newton iterations from the centre of a cell that is not tiny.
+const NEWTON_STEPS: usize = 12;
+/// The largest degree the filter takes (its a-priori bounds assume n <= 256).
+const MAX_DEGREE: usize = 256;
+/// The largest and least admissible size of the input coordinates (beyond: the exact path).
+const MAX_SIZE: f64 = 1.0e90;
+const MIN_SIZE: f64 = 1.0e-90;
 
-/// One curve: its control points in the forms the filter needs, its subdivision tree, and
-/// scratch space.
+/// One curve: its control points in the forms the filter needs, and scratch space.
 struct Curve {
     /// Degree n.
     degree: usize,
-    /// Control points, flat (x0, y0, x1, y1, ...).
-    points: Vec<f64>,
-    /// The same, as exact intervals.
-    exact: Vec<BoundedF64>,
+    /// Control points.
+    points: Vec<[f64; 2]>,
     /// The same, as double-doubles.
     dd: Vec<Dd>,
     /// The hodograph's control points with their rounding bounds.
     hodograph: Vec<BoundedF64>,
-    /// n (n - 1) max |Δ² p_i| over both coordinates: a bound on |P''| (plain `f64`, for the
-    /// heuristic reach of a Newton point only).
-    second_bound: f64,
-    /// β of the module documentation: the error bound of one halving step.
-    step_error: f64,
-    /// Control points of the pieces, `2 (n + 1)` doubles each.
-    pieces: Vec<f64>,
-    /// The pieces' parameter intervals, bounding boxes and halves.
-    nodes: Vec<Node>,
+    /// Whether `dd` and `hodograph` are those of `points` ([`Curve::prepare`]).
+    prepared: bool,
+    /// E = n β of the module documentation: the bound on the distance of each computed control
+    /// point coordinate of a restriction ([`Curve::restrict`]) to the exact one.
+    error: f64,
+    /// E + 3 u M: the per-unit-weight part of a distance coefficient's margin ([`clip`]).
+    reach: f64,
     /// Scratch.
-    level: Vec<f64>,
+    level: Vec<[f64; 2]>,
     level_dd: Vec<Dd>,
     level_bounded: Vec<BoundedF64>,
-    net_scratch: Vec<BoundedF64>,
-    left: Vec<f64>,
-    right: Vec<f64>,
-}
-
-/// A piece of a curve: over [start, start + 2^-level], its control points' bounding box
-/// [x_lo, x_hi, y_lo, y_hi] enlarged by the split's error bound, its halves once split.
-#[derive(Clone, Copy)]
-struct Node {
-    start: f64,
-    level: u32,
-    bbox: [f64; 4],
-    /// E(level): the bound on the distance of each computed control point coordinate to the
-    /// exact one.
-    error: f64,
-    children: Option<[usize; 2]>,
 }
 
 impl Curve {
@@ -154,127 +164,67 @@ impl Curve {
         Curve {
             degree: 0,
             points: Vec::new(),
-            exact: Vec::new(),
             dd: Vec::new(),
             hodograph: Vec::new(),
-            step_error: 0.0,
-            second_bound: 0.0,
-            pieces: Vec::new(),
-            nodes: Vec::new(),
+            prepared: false,
+            error: 0.0,
+            reach: 0.0,
             level: Vec::new(),
             level_dd: Vec::new(),
             level_bounded: Vec::new(),
-            net_scratch: Vec::new(),
-            left: Vec::new(),
-            right: Vec::new(),
         }
     }
 
     /// Makes this the curve with control points `p`, reusing the storage, or `None` when the
-    /// filter does not take it (fewer than two points, a non-finite or extreme coordinate, a
-    /// single point).
+    /// filter does not take it (fewer than two or more than `MAX_DEGREE + 1` points, a
+    /// non-finite or extreme coordinate, a single point).
     fn reset(&mut self, p: &[[f64; 2]]) -> Option<()> {
-        if p.len() < 2 || p.iter().flatten().any(|c| !c.is_finite()) {
+        if p.len() < 2 || p.len() > MAX_DEGREE + 1 {
             return None;
         }
-        if p.iter().all(|c| c == &p[0]) {
-            return None;
+        // The largest |coordinate| (∞ for an infinite one), and whether all points are equal.
+        let (mut m0, mut single) = (0.0f64, true);
+        for c in p {
+            if c[0].is_nan() || c[1].is_nan() {
+                return None;
+            }
+            m0 = m0.max(c[0].abs()).max(c[1].abs());
+            single &= c == &p[0];
         }
-        let m0 = p.iter().flatten().fold(0.0f64, |m, c| m.max(c.abs()));
-        if !(m0 >= 2f64.powi(-900) && m0 <= 2f64.powi(900)) {
+        if single || !(MIN_SIZE..=MAX_SIZE).contains(&m0) {
             return None;
         }
         self.degree = p.len() - 1;
         self.points.clear();
-        self.points.extend(p.iter().flatten());
-        self.exact.clear();
-        self.exact
-            .extend(self.points.iter().map(|&x| BoundedF64::exact(x)));
+        self.points.extend_from_slice(p);
+        self.prepared = false;
+        // β = 5u M (1 + 2^-39) + η with M = M0 (1 + 2^-40) (module documentation, 1).
+        let beta = upward(5.0 * UNIT_ROUNDOFF * m0 * (1.0 + 2f64.powi(-38)) + ETA);
+        self.error = upward(self.degree as f64 * beta);
+        let size = m0 * (1.0 + 2f64.powi(-39));
+        self.reach = upward(self.error + 3.0 * UNIT_ROUNDOFF * size);
+        Some(())
+    }
+
+    /// Makes the double-double control points and the hodograph, on first use after
+    /// [`Curve::reset`] (most pairs never need them).
+    fn prepare(&mut self) {
+        if self.prepared {
+            return;
+        }
+        self.prepared = true;
+        let p = &self.points;
         self.dd.clear();
-        self.dd.extend(self.points.iter().map(|&x| Dd::exact(x)));
+        self.dd.extend(p.iter().flatten().map(|&x| Dd::exact(x)));
         // The hodograph n (p_(i+1) - p_i), its rounding bounded.
         let n = BoundedF64::exact(self.degree as f64);
         self.hodograph.clear();
         self.hodograph.extend(
-            self.exact
-                .iter()
-                .zip(&self.exact[2..])
-                .map(|(a, b)| b.sub(a).mul(&n)),
+            p.iter()
+                .flatten()
+                .zip(p[1..].iter().flatten())
+                .map(|(&a, &b)| BoundedF64::exact(b).sub(&BoundedF64::exact(a)).mul(&n)),
         );
-        let n = self.degree as f64;
-        self.second_bound = n
-            * (n - 1.0)
-            * p.windows(3)
-                .flat_map(|w| (0..2).map(move |c| (w[2][c] - 2.0 * w[1][c] + w[0][c]).abs()))
-                .fold(0.0, f64::max);
-        self.step_error = upward(2.0 * UNIT_ROUNDOFF * m0 * (1.0 + 2f64.powi(-19)) + 2.0 * ETA);
-        self.pieces.clear();
-        self.nodes.clear();
-        let len = self.points.len();
-        self.left.resize(len, 0.0);
-        self.right.resize(len, 0.0);
-        let whole = std::mem::take(&mut self.left);
-        let mut whole = whole;
-        whole.copy_from_slice(&self.points);
-        self.push_piece(&whole, 0.0, 0);
-        self.left = whole;
-        Some(())
-    }
-
-    /// Appends a piece with control points `coords` over [start, start + 2^-level].
-    fn push_piece(&mut self, coords: &[f64], start: f64, level: u32) -> usize {
-        let mut b = [
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-        ];
-        for xy in coords.chunks_exact(2) {
-            b[0] = b[0].min(xy[0]);
-            b[1] = b[1].max(xy[0]);
-            b[2] = b[2].min(xy[1]);
-            b[3] = b[3].max(xy[1]);
-        }
-        let e = upward(f64::from(level) * self.degree as f64 * self.step_error);
-        let bbox = [
-            (b[0] - e).next_down(),
-            (b[1] + e).next_up(),
-            (b[2] - e).next_down(),
-            (b[3] + e).next_up(),
-        ];
-        self.pieces.extend_from_slice(coords);
-        self.nodes.push(Node {
-            start,
-            level,
-            bbox,
-            error: e,
-            children: None,
-        });
-        self.nodes.len() - 1
-    }
-
-    /// The control points of piece `i`.
-    fn piece(&self, i: usize) -> &[f64] {
-        let stride = self.points.len();
-        &self.pieces[i * stride..(i + 1) * stride]
-    }
-
-    /// The halves of piece `i` (the library's de Casteljau split at 1/2), split on first use.
-    fn children(&mut self, i: usize) -> [usize; 2] {
-        if let Some(c) = self.nodes[i].children {
-            return c;
-        }
-        let Node { start, level, .. } = self.nodes[i];
-        let (mut left, mut right) = (
-            std::mem::take(&mut self.left),
-            std::mem::take(&mut self.right),
-        );
-        curve_split(self.piece(i), 2, &0.5, &mut left, &mut right);
-        let a = self.push_piece(&left, start, level + 1);
-        let b = self.push_piece(&right, start + width(level + 1), level + 1);
-        (self.left, self.right) = (left, right);
-        self.nodes[i].children = Some([a, b]);
-        [a, b]
     }
 
     /// P(s) and P'(s) in plain `f64` (for Newton's method only): n - 1 de Casteljau steps
@@ -283,65 +233,34 @@ impl Curve {
         let level = &mut self.level;
         level.clear();
         level.extend_from_slice(&self.points);
-        let (len, step) = (level.len(), BernsteinStep(&s));
-        for r in 0..self.degree - 1 {
-            step_left(&mut level[..len - 2 * r], 2, &step);
+        for k in (3..=self.degree + 1).rev() {
+            lerp_step(&mut level[..k], s);
         }
-        let d = [level[2] - level[0], level[3] - level[1]];
+        let d = [level[1][0] - level[0][0], level[1][1] - level[0][1]];
         let n = self.degree as f64;
         (
-            [level[0] + s * d[0], level[1] + s * d[1]],
+            [level[0][0] + s * d[0], level[0][1] + s * d[1]],
             [n * d[0], n * d[1]],
         )
     }
 
-    /// An enclosure of P at the double `s` (the pyramid in convex form, [`ConvexStep`]).
-    fn eval_bounded(&mut self, s: f64) -> [BoundedF64; 2] {
-        let level = &mut self.level_bounded;
+    /// P at the double `s` in double-double with a bound (de Casteljau's pyramid by
+    /// [`Dd::lerp`]).
+    fn eval_dd(&mut self, s: f64) -> [Dd; 2] {
+        let level = &mut self.level_dd;
         level.clear();
-        level.extend_from_slice(&self.exact);
-        curve_pyramid_in_place(level, 2, &ConvexStep::new(BoundedF64::exact(s)));
+        level.extend_from_slice(&self.dd);
+        for k in (4..=level.len()).rev().step_by(2) {
+            for i in 0..k - 2 {
+                level[i] = Dd::lerp(&level[i], &level[i + 2], s);
+            }
+        }
         [level[0], level[1]]
     }
 
-    /// P at the double `s` in double-double with a bound (the pyramid in convex form,
-    /// [`ConvexStep`]).
-    fn eval_dd(&mut self, s: f64) -> [Dd; 2] {
-        self.level_dd.clear();
-        self.level_dd.extend_from_slice(&self.dd);
-        curve_pyramid_in_place(&mut self.level_dd, 2, &ConvexStep::new(Dd::exact(s)));
-        [self.level_dd[0], self.level_dd[1]]
-    }
-
-    /// An enclosure of P'(s) for every s with |s - mid| <= radius: the hull of the
-    /// hodograph's control points over [a, b] ⊇ [mid - radius, mid + radius] (the engine's
-    /// restriction net at the exact double ends a, b in convex form, its rounding bounded by
-    /// `BoundedF64`), which holds the hodograph over [a, b] by the convex hull property.
-    fn tangent_hull(&mut self, mid: f64, radius: f64) -> [BoundedF64; 2] {
-        let a = ConvexStep::new(BoundedF64::exact((mid - radius).next_down()));
-        let b = ConvexStep::new(BoundedF64::exact((mid + radius).next_up()));
-        let net = &mut self.level_bounded;
-        net.clear();
-        net.resize(self.hodograph.len(), BoundedF64::zero());
-        curve_net(&self.hodograph, 2, &a, &b, net, &mut self.net_scratch);
-        // The least and largest fl(v -+ e) per coordinate, pushed outwards once: next_down and
-        // next_up are monotone, so this is the hull of the intervals [lower, upper].
-        let mut lo = [f64::INFINITY; 2];
-        let mut hi = [f64::NEG_INFINITY; 2];
-        for xy in net.chunks_exact(2) {
-            for c in 0..2 {
-                let (v, e) = (xy[c].value(), xy[c].error_bound());
-                lo[c] = lo[c].min(v - e);
-                hi[c] = hi[c].max(v + e);
-            }
-        }
-        [0, 1].map(|c| from_bounds(lo[c].next_down(), hi[c].next_up()))
-    }
-
-    /// An enclosure of P'(s) for every s with |s - mid| <= radius: de Casteljau's pyramid at
-    /// the interval argument in convex form, whose width grows only linearly with the degree
-    /// (each level adds about 2 radius max |x|); cheaper than [`Curve::tangent_hull`] and as
-    /// good for the tiny boxes of the final step.
+    /// An enclosure of P'(s) for every s with |s - mid| <= radius: de Casteljau's pyramid of
+    /// the hodograph at the interval argument in convex form (inclusion isotone, its width
+    /// growing only linearly with the degree).
     fn tangent_pyramid(&mut self, mid: f64, radius: f64) -> [BoundedF64; 2] {
         let level = &mut self.level_bounded;
         level.clear();
@@ -352,43 +271,154 @@ impl Curve {
     }
 }
 
-/// 2^-level.
-fn width(level: u32) -> f64 {
-    // The exponent field of 2^-level (level <= MAX_LEVEL, a normal double).
-    f64::from_bits(u64::from(1023 - level) << 52)
+/// One de Casteljau step at `t` on the points of `level` (k points make k - 1, in place):
+/// x + t (y - x) coordinate by coordinate.
+#[inline(always)]
+fn lerp_step(level: &mut [[f64; 2]], t: f64) {
+    for i in 0..level.len() - 1 {
+        let (x, y) = (level[i], level[i + 1]);
+        level[i] = [x[0] + t * (y[0] - x[0]), x[1] + t * (y[1] - x[1])];
+    }
 }
 
-/// Whether the fat line of piece `a` (the band, orthogonal to the chord of `a`, that holds
-/// its exact control points) misses every exact control point of piece `b`; coordinates of
-/// the pieces within `ea` and `eb` of the exact ones. With any double vector n (the chord's
-/// normal, computed), the exact n·x of an exact control point x lies within
-/// (|n_x| + |n_y|) E + 3u (|n_x| |c_x| + |n_y| |c_y|) + 4η of the computed n·c (two
-/// products and a sum, rounded); a curve lies in the hull of its control points, so disjoint
-/// bands of the two pieces mean no common point.
-fn fat_line_separates(a: &[f64], ea: f64, b: &[f64], eb: f64) -> bool {
-    let k = a.len() - 2;
-    let n = [a[1] - a[k + 1], a[k] - a[0]];
-    if n == [0.0, 0.0] {
-        return false;
+/// The control points of the curve `points` restricted to [a, b] (doubles in [0, 1],
+/// a <= b), in `out`: the blossom values P(a^(n-k), b^k), each after exactly n de Casteljau
+/// steps x + τ (y - x) at τ = a or b (fewer where a step is exact: at 0 it keeps the first
+/// point, and the steps at 1 of [0, 1] keep the points), so within E of the exact ones
+/// (module documentation, 1). `work` and `tmp` are scratch of the same length.
+#[inline(always)]
+fn restrict(
+    points: &[[f64; 2]],
+    [a, b]: [f64; 2],
+    out: &mut [[f64; 2]],
+    work: &mut [[f64; 2]],
+    tmp: &mut [[f64; 2]],
+) {
+    // The lengths from `out` (a constant for the fixed-size pieces, so the loops unroll).
+    let n = out.len() - 1;
+    let (points, work, tmp) = (&points[..=n], &mut work[..=n], &mut tmp[..=n]);
+    if a == 0.0 && b == 1.0 {
+        out.copy_from_slice(points);
+        return;
     }
-    let weight = [n[0].abs(), n[1].abs()];
-    // |n_x| |c_x| + |n_y| |c_y| <= |n_x| max |c_x| + |n_y| max |c_y| =: size.
-    let band = |pts: &[f64], e: f64| {
-        let (mut lo, mut hi, mut cx, mut cy) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64, 0.0f64);
-        for c in pts.chunks_exact(2) {
-            let d = n[0] * c[0] + n[1] * c[1];
-            lo = lo.min(d);
-            hi = hi.max(d);
-            cx = cx.max(c[0].abs());
-            cy = cy.max(c[1].abs());
+    work.copy_from_slice(points);
+    for j in 0..=n {
+        // The points P(b^j, ...) of the j-th level at b: at b = 1, exactly the last n + 1 - j
+        // control points.
+        let len = n + 1 - j;
+        let level = if b == 1.0 { &points[j..] } else { &work[..len] };
+        if a == 0.0 {
+            out[j] = level[0];
+        } else {
+            tmp[..len].copy_from_slice(level);
+            for k in (2..=len).rev() {
+                lerp_step(&mut tmp[..k], a);
+            }
+            out[j] = tmp[0];
         }
-        let size = weight[0] * cx + weight[1] * cy;
-        let margin = upward((weight[0] + weight[1]) * e + 3.0 * UNIT_ROUNDOFF * size + 4.0 * ETA);
-        ((lo - margin).next_down(), (hi + margin).next_up())
+        if j < n && b != 1.0 {
+            lerp_step(&mut work[..len], b);
+        }
+    }
+}
+
+/// Whether the bounding boxes of the control points of `a` and `b`, enlarged by their errors
+/// `ea` and `eb` (rounded outwards), meet.
+#[inline(always)]
+fn boxes_meet(a: &[[f64; 2]], ea: f64, b: &[[f64; 2]], eb: f64) -> bool {
+    let bounds = |pts: &[[f64; 2]], e: f64| {
+        let mut r = [pts[0][0], pts[0][0], pts[0][1], pts[0][1]];
+        for xy in &pts[1..] {
+            r[0] = r[0].min(xy[0]);
+            r[1] = r[1].max(xy[0]);
+            r[2] = r[2].min(xy[1]);
+            r[3] = r[3].max(xy[1]);
+        }
+        [
+            (r[0] - e).next_down(),
+            (r[1] + e).next_up(),
+            (r[2] - e).next_down(),
+            (r[3] + e).next_up(),
+        ]
     };
-    let (a_lo, a_hi) = band(a, ea);
-    let (b_lo, b_hi) = band(b, eb);
-    a_hi < b_lo || b_hi < a_lo
+    let (x, y) = (bounds(a, ea), bounds(b, eb));
+    x[0] <= y[1] && y[0] <= x[1] && x[2] <= y[3] && y[2] <= x[3]
+}
+
+/// Fat-line clipping of the piece `a` (control points within `a_reach - 3uM` of the exact
+/// ones, see [`Curve::reach`]) against the fat line of the piece `b` (module documentation,
+/// 1): `None` when no point of `a` lies on the fat line (no common point), else a range
+/// [u0, u1] of `a`'s local parameter in [0, 1] outside which `a` has no common point with
+/// `b`. [0, 1] when nothing is clipped.
+#[inline(always)]
+fn clip(a: &[[f64; 2]], a_reach: f64, b: &[[f64; 2]], b_reach: f64) -> Option<[f64; 2]> {
+    let (first, last) = (b[0], b[b.len() - 1]);
+    let normal = [first[1] - last[1], last[0] - first[0]];
+    if normal == [0.0, 0.0] {
+        return Some([0.0, 1.0]);
+    }
+    let dot = |xy: &[f64; 2]| normal[0] * xy[0] + normal[1] * xy[1];
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for xy in b {
+        let d = dot(xy);
+        lo = lo.min(d);
+        hi = hi.max(d);
+    }
+    // The margins of both pieces' distance coefficients, added to the band.
+    let weight = upward(normal[0].abs() + normal[1].abs());
+    let margin = upward(weight * (a_reach + b_reach) + 8.0 * ETA);
+    let (low, high) = ((lo - margin).next_down(), (hi + margin).next_up());
+    let n = a.len() - 1;
+    let step = 1.0 / n as f64;
+    // The hull of the points (i / n, D_i) against the band [low, high]: the least and largest
+    // abscissa over the points inside the band and the crossings of the band's edges by the
+    // segments between two points.
+    // (Branch-free: a candidate that does not apply is replaced by ±∞. The inputs' bound
+    // 1e90 keeps every D_i finite, and D_i - D_j != 0 where the sides differ.)
+    let (mut u0, mut u1) = (f64::INFINITY, f64::NEG_INFINITY);
+    for (i, pi) in a.iter().enumerate() {
+        let di = dot(pi);
+        let ui = i as f64 * step;
+        let inside = low <= di && di <= high;
+        u0 = u0.min(if inside { ui } else { f64::INFINITY });
+        u1 = u1.max(if inside { ui } else { f64::NEG_INFINITY });
+        for (j, pj) in a.iter().enumerate().skip(i + 1) {
+            let dj = dot(pj);
+            let uj = j as f64 * step;
+            for edge in [low, high] {
+                let crossing = ui + (uj - ui) * ((di - edge) / (di - dj));
+                let applies = (di > edge) != (dj > edge);
+                u0 = u0.min(if applies { crossing } else { f64::INFINITY });
+                u1 = u1.max(if applies { crossing } else { f64::NEG_INFINITY });
+            }
+        }
+    }
+    if u0 > u1 {
+        // No point in the band and no crossing: every point on one side.
+        return None;
+    }
+    Some([(u0 - CLIP_SLACK).max(0.0), (u1 + CLIP_SLACK).min(1.0)])
+}
+
+/// The global range of the local range `u` of the piece over `range` ([a, b] doubles in
+/// [0, 1]): outward rounded, inside `range`.
+fn to_global(range: [f64; 2], u: [f64; 2]) -> [f64; 2] {
+    let [a, b] = range;
+    let w = b - a;
+    // Each end a + u w is computed with an error below 3u b + η (three roundings of numbers
+    // at most b), covered by the slack.
+    let slack = 4.0 * UNIT_ROUNDOFF * b + ETA;
+    let lo = if u[0] == 0.0 {
+        a
+    } else {
+        ((a + u[0] * w) - slack).next_down().max(a)
+    };
+    let hi = if u[1] == 1.0 {
+        b
+    } else {
+        ((a + u[1] * w) + slack).next_up().min(b)
+    };
+    [lo, hi.max(lo)]
 }
 
 /// A box in (s, t): midpoint and radii, standing for m ± r exactly.
@@ -399,13 +429,20 @@ struct Box2 {
 }
 
 impl Box2 {
-    /// Whether [s0, s1] x [t0, t1] lies inside the box (decided conservatively).
-    fn contains(&self, s: [f64; 2], t: [f64; 2]) -> bool {
-        let inside =
-            |m: f64, r: f64, lo: f64, hi: f64| (m - r).next_up() <= lo && hi <= (m + r).next_down();
-        inside(self.mid[0], self.radius[0], s[0], s[1])
-            && inside(self.mid[1], self.radius[1], t[0], t[1])
+    /// Double ranges [lo, hi] in s and in t whose product lies inside the box (rounded
+    /// inwards).
+    fn inner(&self) -> [[f64; 2]; 2] {
+        [0, 1].map(|i| {
+            let (m, r) = (self.mid[i], self.radius[i]);
+            [(m - r).next_up(), (m + r).next_down()]
+        })
     }
+}
+
+/// Whether [s0, s1] x [t0, t1] lies inside the ranges `inner` ([`Box2::inner`]).
+#[inline]
+fn within(inner: &[[f64; 2]; 2], s: [f64; 2], t: [f64; 2]) -> bool {
+    inner[0][0] <= s[0] && s[1] <= inner[0][1] && inner[1][0] <= t[0] && t[1] <= inner[1][1]
 }
 
 /// What Krawczyk's operator gives on a box.
@@ -456,9 +493,8 @@ fn residual_dd(p: &mut Curve, q: &mut Curve, m: [f64; 2]) -> ([Dd; 2], [Dd; 2]) 
     ([a[0].sub(&b[0]), a[1].sub(&b[1])], a)
 }
 
-/// Newton's method in `f64` from `start`: the point it converges to, if it does, and the
-/// last Jacobian [[P'_x, -Q'_x], [P'_y, -Q'_y]] as (P', Q').
-fn newton(p: &mut Curve, q: &mut Curve, start: [f64; 2]) -> Option<([f64; 2], [[f64; 2]; 2])> {
+/// Newton's method in `f64` from `start`: the point it converges to, if it does.
+fn newton(p: &mut Curve, q: &mut Curve, start: [f64; 2]) -> Option<[f64; 2]> {
     let [mut s, mut t] = start;
     let mut previous = f64::INFINITY;
     for k in 0..NEWTON_STEPS {
@@ -479,7 +515,7 @@ fn newton(p: &mut Curve, q: &mut Curve, start: [f64; 2]) -> Option<([f64; 2], [[
         }
         let step = ds.abs().max(dt.abs());
         if step <= 1e-15 {
-            return Some(([s, t], [dps, dqt]));
+            return Some([s, t]);
         }
         // Past the first steps the iteration must contract (it converges quadratically near a
         // regular root); one that does not is abandoned.
@@ -491,24 +527,6 @@ fn newton(p: &mut Curve, q: &mut Curve, start: [f64; 2]) -> Option<([f64; 2], [[
     None
 }
 
-/// Where the chords of the pieces `a` (over `s`) and `b` (over `t`) cross, as parameters, when
-/// they nearly do: the start of Newton's method (a heuristic; nothing is proved from it).
-fn chord_start(a: &[f64], b: &[f64], s: [f64; 2], t: [f64; 2]) -> Option<[f64; 2]> {
-    let (n, m) = (a.len() - 2, b.len() - 2);
-    let da = [a[n] - a[0], a[n + 1] - a[1]];
-    let db = [b[m] - b[0], b[m + 1] - b[1]];
-    let r = [b[0] - a[0], b[1] - a[1]];
-    // a0 + u da = b0 + v db.
-    let det = da[0] * (-db[1]) + db[0] * da[1];
-    if det == 0.0 || !det.is_finite() {
-        return None;
-    }
-    let u = (r[0] * (-db[1]) + db[0] * r[1]) / det;
-    let v = (da[0] * r[1] - da[1] * r[0]) / det;
-    let near = |x: f64| (-0.5..=1.5).contains(&x);
-    (near(u) && near(v)).then(|| [s[0] + u * (s[1] - s[0]), t[0] + v * (t[1] - t[0])])
-}
-
 /// A proved root: its tight enclosure, and the reported crossing when it lies inside the
 /// domain.
 struct Root {
@@ -516,32 +534,10 @@ struct Root {
     crossing: Option<CertifiedCrossing>,
 }
 
-/// The tight certification of the root proved in `b` (module documentation, 3), from F and P
-/// at its centre in double-double: `None` when undecided, else the root (with its crossing
-/// when inside (0, 1)^2).
-fn certify(p: &mut Curve, q: &mut Curve, b: &Box2) -> Option<Root> {
-    let z = b.mid;
-    let (fdd, pz) = residual_dd(p, q, z);
-    let f = fdd.map(|c| c.to_bounded());
-    let mut radius = [TIGHT_RADIUS; 2];
-    let mut k;
-    let mut dp;
-    let mut tries = 0;
-    loop {
-        dp = p.tangent_pyramid(z[0], radius[0]);
-        let dq = q.tangent_pyramid(z[1], radius[1]);
-        k = krawczyk(&Box2 { mid: z, radius }, f, dp, dq)?;
-        // The Newton correction sets the radius: 8 times it, at least TIGHT_RADIUS.
-        let wanted = [0, 1].map(|i| (8.0 * k.offset[i].value().abs()).max(TIGHT_RADIUS));
-        tries += 1;
-        if k.proved || tries == 2 || wanted == radius {
-            break;
-        }
-        radius = wanted;
-    }
-    if !k.proved || radius[0] > b.radius[0] || radius[1] > b.radius[1] {
-        return None;
-    }
+/// The root proved by Krawczyk's operator `k` on a box centred at `z`, with P(z_s) in `pz`
+/// and P'(S) over the box's s side in `dp` (module documentation, 3): `None` when undecided,
+/// else the root with its crossing when inside (0, 1)^2.
+fn root_of(z: [f64; 2], pz: [Dd; 2], k: &Krawczyk, dp: [BoundedF64; 2]) -> Option<Root> {
     let s = BoundedF64::exact(z[0]).add(&k.offset[0]);
     let t = BoundedF64::exact(z[1]).add(&k.offset[1]);
     let tight = [[lower(&s), upper(&s)], [lower(&t), upper(&t)]];
@@ -573,152 +569,117 @@ fn certify(p: &mut Curve, q: &mut Curve, b: &Box2) -> Option<Root> {
     })
 }
 
-/// A point where Newton's method converged, with an enclosure of F there: the centre of the
-/// Krawczyk boxes tried for the cells that contain it (a heuristic choice of centre; nothing is
-/// proved from it).
-#[derive(Clone, Copy)]
-struct Guess {
-    z: [f64; 2],
-    f: [BoundedF64; 2],
-    /// The radius below which Krawczyk's test is expected to succeed around z (an estimate
-    /// from the second derivatives, [`REACH`]).
-    reach: f64,
-}
-
-/// The search state: both curves, the proved roots and their exclusion boxes, the Newton
-/// points found so far, the stack of cells. Kept per thread and reused ([`with_search`]), so
-/// that a call allocates only on its first use (or for larger curves than before).
+/// The search state: both curves, the pieces of the current cell, the proved roots and their
+/// exclusion boxes, the stack of cells. Kept per thread and reused ([`with_search`]), so that
+/// a call allocates only on its first use (or for larger curves than before).
 struct Search {
     p: Curve,
     q: Curve,
+    /// The pieces and scratch of curves beyond the fixed sizes ([`Pieces`]).
+    pieces: Pieces<Vec<[f64; 2]>>,
     roots: Vec<Root>,
-    /// Proved boxes, each with the index of its one root.
-    exclusions: Vec<(Box2, usize)>,
-    guesses: Vec<Guess>,
-    stack: Vec<(usize, usize)>,
+    /// Proved boxes (their inner ranges, [`Box2::inner`]), each with the index of its one
+    /// root.
+    exclusions: Vec<([[f64; 2]; 2], usize)>,
+    /// Cells S x T still to examine.
+    stack: Vec<([f64; 2], [f64; 2])>,
 }
-
-/// Krawczyk's test is tried on boxes up to this many times a Newton point's reach (a
-/// heuristic that saves tests bound to fail; a skipped cell is halved).
-const REACH: f64 = 4.0;
-
-/// Two Newton points closer than this (in s and t) are taken as the same point (a heuristic:
-/// it only decides whether a Krawczyk box is tried or the cell is halved).
-const SAME_POINT: f64 = 1e-12;
 
 impl Search {
     fn empty() -> Self {
         Search {
             p: Curve::empty(),
             q: Curve::empty(),
+            pieces: Pieces {
+                p: Vec::new(),
+                q: Vec::new(),
+                work_p: Vec::new(),
+                tmp_p: Vec::new(),
+                work_q: Vec::new(),
+                tmp_q: Vec::new(),
+            },
             roots: Vec::new(),
             exclusions: Vec::new(),
-            guesses: Vec::new(),
             stack: Vec::new(),
         }
     }
 
-    /// The centre of the Krawczyk box for the cell `s` x `t`: a known Newton point inside the
-    /// cell, else Newton's method from `start` (the chords' crossing) when it converges to a
-    /// new point, or to a known one inside the cell's neighbourhood (a known point outside the
-    /// cell is left to the cell that holds it: `None`, the cell is halved).
-    fn guess(&mut self, s: [f64; 2], t: [f64; 2], start: Option<[f64; 2]>) -> Option<Guess> {
-        let inside = |z: [f64; 2]| s[0] <= z[0] && z[0] <= s[1] && t[0] <= z[1] && z[1] <= t[1];
-        if let Some(g) = self.guesses.iter().find(|g| inside(g.z)) {
-            return Some(*g);
-        }
-        let (z, [dp, dq]) = newton(&mut self.p, &mut self.q, start?)?;
-        let same = |g: &Guess| (0..2).all(|i| (g.z[i] - z[i]).abs() <= SAME_POINT);
-        if self.guesses.iter().any(same) {
-            return None;
-        }
-        let (pz, qz) = (self.p.eval_bounded(z[0]), self.q.eval_bounded(z[1]));
-        // Krawczyk's contraction on a box of radius r is about 2 |J^-1| D r, D bounding the
-        // second derivatives: the reach r = 1 / (2 |J^-1| D).
-        let det = (-dp[0] * dq[1] + dq[0] * dp[1]).abs();
-        let inverse = (dq[1].abs() + dq[0].abs()).max(dp[1].abs() + dp[0].abs()) / det;
-        let curvature = self.p.second_bound.max(self.q.second_bound);
-        let g = Guess {
-            z,
-            f: [pz[0].sub(&qz[0]), pz[1].sub(&qz[1])],
-            reach: 1.0 / (2.0 * inverse * curvature),
-        };
-        self.guesses.push(g);
-        Some(g)
-    }
-
-    /// Krawczyk's test on the box around a Newton point that contains the cell `s` x `t`
-    /// (module documentation, 2): whether the cell is settled, `None` when a proved root is
-    /// undecided.
-    fn try_cell(&mut self, s: [f64; 2], t: [f64; 2], start: Option<[f64; 2]>) -> Option<bool> {
+    /// Krawczyk's test on a box containing the cell `s` x `t` (module documentation, 2 and
+    /// 3): `Some(true)` when the cell is settled (its roots are the one root of a proved box,
+    /// recorded), `Some(false)` when the test fails, `None` when a proved root is undecided.
+    fn settle(&mut self, s: [f64; 2], t: [f64; 2]) -> Option<bool> {
         let centre = [0.5 * (s[0] + s[1]), 0.5 * (t[0] + t[1])];
         let half = [0.5 * (s[1] - s[0]), 0.5 * (t[1] - t[0])];
-        let Some(Guess { z, f, reach }) = self.guess(s, t, start) else {
-            return Some(false);
-        };
-        let far = |i: usize| (z[i] - centre[i]).abs() > 2.0 * half[i];
-        if far(0) || far(1) {
-            return Some(false);
-        }
         let (p, q) = (&mut self.p, &mut self.q);
-        let radius = [0, 1].map(|i| ((z[i] - centre[i]).abs().next_up() + half[i]).next_up());
-        if radius[0].max(radius[1]) > REACH * reach {
-            return Some(false);
-        }
-        let b = Box2 { mid: z, radius };
-        let dp = p.tangent_hull(z[0], radius[0]);
-        let dq = q.tangent_hull(z[1], radius[1]);
-        if !krawczyk(&b, f, dp, dq).is_some_and(|k| k.proved) {
-            return Some(false);
-        }
-        // A known root inside the box is its one root.
-        let known = self
-            .roots
-            .iter()
-            .position(|r| b.contains(r.tight[0], r.tight[1]));
-        let index = match known {
-            Some(index) => index,
-            None => {
-                let root = certify(p, q, &b)?;
-                let index = self.add_root(root)?;
-                let (p, q) = (&mut self.p, &mut self.q);
-                // A new root: try a box INFLATE times as large, whose one root is then this
-                // one too (it contains b), so that the neighbouring cells of the root are
-                // settled without another Newton run.
-                let big = Box2 {
-                    mid: z,
-                    radius: radius.map(|r| INFLATE * r),
-                };
-                let dp = p.tangent_hull(z[0], big.radius[0]);
-                let dq = q.tangent_hull(z[1], big.radius[1]);
-                if krawczyk(&big, f, dp, dq).is_some_and(|k| k.proved) {
-                    self.exclusions.push((big, index));
-                }
-                index
-            }
+        p.prepare();
+        q.prepare();
+        // The box's centre: the cell's centre when the cell is tiny, else a Newton point near
+        // it (a heuristic choice; the box contains the cell either way).
+        let z = if half[0].max(half[1]) <= TINY_WIDTH {
+            centre
+        } else {
+            newton(p, q, centre)
+                .filter(|z| (0..2).all(|i| (z[i] - centre[i]).abs() <= 2.0 * half[i]))
+                .unwrap_or(centre)
         };
-        self.exclusions.push((b, index));
-        Some(b.contains(s, t))
+        let cover = [0, 1].map(|i| {
+            upward(COVER * ((z[i] - centre[i]).abs().next_up() + half[i])).max(TIGHT_RADIUS)
+        });
+        let (fdd, pz) = residual_dd(p, q, z);
+        let f = fdd.map(|c| c.to_bounded());
+        let outer = Box2 {
+            mid: z,
+            radius: cover,
+        };
+        let mut dp = p.tangent_pyramid(z[0], cover[0]);
+        let dq = q.tangent_pyramid(z[1], cover[1]);
+        let Some(mut k) = krawczyk(&outer, f, dp, dq).filter(|k| k.proved) else {
+            return Some(false);
+        };
+        // A tighter box around z when the cover is large: 8 times the Newton correction.
+        let wanted = [0, 1].map(|i| (8.0 * k.offset[i].value().abs()).max(TIGHT_RADIUS));
+        if (0..2).any(|i| wanted[i] < cover[i]) {
+            let radius = [0, 1].map(|i| wanted[i].min(cover[i]));
+            let dp_inner = p.tangent_pyramid(z[0], radius[0]);
+            let dq_inner = q.tangent_pyramid(z[1], radius[1]);
+            let inner = Box2 { mid: z, radius };
+            if let Some(k_inner) = krawczyk(&inner, f, dp_inner, dq_inner).filter(|k| k.proved) {
+                // Its one root is the one root of the outer box, which contains it.
+                (k, dp) = (k_inner, dp_inner);
+            }
+        }
+        let root = root_of(z, pz, &k, dp)?;
+        let index = self.add_root(root, &outer)?;
+        self.exclusions.push((outer.inner(), index));
+        Some(true)
     }
 
-    /// Adds a newly certified root, or finds it among the known ones: its index, `None` when
-    /// its enclosure meets another's without being the same root.
-    fn add_root(&mut self, root: Root) -> Option<usize> {
+    /// Adds a newly certified root, proved to be the one root of `outer`, or finds it among
+    /// the known ones: its index, `None` when its enclosure meets another's without being the
+    /// same root.
+    fn add_root(&mut self, root: Root, outer: &Box2) -> Option<usize> {
         let meets = |a: &[[f64; 2]; 2], b: &[[f64; 2]; 2]| {
             (0..2).all(|k| a[k][0] <= b[k][1] && b[k][0] <= a[k][1])
         };
         for (index, known) in self.roots.iter().enumerate() {
             if meets(&known.tight, &root.tight) {
-                // The same root when the new enclosure lies in a box proved for the known one.
-                let same = self
-                    .exclusions
-                    .iter()
-                    .any(|(e, k)| *k == index && e.contains(root.tight[0], root.tight[1]));
+                // The same root when one enclosure lies in a box proved for the other.
+                let same = within(&outer.inner(), known.tight[0], known.tight[1])
+                    || self
+                        .exclusions
+                        .iter()
+                        .any(|(e, k)| *k == index && within(e, root.tight[0], root.tight[1]));
                 return same.then_some(index);
             }
         }
         self.roots.push(root);
         Some(self.roots.len() - 1)
+    }
+
+    /// Whether the cell `s` x `t` lies in a proved box (whose one root is known).
+    #[inline]
+    fn excluded(&self, s: [f64; 2], t: [f64; 2]) -> bool {
+        self.exclusions.iter().any(|(e, _)| within(e, s, t))
     }
 }
 
@@ -757,6 +718,18 @@ fn with_search<R>(f: impl FnOnce(&mut Search) -> R) -> R {
     })
 }
 
+/// The control points of P over the current cell's s side and of Q over its t side, with
+/// the scratch of [`restrict`].
+#[derive(Default)]
+struct Pieces<B> {
+    p: B,
+    q: B,
+    work_p: B,
+    tmp_p: B,
+    work_q: B,
+    tmp_q: B,
+}
+
 impl Search {
     /// [`certified_crossings_f64`] on this search state, which it resets first.
     fn run(&mut self, p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<Vec<CertifiedCrossing>> {
@@ -764,48 +737,113 @@ impl Search {
         self.q.reset(q)?;
         self.roots.clear();
         self.exclusions.clear();
-        self.guesses.clear();
         self.stack.clear();
-        self.stack.push((0, 0));
-        let mut examined = 0usize;
-        while let Some((i, j)) = self.stack.pop() {
-            examined += 1;
-            if examined > MAX_CELLS {
-                return None;
+        self.stack.push(([0.0, 1.0], [0.0, 1.0]));
+        // The pieces in arrays for equal small degrees (unrolled), else in vectors.
+        match (self.p.degree, self.q.degree) {
+            (1, 1) => self.cells(&mut Pieces::<[[f64; 2]; 2]>::default())?,
+            (2, 2) => self.cells(&mut Pieces::<[[f64; 2]; 3]>::default())?,
+            (3, 3) => self.cells(&mut Pieces::<[[f64; 2]; 4]>::default())?,
+            (n, m) => {
+                let mut pieces = std::mem::take(&mut self.pieces);
+                for (v, len) in [
+                    (&mut pieces.p, n + 1),
+                    (&mut pieces.work_p, n + 1),
+                    (&mut pieces.tmp_p, n + 1),
+                    (&mut pieces.q, m + 1),
+                    (&mut pieces.work_q, m + 1),
+                    (&mut pieces.tmp_q, m + 1),
+                ] {
+                    v.clear();
+                    v.resize(len, [0.0; 2]);
+                }
+                let done = self.cells(&mut pieces);
+                self.pieces = pieces;
+                done?
             }
-            let (a, b) = (self.p.nodes[i], self.q.nodes[j]);
-            if a.bbox[1] < b.bbox[0]
-                || b.bbox[1] < a.bbox[0]
-                || a.bbox[3] < b.bbox[2]
-                || b.bbox[3] < a.bbox[2]
-            {
-                continue;
-            }
-            let (pa, qb) = (self.p.piece(i), self.q.piece(j));
-            if fat_line_separates(pa, a.error, qb, b.error)
-                || fat_line_separates(qb, b.error, pa, a.error)
-            {
-                continue;
-            }
-            let s = [a.start, a.start + width(a.level)];
-            let t = [b.start, b.start + width(b.level)];
-            if self.exclusions.iter().any(|(e, _)| e.contains(s, t)) {
-                continue;
-            }
-            let start = chord_start(pa, qb, s, t);
-            if self.try_cell(s, t, start)? {
-                continue;
-            }
-            if a.level >= MAX_LEVEL || b.level >= MAX_LEVEL {
-                return None;
-            }
-            let [p0, p1] = self.p.children(i);
-            let [q0, q1] = self.q.children(j);
-            self.stack.extend([(p1, q1), (p1, q0), (p0, q1), (p0, q0)]);
         }
         let mut out: Vec<CertifiedCrossing> =
             self.roots.iter().filter_map(|r| r.crossing).collect();
         out.sort_by(|x, y| x.s.total_cmp(&y.s).then(x.t.total_cmp(&y.t)));
         Some(out)
+    }
+}
+
+impl Search {
+    /// Examines the cells of the stack until none is left (module documentation, 1): `None`
+    /// when undecided.
+    #[inline(always)]
+    fn cells<B: AsRef<[[f64; 2]]> + AsMut<[[f64; 2]]>>(
+        &mut self,
+        pieces: &mut Pieces<B>,
+    ) -> Option<()> {
+        let Pieces {
+            p: piece_p,
+            q: piece_q,
+            work_p,
+            tmp_p,
+            work_q,
+            tmp_q,
+        } = pieces;
+        let (piece_p, piece_q) = (piece_p.as_mut(), piece_q.as_mut());
+        let (work_p, tmp_p, work_q, tmp_q) = (
+            work_p.as_mut(),
+            tmp_p.as_mut(),
+            work_q.as_mut(),
+            tmp_q.as_mut(),
+        );
+        let (pe, qe, pr, qr) = (self.p.error, self.q.error, self.p.reach, self.q.reach);
+        let mut steps = 0usize;
+        while let Some((mut s, mut t)) = self.stack.pop() {
+            restrict(&self.p.points, s, piece_p, work_p, tmp_p);
+            restrict(&self.q.points, t, piece_q, work_q, tmp_q);
+            loop {
+                steps += 1;
+                if steps > MAX_STEPS {
+                    return None;
+                }
+                if self.excluded(s, t) || !boxes_meet(piece_p, pe, piece_q, qe) {
+                    break;
+                }
+                let (ws, wt) = (s[1] - s[0], t[1] - t[0]);
+                let Some(u) = clip(piece_p, pr, piece_q, qr) else {
+                    break;
+                };
+                if u != [0.0, 1.0] {
+                    s = to_global(s, u);
+                    restrict(&self.p.points, s, piece_p, work_p, tmp_p);
+                }
+                let Some(v) = clip(piece_q, qr, piece_p, pr) else {
+                    break;
+                };
+                if v != [0.0, 1.0] {
+                    t = to_global(t, v);
+                    restrict(&self.q.points, t, piece_q, work_q, tmp_q);
+                }
+                let (ws2, wt2) = (s[1] - s[0], t[1] - t[0]);
+                let stalled = ws2 > PROGRESS * ws && wt2 > PROGRESS * wt;
+                let size = ws2.max(wt2);
+                if size <= TINY_WIDTH || (stalled && size <= SETTLE_WIDTH) {
+                    if self.settle(s, t)? {
+                        break;
+                    }
+                } else if !stalled {
+                    continue;
+                }
+                // Stalled (or not settled): halve the wider side.
+                if size <= MIN_WIDTH {
+                    return None;
+                }
+                if ws2 >= wt2 {
+                    let m = 0.5 * (s[0] + s[1]);
+                    self.stack.extend([([m, s[1]], t), ([s[0], m], t)]);
+                } else {
+                    let m = 0.5 * (t[0] + t[1]);
+                    self.stack.extend([(s, [m, t[1]]), (s, [t[0], m])]);
+                }
+                break;
+            }
+        }
+        Some(())
     }
 }

@@ -10,8 +10,7 @@
 //! operations on `BoundedF64` arguments (de Casteljau's pyramid with an interval argument, say)
 //! encloses its range over the argument intervals. This module adds the few set operations the
 //! filter needs: the outward-rounded ends [`lower`] and [`upper`] (one `next_down`/`next_up`
-//! after the rounded sum, so that lower <= v - e and upper >= v + e hold exactly), an interval
-//! from its ends ([`from_bounds`]), and the strict test |x| < r of Krawczyk's test ([`inside_radius`]).
+//! after the rounded sum, so that lower <= v - e and upper >= v + e hold exactly) and the strict test |x| < r of Krawczyk's test ([`inside_radius`]).
 //!
 //! **Double-double with a bound: [`Dd`].** A value hi + lo (two doubles) with a bound e on its
 //! distance to the exact result of the same operations. The sums and products use the
@@ -25,6 +24,11 @@
 //! way [`BoundedF64`]'s is (times 1 + 16u, plus 8η). For de Casteljau's pyramid of degree n on
 //! doubles of size M the bound is about n^2 u^2 M, some 1e-31 M.
 //!
+//! The filter's residual uses
+//! de Casteljau's step [`Dd::lerp`], x + s (y - x) with TwoSum and TwoProd and a bound that
+//! charges the inputs' errors once per step, as the exact convex combination moves them
+//! (their maximum for s in [0, 1]).
+//!
 //! **Running bounds need the convex step: [`ConvexStep`].** De Casteljau's step is computed
 //! by the engine as x + s (y - x); a running bound of that expression is
 //! e_x + |s| (e_x + e_y), so over n levels the bound (and the width of an interval) grows like
@@ -33,8 +37,7 @@
 //! [`ConvexStep`] computes that form, with 1 - s held as a value of the ring (exact for a
 //! double s in [`Dd`], bounded in [`BoundedF64`]), so that its bound grows by
 //! (|1 - s| + |s|) e plus the new roundings per level: additively for s in [0, 1]. The filter
-//! runs the engine's pyramid ([`crate::shape::flat::curve_pyramid_in_place`]) and restriction net
-//! ([`crate::engine::curve_net`]) with it.
+//! runs the engine's pyramid ([`crate::shape::flat::curve_pyramid_in_place`]) with it.
 //!
 //! **Correct rounding: [`round_nearest`].** With x known to lie in base + [d_lo, d_hi]
 //! (base a double, the offset an interval), x rounds to the double c = fl(base + d) when the
@@ -58,15 +61,6 @@ pub(crate) fn lower(x: &BoundedF64) -> f64 {
 #[inline]
 pub(crate) fn upper(x: &BoundedF64) -> f64 {
     (x.value() + x.error_bound()).next_up()
-}
-
-/// An interval containing [lo, hi] (lo <= hi finite): its midpoint (rounded) and a radius
-/// rounded up past both ends.
-#[inline]
-pub(crate) fn from_bounds(lo: f64, hi: f64) -> BoundedF64 {
-    let mid = 0.5 * lo + 0.5 * hi;
-    let radius = (hi - mid).next_up().max((mid - lo).next_up());
-    BoundedF64::with_bound(mid, radius)
 }
 
 /// Whether every x of the interval satisfies |x| < `radius` (decided conservatively: `false`
@@ -127,6 +121,35 @@ impl Dd {
     pub(crate) fn to_bounded(self) -> BoundedF64 {
         let (v, r) = two_sum(self.hi, self.lo);
         BoundedF64::with_bound(v, upward(self.bound_or_infinite() + r.abs()))
+    }
+
+    /// De Casteljau's step x + s (y - x) at the double `s`, for the pyramid of the filter's
+    /// residual (module documentation): the difference, the product by s and the sum, each
+    /// with TwoSum or TwoProd on the leading parts (exact, TwoProd but for η / 2 of
+    /// underflow) and the low-order terms added in plain doubles (u |fl| each, u |fl| + η for
+    /// the product s y_lo), renormalised exactly. The inputs' errors move by the exact
+    /// combination (1 - s) e_x + s e_y <= (|1 - s| + |s|) max(e_x, e_y): their maximum for s in
+    /// [0, 1], with no growth over the levels of the pyramid.
+    #[inline]
+    pub(crate) fn lerp(x: &Dd, y: &Dd, s: f64) -> Dd {
+        // d = y - x.
+        let (d1, e1) = two_sum(y.hi, -x.hi);
+        let t1 = y.lo - x.lo;
+        let w1 = e1 + t1;
+        let (dh, dl) = two_sum(d1, w1);
+        // p = s d.
+        let (ph, pe) = two_prod(s, dh);
+        let c = s * dl;
+        let w2 = pe + c;
+        let (p1, p2) = two_sum(ph, w2);
+        // x + p.
+        let (r1, e3) = two_sum(x.hi, p1);
+        let t3 = x.lo + p2;
+        let w3 = e3 + t3;
+        let own = UNIT_ROUNDOFF * (t1.abs() + w1.abs() + c.abs() + w2.abs() + t3.abs() + w3.abs())
+            + 2.0 * ETA;
+        let spread = upward((1.0 - s).abs() + s.abs());
+        Dd::make(r1, w3, spread * x.bound.max(y.bound) + own)
     }
 
     fn bound_or_infinite(&self) -> f64 {
@@ -313,6 +336,15 @@ mod tests {
                 let mut out_q = [Rational::from_integer(BigInt::from(0))];
                 curve_eval_into(&q, 1, &exact(s), &mut out_q, &mut Vec::new());
                 assert!(encloses(&out[0], &out_q[0]), "n = {n}");
+                // The same pyramid by `Dd::lerp`.
+                let mut level = dd.clone();
+                for k in (2..=level.len()).rev() {
+                    for i in 0..k - 1 {
+                        level[i] = Dd::lerp(&level[i], &level[i + 1], s);
+                    }
+                }
+                assert!(encloses(&level[0], &out_q[0]), "lerp, n = {n}");
+                assert!(level[0].bound < (n * n) as f64 * 1e-31);
                 // Some n^2 u^2: far below the half ulps the filter decides against.
                 assert!(
                     out[0].bound < (n * n) as f64 * 1e-31,
@@ -364,7 +396,7 @@ mod tests {
 
     #[test]
     fn interval_helpers_round_outwards() {
-        let x = from_bounds(0.1, 0.3);
+        let x = BoundedF64::with_bound(0.2, 0.1);
         assert!(lower(&x) <= 0.1 && upper(&x) >= 0.3);
         assert!(inside_radius(&BoundedF64::with_bound(0.1, 0.1), 0.25));
         assert!(!inside_radius(&BoundedF64::with_bound(0.1, 0.15), 0.25));
