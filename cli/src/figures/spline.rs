@@ -40,13 +40,13 @@ pub fn figure() -> Result<Figure, Error> {
     let fast = BSpline::new(
         3,
         f.knots().iter().map(rational_to_f64).collect(),
-        f.control_points().iter().map(|p| to_f64(p)).collect(),
+        f.control_points().iter().map(to_f64).collect(),
     )?;
     let (a, b) = fast.domain();
     let curve = sample(*a, *b, SAMPLES, |t| {
         fast.eval(&t).ok().map(|p| point3_f64(&p))
     });
-    let polygon: Vec<Point3> = f.control_points().iter().map(|p| point3(p)).collect();
+    let polygon: Vec<Point3> = f.control_points().iter().map(point3).collect();
     let knots = knot_images(&f)?;
     let knot_points: Vec<Point3> = knots.iter().map(|(_, p)| point3(p)).collect();
     let layers = vec![
