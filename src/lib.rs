@@ -114,6 +114,8 @@ mod intersect;
 mod num;
 mod restrict;
 mod shape;
+#[cfg(test)]
+mod test_rng;
 // Conversions and serialisation behind the features `mint`, `kurbo` and `serde`.
 mod interop;
 

@@ -501,15 +501,12 @@ mod tests {
         Some((interpolate(&v1), interpolate(&v0)))
     }
 
-    /// A small pseudo-random generator (xorshift).
-    struct Rng(u64);
+    /// Samples drawn from the shared test generator ([`crate::test_rng::XorShift`]).
+    struct Rng(crate::test_rng::XorShift);
 
     impl Rng {
         fn next(&mut self) -> u64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            self.0
+            self.0.next()
         }
 
         fn small(&mut self, r: i64) -> BigInt {
@@ -566,7 +563,7 @@ mod tests {
 
     #[test]
     fn random_general_bipolys_match_the_determinants() {
-        let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+        let mut rng = Rng(crate::test_rng::XorShift(0x9e37_79b9_7f4a_7c15));
         for case in 0..300 {
             let (ds1, dt1) = (rng.next() % 4, rng.next() % 5);
             let (ds2, dt2) = (rng.next() % 4, rng.next() % 5);
@@ -579,7 +576,7 @@ mod tests {
 
     #[test]
     fn common_factors_give_zero_and_match() {
-        let mut rng = Rng(0x1234_5678_9abc_def1);
+        let mut rng = Rng(crate::test_rng::XorShift(0x1234_5678_9abc_def1));
         for _ in 0..60 {
             let (cs, ct) = (1 + (rng.next() % 2) as usize, 1 + (rng.next() % 2) as usize);
             let c = rng.bipoly(cs, ct, 4);
@@ -597,7 +594,7 @@ mod tests {
 
     #[test]
     fn separated_and_degenerate_shapes_match() {
-        let mut rng = Rng(0x0dd_ba11_cafe_f00d);
+        let mut rng = Rng(crate::test_rng::XorShift(0x0dd_ba11_cafe_f00d));
         // f(s) - g(t) with big coefficients, as for curves; divided differences; leading
         // coefficients that vanish modulo nothing but at some s; constants.
         for _ in 0..40 {

@@ -12,15 +12,12 @@ use crate::num::ring::Rational;
 use crate::shape::basis::bernstein_to_power;
 use num_traits::FromPrimitive;
 
-/// Deterministic pseudo-random numbers (xorshift64).
-struct Random(u64);
+/// Samples drawn from the shared test generator ([`crate::test_rng::XorShift`]).
+struct Random(crate::test_rng::XorShift);
 
 impl Random {
     fn next(&mut self) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0
+        self.0.next()
     }
     /// An integer in [-k, k].
     fn int(&mut self, k: i64) -> f64 {
@@ -65,7 +62,7 @@ fn check_against_exact(p: &[[f64; 2]], q: &[[f64; 2]]) -> bool {
 
 #[test]
 fn cubic_pairs_agree_with_the_exact_path_to_the_bit() {
-    let mut r = Random(0x2545_f491_4f6c_dd1d);
+    let mut r = Random(crate::test_rng::XorShift(0x2545_f491_4f6c_dd1d));
     let (mut decided, mut crossings) = (0, 0);
     let pairs = 200;
     for k in 0..pairs {
@@ -97,7 +94,7 @@ fn cubic_pairs_agree_with_the_exact_path_to_the_bit() {
 
 #[test]
 fn lines_and_quadratics_agree_with_the_exact_path() {
-    let mut r = Random(0x0123_4567_89ab_cdef);
+    let mut r = Random(crate::test_rng::XorShift(0x0123_4567_89ab_cdef));
     let mut decided = 0;
     for k in 0..100 {
         let (n, m) = (1 + k % 2, 1 + (k / 2) % 3);
@@ -156,7 +153,7 @@ fn line_case(r: &mut Random, n: usize) -> (Vec<[f64; 2]>, Vec<[f64; 2]>, Vec<Rou
 
 #[test]
 fn degree_8_and_20_against_a_line_agree_with_exact_zeros() {
-    let mut r = Random(0x9e37_79b9_7f4a_7c15);
+    let mut r = Random(crate::test_rng::XorShift(0x9e37_79b9_7f4a_7c15));
     for n in [8usize, 20] {
         let (mut decided, mut crossings, cases) = (0, 0, 40);
         for _ in 0..cases {
@@ -188,7 +185,7 @@ fn degree_8_and_20_against_a_line_agree_with_exact_zeros() {
 fn random_degree_20_pairs_are_decided_consistently() {
     // No exact answer at this degree: the filter must decide most pairs, agree with itself
     // with the curves swapped, and its points must be common points (within their ulps).
-    let mut r = Random(0x5851_f42d_4c95_7f2d);
+    let mut r = Random(crate::test_rng::XorShift(0x5851_f42d_4c95_7f2d));
     let (mut decided, cases) = (0, 20);
     for _ in 0..cases {
         let p: Vec<[f64; 2]> = (0..=20).map(|_| [r.unit(), r.unit()]).collect();
@@ -261,7 +258,7 @@ fn near_tangency_is_decided_right_or_left_to_the_exact_path() {
 
 #[test]
 fn rounded_answer_is_the_exact_answer_rounded() {
-    let mut r = Random(0xdead_beef_cafe_f00d);
+    let mut r = Random(crate::test_rng::XorShift(0xdead_beef_cafe_f00d));
     let mut by_filter = 0;
     for _ in 0..40 {
         let p: Vec<[f64; 2]> = (0..4).map(|_| [r.int(5), r.int(5)]).collect();
@@ -282,7 +279,7 @@ fn rounded_answer_is_the_exact_answer_rounded() {
 fn reused_search_state_does_not_change_answers() {
     // The per-thread search state is reused: the same pairs in another order, mixed with
     // curves of other degrees, and on another thread, give the same answers.
-    let mut r = Random(0x7f4a_7c15_9e37_79b9);
+    let mut r = Random(crate::test_rng::XorShift(0x7f4a_7c15_9e37_79b9));
     let curves: Vec<Vec<[f64; 2]>> = (0..60)
         .map(|k| (0..=1 + k % 6).map(|_| [r.unit(), r.unit()]).collect())
         .collect();
@@ -328,7 +325,7 @@ fn timing_filter() {
         .ok()
         .and_then(|v| v.parse().ok())
         .unwrap_or(10_000);
-    let mut r = Random(0x2545_f491_4f6c_dd1d);
+    let mut r = Random(crate::test_rng::XorShift(0x2545_f491_4f6c_dd1d));
     let cubics: Vec<[[f64; 2]; 4]> = (0..2 * pairs)
         .map(|_| std::array::from_fn(|_| [r.unit(), r.unit()]))
         .collect();
