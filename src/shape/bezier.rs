@@ -380,15 +380,12 @@ impl<T: Ring> TensorPatch<T> {
     /// # Panics
     /// When ν > n.
     pub fn row(&self, nu: usize) -> Points<'_, T> {
-        let width = self.cols * self.dim;
-        Points::new(&self.coords[nu * width..(nu + 1) * width], self.dim)
+        Points::grid_row(&self.coords, self.cols, self.dim, nu)
     }
 
     /// The rows of the net, ν = 0..=n.
     pub fn rows(&self) -> impl ExactSizeIterator<Item = Points<'_, T>> + '_ {
-        self.coords
-            .chunks_exact(self.cols * self.dim)
-            .map(|r| Points::new(r, self.dim))
+        Points::grid_rows(&self.coords, self.cols, self.dim)
     }
 
     /// All control points, row by row.

@@ -98,6 +98,24 @@ impl<'a, T> Points<'a, T> {
         Points { coords, dim }
     }
 
+    /// Row `i` of the row-major grid `coords` of `cols` points a row (the flat storage of
+    /// tensor patches, power surfaces and B-spline surfaces). Panics when there is no row `i`.
+    pub(crate) fn grid_row(coords: &'a [T], cols: usize, dim: usize, i: usize) -> Self {
+        let width = cols * dim;
+        Points::new(&coords[i * width..(i + 1) * width], dim)
+    }
+
+    /// The rows of the row-major grid `coords` of `cols` points a row, in order.
+    pub(crate) fn grid_rows(
+        coords: &'a [T],
+        cols: usize,
+        dim: usize,
+    ) -> impl ExactSizeIterator<Item = Self> + 'a {
+        coords
+            .chunks_exact(cols * dim)
+            .map(move |row| Points::new(row, dim))
+    }
+
     /// The number of points.
     pub fn len(&self) -> usize {
         self.coords.len() / self.dim

@@ -195,9 +195,7 @@ impl<T: Ring> PowerSurface<T> {
     /// # Ok::<(), blossom::Error>(())
     /// ```
     pub fn rows(&self) -> impl ExactSizeIterator<Item = Points<'_, T>> + '_ {
-        self.coords
-            .chunks_exact(self.cols * self.dim)
-            .map(|row| Points::new(row, self.dim))
+        Points::grid_rows(&self.coords, self.cols, self.dim)
     }
 
     /// Row i of the coefficient grid: c_i0, ..., c_im.
@@ -205,8 +203,7 @@ impl<T: Ring> PowerSurface<T> {
     /// # Panics
     /// When i > n.
     pub fn row(&self, i: usize) -> Points<'_, T> {
-        let width = self.cols * self.dim;
-        Points::new(&self.coords[i * width..(i + 1) * width], self.dim)
+        Points::grid_row(&self.coords, self.cols, self.dim, i)
     }
 
     /// The coefficient `c_ij`.

@@ -262,16 +262,13 @@ impl<T: Field> BSplineSurface<T> {
     /// # Panics
     /// When k >= m.
     pub fn row(&self, k: usize) -> Points<'_, T> {
-        let width = self.cols * self.dim;
-        Points::new(&self.coords[k * width..(k + 1) * width], self.dim)
+        Points::grid_row(&self.coords, self.cols, self.dim, k)
     }
 
     /// The de Boor grid row by row, k = 0..m: row k is the view of d_k0, ..., d_k(n-1), each
     /// point a `&[T]`.
     pub fn control_points(&self) -> impl ExactSizeIterator<Item = Points<'_, T>> + '_ {
-        self.coords
-            .chunks_exact(self.cols * self.dim)
-            .map(|r| Points::new(r, self.dim))
+        Points::grid_rows(&self.coords, self.cols, self.dim)
     }
 
     /// All de Boor points in one view, row by row (point (k, l) at k n + l).
