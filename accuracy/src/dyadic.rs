@@ -72,6 +72,7 @@ impl PartialEq for Dyadic {
 }
 
 impl Ring for Dyadic {
+    type Coords = Vec<Self>;
     fn zero() -> Self {
         Dyadic {
             mantissa: BigInt::zero(),

@@ -529,7 +529,7 @@ const SLOW_METHODS: [Method; 3] = [Method::Definition, Method::Polarisation, Met
 const SLOW_EXACT_DEGREE: usize = 2;
 
 /// A shape and its new domain, in the arithmetic `T`.
-enum Shape<T> {
+enum Shape<T: Ring> {
     Curve(PowerCurve<T>, [T; 2]),
     Tensor(PowerSurface<T>, [T; 4]),
     TriangleGrid(PowerSurface<T>, [[T; 2]; 3]),

@@ -138,6 +138,7 @@ fn promote(
 }
 
 impl Ring for Scalar {
+    type Coords = Vec<Self>;
     fn zero() -> Self {
         Scalar::Exact(<Rational as Ring>::zero())
     }

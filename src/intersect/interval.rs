@@ -179,6 +179,7 @@ impl PartialEq for Dd {
 }
 
 impl Ring for Dd {
+    type Coords = Vec<Self>;
     fn zero() -> Self {
         Dd::exact(0.0)
     }

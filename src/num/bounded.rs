@@ -244,6 +244,7 @@ impl fmt::Display for BoundedF64 {
 /// Every operation but `zero`, `one` and `is_zero` charges the work meter first
 /// (`blossom::meter` with the feature `meter`, a no-op unless a meter runs).
 impl Ring for BoundedF64 {
+    type Coords = Vec<Self>;
     fn zero() -> Self {
         Self::exact(0.0)
     }

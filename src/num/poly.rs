@@ -702,6 +702,7 @@ fn mul_ref(a: &Poly, b: &Poly) -> Poly {
 }
 
 impl Ring for Poly {
+    type Coords = Vec<Self>;
     fn zero() -> Self {
         Poly::default()
     }

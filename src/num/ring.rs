@@ -34,6 +34,10 @@ pub trait Ring: Clone + PartialEq + Debug {
     /// unrolled functions are not even compiled for the others (the answer is the same bit
     /// for bit either way: the unrolled code runs the engine's steps in the engine's order).
     const UNROLLED: bool = false;
+    /// The buffer a [`crate::BezierCurve`] of this type keeps its coordinates in: a
+    /// [`Vec<Self>`] for every ring but the hardware floats, whose small curves are kept
+    /// inline ([`crate::engine::SmallCoords`]) so that returning a new curve allocates nothing.
+    type Coords: crate::engine::CoordinateBuffer<Self>;
     /// `out` = the control points of the Bézier curve with flat control points `points` (`dim`
     /// numbers per point) over [a, b] by the unrolled evaluators of the types that set
     /// [`Ring::UNROLLED`], or `false` (and `out` untouched) when there is none for this
@@ -118,6 +122,7 @@ macro_rules! float_ring {
         $(#[$doc])*
         impl Ring for $t {
             const UNROLLED: bool = true;
+            type Coords = crate::engine::SmallCoords<Self, 8>;
             #[inline]
             fn restrict_unrolled(points: &[Self], dim: usize, a: &Self, b: &Self, out: &mut [Self]) -> bool {
                 $unrolled(points, dim, a, b, out)
@@ -192,6 +197,7 @@ float_ring!(
 /// Every operation but `zero`, `one` and `is_zero` charges the work meter first
 /// (`blossom::meter` with the feature `meter`, a no-op unless a meter runs).
 impl Ring for Rational {
+    type Coords = Vec<Self>;
     fn zero() -> Self {
         Zero::zero()
     }

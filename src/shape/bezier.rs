@@ -11,6 +11,7 @@
 //! * triangle: b^r_{ijk} = u_r b^{r-1}_{i+1,j,k} + v_r b^{r-1}_{i,j+1,k} + w_r b^{r-1}_{i,j,k+1}
 //!   for barycentric arguments (u_r, v_r, w_r).
 
+use crate::engine::CoordinateBuffer;
 use crate::error::{check_arity, Error, ErrorKind, Result};
 use crate::num::limits::check_entries;
 use crate::shape::flat;
@@ -106,10 +107,37 @@ pub(crate) fn check_triangle_net<T: Clone>(
 /// assert_eq!(out, middle);
 /// # Ok::<(), blossom::Error>(())
 /// ```
-#[derive(Clone, Debug, PartialEq)]
-pub struct BezierCurve<T> {
+pub struct BezierCurve<T: Ring> {
     dim: usize,
-    coords: Vec<T>,
+    /// `Vec<T>`, or for `f64`/`f32` a buffer that keeps up to 8 coordinates inline
+    /// ([`crate::engine::SmallCoords`]): [`Ring::Coords`].
+    coords: T::Coords,
+}
+
+impl<T: Ring> Clone for BezierCurve<T> {
+    fn clone(&self) -> Self {
+        BezierCurve {
+            dim: self.dim,
+            coords: self.coords.clone(),
+        }
+    }
+}
+
+impl<T: Ring> PartialEq for BezierCurve<T> {
+    fn eq(&self, other: &Self) -> bool {
+        self.dim == other.dim && self.coords == other.coords
+    }
+}
+
+/// As a derived `Debug` of `{ dim, coords }` with the coordinates as a slice, whichever
+/// buffer holds them.
+impl<T: Ring> std::fmt::Debug for BezierCurve<T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("BezierCurve")
+            .field("dim", &self.dim)
+            .field("coords", &self.coords.as_slice())
+            .finish()
+    }
 }
 
 impl<T: Ring> BezierCurve<T> {
@@ -121,7 +149,7 @@ impl<T: Ring> BezierCurve<T> {
     /// another dimension than the first.
     pub fn new(control_points: Vec<Point<T>>) -> Result<Self> {
         let (dim, coords) = flatten_points(&control_points, "control_points")?;
-        Ok(BezierCurve { dim, coords })
+        Ok(BezierCurve::from_raw(dim, coords))
     }
 
     /// A curve from the coordinates of its control points, point after point, `dim` each.
@@ -130,22 +158,30 @@ impl<T: Ring> BezierCurve<T> {
     /// `dim` when it is 0, `coordinates` when it is empty or not a whole number of points.
     pub fn from_coordinates(dim: usize, coordinates: Vec<T>) -> Result<Self> {
         check_flat(&coordinates, dim, "coordinates")?;
-        Ok(BezierCurve {
-            dim,
-            coords: coordinates,
-        })
+        Ok(BezierCurve::from_raw(dim, coordinates))
     }
 
     /// The curve with `coords` as they are (`dim >= 1`, a whole number of at least one point:
     /// the caller's guarantee).
     pub(crate) fn from_raw(dim: usize, coords: Vec<T>) -> Self {
         debug_assert!(dim >= 1 && !coords.is_empty() && coords.len().is_multiple_of(dim));
-        BezierCurve { dim, coords }
+        BezierCurve {
+            dim,
+            coords: T::Coords::from_vec(coords),
+        }
+    }
+
+    /// The curve of `len` zero coordinates, `dim` each: the buffer an answer is written into.
+    fn zeros(dim: usize, len: usize) -> Self {
+        BezierCurve {
+            dim,
+            coords: T::Coords::filled(len, T::zero()),
+        }
     }
 
     /// The degree `n`.
     pub fn degree(&self) -> usize {
-        self.coords.len() / self.dim - 1
+        self.coords.as_slice().len() / self.dim - 1
     }
 
     /// The dimension `D` of the points.
@@ -155,22 +191,22 @@ impl<T: Ring> BezierCurve<T> {
 
     /// The control points `w_0, ..., w_n`, each a `&[T]`.
     pub fn control_points(&self) -> Points<'_, T> {
-        Points::new(&self.coords, self.dim)
+        Points::new(self.coords.as_slice(), self.dim)
     }
 
     /// Every coordinate, point after point.
     pub fn coordinates(&self) -> &[T] {
-        &self.coords
+        self.coords.as_slice()
     }
 
     /// Every coordinate, to change in place (the degree and dimension stay).
     pub fn coordinates_mut(&mut self) -> &mut [T] {
-        &mut self.coords
+        self.coords.as_mut_slice()
     }
 
     /// Consumes the curve, returning its coordinates.
     pub fn into_coordinates(self) -> Vec<T> {
-        self.coords
+        self.coords.into_vec()
     }
 
     /// Consumes the curve, returning its control points as nested vectors.
@@ -192,7 +228,7 @@ impl<T: Ring> BezierCurve<T> {
     /// When `out.len()` is not the dimension.
     pub fn eval_into(&self, t: &T, out: &mut [T], level: &mut Vec<T>) {
         assert_eq!(out.len(), self.dim, "out holds one point");
-        flat::curve_eval_into(&self.coords, self.dim, t, out, level);
+        flat::curve_eval_into(self.coords.as_slice(), self.dim, t, out, level);
     }
 
     /// The blossom b[t_1, ..., t_n], eq. (2) of seed 004.
@@ -201,22 +237,19 @@ impl<T: Ring> BezierCurve<T> {
     /// `args` when it does not hold n arguments.
     pub fn blossom(&self, args: &[T]) -> Result<Point<T>> {
         check_arity("args", args.len(), self.degree())?;
-        Ok(flat::curve_blossom(&self.coords, self.dim, args))
+        Ok(flat::curve_blossom(self.coords.as_slice(), self.dim, args))
     }
 
     /// The same curve over `range` = a..b, reparametrised over [0, 1]: control points
     /// b[a^(n-j), b^j], j = 0..=n. Any a, b, also outside [0, 1] or with a > b.
     pub fn subsegment(&self, range: Range<T>) -> Self {
-        let mut out = BezierCurve {
-            dim: self.dim,
-            coords: vec![T::zero(); self.coords.len()],
-        };
+        let mut out = Self::zeros(self.dim, self.coords.as_slice().len());
         flat::curve_subsegment(
-            &self.coords,
+            self.coords.as_slice(),
             self.dim,
             &range.start,
             &range.end,
-            &mut out.coords,
+            out.coords.as_mut_slice(),
             &mut Vec::new(),
         );
         out
@@ -229,8 +262,15 @@ impl<T: Ring> BezierCurve<T> {
     /// scratch at all (the unrolled evaluators of `blossom::restriction!`).
     pub fn subsegment_into(&self, a: &T, b: &T, out: &mut Self, scratch: &mut Vec<T>) {
         out.dim = self.dim;
-        out.coords.resize(self.coords.len(), T::zero());
-        flat::curve_subsegment(&self.coords, self.dim, a, b, &mut out.coords, scratch);
+        out.coords.resize(self.coords.as_slice().len(), T::zero());
+        flat::curve_subsegment(
+            self.coords.as_slice(),
+            self.dim,
+            a,
+            b,
+            out.coords.as_mut_slice(),
+            scratch,
+        );
     }
 
     /// The parts over [0, t] and [t, 1], each over [0, 1], from one de Casteljau pyramid.
@@ -238,11 +278,11 @@ impl<T: Ring> BezierCurve<T> {
         let mut left = self.clone();
         let mut right = self.clone();
         crate::shape::halving::curve_split(
-            &self.coords,
+            self.coords.as_slice(),
             self.dim,
             t,
-            &mut left.coords,
-            &mut right.coords,
+            left.coords.as_mut_slice(),
+            right.coords.as_mut_slice(),
         );
         (left, right)
     }
@@ -251,10 +291,7 @@ impl<T: Ring> BezierCurve<T> {
     /// constant curve, the zero curve of degree 0.
     pub fn deriv(&self) -> Self {
         if self.degree() == 0 {
-            return BezierCurve {
-                dim: self.dim,
-                coords: vec![T::zero(); self.dim],
-            };
+            return Self::zeros(self.dim, self.dim);
         }
         crate::bezier_derivative(self, 1).expect("order 1 <= degree")
     }

@@ -22,7 +22,7 @@ use serde_json::{Map, Value};
 
 /// The Bézier object that answers a [`Job`].
 #[derive(Clone, Debug, PartialEq)]
-pub enum Answer<T> {
+pub enum Answer<T: Ring> {
     /// The answer of a `curve` job.
     Curve(BezierCurve<T>),
     /// The answer of a `tensor` job.

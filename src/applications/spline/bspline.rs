@@ -58,7 +58,7 @@ pub struct BSpline<T> {
         )
     )
 )]
-pub struct BezierPiece<T> {
+pub struct BezierPiece<T: crate::Ring> {
     /// The interval [a, b] of the global parameter.
     pub interval: [T; 2],
     /// The piece's Bézier curve, b_i = f(a^(p-i), b^i).
