@@ -107,11 +107,13 @@ pub(crate) fn check_triangle_net<T: Clone>(
 /// assert_eq!(out, middle);
 /// # Ok::<(), blossom::Error>(())
 /// ```
+#[repr(C)]
 pub struct BezierCurve<T: Ring> {
-    dim: usize,
     /// `Vec<T>`, or for `f64`/`f32` a buffer that keeps up to 8 coordinates inline
-    /// ([`crate::engine::SmallCoords`]): [`Ring::Coords`].
+    /// ([`crate::engine::SmallCoords`]): [`Ring::Coords`]. First, so that the inline numbers
+    /// start the struct (see [`crate::engine::SmallCoords`] on moves of fresh curves).
     coords: T::Coords,
+    dim: usize,
 }
 
 impl<T: Ring> Clone for BezierCurve<T> {
@@ -172,6 +174,7 @@ impl<T: Ring> BezierCurve<T> {
     }
 
     /// The curve of `len` zero coordinates, `dim` each: the buffer an answer is written into.
+    #[inline]
     fn zeros(dim: usize, len: usize) -> Self {
         BezierCurve {
             dim,
@@ -242,6 +245,7 @@ impl<T: Ring> BezierCurve<T> {
 
     /// The same curve over `range` = a..b, reparametrised over [0, 1]: control points
     /// b[a^(n-j), b^j], j = 0..=n. Any a, b, also outside [0, 1] or with a > b.
+    #[inline]
     pub fn subsegment(&self, range: Range<T>) -> Self {
         let mut out = Self::zeros(self.dim, self.coords.as_slice().len());
         flat::curve_subsegment(
@@ -260,6 +264,7 @@ impl<T: Ring> BezierCurve<T> {
     /// [`crate::engine::curve_scratch_len`] on first use. Nothing is allocated once both have
     /// their size; `f64` and `f32` curves of degree up to 24 in dimension up to 4 need no
     /// scratch at all (the unrolled evaluators of `blossom::restriction!`).
+    #[inline]
     pub fn subsegment_into(&self, a: &T, b: &T, out: &mut Self, scratch: &mut Vec<T>) {
         out.dim = self.dim;
         out.coords.resize(self.coords.as_slice().len(), T::zero());

@@ -55,89 +55,110 @@ impl<T: Clone + Debug + PartialEq> CoordinateBuffer<T> for Vec<T> {
 
 /// Up to `N` numbers inline, more on the heap: the coordinate buffer of the float curves.
 ///
+/// The layout is chosen for the way a returned curve is used. The inline numbers come first
+/// and there is no enum tag in front of them, so that when a freshly written curve is moved
+/// (returned, stored in a vector) the move's wide loads line up with the writes of the
+/// answer's points: with a tag first, each move of a just-restricted cubic stalled on store
+/// forwarding for longer than the restriction took (`benches/peers.rs`, group `cubic2d`).
+///
 /// Equality and `Debug` are those of the slice, so a curve compares and prints the same
 /// whichever way its numbers are held.
 #[derive(Clone)]
-pub struct SmallCoords<T: Copy, const N: usize>(Repr<T, N>);
-
-#[derive(Clone)]
-enum Repr<T: Copy, const N: usize> {
-    /// `data[..len]` are the numbers; the rest is filler.
-    Inline {
-        len: u8,
-        data: [T; N],
-    },
-    Heap(Vec<T>),
+#[repr(C)]
+pub struct SmallCoords<T: Copy, const N: usize> {
+    /// `inline[..len]` are the numbers when `len <= N`; the rest is filler.
+    inline: [T; N],
+    len: usize,
+    /// The numbers when `len > N` (then `heap.len() == len`); empty otherwise.
+    heap: Vec<T>,
 }
 
-impl<T: Copy + Debug + PartialEq, const N: usize> CoordinateBuffer<T> for SmallCoords<T, N> {
+impl<T: Copy, const N: usize> SmallCoords<T, N> {
+    /// Whether the numbers are in `inline`.
+    #[inline]
+    fn is_inline(&self) -> bool {
+        self.len <= N
+    }
+}
+
+impl<T: Copy + Default + Debug + PartialEq, const N: usize> CoordinateBuffer<T>
+    for SmallCoords<T, N>
+{
     #[inline]
     fn from_vec(values: Vec<T>) -> Self {
-        match values.first() {
-            Some(&first) if values.len() <= N.min(u8::MAX as usize) => {
-                let mut data = [first; N];
-                data[..values.len()].copy_from_slice(&values);
-                SmallCoords(Repr::Inline {
-                    len: values.len() as u8,
-                    data,
-                })
+        if values.len() <= N {
+            let mut inline = [T::default(); N];
+            inline[..values.len()].copy_from_slice(&values);
+            SmallCoords {
+                inline,
+                len: values.len(),
+                heap: Vec::new(),
             }
-            _ => SmallCoords(Repr::Heap(values)),
+        } else {
+            SmallCoords {
+                inline: [T::default(); N],
+                len: values.len(),
+                heap: values,
+            }
         }
     }
 
     #[inline]
     fn filled(len: usize, value: T) -> Self {
-        if len <= N.min(u8::MAX as usize) {
-            SmallCoords(Repr::Inline {
-                len: len as u8,
-                data: [value; N],
-            })
-        } else {
-            SmallCoords(Repr::Heap(vec![value; len]))
+        SmallCoords {
+            inline: [value; N],
+            len,
+            heap: if len <= N { Vec::new() } else { vec![value; len] },
         }
     }
 
     #[inline]
     fn as_slice(&self) -> &[T] {
-        match &self.0 {
-            Repr::Inline { len, data } => &data[..*len as usize],
-            Repr::Heap(values) => values,
+        if self.is_inline() {
+            &self.inline[..self.len]
+        } else {
+            &self.heap
         }
     }
 
     #[inline]
     fn as_mut_slice(&mut self) -> &mut [T] {
-        match &mut self.0 {
-            Repr::Inline { len, data } => &mut data[..*len as usize],
-            Repr::Heap(values) => values,
+        if self.is_inline() {
+            &mut self.inline[..self.len]
+        } else {
+            &mut self.heap
         }
     }
 
     #[inline]
     fn resize(&mut self, new_len: usize, value: T) {
-        match &mut self.0 {
-            Repr::Inline { len, data } if new_len <= N.min(u8::MAX as usize) => {
-                let old = *len as usize;
-                if new_len > old {
-                    data[old..new_len].fill(value);
+        match (self.is_inline(), new_len <= N) {
+            (true, true) => {
+                if new_len > self.len {
+                    self.inline[self.len..new_len].fill(value);
                 }
-                *len = new_len as u8;
             }
-            Repr::Inline { len, data } => {
+            (true, false) => {
                 let mut values = Vec::with_capacity(new_len);
-                values.extend_from_slice(&data[..*len as usize]);
+                values.extend_from_slice(&self.inline[..self.len]);
                 values.resize(new_len, value);
-                self.0 = Repr::Heap(values);
+                self.heap = values;
             }
-            Repr::Heap(values) => values.resize(new_len, value),
+            (false, true) => {
+                // Shrinking below the limit: `new_len < self.len`.
+                self.inline[..new_len].copy_from_slice(&self.heap[..new_len]);
+                self.heap = Vec::new();
+            }
+            (false, false) => self.heap.resize(new_len, value),
         }
+        self.len = new_len;
     }
 
     fn into_vec(self) -> Vec<T> {
-        match self.0 {
-            Repr::Inline { len, data } => data[..len as usize].to_vec(),
-            Repr::Heap(values) => values,
+        if self.is_inline() {
+            self.inline[..self.len].to_vec()
+        } else {
+            self.heap
         }
     }
 }
@@ -170,7 +191,7 @@ mod tests {
     fn small_coords_behave_as_a_vec() {
         let mut small = SmallCoords::<f64, 4>::from_vec(vec![1.0, 2.0, 3.0]);
         let mut vec = vec![1.0, 2.0, 3.0];
-        assert!(matches!(small.0, Repr::Inline { len: 3, .. }));
+        assert!(small.is_inline() && small.len == 3);
         for (len, value) in [(4, 7.0), (2, 0.0), (6, 5.0), (9, -1.0), (1, 0.0), (3, 8.0)] {
             small.resize(len, value);
             vec.resize(len, value);
@@ -182,13 +203,13 @@ mod tests {
         assert_eq!(format!("{small:?}"), format!("{vec:?}"));
         // Equal contents are equal, inline or not.
         let inline = SmallCoords::<f64, 4>::from_vec(vec.clone());
-        assert!(matches!(inline.0, Repr::Inline { .. }));
-        assert!(matches!(small.0, Repr::Heap(_)));
+        assert!(inline.is_inline());
+        assert!(!small.is_inline());
         assert_eq!(inline, small);
         assert_ne!(inline, SmallCoords::from_vec(vec![42.0, 5.0]));
         // Past the limit the numbers go to the heap, whole.
         let big = SmallCoords::<f64, 4>::filled(5, 1.5);
-        assert!(matches!(big.0, Repr::Heap(_)));
+        assert!(!big.is_inline() && big.heap.len() == 5);
         assert_eq!(big.as_slice(), &[1.5; 5]);
         assert_eq!(
             SmallCoords::<f64, 4>::from_vec(Vec::new()).as_slice(),

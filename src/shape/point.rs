@@ -137,6 +137,7 @@ impl<'a, T> Points<'a, T> {
     }
 
     /// Point `i`, or `None` past the end.
+    #[inline]
     pub fn get(&self, i: usize) -> Option<&'a [T]> {
         let start = i.checked_mul(self.dim)?;
         self.coords.get(start..start.checked_add(self.dim)?)
@@ -189,10 +190,14 @@ impl<T> std::ops::Index<usize> for Points<'_, T> {
     ///
     /// # Panics
     /// When `i >= len()`, as slice indexing does.
+    #[inline]
     fn index(&self, i: usize) -> &[T] {
-        let len = self.len();
-        self.get(i)
-            .unwrap_or_else(|| panic!("point index {i} out of range for {len} points"))
+        // The count (a division) is computed only for the panic message: on the hot path the
+        // bounds check is the slice's own.
+        match self.get(i) {
+            Some(point) => point,
+            None => panic!("point index {i} out of range for {} points", self.len()),
+        }
     }
 }
 
