@@ -55,6 +55,15 @@ pub trait Ring: Clone + PartialEq + Debug {
         let _ = (points, dim, a, b, out);
         false
     }
+    /// The coordinate buffer of the curve `points` (`dim` numbers per point) over [a, b], as
+    /// [`Ring::restrict_unrolled`] computes it, built where it is returned: for `f64` and
+    /// `f32` curves of at most 8 coordinates (a planar cubic), whose answer lives inline in
+    /// the returned curve; `None` otherwise (the default), and the caller restricts into a
+    /// buffer of its own. Same answer bit for bit either way.
+    fn subsegment_buffer(points: &[Self], dim: usize, a: &Self, b: &Self) -> Option<Self::Coords> {
+        let _ = (points, dim, a, b);
+        None
+    }
     /// The additive identity.
     fn zero() -> Self;
     /// The multiplicative identity.
@@ -118,7 +127,7 @@ pub fn rational_to_f64(k: &Rational) -> f64 {
 }
 
 macro_rules! float_ring {
-    ($(#[$doc:meta])* $t:ty => $unrolled:path) => {
+    ($(#[$doc:meta])* $t:ty => $unrolled:path, $small:path) => {
         $(#[$doc])*
         impl Ring for $t {
             const UNROLLED: bool = true;
@@ -126,6 +135,10 @@ macro_rules! float_ring {
             #[inline]
             fn restrict_unrolled(points: &[Self], dim: usize, a: &Self, b: &Self, out: &mut [Self]) -> bool {
                 $unrolled(points, dim, a, b, out)
+            }
+            #[inline]
+            fn subsegment_buffer(points: &[Self], dim: usize, a: &Self, b: &Self) -> Option<Self::Coords> {
+                $small(points, dim, a, b)
             }
             #[inline]
             fn zero() -> Self {
@@ -179,7 +192,7 @@ float_ring!(
     /// Doubles: every operation rounded once (`scale` multiplies by the constant rounded to
     /// the nearest double). `docs/accuracy.md` and `docs/error_bounds.md` give
     /// the measured errors of every method.
-    f64 => crate::shape::unrolled::restrict_f64
+    f64 => crate::shape::unrolled::restrict_f64, crate::shape::unrolled::small_f64
 );
 float_ring!(
     /// Single precision: every operation rounded once, with unit roundoff u = 2^-24 ≈ 6.0e-8
@@ -191,7 +204,7 @@ float_ring!(
     /// `tests/suite/applications/f32_accuracy.rs`; the measured table is in `docs/error_bounds.md`,
     /// section "f32", printed by
     /// `cargo test -p blossom --test suite f32_restriction -- --nocapture`).
-    f32 => crate::shape::unrolled::restrict_f32
+    f32 => crate::shape::unrolled::restrict_f32, crate::shape::unrolled::small_f32
 );
 
 /// Every operation but `zero`, `one` and `is_zero` charges the work meter first

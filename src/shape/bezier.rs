@@ -247,6 +247,16 @@ impl<T: Ring> BezierCurve<T> {
     /// b[a^(n-j), b^j], j = 0..=n. Any a, b, also outside [0, 1] or with a > b.
     #[inline]
     pub fn subsegment(&self, range: Range<T>) -> Self {
+        if T::UNROLLED {
+            if let Some(coords) =
+                T::subsegment_buffer(self.coords.as_slice(), self.dim, &range.start, &range.end)
+            {
+                return BezierCurve {
+                    coords,
+                    dim: self.dim,
+                };
+            }
+        }
         let mut out = Self::zeros(self.dim, self.coords.as_slice().len());
         flat::curve_subsegment(
             self.coords.as_slice(),

@@ -74,6 +74,17 @@ pub struct SmallCoords<T: Copy, const N: usize> {
 }
 
 impl<T: Copy, const N: usize> SmallCoords<T, N> {
+    /// The buffer holding `inline[..len]` (`len <= N`).
+    #[inline]
+    pub(crate) fn from_inline(inline: [T; N], len: usize) -> Self {
+        debug_assert!(len <= N);
+        SmallCoords {
+            inline,
+            len,
+            heap: Vec::new(),
+        }
+    }
+
     /// Whether the numbers are in `inline`.
     #[inline]
     fn is_inline(&self) -> bool {
@@ -108,7 +119,11 @@ impl<T: Copy + Default + Debug + PartialEq, const N: usize> CoordinateBuffer<T>
         SmallCoords {
             inline: [value; N],
             len,
-            heap: if len <= N { Vec::new() } else { vec![value; len] },
+            heap: if len <= N {
+                Vec::new()
+            } else {
+                vec![value; len]
+            },
         }
     }
 

@@ -85,3 +85,44 @@ pub(crate) fn restrict_f64(points: &[f64], dim: usize, a: &f64, b: &f64, out: &m
 pub(crate) fn restrict_f32(points: &[f32], dim: usize, a: &f32, b: &f32, out: &mut [f32]) -> bool {
     restrict_flat(points, dim, a, b, out)
 }
+
+/// The restriction of a small curve (at most `N` coordinates) by [`restrict_flat`], as the
+/// inline buffer a returned curve holds ([`crate::engine::SmallCoords`]); `None` for larger
+/// curves and when there is no unrolled evaluator.
+#[inline]
+fn small<T: crate::Ring + Copy + Default, const N: usize>(
+    points: &[T],
+    dim: usize,
+    a: &T,
+    b: &T,
+) -> Option<crate::engine::SmallCoords<T, N>> {
+    let len = points.len();
+    if len > N {
+        return None;
+    }
+    let mut inline = [T::default(); N];
+    restrict_flat(points, dim, a, b, &mut inline[..len])
+        .then(|| crate::engine::SmallCoords::from_inline(inline, len))
+}
+
+/// [`small`] in `f64` for [`crate::Ring::subsegment_buffer`], compiled in this crate only.
+#[inline(never)]
+pub(crate) fn small_f64(
+    points: &[f64],
+    dim: usize,
+    a: &f64,
+    b: &f64,
+) -> Option<crate::engine::SmallCoords<f64, 8>> {
+    small(points, dim, a, b)
+}
+
+/// [`small`] in `f32` for [`crate::Ring::subsegment_buffer`], compiled in this crate only.
+#[inline(never)]
+pub(crate) fn small_f32(
+    points: &[f32],
+    dim: usize,
+    a: &f32,
+    b: &f32,
+) -> Option<crate::engine::SmallCoords<f32, 8>> {
+    small(points, dim, a, b)
+}
