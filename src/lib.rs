@@ -238,7 +238,7 @@ pub mod engine {
         taylor_shift_flat, tensor_bernstein_to_power, triangle_bernstein_by_horner,
         triangle_bernstein_to_power, triangle_power_to_bernstein,
     };
-    pub use crate::shape::coords::{CoordinateBuffer, SmallCoords};
+    pub use crate::shape::coords::{CoordinateBuffer, SmallCoords, INLINE_COORDINATES};
     pub use crate::shape::halving::{
         curve_net, curve_scratch_len, tensor_net, tensor_scratch_len, triangle_net,
         triangle_scratch_len, BernsteinPairStep, BernsteinPairVectorStep, BernsteinStep,

@@ -37,6 +37,7 @@ pub trait Ring: Clone + PartialEq + Debug {
     /// The buffer a [`crate::BezierCurve`] of this type keeps its coordinates in: a
     /// [`Vec<Self>`] for every ring but the hardware floats, whose small curves are kept
     /// inline ([`crate::engine::SmallCoords`]) so that returning a new curve allocates nothing.
+    /// A ring defined outside this crate sets `type Coords = Vec<Self>;`.
     type Coords: crate::engine::CoordinateBuffer<Self>;
     /// `out` = the control points of the Bézier curve with flat control points `points` (`dim`
     /// numbers per point) over [a, b] by the unrolled evaluators of the types that set
@@ -55,12 +56,17 @@ pub trait Ring: Clone + PartialEq + Debug {
         let _ = (points, dim, a, b, out);
         false
     }
-    /// The coordinate buffer of the curve `points` (`dim` numbers per point) over [a, b], as
+    /// The curve `points` (`dim` numbers per point) over [a, b], as
     /// [`Ring::restrict_unrolled`] computes it, built where it is returned: for `f64` and
     /// `f32` curves of at most 8 coordinates (a planar cubic), whose answer lives inline in
     /// the returned curve; `None` otherwise (the default), and the caller restricts into a
     /// buffer of its own. Same answer bit for bit either way.
-    fn subsegment_buffer(points: &[Self], dim: usize, a: &Self, b: &Self) -> Option<Self::Coords> {
+    fn subsegment_small(
+        points: &[Self],
+        dim: usize,
+        a: &Self,
+        b: &Self,
+    ) -> Option<crate::BezierCurve<Self>> {
         let _ = (points, dim, a, b);
         None
     }
@@ -131,13 +137,13 @@ macro_rules! float_ring {
         $(#[$doc])*
         impl Ring for $t {
             const UNROLLED: bool = true;
-            type Coords = crate::engine::SmallCoords<Self, 8>;
+            type Coords = crate::engine::SmallCoords<Self, { crate::engine::INLINE_COORDINATES }>;
             #[inline]
             fn restrict_unrolled(points: &[Self], dim: usize, a: &Self, b: &Self, out: &mut [Self]) -> bool {
                 $unrolled(points, dim, a, b, out)
             }
             #[inline]
-            fn subsegment_buffer(points: &[Self], dim: usize, a: &Self, b: &Self) -> Option<Self::Coords> {
+            fn subsegment_small(points: &[Self], dim: usize, a: &Self, b: &Self) -> Option<crate::BezierCurve<Self>> {
                 $small(points, dim, a, b)
             }
             #[inline]

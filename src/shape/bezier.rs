@@ -173,6 +173,13 @@ impl<T: Ring> BezierCurve<T> {
         }
     }
 
+    /// The curve with the coordinate buffer `coords` (`dim >= 1`, a whole number of at least
+    /// one point: the caller's guarantee).
+    #[inline]
+    pub(crate) fn from_buffer(dim: usize, coords: T::Coords) -> Self {
+        BezierCurve { coords, dim }
+    }
+
     /// The curve of `len` zero coordinates, `dim` each: the buffer an answer is written into.
     #[inline]
     fn zeros(dim: usize, len: usize) -> Self {
@@ -248,13 +255,10 @@ impl<T: Ring> BezierCurve<T> {
     #[inline]
     pub fn subsegment(&self, range: Range<T>) -> Self {
         if T::UNROLLED {
-            if let Some(coords) =
-                T::subsegment_buffer(self.coords.as_slice(), self.dim, &range.start, &range.end)
+            if let Some(curve) =
+                T::subsegment_small(self.coords.as_slice(), self.dim, &range.start, &range.end)
             {
-                return BezierCurve {
-                    coords,
-                    dim: self.dim,
-                };
+                return curve;
             }
         }
         let mut out = Self::zeros(self.dim, self.coords.as_slice().len());

@@ -86,43 +86,46 @@ pub(crate) fn restrict_f32(points: &[f32], dim: usize, a: &f32, b: &f32, out: &m
     restrict_flat(points, dim, a, b, out)
 }
 
-/// The restriction of a small curve (at most `N` coordinates) by [`restrict_flat`], as the
-/// inline buffer a returned curve holds ([`crate::engine::SmallCoords`]); `None` for larger
-/// curves and when there is no unrolled evaluator.
+/// The curve `points` over [a, b] by [`restrict_flat`] as a curve whose numbers are inline
+/// ([`crate::engine::SmallCoords`]), when it has at most `N` coordinates and an unrolled
+/// evaluator; `None` otherwise.
+///
+/// The curve is built first and its numbers written last: a move of a curve whose length and
+/// dimension were just stored stalls on store forwarding for longer than the restriction of a
+/// cubic takes (measured in `benches/peers.rs`, group `cubic2d`), and the caller moves it.
 #[inline]
-fn small<T: crate::Ring + Copy + Default, const N: usize>(
-    points: &[T],
-    dim: usize,
-    a: &T,
-    b: &T,
-) -> Option<crate::engine::SmallCoords<T, N>> {
-    let len = points.len();
-    if len > N {
+fn small<T, const N: usize>(points: &[T], dim: usize, a: &T, b: &T) -> Option<crate::BezierCurve<T>>
+where
+    T: crate::Ring<Coords = crate::engine::SmallCoords<T, N>> + Copy + Default,
+{
+    if points.len() > N {
         return None;
     }
-    let mut inline = [T::default(); N];
-    restrict_flat(points, dim, a, b, &mut inline[..len])
-        .then(|| crate::engine::SmallCoords::from_inline(inline, len))
+    let mut curve = crate::BezierCurve::from_buffer(
+        dim,
+        crate::engine::SmallCoords::from_inline([T::default(); N], points.len()),
+    );
+    restrict_flat(points, dim, a, b, curve.coordinates_mut()).then_some(curve)
 }
 
-/// [`small`] in `f64` for [`crate::Ring::subsegment_buffer`], compiled in this crate only.
+/// [`small`] in `f64` for [`crate::Ring::subsegment_small`], compiled in this crate only.
 #[inline(never)]
 pub(crate) fn small_f64(
     points: &[f64],
     dim: usize,
     a: &f64,
     b: &f64,
-) -> Option<crate::engine::SmallCoords<f64, 8>> {
+) -> Option<crate::BezierCurve<f64>> {
     small(points, dim, a, b)
 }
 
-/// [`small`] in `f32` for [`crate::Ring::subsegment_buffer`], compiled in this crate only.
+/// [`small`] in `f32` for [`crate::Ring::subsegment_small`], compiled in this crate only.
 #[inline(never)]
 pub(crate) fn small_f32(
     points: &[f32],
     dim: usize,
     a: &f32,
     b: &f32,
-) -> Option<crate::engine::SmallCoords<f32, 8>> {
+) -> Option<crate::BezierCurve<f32>> {
     small(points, dim, a, b)
 }
