@@ -332,6 +332,14 @@ impl<T: Ring> BezierCurve<T> {
     }
 }
 
+#[cfg(test)]
+impl BezierCurve<f64> {
+    /// Whether the coordinates are held inline, for the tests of that path.
+    pub(crate) fn coords_are_inline(&self) -> bool {
+        self.coords.is_inline()
+    }
+}
+
 /// A tensor-product Bézier patch sum_{nu, mu} p_{nu mu} B_nu^n(s) B_mu^m(t) over [0, 1]^2, its
 /// control points in one buffer, row by row (point (ν, μ) at position ν (m + 1) + μ).
 #[derive(Clone, Debug, PartialEq)]

@@ -90,7 +90,7 @@ impl<T: Copy, const N: usize> SmallCoords<T, N> {
 
     /// Whether the numbers are in `inline`.
     #[inline]
-    fn is_inline(&self) -> bool {
+    pub(crate) fn is_inline(&self) -> bool {
         self.len <= N
     }
 }
@@ -219,12 +219,20 @@ mod tests {
         vec[0] = 42.0;
         assert_eq!(small.clone().into_vec(), vec);
         assert_eq!(format!("{small:?}"), format!("{vec:?}"));
-        // Equal contents are equal, inline or not.
-        let inline = SmallCoords::<f64, 4>::from_vec(vec.clone());
-        assert!(inline.is_inline());
-        assert!(!small.is_inline());
-        assert_eq!(inline, small);
-        assert_ne!(inline, SmallCoords::from_vec(vec![42.0, 5.0]));
+        // Shrunk below the limit, the numbers are back inline and the heap is freed.
+        assert!(small.is_inline() && small.heap.capacity() == 0);
+        // Equal contents are equal, inline or not; a grown-then-shrunk heap buffer keeps
+        // only its first numbers.
+        let mut heap = SmallCoords::<f64, 4>::from_vec(vec![42.0, 8.0, 8.0, 1.0, 2.0]);
+        assert!(!heap.is_inline());
+        heap.resize(3, 0.0);
+        assert!(heap.is_inline());
+        assert_eq!(heap, small);
+        let mut grown = SmallCoords::<f64, 4>::from_vec(vec![42.0]);
+        grown.resize(3, 5.0);
+        assert_ne!(grown, small);
+        grown.as_mut_slice()[1..].fill(8.0);
+        assert_eq!(grown, small);
         // Past the limit the numbers go to the heap, whole.
         let big = SmallCoords::<f64, 4>::filled(5, 1.5);
         assert!(!big.is_inline() && big.heap.len() == 5);

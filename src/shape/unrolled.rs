@@ -129,3 +129,49 @@ pub(crate) fn small_f32(
 ) -> Option<crate::BezierCurve<f32>> {
     small(points, dim, a, b)
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::engine::{curve_net, BernsteinStep};
+    use crate::test_rng::XorShift;
+    use crate::BezierCurve;
+
+    /// `BezierCurve::subsegment` of float curves (inline answers up to 8 coordinates through
+    /// [`super::small_f64`], heap answers through the flat path) gives, bit for bit, the
+    /// control points of the halving engine run with a runtime width (no unrolled code), and
+    /// the same as `subsegment_into`; in every dimension 1..=6 and degree 0..=9, so across
+    /// the inline limit, the degree 0 (no unrolled evaluator) and dimensions above 4.
+    #[test]
+    fn returned_subsegments_are_the_engines_bit_for_bit() {
+        let mut rng = XorShift(0x5eed_cafe);
+        let mut unit = || (rng.next() >> 11) as f64 / (1u64 << 53) as f64 * 4.0 - 2.0;
+        let mut inline_answers = 0;
+        for dim in 1..=6 {
+            for degree in 0..=9 {
+                let coords: Vec<f64> = (0..(degree + 1) * dim).map(|_| unit()).collect();
+                let curve = BezierCurve::from_coordinates(dim, coords.clone()).expect("a curve");
+                let (a, b) = (unit(), unit());
+                let got = curve.subsegment(a..b);
+                let mut want = vec![0.0; coords.len()];
+                let (step_a, step_b) = (BernsteinStep(&a), BernsteinStep(&b));
+                curve_net(&coords, dim, &step_a, &step_b, &mut want, &mut Vec::new());
+                assert_eq!(got.coordinates(), &want[..], "dim {dim}, degree {degree}");
+                assert_eq!((got.dim(), got.degree()), (dim, degree));
+                let mut into = BezierCurve::from_coordinates(1, vec![9.0; 30]).expect("a curve");
+                curve.subsegment_into(&a, &b, &mut into, &mut Vec::new());
+                assert_eq!(into, got, "subsegment_into, dim {dim}, degree {degree}");
+                inline_answers += usize::from(got.coords_are_inline());
+                // The f32 curve goes the same way.
+                let narrow: Vec<f32> = coords.iter().map(|&x| x as f32).collect();
+                let curve32 = BezierCurve::from_coordinates(dim, narrow.clone()).expect("a curve");
+                let (a32, b32) = (a as f32, b as f32);
+                let mut want32 = vec![0.0f32; narrow.len()];
+                let (s_a, s_b) = (BernsteinStep(&a32), BernsteinStep(&b32));
+                curve_net(&narrow, dim, &s_a, &s_b, &mut want32, &mut Vec::new());
+                assert_eq!(curve32.subsegment(a32..b32).coordinates(), &want32[..]);
+            }
+        }
+        // Every (dim, degree) with (degree + 1) dim <= 8: 8 + 4 + 2 + 2 + 1 + 1.
+        assert_eq!(inline_answers, 18);
+    }
+}
