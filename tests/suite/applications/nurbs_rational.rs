@@ -5,8 +5,8 @@
 use super::json::Json;
 use crate::common::{q, Rng};
 use blossom::{
-    elevate, BSpline, BezierCurve, ErrorKind, Rational, RationalBSpline, RationalCurve,
-    RationalPowerTriangle, RationalSurface, Ring,
+    elevate, BSpline, ErrorKind, Rational, RationalBSpline, RationalCurve, RationalPowerTriangle,
+    RationalSurface, Ring,
 };
 
 /// A denominator without zeros on [-1, 1]: c_0 = 5 and small other coefficients.
