@@ -24,7 +24,7 @@ use std::ops::Range;
 /// use blossom::RationalBezierCurve;
 /// // The quarter circle: (1, 0), (1, 1), (0, 1) with weights 1, 1, 2.
 /// let arc = RationalBezierCurve::from_coordinates(2, vec![1.0, 0.0, 1.0, 1.0, 0.0, 1.0], vec![1.0, 1.0, 2.0])?;
-/// let (mut x, mut scratch) = ([0.0; 2], Vec::new());
+/// let (mut x, mut scratch) = ([0.0_f64; 2], Vec::new());
 /// arc.eval_into(&0.5, &mut x, &mut scratch)?;
 /// assert!((x[0].hypot(x[1]) - 1.0).abs() < 1e-15);
 /// let half = arc.subsegment(0.0..0.5)?;

@@ -35,10 +35,11 @@ pub(crate) fn triangle_entry(n: usize, k: usize) -> (usize, usize) {
 ///
 /// ```
 /// use blossom::RationalTriangularPatch;
-/// // Degree 1: the corners 1, 2, 4 with weights 1, 1, 2 (ν = 1, μ = 1, λ = 1 in that order).
+/// // Degree 1: the values 1, 2, 4 at the corners a, b, c with weights 1, 1, 2, stored in
+/// // lexicographic order of (ν, μ): (0, 0) is c, (0, 1) is b, (1, 0) is a.
 /// let p = RationalTriangularPatch::from_coordinates(1, 1, vec![4.0, 2.0, 1.0], vec![2.0, 1.0, 1.0])?;
 /// // At the centre: (4 * 2 + 2 + 1) / (2 + 1 + 1).
-/// let third = 1.0 / 3.0;
+/// let third = 1.0_f64 / 3.0;
 /// assert!((p.eval(&[third, third]).unwrap()[0] - 11.0 / 4.0).abs() < 1e-15);
 /// # Ok::<(), blossom::Error>(())
 /// ```
