@@ -154,8 +154,8 @@ fn circle_arc_of_seed_004() {
     let s = |v: &[Rational]| Json::strings(v);
     insta::with_settings!({snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"), prepend_module_to_snapshot => false}, {
         insta::assert_snapshot!("nurbs_circle_arc", Json::object([
-            ("quadratic", Json::object([("points", Json::array(quad.points().iter().map(|p| s(p)))), ("weights", s(quad.weights()))])),
-            ("quartic", Json::object([("points", Json::array(quartic.points().iter().map(|p| s(p)))), ("weights", s(quartic.weights()))])),
+            ("quadratic", Json::object([("points", Json::array(quad.points().iter().map(&s))), ("weights", s(quad.weights()))])),
+            ("quartic", Json::object([("points", Json::array(quartic.points().iter().map(&s))), ("weights", s(quartic.weights()))])),
         ]).pretty());
     });
 }

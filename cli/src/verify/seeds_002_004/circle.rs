@@ -135,7 +135,7 @@ fn section(
             "{{{}}}",
             unit.points()
                 .iter()
-                .map(|p| show(p))
+                .map(show)
                 .collect::<Vec<_>>()
                 .join(", ")
         ),
