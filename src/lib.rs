@@ -76,9 +76,8 @@
 //!   invalid value. [`Rational`] is written as num-rational writes it, `[numerator,
 //!   denominator]` of num-bigint integers `[sign, [u32 digits]]` (1/3 is
 //!   `[[1, [1]], [1, [3]]]`): the feature turns on the `serde` features of num-rational and
-//!   num-bigint for that. The rational Bézier patches that only restriction produces
-//!   ([`RationalTensorPatch`], [`RationalTriangularPatch`], [`RationalBezierCell`]) are written
-//!   but not read: they have no public constructor to check a document against.
+//!   num-bigint for that. [`RationalBezierCell`], a result with public fields, is written but
+//!   not read.
 //!
 //! * `meter` (no dependency): `blossom::meter`, a thread-local budget of work units that the
 //!   arithmetic of [`Rational`] and [`BoundedF64`] charges as it computes, and

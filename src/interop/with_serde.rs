@@ -21,8 +21,8 @@
 //! | [`BSplineSurface`] | `{degree, u_knots, v_knots, control_points}` | `new` |
 //! | [`RationalCurve`], [`RationalSurface`], [`RationalPowerTriangle`] | `{numerator, denominator}` | `new` |
 //! | [`RationalBezierCurve`] | `{points, weights}` | `new` |
+//! | [`RationalTensorPatch`], [`RationalTriangularPatch`] | `{points, weights}` (rows `[ν][μ]`), `{degree, points, weights}` | `new` |
 //! | [`RationalBSpline`], [`RationalBSplineSurface`] | `{degree, knots, points, weights}`, `{degree, u_knots, v_knots, points, weights}` | `new` |
-//! | [`RationalTensorPatch`], [`RationalTriangularPatch`] | `{points, weights}`, `{degree, points, weights}` | written only: they are results, with no public constructor to check a document against |
 //!
 //! The structs with public fields ([`Piece`](crate::Piece), [`PowerPiece`](crate::PowerPiece),
 //! [`BezierPiece`](crate::BezierPiece), [`SurfacePiece`](crate::SurfacePiece),
@@ -44,7 +44,7 @@
 //! num-rational refuses a zero denominator and keeps a fraction as written (`[2, 4]` is read
 //! as the unreduced 2/4, equal to 1/2 and reduced by the first arithmetic on it).
 
-use crate::applications::rational::divide_point;
+use crate::applications::rational::homogeneous::divide_point;
 use crate::error::{Error, ErrorKind, Result};
 use crate::num::limits::{check_entries, checked_product};
 use crate::num::linalg::Field;
@@ -189,21 +189,6 @@ macro_rules! through_constructor {
             ) -> std::result::Result<Self, De::Error> {
                 let $doc = <$doc_ty>::deserialize(deserializer)?;
                 checked(|| $read).map_err(De::Error::custom)
-            }
-        }
-    };
-}
-
-/// `Serialize` only, for results without a public constructor.
-macro_rules! written_only {
-    ($ty:ident<T: $bound:ident>, |$this:ident| $write:expr) => {
-        impl<T: $bound + Serialize> Serialize for $ty<T> {
-            fn serialize<S: Serializer>(
-                &self,
-                serializer: S,
-            ) -> std::result::Result<S::Ok, S::Error> {
-                let $this = self;
-                $write.serialize(serializer)
             }
         }
     };
@@ -465,25 +450,33 @@ through_constructor!(
     }
 );
 
-written_only!(
+through_constructor!(
     RationalTensorPatch<T: Field>,
-    |p| Weighted { points: p.points(), weights: p.weights() }
+    |p| Weighted {
+        points: p.rows().collect::<Vec<_>>(),
+        weights: p.weight_rows().collect::<Vec<_>>()
+    },
+    |doc: Weighted<Vec<Vec<Point<T>>>, Vec<Vec<T>>>| RationalTensorPatch::new(doc.points, doc.weights)
 );
 
-written_only!(
+through_constructor!(
     RationalTriangularPatch<T: Field>,
-    |p| DegreeWeighted { degree: p.degree(), points: p.points(), weights: p.weights() }
+    |p| DegreeWeighted { degree: p.degree(), points: p.points(), weights: p.weights() },
+    |doc: DegreeWeighted<usize, Vec<Point<T>>, Vec<T>>| {
+        RationalTriangularPatch::new(doc.degree, doc.points, doc.weights)
+    }
 );
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::applications::rational::lift;
+    use crate::applications::rational::homogeneous::lift_all_into;
 
     #[test]
     fn homogeneous_points_split_into_numerator_and_weight() {
         assert_eq!(split(&[1.0, 2.0, 4.0]), (vec![1.0, 2.0], 4.0));
-        let lifted = lift(&[1.0, 2.0], &4.0);
+        let mut lifted = Vec::new();
+        lift_all_into(&[1.0, 2.0], 2, &[4.0], &mut lifted);
         assert_eq!(
             project_all(FlatPoints::new(&lifted, 3)),
             (vec![vec![1.0, 2.0]], vec![4.0])

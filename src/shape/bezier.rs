@@ -717,13 +717,6 @@ pub fn bezier_curve_blossom<T: Ring>(control: &[Point<T>], args: &[T]) -> Result
     Ok(flat::curve_blossom(&coords, dim, args))
 }
 
-/// [`bezier_curve_blossom`] on input known to fit: a non-empty polygon of one dimension and
-/// `args.len() + 1 == control.len()`.
-pub(crate) fn curve_blossom_unchecked<T: Ring>(control: &[Point<T>], args: &[T]) -> Point<T> {
-    debug_assert_eq!(args.len() + 1, control.len());
-    flat::curve_blossom(&control.concat(), control[0].len(), args)
-}
-
 /// The blossom b[u_1..u_n; v_1..v_m] of the tensor patch with net `net[nu][mu]`, in two passes
 /// (eq. (9) of seed 004): along v for every row, then along u.
 ///

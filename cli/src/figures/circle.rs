@@ -35,14 +35,14 @@ pub fn arc_bezier(n: usize) -> Result<RationalBezierCurve<Rational>, Error> {
 pub fn figure(file: &'static str, n: usize) -> Result<Figure, Error> {
     let exact = arc_bezier(n)?;
     let fast = RationalBezierCurve::new(
-        exact.points().iter().map(|p| to_f64(p)).collect(),
+        exact.points().iter().map(to_f64).collect(),
         exact.weights().iter().map(rational_to_f64).collect(),
     )?;
     let curve = sample(0.0, 1.0, SAMPLES, |s| fast.eval(&s).map(|p| point3_f64(&p)));
     let circle = sample(0.0, std::f64::consts::FRAC_PI_2, SAMPLES, |a| {
         Some([a.cos(), a.sin(), 0.0])
     });
-    let polygon: Vec<Point3> = exact.points().iter().map(|p| point3(p)).collect();
+    let polygon: Vec<Point3> = exact.points().iter().map(point3).collect();
     let mut layers = curve_against_reference(circle, curve, polygon.clone());
     layers.extend([Layer::Labels {
         items: polygon

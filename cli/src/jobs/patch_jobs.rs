@@ -84,11 +84,10 @@ pub fn solve<T: JsonNumber + Field>(
             let (patch, degree) = rational_tensor_exact(&exact_spelling::<T>(job))?;
             out.insert("degree".into(), Value::from(vec![degree.0, degree.1]));
             let points: Vec<Vec<Point<T>>> = patch
-                .points()
-                .iter()
+                .rows()
                 .map(|row| row.iter().map(|p| rounded(p)).collect())
                 .collect();
-            let weights: Vec<Vec<T>> = patch.weights().iter().map(|row| rounded(row)).collect();
+            let weights: Vec<Vec<T>> = patch.weight_rows().map(|row| rounded(row)).collect();
             check_rounded_weights(weights.iter().enumerate().flat_map(|(i, row)| {
                 row.iter()
                     .enumerate()

@@ -113,7 +113,8 @@ fn tensor_section(
             lie += usize::from((on.1)(&got));
         }
     }
-    let weights_positive = patch.weights().iter().flatten().all(|w| *w > r(0));
+    let weights_positive = patch.weights().iter().all(|w| *w > r(0));
+    let (points, weights) = patch.to_nested();
     let (n, m) = s.degree();
     let entries = vec![
         entry(
@@ -147,7 +148,7 @@ fn tensor_section(
         vec![
             format!(
                 "RationalSurface::tensor on [0, 1]^2 at bidegree ({n}, {m}): control points and weights [nu][mu] = {}",
-                net_text(patch.points(), patch.weights())
+                net_text(&points, &weights)
             ),
             "the parametrisation is written out with (1 - u^2)/(1 + u^2), 2u/(1 + u^2), not evaluated by the library".into(),
         ],

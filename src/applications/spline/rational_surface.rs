@@ -11,7 +11,8 @@
 
 use super::bspline::wrong_out;
 use super::surface::BSplineSurface;
-use crate::applications::rational::{divide_point, project_into, push_lifted, RationalTensorPatch};
+use crate::applications::rational::homogeneous::{divide_point, project_into, push_lifted};
+use crate::applications::rational::RationalTensorPatch;
 use crate::error::{Error, ErrorKind, Result};
 use crate::num::linalg::Field;
 use crate::shape::bezier::TensorPatch;
@@ -242,11 +243,7 @@ impl<T: Field> RationalBSplineSurface<T> {
                 let [a, b, c, d] = &cell.rect;
                 let context = format!(" of the cell [{a}, {b}] x [{c}, {d}]");
                 Ok(RationalBezierCell {
-                    patch: RationalTensorPatch::from_homogeneous(
-                        cell.patch.into_control_points(),
-                        "weights",
-                        &context,
-                    )?,
+                    patch: RationalTensorPatch::from_homogeneous(cell.patch, "weights", &context)?,
                     rect: cell.rect,
                 })
             })

@@ -223,7 +223,8 @@ mod serde_documents {
         bspline_from_pieces, BSpline, BSplineSurface, Bezier, BezierCurve, BezierTensor,
         BezierTriangle, KnotVector, Piece, PowerCurve, PowerSurface, PowerTriangle, Rational,
         RationalBSpline, RationalBSplineSurface, RationalBezierCurve, RationalCurve,
-        RationalPowerTriangle, RationalSurface, TensorPatch, TriangularPatch,
+        RationalPowerTriangle, RationalSurface, RationalTensorPatch, RationalTriangularPatch,
+        TensorPatch, TriangularPatch,
     };
     use serde::de::DeserializeOwned;
     use serde::Serialize;
@@ -374,6 +375,33 @@ mod serde_documents {
         round_trip(
             &RationalBezierCurve::new(r(&[(1, 1), (2, 2)]), vec![q(1, 2), q(3, 1)]).unwrap(),
         );
+        // The rational patches: rows [nu][mu] of points and of weights; lexicographic lists.
+        let patch = RationalTensorPatch::from_coordinates(
+            (1, 0),
+            2,
+            vec![1.0, 2.0, 3.0, 4.0],
+            vec![0.5, 2.0],
+        )
+        .unwrap();
+        assert_eq!(
+            round_trip(&patch),
+            r#"{"points":[[[1.0,2.0]],[[3.0,4.0]]],"weights":[[0.5],[2.0]]}"#
+        );
+        let tri = RationalTriangularPatch::from_coordinates(
+            1,
+            1,
+            vec![1.0, 2.0, 3.0],
+            vec![1.0, 2.0, 4.0],
+        )
+        .unwrap();
+        assert_eq!(
+            round_trip(&tri),
+            r#"{"degree":1,"points":[[1.0],[2.0],[3.0]],"weights":[1.0,2.0,4.0]}"#
+        );
+        round_trip(
+            &rs.tensor(&[q(0, 1), q(1, 1), q(0, 1), q(1, 1)], None)
+                .unwrap(),
+        );
 
         // NURBS: exact numbers come back exactly; weights that are powers of two, exactly in
         // floating point too.
@@ -471,6 +499,24 @@ mod serde_documents {
         );
         let e = refused::<RationalBezierCurve<f64>>(r#"{"points":[[0.0],[1.0]],"weights":[1.0]}"#);
         assert!(e.starts_with("weights: expected 2 weights, found 1"), "{e}");
+        let e = refused::<RationalBezierCurve<f64>>(
+            r#"{"points":[[0.0],[1.0, 2.0]],"weights":[1.0,1.0]}"#,
+        );
+        assert!(e.starts_with("points[1]: expected 1 coordinates"), "{e}");
+        let e = refused::<RationalTensorPatch<f64>>(
+            r#"{"points":[[[0.0]],[[1.0]]],"weights":[[1.0],[1.0,2.0]]}"#,
+        );
+        assert!(
+            e.starts_with("weights[1]: expected 1 weights, found 2"),
+            "{e}"
+        );
+        let e = refused::<RationalTriangularPatch<f64>>(
+            r#"{"degree":1,"points":[[0.0],[1.0]],"weights":[1.0,1.0,1.0]}"#,
+        );
+        assert!(
+            e.starts_with("points: a triangular patch of degree 1 has 3 points"),
+            "{e}"
+        );
         let e = refused::<RationalBSpline<f64>>(
             r#"{"degree":1,"knots":[0.0,0.0,1.0,1.0],"points":[[0.0],[1.0]],"weights":[1.0,0.0]}"#,
         );

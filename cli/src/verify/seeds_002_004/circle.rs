@@ -102,6 +102,7 @@ fn section(
     let h = arc::<Poly>()
         .homogeneous_control_points(&alpha, &beta, n)
         .expect("degree >= 2");
+    let h = h.control_points();
     let mut entries = Vec::new();
     for (i, (fr, w)) in printed.iter().enumerate() {
         let [xn, xd, yn, yd] = fr.map(parse);
@@ -134,7 +135,7 @@ fn section(
             "{{{}}}",
             unit.points()
                 .iter()
-                .map(|p| show(p))
+                .map(show)
                 .collect::<Vec<_>>()
                 .join(", ")
         ),
