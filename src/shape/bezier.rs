@@ -89,6 +89,10 @@ pub(crate) fn check_triangle_net<T: Clone>(
 /// A Bézier curve sum_i w_i B_i^n(t) over t in [0, 1], with control points of any dimension
 /// `D >= 1` stored in one buffer (`D` coordinates per point, point after point).
 ///
+/// The buffer is the ring's [`Ring::Coords`]: a `Vec<T>`, except for `f64` and `f32`, whose
+/// curves of up to 8 coordinates (a planar cubic) keep them inline, so that
+/// [`BezierCurve::subsegment`] and [`BezierCurve::split`] of such a curve allocate nothing.
+///
 /// This is the curve type of the library: every operation on Bézier curves is a method here
 /// (or takes this type). [`crate::Bezier`] is the same curve with the dimension in the type
 /// (`[T; D]` points), for code that knows it at compile time; the two convert into each other
