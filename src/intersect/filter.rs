@@ -1048,3 +1048,23 @@ impl Search {
         Some(())
     }
 }
+
+/// The clipping of P's piece over `s` against the fat line of Q's piece over `t`, as one
+/// round does it (for tests of the margins): `None` when the cell is dropped.
+#[cfg(test)]
+pub(super) fn clip_cell(
+    p: &[[f64; 2]],
+    q: &[[f64; 2]],
+    s: [f64; 2],
+    t: [f64; 2],
+) -> Option<[f64; 2]> {
+    let (mut cp, mut cq) = (Curve::empty(), Curve::empty());
+    cp.reset(p)?;
+    cq.reset(q)?;
+    let (mut pp, mut pq) = (Dynamic::default(), Dynamic::default());
+    pp.resize(p.len());
+    pq.resize(q.len());
+    pp.restrict(p, s);
+    pq.restrict(q, t);
+    clip(pp.points(), cp.reach, pq.points(), cq.reach)
+}
