@@ -103,9 +103,9 @@
 //! per thread and reused, so a call allocates nothing after the first (but its answer).
 
 use super::interval::{inside_radius, lower, round_nearest, upper, ConvexStep, Dd};
+use super::pyramid::{convex_point, dd_point};
 use crate::num::bounded::{upward, BoundedF64, ETA, UNIT_ROUNDOFF};
 use crate::num::ring::Ring;
-use crate::shape::flat::curve_pyramid_in_place;
 
 /// One proved transversal crossing P(s) = Q(t) with s, t in (0, 1).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -155,11 +155,9 @@ struct Curve {
     degree: usize,
     /// Control points.
     points: Vec<[f64; 2]>,
-    /// The same, as double-doubles.
-    dd: Vec<Dd>,
     /// The hodograph's control points with their rounding bounds.
-    hodograph: Vec<BoundedF64>,
-    /// Whether `dd` and `hodograph` are those of `points` ([`Curve::prepare`]).
+    hodograph: Vec<[BoundedF64; 2]>,
+    /// Whether `hodograph` is that of `points` ([`Curve::prepare`]).
     prepared: bool,
     /// E = n β of the module documentation: the bound on the distance of each computed control
     /// point coordinate of a restriction ([`Curve::restrict`]) to the exact one.
@@ -178,7 +176,6 @@ impl Curve {
         Curve {
             degree: 0,
             points: Vec::new(),
-            dd: Vec::new(),
             hodograph: Vec::new(),
             prepared: false,
             error: 0.0,
@@ -220,25 +217,21 @@ impl Curve {
         Some(())
     }
 
-    /// Makes the double-double control points and the hodograph, on first use after
-    /// [`Curve::reset`] (most pairs never need them).
+    /// Makes the hodograph, on first use after [`Curve::reset`] (most pairs never need it).
     fn prepare(&mut self) {
         if self.prepared {
             return;
         }
         self.prepared = true;
-        let p = &self.points;
-        self.dd.clear();
-        self.dd.extend(p.iter().flatten().map(|&x| Dd::exact(x)));
         // The hodograph n (p_(i+1) - p_i), its rounding bounded.
         let n = BoundedF64::exact(self.degree as f64);
+        let difference = |a: f64, b: f64| BoundedF64::exact(b).sub(&BoundedF64::exact(a)).mul(&n);
         self.hodograph.clear();
-        self.hodograph.extend(
-            p.iter()
-                .flatten()
-                .zip(p[1..].iter().flatten())
-                .map(|(&a, &b)| BoundedF64::exact(b).sub(&BoundedF64::exact(a)).mul(&n)),
-        );
+        for w in self.points.windows(2) {
+            let (a, b) = (w[0], w[1]);
+            self.hodograph
+                .push([difference(a[0], b[0]), difference(a[1], b[1])]);
+        }
     }
 
     /// P(s) and P'(s) in plain `f64` (for Newton's method only): n - 1 de Casteljau steps
@@ -259,29 +252,19 @@ impl Curve {
     }
 
     /// P at the double `s` in double-double with a bound (de Casteljau's pyramid by
-    /// [`Dd::lerp`]).
+    /// [`Dd::lerp`], unrolled for degrees 1 to 3: [`dd_point`]).
+    #[inline]
     fn eval_dd(&mut self, s: f64) -> [Dd; 2] {
-        let level = &mut self.level_dd;
-        level.clear();
-        level.extend_from_slice(&self.dd);
-        for k in (4..=level.len()).rev().step_by(2) {
-            for i in 0..k - 2 {
-                level[i] = Dd::lerp(&level[i], &level[i + 2], s);
-            }
-        }
-        [level[0], level[1]]
+        dd_point(&self.points, s, &mut self.level_dd)
     }
 
     /// An enclosure of P'(s) for every s with |s - mid| <= radius: de Casteljau's pyramid of
     /// the hodograph at the interval argument in convex form (inclusion isotone, its width
-    /// growing only linearly with the degree).
+    /// growing only linearly with the degree; unrolled for degrees 1 to 3: [`convex_point`]).
+    #[inline]
     fn tangent_pyramid(&mut self, mid: f64, radius: f64) -> [BoundedF64; 2] {
-        let level = &mut self.level_bounded;
-        level.clear();
-        level.extend_from_slice(&self.hodograph);
         let step = ConvexStep::new(BoundedF64::with_bound(mid, radius));
-        curve_pyramid_in_place(level, 2, &step);
-        [level[0], level[1]]
+        convex_point(&self.hodograph, &step, &mut self.level_bounded)
     }
 }
 
