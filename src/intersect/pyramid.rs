@@ -111,7 +111,7 @@ pub(super) fn convex_point_general(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::num::ring::{Rational, Ring};
+    use crate::num::ring::Rational;
     use crate::test_rng::XorShift;
     use num_traits::FromPrimitive;
 
