@@ -7,34 +7,48 @@
 //!
 //! **1. Every root lies in a surviving cell (rigorous Bézier clipping).** A cell is S x T,
 //! S = [a, b] and T = [c, d] with double ends. The piece of P over S is computed from P's
-//! control points as the blossom values P(a^(n-k), b^k), k = 0..n ([`Curve::restrict`]): each
-//! after exactly n de Casteljau steps v' = fl(x + fl(τ fl(y - x))) at the double τ = a or b
-//! in [0, 1]. From values |x|, |y| <= M one step is off the exact x + τ (y - x) by at most
+//! control points as the blossom values P(a^(n-k), b^k), k = 0..n ([`restrict`]; unrolled
+//! for degrees 1 to 3): each after exactly n de Casteljau steps v' = fl(x + fl(τ fl(y - x)))
+//! at the doubles τ = a or b in [0, 1] (from the pyramids at a and at b, blossoms being
+//! symmetric). From values |x|, |y| <= M one step is off the exact x + τ (y - x) by at most
 //! u |τ (y - x)| (2 + u) + η/2 + u |x + fl(τ fl(y - x))| <= 5u M (1 + u) + η (u = 2^-53,
 //! η = 2^-1074; sums have no underflow error), and an exact convex combination of perturbed
 //! inputs moves by at most their error, so every computed control point coordinate lies
 //! within E = n β, β = 5u M0 (1 + 2^-38) + η, of the exact one (M0 the largest input
 //! coordinate; computed values stay within M0 (1 + 2^-40) for n <= 256, which β covers).
 //! The exact interval of a piece is exactly [a, b]: no parameter is rounded. The cell is
-//! dropped when the bounding boxes of the two pieces' control points, each enlarged by E
-//! and rounded outwards, are disjoint (a piece lies in the convex hull of its exact control
-//! points). Otherwise it is *clipped* ([`clip`]): with the double vector ν normal to the
-//! chord of the Q piece, every exact control point q of that piece has ν·q within
-//! [lo - m_q, hi + m_q], lo and hi the least and largest computed ν·q and
-//! m_q = |ν|_1 (E_q + 3u M_q) + 4η (two products and a sum, rounded; the error of the
-//! control points), so Q(T) lies in that band (the fat line). A common point P(s) = Q(t)
-//! with s = a + u (b - a) has ν·P(s) = Σ δ_k B_k(u) in the band, the δ_k = ν·p_k of the
-//! exact P piece, which lie within m_p of the computed D_k: so Σ D_k B_k(u) lies in the band
-//! [L, H] widened by m_p, rounded outwards. The graph of Σ D_k B_k lies in the convex hull
-//! of the points (k/n, D_k); the least and largest u of that hull inside the band are among
-//! the points inside the band and the crossings of the band's edges by the segments between
-//! two points (the hull meets the band in a convex polygon whose vertices are of these
-//! kinds); they are computed in `f64` within 10u, and widened by 2^-48, then mapped to the
-//! global parameter with a margin of 4u b + η and `next_down`/`next_up`, clamped to S. No
-//! point of the hull in the band: the cell holds no root and is dropped. S is clipped so,
-//! then T against the new P piece's fat line; cells that a round of clipping shrinks by less
-//! than 20% on both sides are halved (the wider side), so every root in [0, 1]^2 stays in
-//! some cell. Cells inside a box proved below (its one root known) are dropped.
+//! dropped when the bounding boxes of the two pieces' control points, each enlarged by its
+//! E, are disjoint (a piece lies in the convex hull of its exact control points): when a
+//! computed difference of box ends fl(x - y) exceeds a double e >= E_p + E_q
+//! ([`boxes_meet`]; rounding is monotone, so the exact x - y exceeds e too). Otherwise it
+//! is *clipped* ([`clip`]): with the double vector ν normal to the chord of the Q piece,
+//! every exact control point q of that piece has ν·q within [lo - m_q, hi + m_q], lo and hi
+//! the least and largest computed ν·q and m_q = |ν|_1 (E_q + 3u M_q) + 4η (two products and
+//! a sum, rounded; the error of the control points), so Q(T) lies in that band (the fat
+//! line). A common point P(s) = Q(t) with s = a + u (b - a) has ν·P(s) = Σ δ_k B_k(u) in the
+//! band, the δ_k = ν·p_k of the exact P piece, which lie within m_p of the computed D_k: so
+//! Σ D_k B_k(u) lies in the band [L, H] widened by m_p, rounded outwards. The graph of
+//! Σ D_k B_k lies in the convex hull C of the points (k/n, D_k). Its least abscissa in the
+//! band ([`Band`]): 0 when D_0 is in the band; else, say D_0 > H, it is the least abscissa of
+//! C on the line y = H (were the least point x* of C in the band below that line, the
+//! segment from (0, D_0) to x* would meet the band left of x*), which is the least crossing
+//! of that line by a segment from a point (i/n, D_i) with D_i > H to a point (j/n, D_j) with
+//! D_j <= H (C meets the line in the hull of these crossings), and a pair with j < i is
+//! dominated by the pair (0, j), whose crossing lies left of j/n: so the least of the
+//! crossings i + (j - i) ρ, ρ = (D_i - H) / (D_i - D_j), over i < j with D_i beyond the
+//! edge and D_j not, in units of 1/n; no such pair: every point beyond the edge, the cell
+//! holds no root and is dropped. The largest abscissa likewise from D_n. The decisions
+//! "beyond" are exact (fl(x - y) has the sign of x - y). A crossing is computed within 7u:
+//! ρ' = fl(fl(D_i - e) / fl(D_i - D_j)) = ρ (1 + δ1)(1 + δ3) / (1 + δ2) with |δ| <= u (and an
+//! absolute η/2 for underflow), so |ρ' - ρ| <= 3.0001u + η as ρ <= 1; the product by the
+//! integer j - i and the sum with i (values at most n) add 2un (1 + 4u), the division by n
+//! u; in [0, 1]: at most 5.001u + u + 2η < 7u. The two ends, ordered (rounding may reverse
+//! them when C meets the band in one abscissa), are widened by 2^-48 = 32u (the rounding of
+//! the subtraction adds at most u), clamped to [0, 1], then mapped to the global parameter
+//! with a margin of 4u b + η and `next_down`/`next_up`, clamped to S. S is clipped so, then
+//! T against the new P piece's fat line; cells that a round of clipping shrinks by less than
+//! 20% on both sides are halved (the wider side), so every root in [0, 1]^2 stays in some
+//! cell. Cells inside a box proved below (its one root known) are dropped.
 //!
 //! **2. Krawczyk's test proves one root in a box.** For a box X = m ± r (midpoint m and
 //! radius r > 0 doubles, in (s, t)), with Y an approximate inverse of the Jacobian
@@ -89,9 +103,9 @@
 //! per thread and reused, so a call allocates nothing after the first (but its answer).
 
 use super::interval::{inside_radius, lower, round_nearest, upper, ConvexStep, Dd};
+use super::pyramid::{convex_point, dd_point};
 use crate::num::bounded::{upward, BoundedF64, ETA, UNIT_ROUNDOFF};
 use crate::num::ring::Ring;
-use crate::shape::flat::curve_pyramid_in_place;
 
 /// One proved transversal crossing P(s) = Q(t) with s, t in (0, 1).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -141,11 +155,9 @@ struct Curve {
     degree: usize,
     /// Control points.
     points: Vec<[f64; 2]>,
-    /// The same, as double-doubles.
-    dd: Vec<Dd>,
     /// The hodograph's control points with their rounding bounds.
-    hodograph: Vec<BoundedF64>,
-    /// Whether `dd` and `hodograph` are those of `points` ([`Curve::prepare`]).
+    hodograph: Vec<[BoundedF64; 2]>,
+    /// Whether `hodograph` is that of `points` ([`Curve::prepare`]).
     prepared: bool,
     /// E = n β of the module documentation: the bound on the distance of each computed control
     /// point coordinate of a restriction ([`Curve::restrict`]) to the exact one.
@@ -164,7 +176,6 @@ impl Curve {
         Curve {
             degree: 0,
             points: Vec::new(),
-            dd: Vec::new(),
             hodograph: Vec::new(),
             prepared: false,
             error: 0.0,
@@ -206,25 +217,21 @@ impl Curve {
         Some(())
     }
 
-    /// Makes the double-double control points and the hodograph, on first use after
-    /// [`Curve::reset`] (most pairs never need them).
+    /// Makes the hodograph, on first use after [`Curve::reset`] (most pairs never need it).
     fn prepare(&mut self) {
         if self.prepared {
             return;
         }
         self.prepared = true;
-        let p = &self.points;
-        self.dd.clear();
-        self.dd.extend(p.iter().flatten().map(|&x| Dd::exact(x)));
         // The hodograph n (p_(i+1) - p_i), its rounding bounded.
         let n = BoundedF64::exact(self.degree as f64);
+        let difference = |a: f64, b: f64| BoundedF64::exact(b).sub(&BoundedF64::exact(a)).mul(&n);
         self.hodograph.clear();
-        self.hodograph.extend(
-            p.iter()
-                .flatten()
-                .zip(p[1..].iter().flatten())
-                .map(|(&a, &b)| BoundedF64::exact(b).sub(&BoundedF64::exact(a)).mul(&n)),
-        );
+        for w in self.points.windows(2) {
+            let (a, b) = (w[0], w[1]);
+            self.hodograph
+                .push([difference(a[0], b[0]), difference(a[1], b[1])]);
+        }
     }
 
     /// P(s) and P'(s) in plain `f64` (for Newton's method only): n - 1 de Casteljau steps
@@ -245,29 +252,19 @@ impl Curve {
     }
 
     /// P at the double `s` in double-double with a bound (de Casteljau's pyramid by
-    /// [`Dd::lerp`]).
+    /// [`Dd::lerp`], unrolled for degrees 1 to 3: [`dd_point`]).
+    #[inline]
     fn eval_dd(&mut self, s: f64) -> [Dd; 2] {
-        let level = &mut self.level_dd;
-        level.clear();
-        level.extend_from_slice(&self.dd);
-        for k in (4..=level.len()).rev().step_by(2) {
-            for i in 0..k - 2 {
-                level[i] = Dd::lerp(&level[i], &level[i + 2], s);
-            }
-        }
-        [level[0], level[1]]
+        dd_point(&self.points, s, &mut self.level_dd)
     }
 
     /// An enclosure of P'(s) for every s with |s - mid| <= radius: de Casteljau's pyramid of
     /// the hodograph at the interval argument in convex form (inclusion isotone, its width
-    /// growing only linearly with the degree).
+    /// growing only linearly with the degree; unrolled for degrees 1 to 3: [`convex_point`]).
+    #[inline]
     fn tangent_pyramid(&mut self, mid: f64, radius: f64) -> [BoundedF64; 2] {
-        let level = &mut self.level_bounded;
-        level.clear();
-        level.extend_from_slice(&self.hodograph);
         let step = ConvexStep::new(BoundedF64::with_bound(mid, radius));
-        curve_pyramid_in_place(level, 2, &step);
-        [level[0], level[1]]
+        convex_point(&self.hodograph, &step, &mut self.level_bounded)
     }
 }
 
@@ -281,68 +278,180 @@ fn lerp_step(level: &mut [[f64; 2]], t: f64) {
     }
 }
 
+/// One curve's piece over a side of the current cell: its control points, recomputed from the
+/// curve's by [`restrict`]. Fixed-size arrays for small equal degrees (the loops unroll and
+/// the scratch stays in registers), vectors otherwise.
+trait Piece {
+    /// The control points.
+    fn points(&self) -> &[[f64; 2]];
+    /// Makes this the restriction of the curve with control points `curve` to `range`.
+    fn restrict(&mut self, curve: &[[f64; 2]], range: [f64; 2]);
+}
+
+/// A piece of N control points in arrays.
+struct Fixed<const N: usize>([[f64; 2]; N]);
+
+impl<const N: usize> Piece for Fixed<N> {
+    #[inline(always)]
+    fn points(&self) -> &[[f64; 2]] {
+        &self.0
+    }
+    #[inline(always)]
+    fn restrict(&mut self, curve: &[[f64; 2]], range: [f64; 2]) {
+        let out: &mut [[f64; 2]] = &mut self.0;
+        // N is a constant: one branch remains.
+        match (out, curve) {
+            (out @ [_, _], &[p0, p1]) => out.copy_from_slice(&restrict_line([p0, p1], range)),
+            (out @ [_, _, _], &[p0, p1, p2]) => {
+                out.copy_from_slice(&restrict_quadratic([p0, p1, p2], range))
+            }
+            (out @ [_, _, _, _], &[p0, p1, p2, p3]) => {
+                out.copy_from_slice(&restrict_cubic([p0, p1, p2, p3], range))
+            }
+            (out, curve) => {
+                let (mut a, mut b, mut tmp) = ([[0.0; 2]; N], [[0.0; 2]; N], [[0.0; 2]; N]);
+                restrict(curve, range, out, [&mut a, &mut b, &mut tmp]);
+            }
+        }
+    }
+}
+
+/// x + t (y - x), coordinate by coordinate: one de Casteljau step.
+#[inline(always)]
+fn lerp(x: [f64; 2], y: [f64; 2], t: f64) -> [f64; 2] {
+    [x[0] + t * (y[0] - x[0]), x[1] + t * (y[1] - x[1])]
+}
+
+/// [`restrict`] for a line, unrolled: P(a), P(b).
+#[inline(always)]
+fn restrict_line([p0, p1]: [[f64; 2]; 2], [a, b]: [f64; 2]) -> [[f64; 2]; 2] {
+    [lerp(p0, p1, a), lerp(p0, p1, b)]
+}
+
+/// [`restrict`] for a quadratic, unrolled (the same steps): P(a, a), P(a, b), P(b, b).
+#[inline(always)]
+fn restrict_quadratic([p0, p1, p2]: [[f64; 2]; 3], [a, b]: [f64; 2]) -> [[f64; 2]; 3] {
+    let (a0, a1) = (lerp(p0, p1, a), lerp(p1, p2, a));
+    let (b0, b1) = (lerp(p0, p1, b), lerp(p1, p2, b));
+    [lerp(a0, a1, a), lerp(a0, a1, b), lerp(b0, b1, b)]
+}
+
+/// [`restrict`] for a cubic, unrolled (the same 14 steps): P(a, a, a), P(a, a, b) from the
+/// second level at a, P(a, b, b) from the second level at b, P(b, b, b).
+#[inline(always)]
+fn restrict_cubic([p0, p1, p2, p3]: [[f64; 2]; 4], [a, b]: [f64; 2]) -> [[f64; 2]; 4] {
+    let (a0, a1, a2) = (lerp(p0, p1, a), lerp(p1, p2, a), lerp(p2, p3, a));
+    let (aa0, aa1) = (lerp(a0, a1, a), lerp(a1, a2, a));
+    let (b0, b1, b2) = (lerp(p0, p1, b), lerp(p1, p2, b), lerp(p2, p3, b));
+    let (bb0, bb1) = (lerp(b0, b1, b), lerp(b1, b2, b));
+    [
+        lerp(aa0, aa1, a),
+        lerp(aa0, aa1, b),
+        lerp(bb0, bb1, a),
+        lerp(bb0, bb1, b),
+    ]
+}
+
+/// A piece of any length in vectors, with the scratch of [`restrict`].
+#[derive(Default)]
+struct Dynamic {
+    points: Vec<[f64; 2]>,
+    scratch: [Vec<[f64; 2]>; 3],
+}
+
+impl Dynamic {
+    /// Sizes the storage for `len` control points.
+    fn resize(&mut self, len: usize) {
+        for v in [&mut self.points]
+            .into_iter()
+            .chain(self.scratch.iter_mut())
+        {
+            v.clear();
+            v.resize(len, [0.0; 2]);
+        }
+    }
+}
+
+impl Piece for Dynamic {
+    fn points(&self) -> &[[f64; 2]] {
+        &self.points
+    }
+    fn restrict(&mut self, curve: &[[f64; 2]], range: [f64; 2]) {
+        let [a, b, tmp] = &mut self.scratch;
+        restrict(curve, range, &mut self.points, [a, b, tmp]);
+    }
+}
+
 /// The control points of the curve `points` restricted to [a, b] (doubles in [0, 1],
 /// a <= b), in `out`: the blossom values P(a^(n-k), b^k), each after exactly n de Casteljau
-/// steps x + τ (y - x) at τ = a or b (fewer where a step is exact: at 0 it keeps the first
-/// point, and the steps at 1 of [0, 1] keep the points), so within E of the exact ones
-/// (module documentation, 1). `work` and `tmp` are scratch of the same length.
+/// steps x + τ (y - x) at τ = a or b, so within E of the exact ones (module documentation,
+/// 1). The two pyramids at a and at b are built level by level; P(a^(n-k), b^k) is taken from
+/// level n - k of the pyramid at a by k steps at b when 2k <= n, else from level k of the
+/// pyramid at b by n - k steps at a (blossoms are symmetric): n (n + 1) + about n^3 / 24
+/// steps, 14 for a cubic. `scratch` holds three buffers of the same length as `out`.
 #[inline(always)]
 fn restrict(
     points: &[[f64; 2]],
     [a, b]: [f64; 2],
     out: &mut [[f64; 2]],
-    work: &mut [[f64; 2]],
-    tmp: &mut [[f64; 2]],
+    scratch: [&mut [[f64; 2]]; 3],
 ) {
     // The lengths from `out` (a constant for the fixed-size pieces, so the loops unroll).
     let n = out.len() - 1;
-    let (points, work, tmp) = (&points[..=n], &mut work[..=n], &mut tmp[..=n]);
+    let [at_a, at_b, tmp] = scratch;
+    let (at_a, at_b, tmp) = (&mut at_a[..=n], &mut at_b[..=n], &mut tmp[..=n]);
     if a == 0.0 && b == 1.0 {
-        out.copy_from_slice(points);
+        out.copy_from_slice(&points[..=n]);
         return;
     }
-    work.copy_from_slice(points);
-    for j in 0..=n {
-        // The points P(b^j, ...) of the j-th level at b: at b = 1, exactly the last n + 1 - j
-        // control points.
-        let len = n + 1 - j;
-        let level = if b == 1.0 { &points[j..] } else { &work[..len] };
-        if a == 0.0 {
-            out[j] = level[0];
-        } else {
-            tmp[..len].copy_from_slice(level);
-            for k in (2..=len).rev() {
-                lerp_step(&mut tmp[..k], a);
+    at_a.copy_from_slice(&points[..=n]);
+    at_b.copy_from_slice(&points[..=n]);
+    for level in 0..=n {
+        // at_a[..n + 1 - level] is level `level` at a: P(a^level, ...); likewise at_b.
+        let k = n - level;
+        if 2 * k <= n {
+            // P(a^(n-k), b^k): k steps at b on the k + 1 points of this level.
+            tmp[..=k].copy_from_slice(&at_a[..=k]);
+            for len in (2..=k + 1).rev() {
+                lerp_step(&mut tmp[..len], b);
             }
-            out[j] = tmp[0];
+            out[k] = tmp[0];
         }
-        if j < n && b != 1.0 {
-            lerp_step(&mut work[..len], b);
+        if 2 * level > n {
+            // P(a^(n-level), b^level): n - level steps at a on this level at b.
+            let m = n - level;
+            tmp[..=m].copy_from_slice(&at_b[..=m]);
+            for len in (2..=m + 1).rev() {
+                lerp_step(&mut tmp[..len], a);
+            }
+            out[level] = tmp[0];
+        }
+        if level < n {
+            lerp_step(&mut at_a[..=k], a);
+            lerp_step(&mut at_b[..=k], b);
         }
     }
 }
 
-/// Whether the bounding boxes of the control points of `a` and `b`, enlarged by their errors
-/// `ea` and `eb` (rounded outwards), meet.
+/// Whether the bounding boxes of the control points of `a` and `b`, each enlarged by its
+/// error, meet, given a double `e` at least the sum of the errors. A box's side is dropped
+/// only when a computed difference of ends fl(x - y) exceeds e: rounding is monotone and e
+/// a double, so then the exact x - y exceeds e too, and the exact enlarged boxes are
+/// disjoint.
 #[inline(always)]
-fn boxes_meet(a: &[[f64; 2]], ea: f64, b: &[[f64; 2]], eb: f64) -> bool {
-    let bounds = |pts: &[[f64; 2]], e: f64| {
+fn boxes_meet(a: &[[f64; 2]], b: &[[f64; 2]], e: f64) -> bool {
+    let bounds = |pts: &[[f64; 2]]| {
         let mut r = [pts[0][0], pts[0][0], pts[0][1], pts[0][1]];
         for xy in &pts[1..] {
-            r[0] = r[0].min(xy[0]);
-            r[1] = r[1].max(xy[0]);
-            r[2] = r[2].min(xy[1]);
-            r[3] = r[3].max(xy[1]);
+            r[0] = least(r[0], xy[0]);
+            r[1] = largest(r[1], xy[0]);
+            r[2] = least(r[2], xy[1]);
+            r[3] = largest(r[3], xy[1]);
         }
-        [
-            (r[0] - e).next_down(),
-            (r[1] + e).next_up(),
-            (r[2] - e).next_down(),
-            (r[3] + e).next_up(),
-        ]
+        r
     };
-    let (x, y) = (bounds(a, ea), bounds(b, eb));
-    x[0] <= y[1] && y[0] <= x[1] && x[2] <= y[3] && y[2] <= x[3]
+    let (x, y) = (bounds(a), bounds(b));
+    x[0] - y[1] <= e && y[0] - x[1] <= e && x[2] - y[3] <= e && y[2] - x[3] <= e
 }
 
 /// Fat-line clipping of the piece `a` (control points within `a_reach - 3uM` of the exact
@@ -361,43 +470,162 @@ fn clip(a: &[[f64; 2]], a_reach: f64, b: &[[f64; 2]], b_reach: f64) -> Option<[f
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
     for xy in b {
         let d = dot(xy);
-        lo = lo.min(d);
-        hi = hi.max(d);
+        lo = least(lo, d);
+        hi = largest(hi, d);
     }
     // The margins of both pieces' distance coefficients, added to the band.
     let weight = upward(normal[0].abs() + normal[1].abs());
     let margin = upward(weight * (a_reach + b_reach) + 8.0 * ETA);
     let (low, high) = ((lo - margin).next_down(), (hi + margin).next_up());
-    let n = a.len() - 1;
-    let step = 1.0 / n as f64;
-    // The hull of the points (i / n, D_i) against the band [low, high]: the least and largest
-    // abscissa over the points inside the band and the crossings of the band's edges by the
-    // segments between two points.
-    // (Branch-free: a candidate that does not apply is replaced by ±∞. The inputs' bound
-    // 1e90 keeps every D_i finite, and D_i - D_j != 0 where the sides differ.)
-    let (mut u0, mut u1) = (f64::INFINITY, f64::NEG_INFINITY);
-    for (i, pi) in a.iter().enumerate() {
-        let di = dot(pi);
-        let ui = i as f64 * step;
-        let inside = low <= di && di <= high;
-        u0 = u0.min(if inside { ui } else { f64::INFINITY });
-        u1 = u1.max(if inside { ui } else { f64::NEG_INFINITY });
-        for (j, pj) in a.iter().enumerate().skip(i + 1) {
-            let dj = dot(pj);
-            let uj = j as f64 * step;
-            for edge in [low, high] {
-                let crossing = ui + (uj - ui) * ((di - edge) / (di - dj));
-                let applies = (di > edge) != (dj > edge);
-                u0 = u0.min(if applies { crossing } else { f64::INFINITY });
-                u1 = u1.max(if applies { crossing } else { f64::NEG_INFINITY });
+    let band = Band::new(low, high, dot(&a[0]), dot(&a[a.len() - 1]));
+    let coefficient = |xy: &[f64; 2]| band.coefficient(dot(xy));
+    // The hull's range in the band, unrolled for a cubic.
+    let range = match a {
+        [p0, p1, p2, p3] => {
+            let d = [p0, p1, p2, p3].map(coefficient);
+            let mut range = band.start(3);
+            Band::pair(&mut range, 0, 1, &d[0], &d[1]);
+            Band::pair(&mut range, 0, 2, &d[0], &d[2]);
+            Band::pair(&mut range, 0, 3, &d[0], &d[3]);
+            Band::pair(&mut range, 1, 2, &d[1], &d[2]);
+            Band::pair(&mut range, 1, 3, &d[1], &d[3]);
+            Band::pair(&mut range, 2, 3, &d[2], &d[3]);
+            range
+        }
+        _ => {
+            let mut range = band.start(a.len() - 1);
+            for (i, pi) in a.iter().enumerate() {
+                let di = coefficient(pi);
+                for (j, pj) in a.iter().enumerate().skip(i + 1) {
+                    Band::pair(&mut range, i, j, &di, &coefficient(pj));
+                }
             }
+            range
+        }
+    };
+    band.finish(range, a.len() - 1)
+}
+
+/// The band [low, high] of a fat line against the distance coefficients D_k of a piece of
+/// degree n, for the range of the abscissae of the hull of the points (k/n, D_k) inside it.
+/// The least is 0 when D_0 is in the band, else the least crossing of the edge e0 beyond
+/// which D_0 lies by a segment from a point i beyond it to a later point j not beyond it;
+/// the largest likewise from D_n and its edge e1 (module documentation, 1). Abscissae are
+/// kept as multiples of 1/n, i + (j - i) r, and divided by n at the end.
+struct Band {
+    /// The edges e0, e1 (either when D_0, D_n is inside).
+    edge: [f64; 2],
+    /// The sides of D_0, D_n: 1 above the band, -1 below, 0 inside.
+    side: [f64; 2],
+}
+
+/// One distance coefficient D_k against the band: D_k - e0 and D_k - e1, and whether D_k lies
+/// beyond e0 on D_0's side and beyond e1 on D_n's side. (fl(x - y) has the sign of x - y, so
+/// that side (D_k - e) > 0 decides "beyond" exactly; never for an end inside, side 0.)
+#[derive(Clone, Copy)]
+struct Coefficient {
+    value: f64,
+    offset: [f64; 2],
+    beyond: [bool; 2],
+}
+
+impl Band {
+    #[inline(always)]
+    fn new(low: f64, high: f64, d0: f64, dn: f64) -> Self {
+        let edge = |d: f64| if d > high { high } else { low };
+        let side = |d: f64| {
+            if d > high {
+                1.0
+            } else if d < low {
+                -1.0
+            } else {
+                0.0
+            }
+        };
+        Band {
+            edge: [edge(d0), edge(dn)],
+            side: [side(d0), side(dn)],
         }
     }
-    if u0 > u1 {
-        // No point in the band and no crossing: every point on one side.
-        return None;
+
+    #[inline(always)]
+    fn coefficient(&self, d: f64) -> Coefficient {
+        let offset = [d - self.edge[0], d - self.edge[1]];
+        Coefficient {
+            value: d,
+            offset,
+            beyond: [
+                self.side[0] * offset[0] > 0.0,
+                self.side[1] * offset[1] > 0.0,
+            ],
+        }
     }
-    Some([(u0 - CLIP_SLACK).max(0.0), (u1 + CLIP_SLACK).min(1.0)])
+
+    /// The empty range, or the ends that are inside, for degree n: [0 or ∞, n or -∞].
+    #[inline(always)]
+    fn start(&self, n: usize) -> [f64; 2] {
+        [
+            if self.side[0] == 0.0 {
+                0.0
+            } else {
+                f64::INFINITY
+            },
+            if self.side[1] == 0.0 {
+                n as f64
+            } else {
+                f64::NEG_INFINITY
+            },
+        ]
+    }
+
+    /// The crossings of the segment from point i to the later point j that apply.
+    /// (Branch-free: a candidate that does not apply is replaced by ±∞. The inputs' bound
+    /// 1e90 keeps every D_k finite, and D_i - D_j != 0 where the sides differ.)
+    #[inline(always)]
+    fn pair(range: &mut [f64; 2], i: usize, j: usize, di: &Coefficient, dj: &Coefficient) {
+        // (Divisions, not a reciprocal, which would overflow for a subnormal D_i - D_j.)
+        let gap = di.value - dj.value;
+        let w = (j - i) as f64;
+        let c0 = i as f64 + w * (di.offset[0] / gap);
+        let c1 = i as f64 + w * (di.offset[1] / gap);
+        let first = di.beyond[0] & !dj.beyond[0];
+        let last = dj.beyond[1] & !di.beyond[1];
+        range[0] = least(range[0], if first { c0 } else { f64::INFINITY });
+        range[1] = largest(range[1], if last { c1 } else { f64::NEG_INFINITY });
+    }
+
+    /// The local range, widened by the slack, or `None` when every point lies beyond one edge.
+    #[inline(always)]
+    fn finish(&self, [u0, u1]: [f64; 2], n: usize) -> Option<[f64; 2]> {
+        if u0 == f64::INFINITY || u1 == f64::NEG_INFINITY {
+            return None;
+        }
+        let scale = n as f64;
+        // The two ends come from different candidates: rounding may order them wrongly when
+        // the hull meets the band in one abscissa.
+        let (lo, hi) = (least(u0, u1) / scale, largest(u0, u1) / scale);
+        Some([largest(lo - CLIP_SLACK, 0.0), least(hi + CLIP_SLACK, 1.0)])
+    }
+}
+
+/// The lesser of two numbers that are not NaN (one comparison, unlike `f64::min`).
+#[inline(always)]
+fn least(a: f64, b: f64) -> f64 {
+    if b < a {
+        b
+    } else {
+        a
+    }
+}
+
+/// The larger of two numbers that are not NaN.
+#[inline(always)]
+fn largest(a: f64, b: f64) -> f64 {
+    if b > a {
+        b
+    } else {
+        a
+    }
 }
 
 /// The global range of the local range `u` of the piece over `range` ([a, b] doubles in
@@ -575,8 +803,8 @@ fn root_of(z: [f64; 2], pz: [Dd; 2], k: &Krawczyk, dp: [BoundedF64; 2]) -> Optio
 struct Search {
     p: Curve,
     q: Curve,
-    /// The pieces and scratch of curves beyond the fixed sizes ([`Pieces`]).
-    pieces: Pieces<Vec<[f64; 2]>>,
+    /// The pieces of P and Q with their scratch, for curves beyond the fixed sizes.
+    pieces: [Dynamic; 2],
     roots: Vec<Root>,
     /// Proved boxes (their inner ranges, [`Box2::inner`]), each with the index of its one
     /// root.
@@ -590,14 +818,7 @@ impl Search {
         Search {
             p: Curve::empty(),
             q: Curve::empty(),
-            pieces: Pieces {
-                p: Vec::new(),
-                q: Vec::new(),
-                work_p: Vec::new(),
-                tmp_p: Vec::new(),
-                work_q: Vec::new(),
-                tmp_q: Vec::new(),
-            },
+            pieces: Default::default(),
             roots: Vec::new(),
             exclusions: Vec::new(),
             stack: Vec::new(),
@@ -718,18 +939,6 @@ fn with_search<R>(f: impl FnOnce(&mut Search) -> R) -> R {
     })
 }
 
-/// The control points of P over the current cell's s side and of Q over its t side, with
-/// the scratch of [`restrict`].
-#[derive(Default)]
-struct Pieces<B> {
-    p: B,
-    q: B,
-    work_p: B,
-    tmp_p: B,
-    work_q: B,
-    tmp_q: B,
-}
-
 impl Search {
     /// [`certified_crossings_f64`] on this search state, which it resets first.
     fn run(&mut self, p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<Vec<CertifiedCrossing>> {
@@ -741,24 +950,15 @@ impl Search {
         self.stack.push(([0.0, 1.0], [0.0, 1.0]));
         // The pieces in arrays for equal small degrees (unrolled), else in vectors.
         match (self.p.degree, self.q.degree) {
-            (1, 1) => self.cells(&mut Pieces::<[[f64; 2]; 2]>::default())?,
-            (2, 2) => self.cells(&mut Pieces::<[[f64; 2]; 3]>::default())?,
-            (3, 3) => self.cells(&mut Pieces::<[[f64; 2]; 4]>::default())?,
+            (1, 1) => self.cells(&mut Fixed([[0.0; 2]; 2]), &mut Fixed([[0.0; 2]; 2]))?,
+            (2, 2) => self.cells(&mut Fixed([[0.0; 2]; 3]), &mut Fixed([[0.0; 2]; 3]))?,
+            (3, 3) => self.cells(&mut Fixed([[0.0; 2]; 4]), &mut Fixed([[0.0; 2]; 4]))?,
             (n, m) => {
-                let mut pieces = std::mem::take(&mut self.pieces);
-                for (v, len) in [
-                    (&mut pieces.p, n + 1),
-                    (&mut pieces.work_p, n + 1),
-                    (&mut pieces.tmp_p, n + 1),
-                    (&mut pieces.q, m + 1),
-                    (&mut pieces.work_q, m + 1),
-                    (&mut pieces.tmp_q, m + 1),
-                ] {
-                    v.clear();
-                    v.resize(len, [0.0; 2]);
-                }
-                let done = self.cells(&mut pieces);
-                self.pieces = pieces;
+                let [mut piece_p, mut piece_q] = std::mem::take(&mut self.pieces);
+                piece_p.resize(n + 1);
+                piece_q.resize(m + 1);
+                let done = self.cells(&mut piece_p, &mut piece_q);
+                self.pieces = [piece_p, piece_q];
                 done?
             }
         }
@@ -773,52 +973,36 @@ impl Search {
     /// Examines the cells of the stack until none is left (module documentation, 1): `None`
     /// when undecided.
     #[inline(always)]
-    fn cells<B: AsRef<[[f64; 2]]> + AsMut<[[f64; 2]]>>(
-        &mut self,
-        pieces: &mut Pieces<B>,
-    ) -> Option<()> {
-        let Pieces {
-            p: piece_p,
-            q: piece_q,
-            work_p,
-            tmp_p,
-            work_q,
-            tmp_q,
-        } = pieces;
-        let (piece_p, piece_q) = (piece_p.as_mut(), piece_q.as_mut());
-        let (work_p, tmp_p, work_q, tmp_q) = (
-            work_p.as_mut(),
-            tmp_p.as_mut(),
-            work_q.as_mut(),
-            tmp_q.as_mut(),
-        );
-        let (pe, qe, pr, qr) = (self.p.error, self.q.error, self.p.reach, self.q.reach);
+    fn cells(&mut self, piece_p: &mut impl Piece, piece_q: &mut impl Piece) -> Option<()> {
+        let (pr, qr) = (self.p.reach, self.q.reach);
+        let errors = upward(self.p.error + self.q.error);
         let mut steps = 0usize;
         while let Some((mut s, mut t)) = self.stack.pop() {
-            restrict(&self.p.points, s, piece_p, work_p, tmp_p);
-            restrict(&self.q.points, t, piece_q, work_q, tmp_q);
+            piece_p.restrict(&self.p.points, s);
+            piece_q.restrict(&self.q.points, t);
             loop {
                 steps += 1;
                 if steps > MAX_STEPS {
                     return None;
                 }
-                if self.excluded(s, t) || !boxes_meet(piece_p, pe, piece_q, qe) {
+                let (pp, qq) = (piece_p.points(), piece_q.points());
+                if self.excluded(s, t) || !boxes_meet(pp, qq, errors) {
                     break;
                 }
                 let (ws, wt) = (s[1] - s[0], t[1] - t[0]);
-                let Some(u) = clip(piece_p, pr, piece_q, qr) else {
+                let Some(u) = clip(pp, pr, qq, qr) else {
                     break;
                 };
                 if u != [0.0, 1.0] {
                     s = to_global(s, u);
-                    restrict(&self.p.points, s, piece_p, work_p, tmp_p);
+                    piece_p.restrict(&self.p.points, s);
                 }
-                let Some(v) = clip(piece_q, qr, piece_p, pr) else {
+                let Some(v) = clip(piece_q.points(), qr, piece_p.points(), pr) else {
                     break;
                 };
                 if v != [0.0, 1.0] {
                     t = to_global(t, v);
-                    restrict(&self.q.points, t, piece_q, work_q, tmp_q);
+                    piece_q.restrict(&self.q.points, t);
                 }
                 let (ws2, wt2) = (s[1] - s[0], t[1] - t[0]);
                 let stalled = ws2 > PROGRESS * ws && wt2 > PROGRESS * wt;
@@ -846,4 +1030,24 @@ impl Search {
         }
         Some(())
     }
+}
+
+/// The clipping of P's piece over `s` against the fat line of Q's piece over `t`, as one
+/// round does it (for tests of the margins): `None` when the cell is dropped.
+#[cfg(test)]
+pub(super) fn clip_cell(
+    p: &[[f64; 2]],
+    q: &[[f64; 2]],
+    s: [f64; 2],
+    t: [f64; 2],
+) -> Option<[f64; 2]> {
+    let (mut cp, mut cq) = (Curve::empty(), Curve::empty());
+    cp.reset(p)?;
+    cq.reset(q)?;
+    let (mut pp, mut pq) = (Dynamic::default(), Dynamic::default());
+    pp.resize(p.len());
+    pq.resize(q.len());
+    pp.restrict(p, s);
+    pq.restrict(q, t);
+    clip(pp.points(), cp.reach, pq.points(), cq.reach)
 }

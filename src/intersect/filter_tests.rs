@@ -5,7 +5,7 @@
 
 use super::algebraic::round_polynomial_at;
 use super::curves::intersect_curves_f64;
-use super::filter::{certified_crossings_f64, CertifiedCrossing};
+use super::filter::{certified_crossings_f64, clip_cell, CertifiedCrossing};
 use super::rounded::{intersect_curves_f64_rounded, RoundedIntersections, RoundedPoint};
 use super::zeros::bezier_zeros_f64;
 use crate::num::ring::Rational;
@@ -402,5 +402,103 @@ fn timing_filter() {
             start.elapsed().as_secs_f64() / count as f64 * 1e6,
             worst * 1e6
         );
+    }
+}
+
+/// Crossings of a cubic with x = 3s against a vertical segment x = x0, x0 within a few ulps of
+/// 3/2, 3/4, 9/4 and 1: the exact parameter s* = x0 / 3 (whose correctly rounded double is the
+/// IEEE quotient x0 / 3) lies within a few ulps of the cell ends 1/2, 1/4, 3/4 that halving
+/// makes, or of 1/3. The fat line of the vertical segment has no width of its own: the band
+/// is its margins alone, and the clipped ranges end within a few ulps of s*, so that margins
+/// smaller than the rounding they cover (in the restriction, the distance coefficients, the
+/// crossings, the mapping to the global parameter) would lose the crossing or round it wrong.
+#[test]
+fn crossings_within_ulps_of_cell_ends_keep_their_margins() {
+    let mut r = Random(crate::test_rng::XorShift(0x1405_7b7e_f767_814f));
+    let (mut decided, mut cases) = (0, 0);
+    for base in [1.5f64, 0.75, 2.25, 1.0] {
+        let mut x0 = base;
+        for _ in 0..6 {
+            x0 = x0.next_down();
+        }
+        for _ in 0..13 {
+            // y random in [-8, 8): one transversal crossing with the segment from y = -9 to 9.
+            let p: Vec<[f64; 2]> = (0..4).map(|k| [k as f64, 16.0 * r.unit() - 8.0]).collect();
+            let q: Vec<[f64; 2]> = [-9.0, -3.0, 3.0, 9.0].map(|y| [x0, y]).to_vec();
+            for (first, second, swapped) in [(&p, &q, false), (&q, &p, true)] {
+                cases += 1;
+                if !check_against_exact(first, second) {
+                    continue;
+                }
+                decided += 1;
+                let x = certified_crossings_f64(first, second).unwrap();
+                assert_eq!(x.len(), 1, "{p:?} {q:?}");
+                let s = if swapped { x[0].t } else { x[0].s };
+                assert_eq!(s, x0 / 3.0, "{p:?} {q:?}");
+            }
+            x0 = x0.next_up();
+        }
+    }
+    assert!(decided * 10 >= cases * 9, "decided {decided} of {cases}");
+}
+
+/// A root exactly at a cell end, where the distance coefficient D_0 of the piece is exactly on
+/// a fat line of no width of its own (the horizontal segment y = 0) and the piece leaves it:
+/// P_y(s) = (s - a) g(s) with a = m 2^-30 and g's Bernstein coefficients multiples of 3, so that
+/// P's control points are exact doubles (checked in rationals) while de Casteljau's steps at a
+/// round. Only the margins keep the computed D_0 in the band: without them the rounding puts
+/// it beyond in about half the cases, every coefficient on one side, and the cell (with its
+/// root) would be dropped. The cell [a, a + w] must keep local 0, [a - w, a] local 1.
+#[test]
+fn a_root_at_a_cell_end_survives_clipping() {
+    let mut r = Random(crate::test_rng::XorShift(0x6a09_e667_f3bc_c909));
+    let third = |x: f64| x / 3.0;
+    for _ in 0..200 {
+        let a = (1 + r.next() % ((1 << 30) - 1)) as f64 * 2f64.powi(-30);
+        let g = [3.0 * r.int(5), 3.0 * r.int(5), 3.0 * r.int(5)];
+        if g[0] == 0.0 || g[2] == 0.0 {
+            continue;
+        }
+        // (s - a) g(s) in Bernstein form of degree 3 (exact: a has 30 bits, g small).
+        let y = [
+            -a * g[0],
+            third((1.0 - a) * g[0] - 2.0 * a * g[1]),
+            third(2.0 * (1.0 - a) * g[1] - a * g[2]),
+            (1.0 - a) * g[2],
+        ];
+        let ry = y.map(|v| Rational::from_f64(v).unwrap());
+        let ra = Rational::from_f64(a).unwrap();
+        let one = Rational::from_integer(1.into());
+        let b = |k: usize, s: &Rational| {
+            let c = [1, 3, 3, 1][k];
+            let mut v = Rational::from_integer(c.into());
+            for _ in 0..k {
+                v = &v * s;
+            }
+            for _ in k..3 {
+                v = &v * &(&one - s);
+            }
+            v
+        };
+        let at_a = (0..4).fold(Rational::from_integer(0.into()), |acc, k| {
+            &acc + &(&b(k, &ra) * &ry[k])
+        });
+        assert_eq!(
+            at_a,
+            Rational::from_integer(0.into()),
+            "the construction is exact"
+        );
+        let p: Vec<[f64; 2]> = (0..4).map(|k| [k as f64 + r.unit(), y[k]]).collect();
+        let q: Vec<[f64; 2]> = [-20.0, -7.0, 7.0, 20.0].map(|x| [x, 0.0]).to_vec();
+        for w in [2f64.powi(-12), 2f64.powi(-24), 2f64.powi(-36)] {
+            if a + w <= 1.0 {
+                let u = clip_cell(&p, &q, [a, a + w], [0.0, 1.0]);
+                assert_eq!(u.map(|u| u[0]), Some(0.0), "{p:?} [a, a + {w}]");
+            }
+            if a - w >= 0.0 {
+                let u = clip_cell(&p, &q, [a - w, a], [0.0, 1.0]);
+                assert_eq!(u.map(|u| u[1]), Some(1.0), "{p:?} [a - {w}, a]");
+            }
+        }
     }
 }

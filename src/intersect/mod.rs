@@ -10,6 +10,7 @@
 //! * `extrema`: the tight bounding box and the nearest point of a curve
 //!   ([`tight_bounding_box`], [`nearest_point`]);
 //! * `interval`: rigorous intervals, double-doubles and correct rounding for the filter;
+//! * `pyramid`: the filter's point evaluations, unrolled for degrees 1 to 3;
 //! * `filter`: the float filter of curve-curve intersection ([`certified_crossings_f64`]);
 //! * `rounded`: the `f64` answer for every input, filter first, exact path otherwise
 //!   ([`intersect_curves_f64_rounded`]).
@@ -22,6 +23,7 @@ pub(crate) mod filter;
 pub(crate) mod interval;
 pub(crate) mod isolate;
 pub(crate) mod modular;
+pub(crate) mod pyramid;
 pub(crate) mod rounded;
 pub(crate) mod solve;
 pub(crate) mod upoly;
