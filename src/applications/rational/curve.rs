@@ -2,7 +2,7 @@
 
 use super::homogeneous::{lift_all_into, project_into, restrict_through_homogeneous};
 use super::{check_weight_count, wrong_out, zero_weight_of_part};
-use crate::error::{Error, ErrorKind, Result};
+use crate::error::Result;
 use crate::num::linalg::Field;
 use crate::shape::flat;
 use crate::shape::halving::BernsteinStep;
@@ -134,15 +134,9 @@ impl<T: Field> RationalBezierCurve<T> {
         }
         lift_all_into(&self.coords, self.dim, &self.weights, scratch);
         flat::curve_pyramid_in_place(scratch, self.dim + 1, &BernsteinStep(t));
-        if project_into(&scratch[..=self.dim], out) {
-            Ok(())
-        } else {
-            Err(Error::of(
-                ErrorKind::ZeroWeight,
-                "t",
-                "the denominator vanishes there",
-            ))
-        }
+        project_into(&scratch[..=self.dim], out, "t", || {
+            "the denominator vanishes there".to_string()
+        })
     }
 
     /// The same curve over `range` = a..b, reparametrised over [0, 1]: the homogeneous

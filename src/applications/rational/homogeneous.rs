@@ -7,7 +7,7 @@
 //! operation of Bézier shapes (de Casteljau, restriction) is done on the h_i; only its result is
 //! projected. The buffers hold `dim` (or `dim + 1`) numbers per point, point after point.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, ErrorKind, Result};
 use crate::num::linalg::Field;
 use crate::shape::point::Point;
 use crate::Ring;
@@ -57,17 +57,26 @@ pub(crate) fn join<T: Clone>(numerator: &[T], dim: usize, denominator: &[T]) -> 
 }
 
 /// Writes the central projection N / w of the homogeneous point `h` = (N, w) into `out`
-/// (`h.len() - 1` numbers); `false`, with `out` untouched, when w is zero.
-pub(crate) fn project_into<T: Field>(h: &[T], out: &mut [T]) -> bool {
+/// (`h.len() - 1` numbers).
+///
+/// # Errors
+/// [`ErrorKind::ZeroWeight`] on `field` when w is zero, with `detail()` as the message;
+/// `out` is then untouched.
+pub(crate) fn project_into<T: Field>(
+    h: &[T],
+    out: &mut [T],
+    field: &str,
+    detail: impl FnOnce() -> String,
+) -> Result<()> {
     let (w, n) = h.split_last().expect("D + 1 >= 2 coordinates");
     debug_assert_eq!(out.len(), n.len());
     if w.is_zero() {
-        return false;
+        return Err(Error::of(ErrorKind::ZeroWeight, field, detail()));
     }
     for (o, x) in out.iter_mut().zip(n) {
         *o = x.divide(w);
     }
-    true
+    Ok(())
 }
 
 /// The central projection N / w of the homogeneous point `h` = (N, w), computed in `h`'s own

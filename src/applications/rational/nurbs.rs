@@ -105,15 +105,9 @@ impl<T: Field> RationalBSpline<T> {
         if out.len() != dim {
             return Err(wrong_out(dim, out.len()));
         }
-        if project_into(self.homogeneous.eval_in(t, scratch)?, out) {
-            Ok(())
-        } else {
-            Err(Error::of(
-                ErrorKind::ZeroWeight,
-                "t",
-                "the denominator vanishes there",
-            ))
-        }
+        project_into(self.homogeneous.eval_in(t, scratch)?, out, "t", || {
+            "the denominator vanishes there".to_string()
+        })
     }
 }
 

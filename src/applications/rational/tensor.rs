@@ -247,15 +247,9 @@ impl<T: Field> RationalTensorPatch<T> {
             h.clone_from_slice(&row[..hdim]);
         }
         flat::curve_pyramid_in_place(column, hdim, &BernsteinStep(s));
-        if project_into(&column[..hdim], out) {
-            Ok(())
-        } else {
-            Err(Error::of(
-                ErrorKind::ZeroWeight,
-                "(s, t)",
-                format!("the denominator vanishes at ({s}, {t})"),
-            ))
-        }
+        project_into(&column[..hdim], out, "(s, t)", || {
+            format!("the denominator vanishes at ({s}, {t})")
+        })
     }
 
     /// The patch over `rect` = [a, b, c, d], i.e. [a, b] x [c, d], reparametrised over

@@ -3,7 +3,7 @@
 
 use super::homogeneous::{lift_all_into, project_into, restrict_through_homogeneous};
 use super::{check_weight_count, wrong_out, zero_weight_of_part};
-use crate::error::{Error, ErrorKind, Result};
+use crate::error::Result;
 use crate::num::linalg::Field;
 use crate::shape::flat;
 use crate::shape::halving::{triangle_fix_in_place, BernsteinPairStep};
@@ -174,16 +174,10 @@ impl<T: Field> RationalTriangularPatch<T> {
         for n in (1..=self.degree).rev() {
             triangle_fix_in_place(&mut scratch[..triangle_len(n) * hdim], n, hdim, &step);
         }
-        if project_into(&scratch[..hdim], out) {
-            Ok(())
-        } else {
+        project_into(&scratch[..hdim], out, "at", || {
             let [s, t] = at;
-            Err(Error::of(
-                ErrorKind::ZeroWeight,
-                "at",
-                format!("the denominator vanishes at [{s}, {t}]"),
-            ))
-        }
+            format!("the denominator vanishes at [{s}, {t}]")
+        })
     }
 
     /// The patch over the sub-triangle with corners `corners` = [A, B, C], each by its affine

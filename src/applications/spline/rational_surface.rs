@@ -195,15 +195,12 @@ impl<T: Field> RationalBSplineSurface<T> {
         if out.len() != dim {
             return Err(wrong_out(dim, out.len()));
         }
-        if project_into(self.homogeneous.eval_in(u, v, scratch)?, out) {
-            Ok(())
-        } else {
-            Err(Error::of(
-                ErrorKind::ZeroWeight,
-                "(u, v)",
-                format!("the denominator vanishes at ({u}, {v})"),
-            ))
-        }
+        project_into(
+            self.homogeneous.eval_in(u, v, scratch)?,
+            out,
+            "(u, v)",
+            || format!("the denominator vanishes at ({u}, {v})"),
+        )
     }
 
     fn checked(homogeneous: BSplineSurface<T>, x: &T) -> Result<Self> {
