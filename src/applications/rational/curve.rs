@@ -43,8 +43,8 @@ impl<T: Field> RationalBezierCurve<T> {
     /// once into the curve's buffers.
     ///
     /// # Errors
-    /// [`ErrorKind::Empty`] or [`ErrorKind::Dimension`] on `points` (or `points[i]`) as
-    /// [`BezierCurve::new`]; [`ErrorKind::Shape`] on `weights` when there is not one per point.
+    /// [`ErrorKind::Empty`](crate::ErrorKind::Empty) or [`ErrorKind::Dimension`](crate::ErrorKind::Dimension) on `points` (or `points[i]`) as
+    /// [`BezierCurve::new`]; [`ErrorKind::Shape`](crate::ErrorKind::Shape) on `weights` when there is not one per point.
     pub fn new(points: Vec<Point<T>>, weights: Vec<T>) -> Result<Self> {
         let (dim, coords) = flatten_points(&points, "points")?;
         check_weight_count(&weights, points.len())?;
@@ -59,9 +59,9 @@ impl<T: Field> RationalBezierCurve<T> {
     /// and one weight per point.
     ///
     /// # Errors
-    /// [`ErrorKind::Dimension`] on `dim` when it is 0; [`ErrorKind::Empty`] or
-    /// [`ErrorKind::Shape`] on `coordinates` when it is empty or not a whole number of points;
-    /// [`ErrorKind::Shape`] on `weights` when there is not one per point.
+    /// [`ErrorKind::Dimension`](crate::ErrorKind::Dimension) on `dim` when it is 0; [`ErrorKind::Empty`](crate::ErrorKind::Empty) or
+    /// [`ErrorKind::Shape`](crate::ErrorKind::Shape) on `coordinates` when it is empty or not a whole number of points;
+    /// [`ErrorKind::Shape`](crate::ErrorKind::Shape) on `weights` when there is not one per point.
     pub fn from_coordinates(dim: usize, coordinates: Vec<T>, weights: Vec<T>) -> Result<Self> {
         let points = check_flat(&coordinates, dim, "coordinates")?;
         check_weight_count(&weights, points)?;
@@ -126,8 +126,8 @@ impl<T: Field> RationalBezierCurve<T> {
     /// copy of the homogeneous points: no allocation once `scratch` has grown.
     ///
     /// # Errors
-    /// [`ErrorKind::Dimension`] on `out` when it does not hold D numbers;
-    /// [`ErrorKind::ZeroWeight`] on `t` where the denominator vanishes.
+    /// [`ErrorKind::Dimension`](crate::ErrorKind::Dimension) on `out` when it does not hold D numbers;
+    /// [`ErrorKind::ZeroWeight`](crate::ErrorKind::ZeroWeight) on `t` where the denominator vanishes.
     pub fn eval_into(&self, t: &T, out: &mut [T], scratch: &mut Vec<T>) -> Result<()> {
         if out.len() != self.dim {
             return Err(wrong_out(self.dim, out.len()));
@@ -143,7 +143,7 @@ impl<T: Field> RationalBezierCurve<T> {
     /// control points h[a^(n-j), b^j] of the part, projected. Any a, b, also outside [0, 1].
     ///
     /// # Errors
-    /// [`ErrorKind::ZeroWeight`] on `range` when a weight of the part vanishes (the
+    /// [`ErrorKind::ZeroWeight`](crate::ErrorKind::ZeroWeight) on `range` when a weight of the part vanishes (the
     /// denominator is zero at a or b, or the part has no rational Bézier form with finite
     /// control points).
     pub fn subsegment(&self, range: Range<T>) -> Result<Self> {

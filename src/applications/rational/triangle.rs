@@ -56,7 +56,7 @@ impl<T: Field> RationalTriangularPatch<T> {
     /// both in lexicographic order of (ν, μ), copied once into the patch's buffers.
     ///
     /// # Errors
-    /// As [`TriangularPatch::new`] on `degree` and `points`; [`ErrorKind::Shape`] on `weights`
+    /// As [`TriangularPatch::new`] on `degree` and `points`; [`ErrorKind::Shape`](crate::ErrorKind::Shape) on `weights`
     /// when there is not one per point.
     pub fn new(degree: usize, points: Vec<Point<T>>, weights: Vec<T>) -> Result<Self> {
         let net = TriangularPatch::new(degree, points)
@@ -68,7 +68,7 @@ impl<T: Field> RationalTriangularPatch<T> {
     /// order of (ν, μ)), `dim` each, and one weight per point in the same order.
     ///
     /// # Errors
-    /// As [`TriangularPatch::from_coordinates`]; [`ErrorKind::Shape`] on `weights` when there
+    /// As [`TriangularPatch::from_coordinates`]; [`ErrorKind::Shape`](crate::ErrorKind::Shape) on `weights` when there
     /// is not one per point.
     pub fn from_coordinates(
         degree: usize,
@@ -162,8 +162,8 @@ impl<T: Field> RationalTriangularPatch<T> {
     /// allocation once `scratch` has grown.
     ///
     /// # Errors
-    /// [`ErrorKind::Dimension`] on `out` when it does not hold D numbers;
-    /// [`ErrorKind::ZeroWeight`] on `at` where the denominator vanishes.
+    /// [`ErrorKind::Dimension`](crate::ErrorKind::Dimension) on `out` when it does not hold D numbers;
+    /// [`ErrorKind::ZeroWeight`](crate::ErrorKind::ZeroWeight) on `at` where the denominator vanishes.
     pub fn eval_into(&self, at: &[T; 2], out: &mut [T], scratch: &mut Vec<T>) -> Result<()> {
         if out.len() != self.dim {
             return Err(wrong_out(self.dim, out.len()));
@@ -185,7 +185,7 @@ impl<T: Field> RationalTriangularPatch<T> {
     /// h[A^ν, B^μ, C^λ] of the part, projected.
     ///
     /// # Errors
-    /// [`ErrorKind::ZeroWeight`] on `corners` when a weight of the part vanishes.
+    /// [`ErrorKind::ZeroWeight`](crate::ErrorKind::ZeroWeight) on `corners` when a weight of the part vanishes.
     pub fn restrict(&self, corners: &[[T; 2]; 3]) -> Result<Self> {
         let len = self.weights.len() * (self.dim + 1);
         let mut out = RationalTriangularPatch {
