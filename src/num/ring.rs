@@ -56,20 +56,6 @@ pub trait Ring: Clone + PartialEq + Debug {
         let _ = (points, dim, a, b, out);
         false
     }
-    /// The curve `points` (`dim` numbers per point) over [a, b], as
-    /// [`Ring::restrict_unrolled`] computes it, built where it is returned: for `f64` and
-    /// `f32` curves of at most 8 coordinates (a planar cubic), whose answer lives inline in
-    /// the returned curve; `None` otherwise (the default), and the caller restricts into a
-    /// buffer of its own. Same answer bit for bit either way.
-    fn subsegment_small(
-        points: &[Self],
-        dim: usize,
-        a: &Self,
-        b: &Self,
-    ) -> Option<crate::BezierCurve<Self>> {
-        let _ = (points, dim, a, b);
-        None
-    }
     /// The additive identity.
     fn zero() -> Self;
     /// The multiplicative identity.
@@ -133,18 +119,15 @@ pub fn rational_to_f64(k: &Rational) -> f64 {
 }
 
 macro_rules! float_ring {
-    ($(#[$doc:meta])* $t:ty => $unrolled:path, $small:path) => {
+    ($(#[$doc:meta])* $t:ty => $evaluators:path) => {
         $(#[$doc])*
         impl Ring for $t {
             const UNROLLED: bool = true;
             type Coords = crate::engine::SmallCoords<Self, { crate::engine::INLINE_COORDINATES }>;
             #[inline]
             fn restrict_unrolled(points: &[Self], dim: usize, a: &Self, b: &Self, out: &mut [Self]) -> bool {
-                $unrolled(points, dim, a, b, out)
-            }
-            #[inline]
-            fn subsegment_small(points: &[Self], dim: usize, a: &Self, b: &Self) -> Option<crate::BezierCurve<Self>> {
-                $small(points, dim, a, b)
+                (dim == 2 && crate::shape::unrolled::planar_cubic(points, a, b, out))
+                    || $evaluators.restrict(points, dim, a, b, out)
             }
             #[inline]
             fn zero() -> Self {
@@ -198,7 +181,7 @@ float_ring!(
     /// Doubles: every operation rounded once (`scale` multiplies by the constant rounded to
     /// the nearest double). `docs/accuracy.md` and `docs/error_bounds.md` give
     /// the measured errors of every method.
-    f64 => crate::shape::unrolled::restrict_f64, crate::shape::unrolled::small_f64
+    f64 => crate::shape::unrolled::F64
 );
 float_ring!(
     /// Single precision: every operation rounded once, with unit roundoff u = 2^-24 ≈ 6.0e-8
@@ -210,7 +193,7 @@ float_ring!(
     /// `tests/suite/applications/f32_accuracy.rs`; the measured table is in `docs/error_bounds.md`,
     /// section "f32", printed by
     /// `cargo test -p blossom --test suite f32_restriction -- --nocapture`).
-    f32 => crate::shape::unrolled::restrict_f32, crate::shape::unrolled::small_f32
+    f32 => crate::shape::unrolled::F32
 );
 
 /// Every operation but `zero`, `one` and `is_zero` charges the work meter first

@@ -14,9 +14,9 @@
 use crate::engine::CoordinateBuffer;
 use crate::error::{check_arity, Error, ErrorKind, Result};
 use crate::num::limits::check_entries;
-use crate::shape::flat;
 use crate::shape::point::{check_dims, check_flat, flatten_points, Point, Points};
 use crate::shape::simplex::{checked_triangle_len, triangle_index};
+use crate::shape::{flat, unrolled};
 use crate::Ring;
 use std::ops::Range;
 
@@ -177,13 +177,6 @@ impl<T: Ring> BezierCurve<T> {
         }
     }
 
-    /// The curve with the coordinate buffer `coords` (`dim >= 1`, a whole number of at least
-    /// one point: the caller's guarantee).
-    #[inline]
-    pub(crate) fn from_buffer(dim: usize, coords: T::Coords) -> Self {
-        BezierCurve { coords, dim }
-    }
-
     /// The curve of `len` zero coordinates, `dim` each: the buffer an answer is written into.
     #[inline]
     fn zeros(dim: usize, len: usize) -> Self {
@@ -258,21 +251,29 @@ impl<T: Ring> BezierCurve<T> {
     /// b[a^(n-j), b^j], j = 0..=n. Any a, b, also outside [0, 1] or with a > b.
     #[inline]
     pub fn subsegment(&self, range: Range<T>) -> Self {
-        if T::UNROLLED {
-            if let Some(curve) =
-                T::subsegment_small(self.coords.as_slice(), self.dim, &range.start, &range.end)
+        if T::UNROLLED && self.dim == 2 {
+            // The planar float cubic, the commonest curve, computed into a local that never
+            // leaves this (inlined) function, so the answer is built in registers and stored
+            // once, where it is returned. (Through `out` below, whose address reaches an
+            // out-of-line call, the answer was built in one place and copied, and the copy
+            // waited on the stores that had just filled it: slower than the restriction
+            // itself, `benches/peers.rs`, group `cubic2d`.)
+            let mut cubic: [T; 8] = std::array::from_fn(|_| T::zero());
+            if unrolled::planar_cubic(self.coords.as_slice(), &range.start, &range.end, &mut cubic)
             {
-                return curve;
+                return BezierCurve {
+                    dim: 2,
+                    coords: T::Coords::from_slice(&cubic),
+                };
             }
         }
         let mut out = Self::zeros(self.dim, self.coords.as_slice().len());
-        flat::curve_subsegment(
+        flat::curve_subsegment_returned(
             self.coords.as_slice(),
             self.dim,
             &range.start,
             &range.end,
             out.coords.as_mut_slice(),
-            &mut Vec::new(),
         );
         out
     }

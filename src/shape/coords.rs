@@ -23,6 +23,8 @@ pub const INLINE_COORDINATES: usize = 8;
 pub trait CoordinateBuffer<T>: Clone + Debug + PartialEq {
     /// The buffer holding `values` (which it may keep or copy).
     fn from_vec(values: Vec<T>) -> Self;
+    /// The buffer holding a copy of `values`.
+    fn from_slice(values: &[T]) -> Self;
     /// A buffer of `len` copies of `value`.
     fn filled(len: usize, value: T) -> Self;
     /// The numbers, in order.
@@ -38,6 +40,9 @@ pub trait CoordinateBuffer<T>: Clone + Debug + PartialEq {
 impl<T: Clone + Debug + PartialEq> CoordinateBuffer<T> for Vec<T> {
     fn from_vec(values: Vec<T>) -> Self {
         values
+    }
+    fn from_slice(values: &[T]) -> Self {
+        values.to_vec()
     }
     fn filled(len: usize, value: T) -> Self {
         vec![value; len]
@@ -77,17 +82,6 @@ pub struct SmallCoords<T: Copy, const N: usize> {
 }
 
 impl<T: Copy, const N: usize> SmallCoords<T, N> {
-    /// The buffer holding `inline[..len]` (`len <= N`).
-    #[inline]
-    pub(crate) fn from_inline(inline: [T; N], len: usize) -> Self {
-        debug_assert!(len <= N);
-        SmallCoords {
-            inline,
-            len,
-            heap: Vec::new(),
-        }
-    }
-
     /// Whether the numbers are in `inline`.
     #[inline]
     pub(crate) fn is_inline(&self) -> bool {
@@ -113,6 +107,25 @@ impl<T: Copy + Default + Debug + PartialEq, const N: usize> CoordinateBuffer<T>
                 inline: [T::default(); N],
                 len: values.len(),
                 heap: values,
+            }
+        }
+    }
+
+    #[inline]
+    fn from_slice(values: &[T]) -> Self {
+        if values.len() <= N {
+            let mut inline = [T::default(); N];
+            inline[..values.len()].copy_from_slice(values);
+            SmallCoords {
+                inline,
+                len: values.len(),
+                heap: Vec::new(),
+            }
+        } else {
+            SmallCoords {
+                inline: [T::default(); N],
+                len: values.len(),
+                heap: values.to_vec(),
             }
         }
     }

@@ -41,9 +41,9 @@ pub(crate) fn curve_subsegment_fixed<T: Ring, const D: usize>(
     );
 }
 
-/// [`curve_subsegment_fixed`] for a dimension known at run time: dimensions 1..=4 of the
-/// unrolled rings (`f64`, `f32`) go to the fixed-dimension code, everything else to the
-/// engine with a runtime width.
+/// [`curve_subsegment_fixed`] for a dimension known at run time: the unrolled evaluators of
+/// `f64`/`f32` first (one table load and one call, inlined into the caller), else
+/// [`curve_subsegment_engine`].
 #[inline]
 pub(crate) fn curve_subsegment<T: Ring>(
     points: &[T],
@@ -53,23 +53,59 @@ pub(crate) fn curve_subsegment<T: Ring>(
     out: &mut [T],
     scratch: &mut Vec<T>,
 ) {
+    if T::UNROLLED && T::restrict_unrolled(points, dim, a, b, out) {
+        return;
+    }
+    curve_subsegment_engine(points, dim, a, b, out, scratch);
+}
+
+/// [`curve_subsegment`] with a scratch buffer of its own, for the forms that return a new
+/// shape: no scratch is live in the caller's frame, so the caller can build its answer where
+/// it returns it (with a scratch `Vec` beside it, the answer was built elsewhere and copied,
+/// and the copy waited on the stores that had just filled it: `benches/peers.rs`, `cubic2d`).
+#[inline]
+pub(crate) fn curve_subsegment_returned<T: Ring>(
+    points: &[T],
+    dim: usize,
+    a: &T,
+    b: &T,
+    out: &mut [T],
+) {
+    if T::UNROLLED && T::restrict_unrolled(points, dim, a, b, out) {
+        return;
+    }
+    curve_subsegment_own_scratch(points, dim, a, b, out);
+}
+
+/// [`curve_subsegment_engine`] with a fresh scratch buffer, out of line.
+#[inline(never)]
+fn curve_subsegment_own_scratch<T: Ring>(points: &[T], dim: usize, a: &T, b: &T, out: &mut [T]) {
+    curve_subsegment_engine(points, dim, a, b, out, &mut Vec::new());
+}
+
+/// The halving engine for [`curve_subsegment`]: with the width fixed at compile time in
+/// dimensions 1..=4 of the unrolled rings (degrees above 24), a runtime width otherwise.
+/// Kept out of line so that the caller's fast path stays small.
+#[inline(never)]
+fn curve_subsegment_engine<T: Ring>(
+    points: &[T],
+    dim: usize,
+    a: &T,
+    b: &T,
+    out: &mut [T],
+    scratch: &mut Vec<T>,
+) {
+    let (step_a, step_b) = (BernsteinStep(a), BernsteinStep(b));
     if T::UNROLLED {
         match dim {
-            1 => return curve_subsegment_fixed::<T, 1>(points, a, b, out, scratch),
-            2 => return curve_subsegment_fixed::<T, 2>(points, a, b, out, scratch),
-            3 => return curve_subsegment_fixed::<T, 3>(points, a, b, out, scratch),
-            4 => return curve_subsegment_fixed::<T, 4>(points, a, b, out, scratch),
+            1 => return curve_net(points, Fixed::<1>, &step_a, &step_b, out, scratch),
+            2 => return curve_net(points, Fixed::<2>, &step_a, &step_b, out, scratch),
+            3 => return curve_net(points, Fixed::<3>, &step_a, &step_b, out, scratch),
+            4 => return curve_net(points, Fixed::<4>, &step_a, &step_b, out, scratch),
             _ => {}
         }
     }
-    curve_net(
-        points,
-        dim,
-        &BernsteinStep(a),
-        &BernsteinStep(b),
-        out,
-        scratch,
-    );
+    curve_net(points, dim, &step_a, &step_b, out, scratch);
 }
 
 /// Applies `level.len() / dim - 1` steps of `step` to `level` in place: the de Casteljau

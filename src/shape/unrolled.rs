@@ -1,134 +1,123 @@
-//! The restriction of Bézier curves of degree 1..=24 with `[T; D]` points by the evaluators
+//! The restriction of Bézier curves of degree 1..=24 in dimensions 1..=4 by the evaluators
 //! `blossom::restriction!` generates: the engine's halving unrolled for one degree (the same
 //! steps in the same order, so the same answer bit for bit), with every level in registers
-//! instead of scratch buffers. [`crate::Bezier`] dispatches here first.
+//! instead of scratch buffers. [`crate::Bezier`] and [`crate::BezierCurve`] dispatch here first.
 //!
-//! The evaluators are generic, but only `f64` and `f32` run them ([`crate::Ring::UNROLLED`]),
-//! and only in dimensions 1..=4: [`restrict_f64`] and [`restrict_f32`] instantiate them and
-//! are neither generic nor inlined, so the grid of 24 degrees x 4 dimensions is compiled once,
-//! in this crate. (Reached from generic code instead, it was monomorphised anew in every crate
-//! that restricts a float curve: about 100 s of CPU at `opt-level = 2` for a program of a few
-//! lines, in every example and test crate.) The front ends reach them through
-//! [`crate::Ring::restrict_unrolled`].
+//! The evaluators are generic, but only `f64` and `f32` run them ([`crate::Ring::UNROLLED`]):
+//! the two tables [`F64`] and [`F32`] hold one function pointer per (dimension, number of
+//! coordinates), filled at compile time, so the grid of 24 degrees x 4 dimensions is compiled
+//! once, in this crate. (Reached from generic code instead, it was monomorphised anew in every
+//! crate that restricts a float curve: about 100 s of CPU at `opt-level = 2` for a program of a
+//! few lines, in every example and test crate.) A call is one bounds-checked table load and
+//! one indirect call, with no division by the dimension and no match on the degree. The front
+//! ends reach the tables through [`crate::Ring::restrict_unrolled`].
+
+use crate::Ring;
+
+/// One unrolled evaluator: `out` = the control points of the curve with flat control points
+/// `points` over [a, b]. Both slices have the length the table entry was filed under.
+pub(crate) type Evaluator<T> = fn(&[T], &T, &T, &mut [T]);
+
+/// The most coordinates of a curve with an unrolled evaluator: 25 points of dimension 4.
+const MAX_COORDINATES: usize = 100;
+
+/// The unrolled evaluators of one number type, by dimension and number of coordinates.
+pub(crate) struct Evaluators<T: 'static> {
+    /// `by_shape[dim - 1][(degree + 1) * dim]`, `None` where no evaluator exists.
+    by_shape: [[Option<Evaluator<T>>; MAX_COORDINATES + 1]; 4],
+}
+
+impl<T: Ring> Evaluators<T> {
+    /// The evaluator of curves with `dim` numbers per point and `len` numbers in all.
+    #[inline]
+    fn get(&self, dim: usize, len: usize) -> Option<Evaluator<T>> {
+        *self.by_shape.get(dim.wrapping_sub(1))?.get(len)?
+    }
+
+    /// `out` = the control points of the curve with flat control points `points` (`dim`
+    /// numbers each) over [a, b] by the unrolled evaluator of its shape; `false` (and `out`
+    /// untouched) when there is none or `out` has another length.
+    #[inline]
+    pub(crate) fn restrict(&self, points: &[T], dim: usize, a: &T, b: &T, out: &mut [T]) -> bool {
+        if out.len() != points.len() {
+            return false;
+        }
+        match self.get(dim, points.len()) {
+            Some(evaluate) => {
+                evaluate(points, a, b, out);
+                true
+            }
+            None => false,
+        }
+    }
+}
 
 macro_rules! unrolled {
-    ($($n:literal => $name:ident,)*) => {
-        $(crate::restriction!(name = $name, shape = bezier_curve, degree = $n);)*
+    ($($n:literal => $name:ident, $into:ident;)*) => {
+        $(
+            crate::restriction!(name = $name, shape = bezier_curve, degree = $n);
 
-        /// `out` = the control points of the curve with flat control points `points` (`D`
-        /// coordinates each, degree 1..=24) over [a, b] by the unrolled evaluator of that
-        /// degree; `false` (and `out` untouched) for any other degree or when `out` has another
-        /// length. The flat slices are read as `[T; D]` points in place (`as_chunks`), so
-        /// nothing is copied on the way in.
-        #[inline]
-        fn restrict_curve_unrolled<T: crate::Ring, const D: usize>(
-            points: &[T],
-            a: &T,
-            b: &T,
-            out: &mut [T],
-        ) -> bool {
-            if D == 0 || out.len() != points.len() {
-                return false;
+            /// The evaluator of this degree on flat slices, read as `[T; D]` points in place
+            /// (`as_chunks`), so nothing is copied on the way in. Filed in the table under its
+            /// exact length, so the conversions cannot fail there; a slice of another length
+            /// leaves `out` untouched.
+            #[inline]
+            fn $into<T: Ring, const D: usize>(points: &[T], a: &T, b: &T, out: &mut [T]) {
+                let (points, _) = points.as_chunks::<D>();
+                let (out, _) = out.as_chunks_mut::<D>();
+                if let (Ok(ctrl), Ok(out)) = (
+                    <&[[T; D]; $n + 1]>::try_from(points),
+                    <&mut [[T; D]; $n + 1]>::try_from(out),
+                ) {
+                    *out = $name(ctrl, a, b);
+                }
             }
-            let (points, rest) = points.as_chunks::<D>();
-            let (out, _) = out.as_chunks_mut::<D>();
-            if !rest.is_empty() {
-                return false;
-            }
-            match points.len().wrapping_sub(1) {
-                $($n => {
-                    let Ok(ctrl) = <&[[T; D]; $n + 1]>::try_from(points) else {
-                        return false;
-                    };
-                    for (o, q) in out.iter_mut().zip($name(ctrl, a, b)) {
-                        *o = q;
-                    }
-                    true
-                })*
-                _ => false,
-            }
+        )*
+
+        /// The table of every unrolled evaluator of `T`, built at compile time.
+        const fn evaluators<T: Ring>() -> Evaluators<T> {
+            let mut by_shape: [[Option<Evaluator<T>>; MAX_COORDINATES + 1]; 4] =
+                [[None; MAX_COORDINATES + 1]; 4];
+            $(
+                by_shape[0][$n + 1] = Some($into::<T, 1> as Evaluator<T>);
+                by_shape[1][2 * ($n + 1)] = Some($into::<T, 2> as Evaluator<T>);
+                by_shape[2][3 * ($n + 1)] = Some($into::<T, 3> as Evaluator<T>);
+                by_shape[3][4 * ($n + 1)] = Some($into::<T, 4> as Evaluator<T>);
+            )*
+            Evaluators { by_shape }
         }
     };
 }
 
 unrolled! {
-    1 => degree_1, 2 => degree_2, 3 => degree_3, 4 => degree_4, 5 => degree_5, 6 => degree_6,
-    7 => degree_7, 8 => degree_8, 9 => degree_9, 10 => degree_10, 11 => degree_11,
-    12 => degree_12, 13 => degree_13, 14 => degree_14, 15 => degree_15, 16 => degree_16,
-    17 => degree_17, 18 => degree_18, 19 => degree_19, 20 => degree_20, 21 => degree_21,
-    22 => degree_22, 23 => degree_23, 24 => degree_24,
+    1 => degree_1, into_1; 2 => degree_2, into_2; 3 => degree_3, into_3;
+    4 => degree_4, into_4; 5 => degree_5, into_5; 6 => degree_6, into_6;
+    7 => degree_7, into_7; 8 => degree_8, into_8; 9 => degree_9, into_9;
+    10 => degree_10, into_10; 11 => degree_11, into_11; 12 => degree_12, into_12;
+    13 => degree_13, into_13; 14 => degree_14, into_14; 15 => degree_15, into_15;
+    16 => degree_16, into_16; 17 => degree_17, into_17; 18 => degree_18, into_18;
+    19 => degree_19, into_19; 20 => degree_20, into_20; 21 => degree_21, into_21;
+    22 => degree_22, into_22; 23 => degree_23, into_23; 24 => degree_24, into_24;
 }
 
-/// `out` = the control points of the curve with flat control points `points` (`dim` numbers
-/// each) over [a, b] by the unrolled evaluator of its degree, for a dimension `dim` in 1..=4
-/// and a degree in 1..=24 of `T` = `f64` or `f32`; `false` (and `out` untouched) otherwise.
-/// Called by the two non-generic entry points only, so that it is instantiated twice.
-#[inline]
-fn restrict_flat<T: crate::Ring>(points: &[T], dim: usize, a: &T, b: &T, out: &mut [T]) -> bool {
-    match dim {
-        1 => restrict_curve_unrolled::<T, 1>(points, a, b, out),
-        2 => restrict_curve_unrolled::<T, 2>(points, a, b, out),
-        3 => restrict_curve_unrolled::<T, 3>(points, a, b, out),
-        4 => restrict_curve_unrolled::<T, 4>(points, a, b, out),
-        _ => false,
+/// The planar cubic, the commonest curve, by its unrolled evaluator in a function that is
+/// inlined into its caller (the tables' calls are indirect, so the caller must pass its answer
+/// through memory it then copies; inlined, the answer is built where it is returned). A few
+/// dozen instructions, instantiated for `f64` and `f32` only.
+#[inline(always)]
+pub(crate) fn planar_cubic<T: Ring>(points: &[T], a: &T, b: &T, out: &mut [T]) -> bool {
+    if points.len() != 8 || out.len() != 8 {
+        return false;
     }
+    into_3::<T, 2>(points, a, b, out);
+    true
 }
 
-/// [`restrict_flat`] in `f64`, compiled in this crate only (see the module documentation).
-#[inline(never)]
-pub(crate) fn restrict_f64(points: &[f64], dim: usize, a: &f64, b: &f64, out: &mut [f64]) -> bool {
-    restrict_flat(points, dim, a, b, out)
-}
+/// The unrolled evaluators in `f64`.
+pub(crate) static F64: Evaluators<f64> = evaluators::<f64>();
 
-/// [`restrict_flat`] in `f32`, compiled in this crate only (see the module documentation).
-#[inline(never)]
-pub(crate) fn restrict_f32(points: &[f32], dim: usize, a: &f32, b: &f32, out: &mut [f32]) -> bool {
-    restrict_flat(points, dim, a, b, out)
-}
-
-/// The curve `points` over [a, b] by [`restrict_flat`] as a curve whose numbers are inline
-/// ([`crate::engine::SmallCoords`]), when it has at most `N` coordinates and an unrolled
-/// evaluator; `None` otherwise.
-///
-/// The curve is built first and its numbers written last: a move of a curve whose length and
-/// dimension were just stored stalls on store forwarding for longer than the restriction of a
-/// cubic takes (measured in `benches/peers.rs`, group `cubic2d`), and the caller moves it.
-#[inline]
-fn small<T, const N: usize>(points: &[T], dim: usize, a: &T, b: &T) -> Option<crate::BezierCurve<T>>
-where
-    T: crate::Ring<Coords = crate::engine::SmallCoords<T, N>> + Copy + Default,
-{
-    if points.len() > N {
-        return None;
-    }
-    let mut curve = crate::BezierCurve::from_buffer(
-        dim,
-        crate::engine::SmallCoords::from_inline([T::default(); N], points.len()),
-    );
-    restrict_flat(points, dim, a, b, curve.coordinates_mut()).then_some(curve)
-}
-
-/// [`small`] in `f64` for [`crate::Ring::subsegment_small`], compiled in this crate only.
-#[inline(never)]
-pub(crate) fn small_f64(
-    points: &[f64],
-    dim: usize,
-    a: &f64,
-    b: &f64,
-) -> Option<crate::BezierCurve<f64>> {
-    small(points, dim, a, b)
-}
-
-/// [`small`] in `f32` for [`crate::Ring::subsegment_small`], compiled in this crate only.
-#[inline(never)]
-pub(crate) fn small_f32(
-    points: &[f32],
-    dim: usize,
-    a: &f32,
-    b: &f32,
-) -> Option<crate::BezierCurve<f32>> {
-    small(points, dim, a, b)
-}
+/// The unrolled evaluators in `f32`.
+pub(crate) static F32: Evaluators<f32> = evaluators::<f32>();
 
 #[cfg(test)]
 mod tests {
@@ -136,8 +125,8 @@ mod tests {
     use crate::test_rng::XorShift;
     use crate::BezierCurve;
 
-    /// `BezierCurve::subsegment` of float curves (inline answers up to 8 coordinates through
-    /// [`super::small_f64`], heap answers through the flat path) gives, bit for bit, the
+    /// `BezierCurve::subsegment` of float curves (inline answers up to 8 coordinates (restricted in place
+    /// through [`super::F64`]), heap answers through the flat path) gives, bit for bit, the
     /// control points of the halving engine run with a runtime width (no unrolled code), and
     /// the same as `subsegment_into`; in every dimension 1..=6 and degree 0..=9, so across
     /// the inline limit, the degree 0 (no unrolled evaluator) and dimensions above 4.
