@@ -207,7 +207,8 @@ fn shapes_that_do_not_fit_are_errors() {
 
 /// Objects in the caller's own layout (`RestrictionMap::restrict_arrays`): each answer is bit
 /// for bit the engine's on the object alone (`Bezier::subsegment`, `BezierTriangle::restrict`,
-/// which pack nothing), across a partial last block, in 2-D and 3-D.
+/// which pack nothing) and, for curves, the block engine's (`Batch::restrict_into`), across a
+/// partial last block, in 2-D and 3-D.
 #[test]
 fn arrays_in_the_callers_layout_equal_each_object_alone() {
     let mut rng = Rng(77);
@@ -221,7 +222,18 @@ fn arrays_in_the_callers_layout_equal_each_object_alone() {
         .unwrap()
         .restrict_arrays(&curves, &mut out)
         .unwrap();
-    for (curve, answer) in curves.iter().zip(&out) {
+    // Curves are restricted in place, one by one (the unrolled evaluators); the block engine
+    // of `Batch` (a runtime width of BATCH_LANES numbers per point, no unrolled code) is the
+    // independent reference, and `Bezier::subsegment` the object alone.
+    let map = RestrictionMap::curve(3, a, b).unwrap();
+    let mut blocks = Batch::zeros(4, 2, count).unwrap();
+    Batch::from_arrays(&curves)
+        .unwrap()
+        .restrict_into(&map, &mut blocks)
+        .unwrap();
+    let by_blocks = blocks.to_arrays::<4, 2>().unwrap();
+    for ((curve, answer), block_answer) in curves.iter().zip(&out).zip(&by_blocks) {
+        assert_eq!(answer, block_answer);
         let alone = Bezier::new(curve.to_vec()).unwrap().subsegment(a..b);
         assert_eq!(&answer[..], alone.points());
     }
