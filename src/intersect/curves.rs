@@ -157,7 +157,7 @@ pub fn intersect_curves(p: &[[Rational; 2]], q: &[[Rational; 2]]) -> Result<Inte
         return Ok(finish(points, Vec::new()));
     }
     let (zero, one) = (Rational::zero(), Rational::one());
-    match solve(&a, &b, (&zero, &one), (&zero, &one), "curves")? {
+    match solve(&a, &b, (&zero, &one), (&zero, &one)) {
         Some(solutions) => {
             let points = solutions
                 .into_iter()
@@ -561,7 +561,7 @@ fn affine_answer(pp: &Power, qq: &Power, alpha: &Rational, beta: &Rational) -> I
             (v, u)
         }
     };
-    if let Ok(Some(sols)) = divided_difference_solutions(pp, (&zero, &one), (&u0, &u1)) {
+    if let Some(sols) = divided_difference_solutions(pp, (&zero, &one), (&u0, &u1)) {
         for sol in sols {
             if sol.s.equals(&sol.t) {
                 continue;
@@ -600,10 +600,10 @@ fn divided_difference_solutions(
     pp: &Power,
     s_box: (&Rational, &Rational),
     t_box: (&Rational, &Rational),
-) -> Result<Option<Vec<Solution>>> {
+) -> Option<Vec<Solution>> {
     let a = divided_difference(&pp.x);
     let b = divided_difference(&pp.y);
-    solve(&a, &b, s_box, t_box, "curve")
+    solve(&a, &b, s_box, t_box)
 }
 
 /// Every pair s < t in [0, 1] with P(s) = P(t) of the curve with control points `p`, and
@@ -616,7 +616,7 @@ fn divided_difference_solutions(
 pub fn self_intersections(p: &[[Rational; 2]]) -> Result<Intersections> {
     let pp = Power::of("curve", p)?;
     let (zero, one) = (Rational::zero(), Rational::one());
-    let sols = divided_difference_solutions(&pp, (&zero, &one), (&zero, &one))?;
+    let sols = divided_difference_solutions(&pp, (&zero, &one), (&zero, &one));
     let Some(sols) = sols else {
         if let Some((o, d)) = collinear(p) {
             let f: Vec<Rational> =

@@ -6,6 +6,8 @@
 //! * `zeros`: zeros of a Bézier function with multiplicities ([`bezier_zeros`]);
 //! * `modular`: arithmetic modulo word-size primes, interpolation, Chinese remaindering;
 //! * `bivariate`: resultants and first subresultants of bivariate integer polynomials (multi-modular);
+//! * `extension`: arithmetic in a real algebraic extension Q(alpha) by dynamic evaluation, and
+//!   the fibre of a bivariate system over an algebraic abscissa;
 //! * `curves`: curve-curve intersection ([`intersect_curves`]);
 //! * `extrema`: the tight bounding box and the nearest point of a curve
 //!   ([`tight_bounding_box`], [`nearest_point`]);
@@ -18,6 +20,7 @@
 pub(crate) mod algebraic;
 pub(crate) mod bivariate;
 pub(crate) mod curves;
+pub(crate) mod extension;
 pub(crate) mod extrema;
 pub(crate) mod filter;
 pub(crate) mod interval;
@@ -29,6 +32,8 @@ pub(crate) mod solve;
 pub(crate) mod upoly;
 pub(crate) mod zeros;
 
+#[cfg(test)]
+mod extension_tests;
 #[cfg(test)]
 mod extrema_tests;
 #[cfg(test)]

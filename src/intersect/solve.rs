@@ -14,20 +14,26 @@
 //!    exactly one common t, t = -S_10(s_i) / S_11(s_i), a root of R2: refining s_i until the
 //!    interval value of that quotient lies in one root's neighbourhood (or misses the box)
 //!    names it exactly. When s_i is rational, the gcd over the rationals is computed and each
-//!    root t_j of R2 is tested for being its root. The same from the side of t. A pair whose
-//!    s and t are both unresolved (S_11 vanishes at an irrational s_i and S'_11 at an
-//!    irrational t_j) is excluded when interval values of A or B miss zero, else refused.
+//!    root t_j of R2 is tested for being its root. The same from the side of t. A root s_i
+//!    left over (S_11 vanishes at an irrational s_i) gets its **fibre**: the square-free gcd
+//!    G of A(s_i, t) and B(s_i, t) over the real algebraic extension Q(s_i) (see
+//!    `extension`: dynamic evaluation over Q[x]/(m) with m = gcd(f, S_11), f the polynomial
+//!    of s_i), and the roots t_j not already placed from their own side are tested for being
+//!    roots of G exactly (a sign change of gcd(G, f_(t_j)) over t_j's interval); a cheap
+//!    interval exclusion (A or B provably non-zero on the box of the two intervals) is tried
+//!    first. So every pair is decided.
 //! 4. Multiplicity: the order of R at s_i is the sum of the intersection multiplicities of
 //!    the solutions with that s (constant leading coefficients: no solution at infinity).
-//!    With exactly one common t that sum is the pair's multiplicity, which is 1 exactly when
-//!    the Jacobian is non-zero. Otherwise the side of t is used, else the Jacobian is
-//!    tested exactly at a rational coordinate, else the pair is refused.
+//!    With exactly one common t (a linear gcd, or a fibre of degree one) that sum is the
+//!    pair's multiplicity, which is 1 exactly when the Jacobian is non-zero. Otherwise the
+//!    side of t is used, else the Jacobian J is tested exactly: at a rational coordinate by a
+//!    gcd over the rationals, else by the same fibre test of J(s_i, t) over Q(s_i) at t_j.
 
 use super::algebraic::{enclose_scaled, AlgebraicReal};
 use super::bivariate::{coefficient_t, degree_t, resultant_t, subresultant_1, swap, BiPoly};
+use super::extension::Extension;
 use super::upoly::{self, degree, gcd, ZPoly};
 use super::zeros::{roots_with_multiplicity, RootInfo};
-use crate::error::{Error, Result};
 use crate::num::ring::Rational;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
@@ -63,11 +69,10 @@ pub(crate) fn solve(
     b: &BiPoly,
     s_box: (&Rational, &Rational),
     t_box: (&Rational, &Rational),
-    field: &str,
-) -> Result<Option<Vec<Solution>>> {
+) -> Option<Vec<Solution>> {
     let r = resultant_t(a, b);
     if upoly::is_zero(&r) {
-        return Ok(None);
+        return None;
     }
     let (sa, sb) = (swap(a), swap(b));
     let r2 = resultant_t(&sa, &sb);
@@ -77,6 +82,7 @@ pub(crate) fn solve(
     let sub2 = subresultant_1(&sa, &sb);
     find_partners(&mut s_side, &t_side, a, b, sub.as_ref(), t_box);
     find_partners(&mut t_side, &s_side, &sa, &sb, sub2.as_ref(), s_box);
+    fibre_partners(&mut s_side, &t_side, a, b, sub.as_ref());
     // Pairs: the union of both sides' findings.
     let mut pairs: Vec<(usize, usize)> = Vec::new();
     for (i, p) in s_side.partners.iter().enumerate() {
@@ -87,23 +93,6 @@ pub(crate) fn solve(
     for (j, p) in t_side.partners.iter().enumerate() {
         if let Partners::Known { list, .. } = p {
             pairs.extend(list.iter().map(|&i| (i, j)));
-        }
-    }
-    for (i, pi) in s_side.partners.iter().enumerate() {
-        if !matches!(pi, Partners::Unresolved) || !s_side.in_box[i] {
-            continue;
-        }
-        for (j, pj) in t_side.partners.iter().enumerate() {
-            if !matches!(pj, Partners::Unresolved) || !t_side.in_box[j] {
-                continue;
-            }
-            if !excluded(a, b, &s_side.roots[i].value, &t_side.roots[j].value) {
-                return Err(Error::new(
-                    field,
-                    "cannot decide exactly whether a candidate pair is an intersection (both \
-                     parameters are irrational and each is shared by several intersections)",
-                ));
-            }
         }
     }
     pairs.sort_unstable();
@@ -121,11 +110,9 @@ pub(crate) fn solve(
                 } else if let Some(t0) = tj.value.exact() {
                     si.value.is_root_of(&at_rational(&swap(&jac), t0))
                 } else {
-                    return Err(Error::new(
-                        field,
-                        "cannot decide exactly whether an intersection is tangential (both \
-                         parameters are irrational and shared by several intersections)",
-                    ));
+                    let mut ext = Extension::new(&si.value, si.value.polynomial());
+                    let j_alpha = ext.specialise(&jac);
+                    ext.vanishes_at(&j_alpha, &tj.value)
                 }
             }
         };
@@ -135,7 +122,46 @@ pub(crate) fn solve(
             singular,
         });
     }
-    Ok(Some(out))
+    Some(out)
+}
+
+/// Step 3 of the module docs for the in-box roots of the s side that neither side placed:
+/// the fibre over Q(s_i), and the exact test of every in-box t root not placed from its side.
+fn fibre_partners(
+    s_side: &mut Side,
+    t_side: &Side,
+    a: &BiPoly,
+    b: &BiPoly,
+    sub: Option<&(ZPoly, ZPoly)>,
+) {
+    for i in 0..s_side.roots.len() {
+        if !s_side.in_box[i] || !matches!(s_side.partners[i], Partners::Unresolved) {
+            continue;
+        }
+        let alpha = &s_side.roots[i].value;
+        let candidates: Vec<usize> = (0..t_side.roots.len())
+            .filter(|&j| {
+                t_side.in_box[j]
+                    && matches!(t_side.partners[j], Partners::Unresolved)
+                    && !excluded(a, b, alpha, &t_side.roots[j].value)
+            })
+            .collect();
+        // The smallest known factor of f vanishing at alpha: S_11 vanishes there.
+        let m = match sub {
+            Some((s11, _)) if !upoly::is_zero(s11) => gcd(alpha.polynomial(), s11),
+            _ => alpha.polynomial().to_vec(),
+        };
+        let mut ext = Extension::new(alpha, &m);
+        let g = ext.fibre(a, b);
+        let list = candidates
+            .into_iter()
+            .filter(|&j| ext.vanishes_at(&g, &t_side.roots[j].value))
+            .collect();
+        s_side.partners[i] = Partners::Known {
+            list,
+            single: g.len() == 2,
+        };
+    }
 }
 
 /// The roots of `r` in the widened box side, with in-box flags.
@@ -317,6 +343,9 @@ fn sub_bi(a: &BiPoly, b: &BiPoly) -> BiPoly {
     out
 }
 
+/// The refinements (halvings of both intervals) of the interval exclusion test.
+const EXCLUSION_ROUNDS: usize = 24;
+
 /// Encloses a bivariate polynomial over the box of the two numbers' intervals.
 fn enclose_bi(a: &BiPoly, s: &AlgebraicReal, t: &AlgebraicReal) -> (Rational, Rational) {
     let (sl, sh) = s.interval();
@@ -334,11 +363,12 @@ fn enclose_bi(a: &BiPoly, s: &AlgebraicReal, t: &AlgebraicReal) -> (Rational, Ra
     (lo, hi)
 }
 
-/// Whether interval values prove that (s, t) solves A = B = 0 nowhere, trying refinements.
+/// Whether interval values prove that (s, t) solves A = B = 0 nowhere, trying a few
+/// refinements (a cheap test before the exact one).
 fn excluded(a: &BiPoly, b: &BiPoly, s: &AlgebraicReal, t: &AlgebraicReal) -> bool {
     let (mut s, mut t) = (s.clone(), t.clone());
     let zero = Rational::zero();
-    for _ in 0..200 {
+    for _ in 0..EXCLUSION_ROUNDS {
         for p in [a, b] {
             let (lo, hi) = enclose_bi(p, &s, &t);
             if lo > zero || hi < zero {
