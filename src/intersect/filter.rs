@@ -73,10 +73,11 @@
 //! proved X is an *exclusion box*: the cell's roots are its one root. A cell whose test
 //! fails is halved, or left undecided below 2^-40.
 //!
-//! **3. A tight enclosure and correct rounding.** When X is wider than 8 times the Newton
-//! correction |Y F(z)|, a second Krawczyk step on z ± max(8 |Y F(z)|, 2^-48) (inside X, so
-//! its root is X's root) gives the enclosure; else X's own. It encloses the root as s* in
-//! z_s + Δ_s, t* in z_t + Δ_t with a width near 1e-28. The correctly rounded s and t (ties
+//! **3. A tight enclosure and correct rounding.** X's own enclosure K(X) when it decides
+//! what follows (the common case: for a cell of 2^-40 it is some |Y| |J(X) - J(z)| r wide,
+//! near 1e-27); else, when X is wider than 8 times the Newton correction |Y F(z)|, a second
+//! Krawczyk step on z ± max(8 |Y F(z)|, 2^-48) (inside X, so its root is X's root). It
+//! encloses the root as s* in z_s + Δ_s, t* in z_t + Δ_t. The correctly rounded s and t (ties
 //! to even) are decided from these offsets against the half-ulp boundaries
 //! ([`round_nearest`]); the common point from P(s*) in P(z_s) + Δ_s P'(S'), also correctly
 //! rounded, so that the filter's answer equals the exact path's bit for bit.
@@ -102,8 +103,10 @@
 //! crossing, one Krawczyk test and one double-double evaluation; the search state is kept
 //! per thread and reused, so a call allocates nothing after the first (but its answer).
 
-use super::interval::{inside_radius, lower, round_nearest, upper, ConvexStep, Dd};
-use super::pyramid::{convex_point, dd_point};
+use super::interval::{
+    inside_radius, lerp_pyramid_bound, lower, round_nearest, upper, ConvexStep, Dd,
+};
+use super::pyramid::{convex_point, dd_point, dd_point_bounded};
 use crate::num::bounded::{upward, BoundedF64, ETA, UNIT_ROUNDOFF};
 use crate::num::ring::Ring;
 
@@ -164,6 +167,9 @@ struct Curve {
     error: f64,
     /// E + 3 u M: the per-unit-weight part of a distance coefficient's margin ([`clip`]).
     reach: f64,
+    /// The bound of [`Curve::eval_dd`] at arguments in [0, 1], known a priori
+    /// ([`lerp_pyramid_bound`]).
+    dd_bound: f64,
     /// Scratch.
     level: Vec<[f64; 2]>,
     level_dd: Vec<Dd>,
@@ -180,6 +186,7 @@ impl Curve {
             prepared: false,
             error: 0.0,
             reach: 0.0,
+            dd_bound: 0.0,
             level: Vec::new(),
             level_dd: Vec::new(),
             level_bounded: Vec::new(),
@@ -214,6 +221,7 @@ impl Curve {
         self.error = upward(self.degree as f64 * beta);
         let size = m0 * (1.0 + 2f64.powi(-39));
         self.reach = upward(self.error + 3.0 * UNIT_ROUNDOFF * size);
+        self.dd_bound = lerp_pyramid_bound(self.degree, m0);
         Some(())
     }
 
@@ -252,10 +260,15 @@ impl Curve {
     }
 
     /// P at the double `s` in double-double with a bound (de Casteljau's pyramid by
-    /// [`Dd::lerp`], unrolled for degrees 1 to 3: [`dd_point`]).
+    /// [`Dd::lerp`], unrolled for degrees 1 to 3: [`dd_point`]; for s in [0, 1], the common
+    /// case, with the bound known a priori: [`dd_point_bounded`]).
     #[inline]
     fn eval_dd(&mut self, s: f64) -> [Dd; 2] {
-        dd_point(&self.points, s, &mut self.level_dd)
+        if (0.0..=1.0).contains(&s) {
+            dd_point_bounded(&self.points, s, self.dd_bound, &mut self.level_dd)
+        } else {
+            dd_point(&self.points, s, &mut self.level_dd)
+        }
     }
 
     /// An enclosure of P'(s) for every s with |s - mid| <= radius: de Casteljau's pyramid of
@@ -852,24 +865,30 @@ impl Search {
             mid: z,
             radius: cover,
         };
-        let mut dp = p.tangent_pyramid(z[0], cover[0]);
+        let dp = p.tangent_pyramid(z[0], cover[0]);
         let dq = q.tangent_pyramid(z[1], cover[1]);
-        let Some(mut k) = krawczyk(&outer, f, dp, dq).filter(|k| k.proved) else {
+        let Some(k) = krawczyk(&outer, f, dp, dq).filter(|k| k.proved) else {
             return Some(false);
         };
-        // A tighter box around z when the cover is large: 8 times the Newton correction.
-        let wanted = [0, 1].map(|i| (8.0 * k.offset[i].value().abs()).max(TIGHT_RADIUS));
-        if (0..2).any(|i| wanted[i] < cover[i]) {
-            let radius = [0, 1].map(|i| wanted[i].min(cover[i]));
-            let dp_inner = p.tangent_pyramid(z[0], radius[0]);
-            let dq_inner = q.tangent_pyramid(z[1], radius[1]);
-            let inner = Box2 { mid: z, radius };
-            if let Some(k_inner) = krawczyk(&inner, f, dp_inner, dq_inner).filter(|k| k.proved) {
+        // The outer box's enclosure decides the common case (a tiny cell, whose enclosure is
+        // some |Y| |J(X) - J(z)| r wide, far below an ulp); else a tighter box around z: 8
+        // times the Newton correction.
+        let root = match root_of(z, pz, &k, dp) {
+            Some(root) => root,
+            None => {
+                let wanted = [0, 1].map(|i| (8.0 * k.offset[i].value().abs()).max(TIGHT_RADIUS));
+                if (0..2).all(|i| wanted[i] >= cover[i]) {
+                    return None;
+                }
+                let radius = [0, 1].map(|i| wanted[i].min(cover[i]));
+                let dp_inner = p.tangent_pyramid(z[0], radius[0]);
+                let dq_inner = q.tangent_pyramid(z[1], radius[1]);
+                let inner = Box2 { mid: z, radius };
                 // Its one root is the one root of the outer box, which contains it.
-                (k, dp) = (k_inner, dp_inner);
+                let k_inner = krawczyk(&inner, f, dp_inner, dq_inner).filter(|k| k.proved)?;
+                root_of(z, pz, &k_inner, dp_inner)?
             }
-        }
-        let root = root_of(z, pz, &k, dp)?;
+        };
         let index = self.add_root(root, &outer)?;
         self.exclusions.push((outer.inner(), index));
         Some(true)

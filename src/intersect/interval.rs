@@ -132,6 +132,25 @@ impl Dd {
     /// [0, 1], with no growth over the levels of the pyramid.
     #[inline]
     pub(crate) fn lerp(x: &Dd, y: &Dd, s: f64) -> Dd {
+        let (r1, w3, [t1, w1, c, w2, t3]) = Dd::lerp_parts(x, y, s);
+        let own = UNIT_ROUNDOFF * (t1.abs() + w1.abs() + c.abs() + w2.abs() + t3.abs() + w3.abs())
+            + 2.0 * ETA;
+        let spread = upward((1.0 - s).abs() + s.abs());
+        Dd::make(r1, w3, spread * x.bound.max(y.bound) + own)
+    }
+
+    /// [`Dd::lerp`]'s value alone (the same doubles hi and lo, bit for bit), its bound left
+    /// at zero: for a pyramid whose bound is known a priori ([`lerp_pyramid_bound`]).
+    #[inline]
+    pub(crate) fn lerp_value(x: &Dd, y: &Dd, s: f64) -> Dd {
+        let (r1, w3, _) = Dd::lerp_parts(x, y, s);
+        Dd::make(r1, w3, 0.0)
+    }
+
+    /// The operations of [`Dd::lerp`]: r1 + w3 and the rounded low-order terms whose
+    /// roundings its bound charges (t1, w1, c, w2, t3; w3 is the second result).
+    #[inline(always)]
+    fn lerp_parts(x: &Dd, y: &Dd, s: f64) -> (f64, f64, [f64; 5]) {
         // d = y - x.
         let (d1, e1) = two_sum(y.hi, -x.hi);
         let t1 = y.lo - x.lo;
@@ -146,10 +165,13 @@ impl Dd {
         let (r1, e3) = two_sum(x.hi, p1);
         let t3 = x.lo + p2;
         let w3 = e3 + t3;
-        let own = UNIT_ROUNDOFF * (t1.abs() + w1.abs() + c.abs() + w2.abs() + t3.abs() + w3.abs())
-            + 2.0 * ETA;
-        let spread = upward((1.0 - s).abs() + s.abs());
-        Dd::make(r1, w3, spread * x.bound.max(y.bound) + own)
+        (r1, w3, [t1, w1, c, w2, t3])
+    }
+
+    /// The same value with another bound.
+    #[inline]
+    pub(crate) fn with_bound(self, bound: f64) -> Dd {
+        Dd { bound, ..self }
     }
 
     fn bound_or_infinite(&self) -> f64 {
@@ -170,6 +192,30 @@ impl Dd {
             bound: upward(bound),
         }
     }
+}
+
+/// A bound, known before the evaluation, on the error of de Casteljau's pyramid of degree n
+/// by [`Dd::lerp`] at a double s in [0, 1] on doubles of size at most `size`: every entry's
+/// running bound of [`Dd::lerp`] is at most this, so that [`Dd::lerp_value`] may be used
+/// with it.
+///
+/// Each entry's exact value is a convex combination of the inputs, at most M = `size`; a
+/// computed entry hi + lo (|lo| <= u |hi| after the renormalising TwoSum) lies within its
+/// bound B of it, so |hi| <= H = M (1 + 2^-40) while B <= 2^-80 M (true for n <= 256, see
+/// below). From |x_hi|, |y_hi| <= H and |x_lo|, |y_lo| <= u H the low-order terms of
+/// [`Dd::lerp`] are at most, up to factors (1 + 12u): |t1| <= 2uH, |w1| <= 4uH (|e1| <= 2uH
+/// plus |t1|), |c| <= 2uH (|dl| <= u |dh|, |dh| <= 2H), |w2| <= 4uH (|pe| <= u |ph|),
+/// |t3| <= 3uH (|x_lo| plus |p2| <= u |p1|), |w3| <= 4uH (|e3| <= u |r1|, |r1| <= H (1 + 10u)
+/// as r1 is the convex combination x + s (y - x) up to the terms above): the step's own
+/// charge u (|t1| + |w1| + |c| + |w2| + |t3| + |w3|) + 2η is at most 19 u^2 H (1 + 12u) + 2η
+/// < 20 u^2 H + 2η. The spread |1 - s| + |s| is 1 for s in [0, 1]; the running bound rounds
+/// it upwards (1 + 16u + 8η) and each step's bound once more ([`upward`]), so that n levels
+/// give at most n (1 + 33u)^n (20 u^2 H + 10η) <= n (1 + 2^-36) (20 u^2 H + 10η) for
+/// n <= 256, below 2^-80 M for M >= 1e-90; pushed upwards once more.
+pub(crate) fn lerp_pyramid_bound(degree: usize, size: f64) -> f64 {
+    let h = size * (1.0 + 2f64.powi(-40));
+    let per_level = 20.0 * UNIT_ROUNDOFF * UNIT_ROUNDOFF * h + 10.0 * ETA;
+    upward(degree as f64 * per_level * (1.0 + 2f64.powi(-36)))
 }
 
 impl PartialEq for Dd {

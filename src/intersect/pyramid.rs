@@ -51,6 +51,50 @@ pub(super) fn dd_point_fixed<const N: usize>(points: &[[f64; 2]; N], s: f64) -> 
     })
 }
 
+/// [`dd_point`]'s values (bit for bit) at a double `s` in [0, 1] with the bound `bound`
+/// known before the evaluation ([`lerp_pyramid_bound`] of the degree and the largest
+/// coordinate), so that no step computes a bound: [`Dd::lerp_value`] in place of
+/// [`Dd::lerp`], whose running bound the a-priori one dominates.
+#[inline]
+pub(super) fn dd_point_bounded(
+    points: &[[f64; 2]],
+    s: f64,
+    bound: f64,
+    level: &mut Vec<Dd>,
+) -> [Dd; 2] {
+    debug_assert!((0.0..=1.0).contains(&s));
+    let values = match *points {
+        [p0, p1] => dd_point_values(&[p0, p1], s),
+        [p0, p1, p2] => dd_point_values(&[p0, p1, p2], s),
+        [p0, p1, p2, p3] => dd_point_values(&[p0, p1, p2, p3], s),
+        _ => {
+            level.clear();
+            level.extend(points.iter().flatten().map(|&x| Dd::exact(x)));
+            for k in (4..=level.len()).rev().step_by(2) {
+                for i in 0..k - 2 {
+                    level[i] = Dd::lerp_value(&level[i], &level[i + 2], s);
+                }
+            }
+            [level[0], level[1]]
+        }
+    };
+    values.map(|v| v.with_bound(bound))
+}
+
+/// [`dd_point_fixed`]'s values by [`Dd::lerp_value`] (bounds left at zero).
+#[inline(always)]
+fn dd_point_values<const N: usize>(points: &[[f64; 2]; N], s: f64) -> [Dd; 2] {
+    [0, 1].map(|c| {
+        let mut level: [Dd; N] = points.map(|p| Dd::exact(p[c]));
+        for k in (1..N).rev() {
+            for i in 0..k {
+                level[i] = Dd::lerp_value(&level[i], &level[i + 1], s);
+            }
+        }
+        level[0]
+    })
+}
+
 /// [`dd_point`] in the vector `level` (interleaved coordinates), for any number of points.
 pub(super) fn dd_point_general(points: &[[f64; 2]], s: f64, level: &mut Vec<Dd>) -> [Dd; 2] {
     level.clear();
@@ -111,6 +155,7 @@ pub(super) fn convex_point_general(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::intersect::interval::lerp_pyramid_bound;
     use crate::num::ring::Rational;
     use crate::test_rng::XorShift;
     use num_traits::FromPrimitive;
@@ -214,6 +259,37 @@ mod tests {
                 let size = p.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
                 assert!(bound <= 1e-30 * size + 1e-300, "{bound:e} for {size:e}");
             }
+        }
+    }
+
+    #[test]
+    fn a_priori_bounded_point_has_the_values_and_dominates_the_running_bound() {
+        // Degrees 1 to 3 (unrolled) and 4 to 9 (the vector), sizes 2^±300, arguments in
+        // [0, 1]: the same hi and lo as `dd_point`, a bound at least its running bound, and the
+        // exact value within it.
+        let mut rng = XorShift(0x3c6e_f372_fe94_f82b);
+        let mut level = Vec::new();
+        for round in 0..900 {
+            let n = 2 + round % 9;
+            let p = points(&mut rng, n, 300);
+            let s = argument(&mut rng);
+            let size = p.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+            let bound = lerp_pyramid_bound(n - 1, size);
+            let fast = dd_point_bounded(&p, s, bound, &mut level);
+            let running = dd_point(&p, s, &mut level);
+            let truth = exact_point(p.iter().map(|q| q.map(exact)).collect(), &exact(s));
+            for c in 0..2 {
+                assert_eq!(fast[c].hi().to_bits(), running[c].hi().to_bits());
+                assert_eq!(
+                    fast[c].rest().value().to_bits(),
+                    running[c].rest().value().to_bits()
+                );
+                assert!(bound >= running[c].rest().error_bound(), "{p:?} at {s}");
+                let value = exact(fast[c].hi()) + exact(fast[c].rest().value());
+                assert!(within(value, bound, &truth[c]), "{p:?} at {s}");
+            }
+            // And of double-double size: some n u^2 times the points.
+            assert!(bound <= 1e-30 * size * n as f64, "{bound:e} for {size:e}");
         }
     }
 
