@@ -95,13 +95,7 @@ impl<T: Copy + Default + Debug + PartialEq, const N: usize> CoordinateBuffer<T>
     #[inline]
     fn from_vec(values: Vec<T>) -> Self {
         if values.len() <= N {
-            let mut inline = [T::default(); N];
-            inline[..values.len()].copy_from_slice(&values);
-            SmallCoords {
-                inline,
-                len: values.len(),
-                heap: Vec::new(),
-            }
+            Self::from_slice(&values)
         } else {
             SmallCoords {
                 inline: [T::default(); N],
@@ -113,20 +107,15 @@ impl<T: Copy + Default + Debug + PartialEq, const N: usize> CoordinateBuffer<T>
 
     #[inline]
     fn from_slice(values: &[T]) -> Self {
-        if values.len() <= N {
-            let mut inline = [T::default(); N];
-            inline[..values.len()].copy_from_slice(values);
-            SmallCoords {
-                inline,
-                len: values.len(),
-                heap: Vec::new(),
-            }
-        } else {
-            SmallCoords {
-                inline: [T::default(); N],
-                len: values.len(),
-                heap: values.to_vec(),
-            }
+        if values.len() > N {
+            return Self::from_vec(values.to_vec());
+        }
+        let mut inline = [T::default(); N];
+        inline[..values.len()].copy_from_slice(values);
+        SmallCoords {
+            inline,
+            len: values.len(),
+            heap: Vec::new(),
         }
     }
 
@@ -254,5 +243,14 @@ mod tests {
             SmallCoords::<f64, 4>::from_vec(Vec::new()).as_slice(),
             &[] as &[f64]
         );
+        // A copy of a slice, on either side of the limit, holds the slice, where a vector
+        // of the same numbers would be held.
+        for len in 0..=6 {
+            let values: Vec<f64> = (0..len).map(|i| i as f64 + 0.5).collect();
+            let copied = SmallCoords::<f64, 4>::from_slice(&values);
+            assert_eq!(copied.as_slice(), &values[..], "from_slice, {len} numbers");
+            assert_eq!(copied.is_inline(), len <= 4);
+            assert_eq!(copied.heap.len(), if len <= 4 { 0 } else { len });
+        }
     }
 }
