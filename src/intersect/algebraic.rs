@@ -115,32 +115,6 @@ impl AlgebraicReal {
         })
     }
 
-    /// The number (x - beta) / alpha for rationals alpha != 0 and beta: a root of
-    /// f(alpha t + beta), with the image interval.
-    pub(crate) fn affine_preimage(&self, alpha: &Rational, beta: &Rational) -> Self {
-        if let Some(r) = &self.exact {
-            return Self::from_rational((r - beta) / alpha);
-        }
-        let mut c: Vec<Vec<Rational>> = self
-            .poly
-            .iter()
-            .map(|x| vec![Rational::from_integer(x.clone())])
-            .collect();
-        crate::shape::basis::taylor_shift(&mut c, beta);
-        crate::shape::basis::scale_argument(&mut c, alpha);
-        let g: Vec<Rational> = c.into_iter().map(|p| p[0].clone()).collect();
-        let (a, b) = ((&self.lo - beta) / alpha, (&self.hi - beta) / alpha);
-        let (lo, hi) = if a < b { (a, b) } else { (b, a) };
-        let mut out = AlgebraicReal {
-            poly: upoly::from_rationals(&g),
-            lo,
-            hi,
-            exact: None,
-        };
-        out.settle_rationality();
-        out
-    }
-
     /// The square-free primitive integer polynomial (ascending powers) vanishing at the number.
     pub fn polynomial(&self) -> &[BigInt] {
         &self.poly

@@ -14,44 +14,42 @@
 //! sign of P_x - m at s).
 //!
 //! **Overlaps.** Res_t(A, B) vanishes identically exactly when A and B share a factor, i.e.
-//! the curves share a component. Two cases are decided exactly:
-//! * both curves on one line (all control points collinear): with p(s), q(t) the positions
-//!   along the line, each curve is cut at its turning points (roots of p' of odd multiplicity
-//!   in (0, 1)) into monotone pieces; every pair of pieces whose images share a segment of
-//!   positive length gives one overlap, whose ends are the parameters of the common image's
-//!   ends (roots of p(s) - c in the piece); pieces whose images only touch give a point;
-//! * otherwise, curves of the same degree d related by an affine change of parameter
-//!   s = alpha t + beta with rational alpha, beta (alpha^d = the ratio of the leading
-//!   coefficients, beta from the next coefficient), verified by the exact identity
-//!   P(alpha t + beta) = Q(t) of power coefficients: the overlap is the part of [0, 1] whose
-//!   image under the map lies in [0, 1]; the crossings of P with itself between the two
-//!   stretches are found by the divided differences (see [`self_intersections`]).
+//! the curves share a component. Then both are decomposed as P = R(phi), Q = R(g) with R
+//! proper and the answer is decided exactly by `components` (overlaps between the monotone
+//! pieces of phi and g, cut at turning points that may be irrational algebraic numbers,
+//! touching points, and R's own double points): curves on one line, reparametrised curves
+//! such as Q(t) = P(t^2), and curves that retrace themselves are all answered.
 //!
-//! Anything else with a common component (different degrees such as Q(t) = P(t^2), turning
-//! points of collinear curves at irrational parameters) is refused with an error saying so.
-//! In the affine case each curve is assumed not to retrace itself (a proper
-//! parametrisation).
+//! **Single points.** A curve whose control points are all one point c is accepted. Every s
+//! then pairs with each t where the other curve passes through c (the roots in [0, 1] of
+//! gcd(Q_x - c_x, Q_y - c_y)); these pairs are not isolated, so each is reported as an
+//! overlap whose range on the single-point curve is all of [0, 1] and whose range on the
+//! other is the one value (t0 = t1): P maps [0, 1] onto the same set, {c}, as Q maps
+//! [t0, t0]. Two single points give one overlap [0, 1] x [0, 1] when equal, else nothing; a
+//! single point with itself gives the overlap s = t = [0, 1] (every pair).
 //!
 //! **Self-intersection.** D(s, t) = (P(s) - P(t)) / (s - t) (exact division: the divided
 //! differences of the power coefficients, sum_k p_k sum_(i + j = k - 1) s^i t^j) vanishes off
 //! the diagonal exactly where P(s) = P(t); pairs s < t are kept (s = t only at cusps).
 //! A closed curve gives (0, 1). The Jacobian of D at a solution is -cross(P'(s), P'(t)) /
-//! (s - t)^2, so the tangency rule is the same. A curve that retraces itself (collinear case
-//! only) gives overlaps with t0 > t1, s1 <= t1.
+//! (s - t)^2, so the tangency rule is the same. A curve that retraces itself (D has a
+//! factor of its own, P = R(phi) with deg phi > 1) gives overlaps with t0 > t1, s1 <= t1,
+//! one per pair of monotone pieces of phi whose images overlap (see `components`).
 
 use super::algebraic::{exact_f64, round_polynomial_at, upoly_eval_q, AlgebraicReal};
 use super::bivariate::BiPoly;
 use super::bivariate::{resultant_t, swap};
+use super::components::{common_component, retracing};
 use super::filter::certified_crossings_f64;
 use super::solve::{solve, Solution};
-use super::upoly::{self, derivative, from_rationals, square_free_part};
+use super::upoly::{self, from_rationals, square_free_part};
 use super::zeros::{rationals_of, roots_with_multiplicity};
 use crate::error::{Error, ErrorKind, Result};
 use crate::num::ring::{rational_to_f64, Rational};
-use crate::shape::basis::{bernstein_to_power, scale_argument, taylor_shift};
+use crate::shape::basis::bernstein_to_power;
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Zero};
 use std::cmp::Ordering;
 
 /// One isolated intersection P(s) = Q(t).
@@ -106,13 +104,13 @@ impl Power {
         let c = bernstein_to_power(&pts);
         let x: Vec<Rational> = c.iter().map(|p| p[0].clone()).collect();
         let y: Vec<Rational> = c.iter().map(|p| p[1].clone()).collect();
-        if x[1..].iter().all(Zero::is_zero) && y[1..].iter().all(Zero::is_zero) {
-            return Err(Error::new(
-                field,
-                "the curve is a single point (every control point the same)",
-            ));
-        }
         Ok(Power { x, y })
+    }
+
+    /// The point of a curve that is a single point (every control point the same).
+    fn single_point(&self) -> Option<[Rational; 2]> {
+        (self.x[1..].iter().all(Zero::is_zero) && self.y[1..].iter().all(Zero::is_zero))
+            .then(|| [self.x[0].clone(), self.y[0].clone()])
     }
 
     fn at(&self, s: &Rational) -> [Rational; 2] {
@@ -145,12 +143,14 @@ fn separated(f: &[Rational], g: &[Rational]) -> BiPoly {
 /// the module docs for the method and its limits.
 ///
 /// # Errors
-/// [`ErrorKind::Empty`] on `p` or `q` for fewer than two control points; on `p` or `q` for a
-/// curve that is a single point; on `curves` for a common component that is not one of the
-/// decided cases, or a pair that cannot be decided exactly (see the module docs).
+/// [`ErrorKind::Empty`] on `p` or `q` for fewer than two control points; on `curves` only
+/// for an internal inconsistency of the common-component case (never expected).
 pub fn intersect_curves(p: &[[Rational; 2]], q: &[[Rational; 2]]) -> Result<Intersections> {
     let pp = Power::of("p", p)?;
     let qq = Power::of("q", q)?;
+    if let Some(answer) = single_point_pair(&pp, &qq) {
+        return Ok(answer);
+    }
     let a = separated(&pp.x, &qq.x);
     let b = separated(&pp.y, &qq.y);
     if let Some(points) = filtered(p, q, &a, &b) {
@@ -165,7 +165,7 @@ pub fn intersect_curves(p: &[[Rational; 2]], q: &[[Rational; 2]]) -> Result<Inte
                 .collect();
             Ok(finish(points, Vec::new()))
         }
-        None => overlap_case(p, q, &pp, &qq),
+        None => overlap_case(&pp, &qq),
     }
 }
 
@@ -284,301 +284,63 @@ fn finish(mut points: Vec<IntersectionPoint>, mut overlaps: Vec<Overlap>) -> Int
     Intersections { points, overlaps }
 }
 
-/// Whether every point of both lists lies on one line.
-fn collinear(points: &[[Rational; 2]]) -> Option<([Rational; 2], [Rational; 2])> {
-    let o = points[0].clone();
-    let d = points
-        .iter()
-        .map(|p| [&p[0] - &o[0], &p[1] - &o[1]])
-        .find(|v| !v[0].is_zero() || !v[1].is_zero())?;
-    points
-        .iter()
-        .all(|p| ((&p[0] - &o[0]) * &d[1] - (&p[1] - &o[1]) * &d[0]).is_zero())
-        .then_some((o, d))
-}
-
-/// The curves share a component: the decided cases of the module docs.
-fn overlap_case(
-    p: &[[Rational; 2]],
-    q: &[[Rational; 2]],
-    pp: &Power,
-    qq: &Power,
-) -> Result<Intersections> {
-    let all: Vec<[Rational; 2]> = p.iter().chain(q).cloned().collect();
-    if let Some((o, d)) = collinear(&all) {
-        let along = |c: &Power| -> Vec<Rational> {
-            c.x.iter()
-                .zip(&c.y)
-                .enumerate()
-                .map(|(i, (x, y))| {
-                    let (ox, oy) = if i == 0 {
-                        (o[0].clone(), o[1].clone())
-                    } else {
-                        (Rational::zero(), Rational::zero())
-                    };
-                    (x - ox) * &d[0] + (y - oy) * &d[1]
-                })
-                .collect()
-        };
-        let (pts, ovs) = collinear_overlaps(&along(pp), &along(qq), false)?;
-        let points = pts
+/// The answer when P or Q is a single point (see the module docs), else `None`.
+fn single_point_pair(pp: &Power, qq: &Power) -> Option<Intersections> {
+    let whole = || {
+        [
+            AlgebraicReal::from_rational(Rational::zero()),
+            AlgebraicReal::from_rational(Rational::one()),
+        ]
+    };
+    let twice = |x: AlgebraicReal| [x.clone(), x];
+    let overlaps = match (pp.single_point(), qq.single_point()) {
+        (None, None) => return None,
+        (Some(c), Some(d)) if c == d => vec![Overlap {
+            s: whole(),
+            t: whole(),
+        }],
+        (Some(_), Some(_)) => Vec::new(),
+        (Some(c), None) => through_point(qq, &c)
             .into_iter()
-            .map(|(s, t)| {
-                point_of(
-                    pp,
-                    Some(qq),
-                    Solution {
-                        s,
-                        t,
-                        singular: true,
-                    },
-                )
+            .map(|t| Overlap {
+                s: whole(),
+                t: twice(t),
             })
-            .collect();
-        return Ok(finish(points, ovs));
-    }
-    affine_overlap(pp, qq)
+            .collect(),
+        (None, Some(d)) => through_point(pp, &d)
+            .into_iter()
+            .map(|s| Overlap {
+                s: twice(s),
+                t: whole(),
+            })
+            .collect(),
+    };
+    Some(finish(Vec::new(), overlaps))
 }
 
-/// The monotone pieces of the 1-D polynomial f on [0, 1]: the turning points (roots of f'
-/// of odd multiplicity in (0, 1)) with 0 and 1, all rational, else an error.
-fn pieces(f: &[Rational]) -> Result<Vec<Rational>> {
-    let fi = from_rationals(f);
-    let mut cuts = vec![Rational::zero()];
-    let df = derivative(&fi);
-    if !upoly::is_zero(&df) {
-        for r in roots_with_multiplicity(&df, &Rational::zero(), &Rational::one()) {
-            if r.multiplicity % 2 == 0 {
-                continue;
-            }
-            match r.value.exact() {
-                Some(x) if x.is_zero() || x.is_one() => {}
-                Some(x) => cuts.push(x.clone()),
-                None => {
-                    return Err(Error::new(
-                        "curves",
-                        "the curves overlap on a line and one turns back at an irrational \
-                         parameter: not decided exactly by this version",
-                    ))
-                }
-            }
-        }
-    }
-    cuts.push(Rational::one());
-    Ok(cuts)
-}
-
-/// The parameter in [a, b] where the monotone f takes the value c (f(a) <= c <= f(b) or
-/// reversed), exactly.
-fn preimage(f: &[Rational], a: &Rational, b: &Rational, c: &Rational) -> AlgebraicReal {
-    for x in [a, b] {
-        if &upoly_eval_q(f, x) == c {
-            return AlgebraicReal::from_rational(x.clone());
-        }
-    }
-    let mut g = f.to_vec();
-    g[0] -= c;
-    let gi = from_rationals(&g);
-    roots_with_multiplicity(&gi, a, b)
+/// The parameters in [0, 1] where the curve (not a single point) passes through c: the
+/// roots of gcd(x(t) - c_x, y(t) - c_y).
+fn through_point(curve: &Power, c: &[Rational; 2]) -> Vec<AlgebraicReal> {
+    let minus = |p: &[Rational], c: &Rational| {
+        let mut p = p.to_vec();
+        p[0] -= c;
+        from_rationals(&p)
+    };
+    let g = upoly::gcd(&minus(&curve.x, &c[0]), &minus(&curve.y, &c[1]));
+    roots_with_multiplicity(&g, &Rational::zero(), &Rational::one())
         .into_iter()
-        .next()
-        .expect("a monotone piece takes every value between its ends")
-        .value
+        .map(|r| r.value)
+        .collect()
 }
 
-/// Overlaps and touching points of two collinear curves with positions f(s), g(t) along
-/// their line. With `same` (one curve against itself) only piece pairs k < l are used.
-#[allow(clippy::type_complexity)]
-fn collinear_overlaps(
-    f: &[Rational],
-    g: &[Rational],
-    same: bool,
-) -> Result<(Vec<(AlgebraicReal, AlgebraicReal)>, Vec<Overlap>)> {
-    let (cf, cg) = (pieces(f)?, pieces(g)?);
-    let mut points = Vec::new();
-    let mut overlaps = Vec::new();
-    for k in 0..cf.len() - 1 {
-        let (a0, a1) = (&cf[k], &cf[k + 1]);
-        let (fa0, fa1) = (upoly_eval_q(f, a0), upoly_eval_q(f, a1));
-        for l in 0..cg.len() - 1 {
-            if same && l <= k {
-                continue;
-            }
-            let (b0, b1) = (&cg[l], &cg[l + 1]);
-            let (gb0, gb1) = (upoly_eval_q(g, b0), upoly_eval_q(g, b1));
-            let lo = fa0
-                .clone()
-                .min(fa1.clone())
-                .max(gb0.clone().min(gb1.clone()));
-            let hi = fa0
-                .clone()
-                .max(fa1.clone())
-                .min(gb0.clone().max(gb1.clone()));
-            match lo.cmp(&hi) {
-                Ordering::Greater => {}
-                Ordering::Equal => {
-                    points.push((preimage(f, a0, a1, &lo), preimage(g, b0, b1, &lo)))
-                }
-                Ordering::Less => {
-                    // s increases along the piece: its first end has the value nearer fa0.
-                    let (c0, c1) = if fa0 < fa1 { (&lo, &hi) } else { (&hi, &lo) };
-                    overlaps.push(Overlap {
-                        s: [preimage(f, a0, a1, c0), preimage(f, a0, a1, c1)],
-                        t: [preimage(g, b0, b1, c0), preimage(g, b0, b1, c1)],
-                    });
-                }
-            }
-        }
-    }
-    Ok((points, overlaps))
-}
-
-/// The exact rational d-th roots of a rational (both signs for even d), if any.
-fn rational_roots_of(x: &Rational, d: usize) -> Vec<Rational> {
-    let root = |n: &BigInt| -> Option<BigInt> {
-        let r = n.abs().nth_root(d as u32);
-        (num_traits::pow(r.clone(), d) == n.abs()).then_some(r)
-    };
-    let (Some(rn), Some(rd)) = (root(x.numer()), root(x.denom())) else {
-        return Vec::new();
-    };
-    let r = Rational::new(rn, rd);
-    if d.is_multiple_of(2) {
-        if x.is_negative() {
-            Vec::new()
-        } else {
-            vec![r.clone(), -r]
-        }
-    } else if x.is_negative() {
-        vec![-r]
-    } else {
-        vec![r]
-    }
-}
-
-/// The affine case of the module docs.
-fn affine_overlap(pp: &Power, qq: &Power) -> Result<Intersections> {
-    let refuse = || {
-        Error::new(
-            "curves",
-            "the curves share a component through a change of parameter that is not affine: \
-             not decided exactly by this version",
-        )
-    };
-    let deg = |c: &Power| {
-        c.x.iter()
-            .zip(&c.y)
-            .rposition(|(x, y)| !x.is_zero() || !y.is_zero())
-            .unwrap_or(0)
-    };
-    let d = deg(pp);
-    if d != deg(qq) || d == 0 {
-        return Err(refuse());
-    }
-    let (px, py, qx, qy) = (&pp.x[d], &pp.y[d], &qq.x[d], &qq.y[d]);
-    // q_d = lambda p_d.
-    let lambda = if !px.is_zero() { qx / px } else { qy / py };
-    if &(px * &lambda) != qx || &(py * &lambda) != qy {
-        return Err(refuse());
-    }
-    let dd = Rational::from_integer(BigInt::from(d));
-    for alpha in rational_roots_of(&lambda, d) {
-        // Coefficient of t^(d-1) of P(alpha t + beta): alpha^(d-1) (p_(d-1) + d p_d beta).
-        let a1 = num_traits::pow(alpha.clone(), d - 1);
-        let beta = if !px.is_zero() {
-            (&qq.x[d - 1] / &a1 - &pp.x[d - 1]) / (&dd * px)
-        } else {
-            (&qq.y[d - 1] / &a1 - &pp.y[d - 1]) / (&dd * py)
-        };
-        let compose = |c: &[Rational]| -> Vec<Rational> {
-            let mut v: Vec<Vec<Rational>> = c.iter().map(|x| vec![x.clone()]).collect();
-            taylor_shift(&mut v, &beta);
-            scale_argument(&mut v, &alpha);
-            v.into_iter().map(|p| p[0].clone()).collect()
-        };
-        let same = |a: Vec<Rational>, b: &[Rational]| {
-            let n = a.len().max(b.len());
-            (0..n).all(|i| {
-                a.get(i).cloned().unwrap_or_default() == b.get(i).cloned().unwrap_or_default()
-            })
-        };
-        if !same(compose(&pp.x), &qq.x) || !same(compose(&pp.y), &qq.y) {
-            continue;
-        }
-        return Ok(affine_answer(pp, qq, &alpha, &beta));
-    }
-    Err(refuse())
-}
-
-/// Overlap and crossings of P and Q(t) = P(alpha t + beta).
-fn affine_answer(pp: &Power, qq: &Power, alpha: &Rational, beta: &Rational) -> Intersections {
-    let (zero, one) = (Rational::zero(), Rational::one());
-    let s_of = |t: &Rational| alpha * t + beta;
-    let t_of = |s: &Rational| (s - beta) / alpha;
-    // The t-range where s = alpha t + beta is in [0, 1].
-    let (ta, tb) = {
-        let (u, v) = (t_of(&zero), t_of(&one));
-        let (u, v) = if u < v { (u, v) } else { (v, u) };
-        (u.max(zero.clone()), v.min(one.clone()))
-    };
-    let mut overlaps = Vec::new();
-    let mut points = Vec::new();
-    match ta.cmp(&tb) {
-        Ordering::Less => {
-            let (t0, t1) = if alpha.is_positive() {
-                (ta, tb)
-            } else {
-                (tb, ta)
-            };
-            overlaps.push(Overlap {
-                s: [
-                    AlgebraicReal::from_rational(s_of(&t0)),
-                    AlgebraicReal::from_rational(s_of(&t1)),
-                ],
-                t: [
-                    AlgebraicReal::from_rational(t0),
-                    AlgebraicReal::from_rational(t1),
-                ],
-            });
-        }
-        Ordering::Equal => points.push(point_of(
-            pp,
-            Some(qq),
-            Solution {
-                s: AlgebraicReal::from_rational(s_of(&ta)),
-                t: AlgebraicReal::from_rational(ta),
-                singular: true,
-            },
-        )),
-        Ordering::Greater => {}
-    }
-    // Crossings P(s) = P(u), s != u, u = alpha t + beta with t in [0, 1].
-    let (u0, u1) = {
-        let (u, v) = (s_of(&zero), s_of(&one));
-        if u < v {
-            (u, v)
-        } else {
-            (v, u)
-        }
-    };
-    if let Some(sols) = divided_difference_solutions(pp, (&zero, &one), (&u0, &u1)) {
-        for sol in sols {
-            if sol.s.equals(&sol.t) {
-                continue;
-            }
-            let t = sol.t.affine_preimage(alpha, beta);
-            points.push(point_of(
-                pp,
-                Some(qq),
-                Solution {
-                    s: sol.s,
-                    t,
-                    singular: sol.singular,
-                },
-            ));
-        }
-    }
-    finish(points, overlaps)
+/// The curves share a component: the answer of [`common_component`], with the points.
+fn overlap_case(pp: &Power, qq: &Power) -> Result<Intersections> {
+    let (sols, overlaps) = common_component((&pp.x, &pp.y), (&qq.x, &qq.y))?;
+    let points = sols
+        .into_iter()
+        .map(|s| point_of(pp, Some(qq), s))
+        .collect();
+    Ok(finish(points, overlaps))
 }
 
 /// The bivariate polynomial (f(s) - f(t)) / (s - t) scaled to integers.
@@ -610,50 +372,32 @@ fn divided_difference_solutions(
 /// the overlaps of a curve that retraces itself (see the module docs).
 ///
 /// # Errors
-/// [`ErrorKind::Empty`] on `curve` for fewer than two control points; on `curve` for a single
-/// point, or for a retracing that is not decided (a curve that is not on a line, or turns at
-/// irrational parameters).
+/// [`ErrorKind::Empty`] on `curve` for fewer than two control points; on `curves` only for
+/// an internal inconsistency of the retracing case (never expected).
 pub fn self_intersections(p: &[[Rational; 2]]) -> Result<Intersections> {
     let pp = Power::of("curve", p)?;
     let (zero, one) = (Rational::zero(), Rational::one());
+    if pp.single_point().is_some() {
+        let whole = [
+            AlgebraicReal::from_rational(zero),
+            AlgebraicReal::from_rational(one),
+        ];
+        return Ok(finish(
+            Vec::new(),
+            vec![Overlap {
+                s: whole.clone(),
+                t: whole,
+            }],
+        ));
+    }
     let sols = divided_difference_solutions(&pp, (&zero, &one), (&zero, &one));
     let Some(sols) = sols else {
-        if let Some((o, d)) = collinear(p) {
-            let f: Vec<Rational> =
-                pp.x.iter()
-                    .zip(&pp.y)
-                    .enumerate()
-                    .map(|(i, (x, y))| {
-                        if i == 0 {
-                            (x - &o[0]) * &d[0] + (y - &o[1]) * &d[1]
-                        } else {
-                            x * &d[0] + y * &d[1]
-                        }
-                    })
-                    .collect();
-            let (pts, ovs) = collinear_overlaps(&f, &f, true)?;
-            let points = pts
-                .into_iter()
-                .filter(|(s, t)| s.compare(t) == Ordering::Less)
-                .map(|(s, t)| {
-                    point_of(
-                        &pp,
-                        None,
-                        Solution {
-                            s,
-                            t,
-                            singular: true,
-                        },
-                    )
-                })
-                .collect();
-            return Ok(finish(points, ovs));
-        }
-        return Err(Error::new(
-            "curve",
-            "the curve retraces itself along a path that is not a line: not decided exactly \
-             by this version",
-        ));
+        let (sols, overlaps) = retracing(&pp.x, &pp.y)?;
+        let points = sols
+            .into_iter()
+            .map(|sol| point_of(&pp, None, sol))
+            .collect();
+        return Ok(finish(points, overlaps));
     };
     let points = sols
         .into_iter()

@@ -66,14 +66,14 @@ pub(crate) struct Extension {
 }
 
 /// Drops trailing zero coefficients of a rational polynomial.
-fn trim_q(p: &mut Vec<Rational>) {
+pub(crate) fn trim_q(p: &mut Vec<Rational>) {
     while p.last().is_some_and(Zero::is_zero) {
         p.pop();
     }
 }
 
 /// The degree of a non-zero rational polynomial (`None` for zero).
-fn deg_q(p: &[Rational]) -> Option<usize> {
+pub(crate) fn deg_q(p: &[Rational]) -> Option<usize> {
     p.iter().rposition(|c| !c.is_zero())
 }
 
@@ -88,7 +88,7 @@ fn to_q(p: &[BigInt]) -> Vec<Rational> {
 }
 
 /// a + b.
-fn add_q(a: &[Rational], b: &[Rational]) -> Vec<Rational> {
+pub(crate) fn add_q(a: &[Rational], b: &[Rational]) -> Vec<Rational> {
     let mut out: Vec<Rational> = vec![Rational::zero(); a.len().max(b.len())];
     for (i, x) in a.iter().enumerate() {
         out[i] += x;
@@ -114,7 +114,7 @@ fn sub_q(a: &[Rational], b: &[Rational]) -> Vec<Rational> {
 }
 
 /// a b.
-fn mul_q(a: &[Rational], b: &[Rational]) -> Vec<Rational> {
+pub(crate) fn mul_q(a: &[Rational], b: &[Rational]) -> Vec<Rational> {
     if a.is_empty() || b.is_empty() {
         return Vec::new();
     }
@@ -142,7 +142,7 @@ fn scale_q(a: &[Rational], c: &Rational) -> Vec<Rational> {
 }
 
 /// Quotient and remainder of a by a non-zero b over Q.
-fn divrem_q(a: &[Rational], b: &[Rational]) -> (Vec<Rational>, Vec<Rational>) {
+pub(crate) fn divrem_q(a: &[Rational], b: &[Rational]) -> (Vec<Rational>, Vec<Rational>) {
     let db = deg_q(b).expect("a non-zero divisor");
     let mut r: Vec<Rational> = a.to_vec();
     trim_q(&mut r);

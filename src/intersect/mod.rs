@@ -8,6 +8,7 @@
 //! * `bivariate`: resultants and first subresultants of bivariate integer polynomials (multi-modular);
 //! * `extension`: arithmetic in a real algebraic extension Q(alpha) by dynamic evaluation, and
 //!   the fibre of a bivariate system over an algebraic abscissa;
+//! * `components`: curves sharing a component (decomposition P = R(phi), overlaps, retracing);
 //! * `curves`: curve-curve intersection ([`intersect_curves`]);
 //! * `extrema`: the tight bounding box and the nearest point of a curve
 //!   ([`tight_bounding_box`], [`nearest_point`]);
@@ -19,6 +20,7 @@
 
 pub(crate) mod algebraic;
 pub(crate) mod bivariate;
+pub(crate) mod components;
 pub(crate) mod curves;
 pub(crate) mod extension;
 pub(crate) mod extrema;
@@ -32,6 +34,8 @@ pub(crate) mod solve;
 pub(crate) mod upoly;
 pub(crate) mod zeros;
 
+#[cfg(test)]
+mod components_tests;
 #[cfg(test)]
 mod extension_tests;
 #[cfg(test)]

@@ -40,7 +40,7 @@ fn corpus() -> Vec<Value> {
 /// The cases this version refuses instead of answering (issue 26 is open): each must be refused
 /// with the library's "not decided exactly" error, never answered wrongly. A case that starts
 /// to be answered must leave this list (the test then checks its answer like any other).
-const REFUSED_FOR_NOW: [&str; 1] = ["self-retrace-quartic"];
+const REFUSED_FOR_NOW: [&str; 0] = [];
 
 #[test]
 fn intersect_corpus_every_case_exact() {
