@@ -60,8 +60,25 @@
 //! in double-double ([`Dd`], with a rigorous bound near n^2 u^2 M), J(X) from de Casteljau
 //! of the hodographs n (p_(i+1) - p_i) (their rounding bounded by `BoundedF64`) at the
 //! interval arguments m ± r, which encloses P'(S) and Q'(T) (interval evaluation is
-//! inclusion isotone). By the mean value theorem row by row, every root of F in X lies in
-//! K(X); K(X) ⊂ X gives a root (Brouwer), and K(X) in the interior of X gives exactly one,
+//! inclusion isotone): values a and radii ρ, |A - a| <= ρ entrywise for A in J(X), and
+//! F(m) within e_F of f. The product with the matrix Y (the computed inverse of a, any
+//! doubles: Krawczyk's operator is sound for every Y) is done in plain `f64` ([`krawczyk`]):
+//! K(X) - m lies in μ ± R, μ_i = fl(-(Y_i0 f_0 + Y_i1 f_1)) (off from -(Y f)_i by at most
+//! (2u + u^2) T_i + 2η, T_i = |Y_i0| |f_0| + |Y_i1| |f_1|), and for each column j the entry
+//! (I - Y A)_ij is at most |c_ij| + Σ_k |Y_ik| ρ_kj with c = I - Y a, whose computed
+//! ĉ_ij = fl(δ_ij - fl(fl(Y_i0 a_0j) + fl(Y_i1 a_1j))) is off by at most u |ĉ_ij| +
+//! 3u Σ_k |Y_ik| |a_kj| + 2η: so with ρ'_kj = ρ_kj + 3u |a_kj|,
+//! R_i = (1 + u) (|Y_i0| e_F0 + |Y_i1| e_F1 + 3u T_i + Σ_j (|ĉ_ij| + Σ_k |Y_ik| ρ'_kj) r_j)
+//! plus absolute terms. That expression is computed from nonnegative doubles by sums and
+//! products, at most 16 roundings deep: each rounding is fl(w) >= (1 - u) w (sums have no
+//! underflow error; a product's η / 2 joins the absolute terms), so the exact expression is
+//! at most (1 - u)^-16 times the computed one R'. The absolute terms (the 2η above, the
+//! products' η / 2, times |Y| <= 10^30 < 2^100 (a larger entry: the test fails) and radii
+//! below 8) stay under 2^-960. The radius taken is fl(fl(R' (1 + 2^-45)) + 2^-900), at least
+//! (1 - u)^2 (1 + 256u) R' + (1 - u)(2^-900 - η/2) >= (1 + u)(1 - u)^-16 R' + 2^-901: it
+//! covers both. The test |μ_i| + R_i < r_i is decided by fl(|μ_i| + R_i) < r_i (rounding is
+//! monotone and r_i a double). By the mean value theorem row by row, every root of F in X
+//! lies in K(X); K(X) ⊂ X gives a root (Brouwer), and K(X) in the interior of X gives exactly one,
 //! with every matrix A of J(X) nonsingular: the radius of K is at least |I - Y A| r, so
 //! |I - Y A| r < r for the positive vector r, hence the spectral radius of I - Y A is
 //! below 1. The Jacobian at the root is then nonsingular, i.e. cross(P'(s), Q'(t)) != 0: the
@@ -103,9 +120,7 @@
 //! crossing, one Krawczyk test and one double-double evaluation; the search state is kept
 //! per thread and reused, so a call allocates nothing after the first (but its answer).
 
-use super::interval::{
-    inside_radius, lerp_pyramid_bound, lower, round_nearest, upper, ConvexStep, Dd,
-};
+use super::interval::{lerp_pyramid_bound, lower, round_nearest, upper, ConvexStep, Dd};
 use super::pyramid::{convex_point, dd_point, dd_point_bounded};
 use crate::num::bounded::{upward, BoundedF64, ETA, UNIT_ROUNDOFF};
 use crate::num::ring::Ring;
@@ -694,38 +709,79 @@ struct Krawczyk {
     proved: bool,
 }
 
+/// The largest |entry| of Y the settlement takes (a nearly singular midpoint Jacobian fails
+/// the test anyway): it keeps every absolute rounding term of [`krawczyk`] below 2^-960.
+const MAX_INVERSE: f64 = 1.0e30;
+/// The absolute term of [`krawczyk`]'s radii, above every underflow term (module
+/// documentation, 2).
+const KRAWCZYK_FLOOR: f64 = f64::from_bits((1023 - 900) << 52);
+/// The factor of [`krawczyk`]'s radii, 1 + 2^-45, over the rounding of its nonnegative sums
+/// and products (module documentation, 2).
+const KRAWCZYK_SCALE: f64 = 1.0 + 256.0 * UNIT_ROUNDOFF;
+
 /// Krawczyk's operator on the box `x`, with F(m) enclosed by `f`, P'(S) by `dp` and Q'(T) by
-/// `dq` (module documentation, 2). `None` when the midpoint Jacobian is singular.
+/// `dq` (module documentation, 2), in plain `f64` with the radius bound derived there.
+/// `None` when the midpoint Jacobian is singular or nearly so.
 fn krawczyk(
     x: &Box2,
     f: [BoundedF64; 2],
     dp: [BoundedF64; 2],
     dq: [BoundedF64; 2],
 ) -> Option<Krawczyk> {
-    // J = [[P'_x, -Q'_x], [P'_y, -Q'_y]] over the box; Y the inverse of its midpoint.
-    let j = [[dp[0], dq[0].neg()], [dp[1], dq[1].neg()]];
-    let a = j.map(|row| row.map(|e| e.value()));
+    // J = [[P'_x, -Q'_x], [P'_y, -Q'_y]] over the box: midpoints a, radii ρ; Y the inverse
+    // of a, computed (any doubles: Y is exact as the matrix it is).
+    let a = [
+        [dp[0].value(), -dq[0].value()],
+        [dp[1].value(), -dq[1].value()],
+    ];
+    let rho = [
+        [dp[0].error_bound(), dq[0].error_bound()],
+        [dp[1].error_bound(), dq[1].error_bound()],
+    ];
     let det = a[0][0] * a[1][1] - a[0][1] * a[1][0];
-    if det == 0.0 || !det.is_finite() {
-        return None;
-    }
     let y = [
         [a[1][1] / det, -a[0][1] / det],
         [-a[1][0] / det, a[0][0] / det],
-    ]
-    .map(|row| row.map(BoundedF64::exact));
-    let radius = x.radius.map(|r| BoundedF64::with_bound(0.0, r));
+    ];
+    // (Also false for NaN: a zero, non-finite or nearly singular determinant.)
+    if !y.iter().flatten().all(|e| e.abs() <= MAX_INVERSE) {
+        return None;
+    }
+    let u = UNIT_ROUNDOFF;
+    // ρ' = ρ + 3u |a|: the radius of J(X) with the rounding of Y a.
+    let rho = [0, 1].map(|k| [0, 1].map(|j| rho[k][j] + 3.0 * u * a[k][j].abs()));
+    let (fv, fe) = (f.map(|e| e.value()), f.map(|e| e.error_bound()));
+    let r = x.radius;
     let offset = [0, 1].map(|i| {
-        // -Y F(m) + sum_j (δ_ij - (Y J)_ij) (X - m)_j.
-        let yf = y[i][0].mul(&f[0]).add(&y[i][1].mul(&f[1]));
-        (0..2).fold(yf.neg(), |k, col| {
-            let yj = y[i][0].mul(&j[0][col]).add(&y[i][1].mul(&j[1][col]));
-            let identity = BoundedF64::exact(if i == col { 1.0 } else { 0.0 });
-            k.add(&identity.sub(&yj).mul(&radius[col]))
-        })
+        let (y0, y1) = (y[i][0], y[i][1]);
+        let mid = -(y0 * fv[0] + y1 * fv[1]);
+        // |Y_i| e_F + 3u |Y_i| |F| + Σ_j (|ĉ_ij| + |Y_i| ρ'_j) r_j, ĉ = fl(I - Y a).
+        let (ay0, ay1) = (y0.abs(), y1.abs());
+        let mut rad = ay0 * fe[0] + ay1 * fe[1] + 3.0 * u * (ay0 * fv[0].abs() + ay1 * fv[1].abs());
+        for j in 0..2 {
+            let identity = if i == j { 1.0 } else { 0.0 };
+            let c = identity - (y0 * a[0][j] + y1 * a[1][j]);
+            rad += (c.abs() + ay0 * rho[0][j] + ay1 * rho[1][j]) * r[j];
+        }
+        BoundedF64::with_bound(mid, rad * KRAWCZYK_SCALE + KRAWCZYK_FLOOR)
     });
-    let proved = (0..2).all(|i| inside_radius(&offset[i], x.radius[i]));
+    // fl(|m| + R) < r implies |m| + R < r (rounding is monotone, r a double).
+    let proved = (0..2).all(|i| offset[i].value().abs() + offset[i].error_bound() < r[i]);
     Some(Krawczyk { offset, proved })
+}
+
+/// [`krawczyk`]'s offsets K(X) - m on the box m ± r, for tests of its bound against exact
+/// rationals: `None` when the midpoint Jacobian is (nearly) singular.
+#[cfg(test)]
+pub(super) fn krawczyk_offsets(
+    mid: [f64; 2],
+    radius: [f64; 2],
+    f: [BoundedF64; 2],
+    dp: [BoundedF64; 2],
+    dq: [BoundedF64; 2],
+) -> Option<([BoundedF64; 2], bool)> {
+    let k = krawczyk(&Box2 { mid, radius }, f, dp, dq)?;
+    Some((k.offset, k.proved))
 }
 
 /// F(m) = P(m_s) - Q(m_t) in double-double with a bound, per coordinate, with P(m_s).

@@ -5,9 +5,10 @@
 
 use super::algebraic::round_polynomial_at;
 use super::curves::intersect_curves_f64;
-use super::filter::{certified_crossings_f64, clip_cell, CertifiedCrossing};
+use super::filter::{certified_crossings_f64, clip_cell, krawczyk_offsets, CertifiedCrossing};
 use super::rounded::{intersect_curves_f64_rounded, RoundedIntersections, RoundedPoint};
 use super::zeros::bezier_zeros_f64;
+use crate::num::bounded::BoundedF64;
 use crate::num::ring::Rational;
 use crate::shape::basis::bernstein_to_power;
 use num_traits::FromPrimitive;
@@ -501,4 +502,82 @@ fn a_root_at_a_cell_end_survives_clipping() {
             }
         }
     }
+}
+
+/// Krawczyk's operator in plain `f64` ([`krawczyk_offsets`]) against the exact set it must
+/// enclose: with Y the filter's computed inverse of the midpoint Jacobian a (recomputed here
+/// the same way), K(X) - m lies in M ± R* exactly, M = -Y f and
+/// R*_i = Σ_k |Y_ik| e_k + Σ_j (|δ_ij - Σ_k Y_ik a_kj| + Σ_k |Y_ik| ρ_kj) r_j (the extremes of
+/// an affine function over the boxes), in rationals. Cases with no input bounds and zero radii
+/// make R* = 0, so that the computed radius must cover the rounding of μ alone, and small
+/// radii with exact Jacobians make the rounding of I - Y a matter: without the margins of the
+/// module documentation (3u T, 3u |a|) the enclosure misses M ± R*.
+#[test]
+fn krawczyk_in_plain_f64_encloses_the_exact_operator() {
+    let mut r = Random(crate::test_rng::XorShift(0x1f83_d9ab_fb41_bd6b));
+    let q = |x: f64| Rational::from_f64(x).unwrap();
+    let abs = |x: Rational| if x < q(0.0) { -x } else { x };
+    let (mut proved, mut checked) = (0, 0);
+    for round in 0..3000 {
+        let scale = 2f64.powi((r.next() % 40) as i32 - 20);
+        let mut value = || scale * (2.0 * r.unit() - 1.0);
+        let (fv, av): ([f64; 2], [[f64; 2]; 2]) = (
+            [value() * 1e-3, value() * 1e-3],
+            [[value(), value()], [value(), value()]],
+        );
+        let kind = round % 3;
+        let bound = |x: f64, r: &mut Random| match kind {
+            0 => 0.0,
+            _ => x.abs() * 1e-16 * r.unit(),
+        };
+        let f = fv.map(|x| BoundedF64::with_bound(x, bound(x, &mut r)));
+        let dp = [0, 1].map(|c| BoundedF64::with_bound(av[c][0], bound(av[c][0], &mut r)));
+        let dq = [0, 1].map(|c| BoundedF64::with_bound(-av[c][1], bound(av[c][1], &mut r)));
+        let radius = match kind {
+            0 => [0.0, 0.0],
+            1 => [2f64.powi(-40) * r.unit(), 2f64.powi(-40) * r.unit()],
+            _ => [0.5 * r.unit(), 0.5 * r.unit()],
+        };
+        let mid = [r.unit(), r.unit()];
+        let Some((offset, ok)) = krawczyk_offsets(mid, radius, f, dp, dq) else {
+            continue;
+        };
+        checked += 1;
+        // Y as the filter computes it.
+        let a = [
+            [dp[0].value(), -dq[0].value()],
+            [dp[1].value(), -dq[1].value()],
+        ];
+        let rho = [
+            [dp[0].error_bound(), dq[0].error_bound()],
+            [dp[1].error_bound(), dq[1].error_bound()],
+        ];
+        let det = a[0][0] * a[1][1] - a[0][1] * a[1][0];
+        let y = [
+            [a[1][1] / det, -a[0][1] / det],
+            [-a[1][0] / det, a[0][0] / det],
+        ];
+        for i in 0..2 {
+            let m = -(q(y[i][0]) * q(fv[0]) + q(y[i][1]) * q(fv[1]));
+            let mut rad =
+                abs(q(y[i][0])) * q(f[0].error_bound()) + abs(q(y[i][1])) * q(f[1].error_bound());
+            for j in 0..2 {
+                let identity = q(if i == j { 1.0 } else { 0.0 });
+                let c = identity - (q(y[i][0]) * q(a[0][j]) + q(y[i][1]) * q(a[1][j]));
+                let spread = abs(q(y[i][0])) * q(rho[0][j]) + abs(q(y[i][1])) * q(rho[1][j]);
+                rad = rad + (abs(c) + spread) * q(radius[j]);
+            }
+            let (mu, big) = (q(offset[i].value()), q(offset[i].error_bound()));
+            assert!(&mu - &big <= &m - &rad, "{f:?} {dp:?} {dq:?} {radius:?}");
+            assert!(&m + &rad <= &mu + &big, "{f:?} {dp:?} {dq:?} {radius:?}");
+            if ok {
+                assert!(abs(mu) + big < q(radius[i]));
+            }
+        }
+        proved += ok as usize;
+    }
+    assert!(
+        checked > 2900 && proved > 100,
+        "{checked} checked, {proved} proved"
+    );
 }

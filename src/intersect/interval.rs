@@ -10,7 +10,7 @@
 //! operations on `BoundedF64` arguments (de Casteljau's pyramid with an interval argument, say)
 //! encloses its range over the argument intervals. This module adds the few set operations the
 //! filter needs: the outward-rounded ends [`lower`] and [`upper`] (one `next_down`/`next_up`
-//! after the rounded sum, so that lower <= v - e and upper >= v + e hold exactly) and the strict test |x| < r of Krawczyk's test ([`inside_radius`]).
+//! after the rounded sum, so that lower <= v - e and upper >= v + e hold exactly).
 //!
 //! **Double-double with a bound: [`Dd`].** A value hi + lo (two doubles) with a bound e on its
 //! distance to the exact result of the same operations. The sums and products use the
@@ -61,13 +61,6 @@ pub(crate) fn lower(x: &BoundedF64) -> f64 {
 #[inline]
 pub(crate) fn upper(x: &BoundedF64) -> f64 {
     (x.value() + x.error_bound()).next_up()
-}
-
-/// Whether every x of the interval satisfies |x| < `radius` (decided conservatively: `false`
-/// when the rounded test cannot tell).
-#[inline]
-pub(crate) fn inside_radius(x: &BoundedF64, radius: f64) -> bool {
-    upper(x) < radius && lower(x) > -radius
 }
 
 /// TwoSum: `(s, e)` with s = fl(a + b) and a + b = s + e exactly (finite operands).
@@ -445,7 +438,5 @@ mod tests {
     fn interval_helpers_round_outwards() {
         let x = BoundedF64::with_bound(0.2, 0.1);
         assert!(lower(&x) <= 0.1 && upper(&x) >= 0.3);
-        assert!(inside_radius(&BoundedF64::with_bound(0.1, 0.1), 0.25));
-        assert!(!inside_radius(&BoundedF64::with_bound(0.1, 0.15), 0.25));
     }
 }
