@@ -565,7 +565,7 @@ fn krawczyk_in_plain_f64_encloses_the_exact_operator() {
                 let identity = q(if i == j { 1.0 } else { 0.0 });
                 let c = identity - (q(y[i][0]) * q(a[0][j]) + q(y[i][1]) * q(a[1][j]));
                 let spread = abs(q(y[i][0])) * q(rho[0][j]) + abs(q(y[i][1])) * q(rho[1][j]);
-                rad = rad + (abs(c) + spread) * q(radius[j]);
+                rad += (abs(c) + spread) * q(radius[j]);
             }
             let (mu, big) = (q(offset[i].value()), q(offset[i].error_bound()));
             assert!(&mu - &big <= &m - &rad, "{f:?} {dp:?} {dq:?} {radius:?}");
