@@ -439,24 +439,52 @@ fn next_up(x: f64) -> f64 {
     }
 }
 
-/// The rational of least denominator in the closed interval [x, y] (x <= y).
+/// The rational of least denominator in the closed interval [x, y] (x <= y) (the least
+/// numerator in absolute value among those, so 0 when the interval holds it).
+///
+/// The continued fractions of x and y are expanded together while their partial quotients
+/// agree, on integer numerators and denominators: with 0 < x = a / b <= y = c / d, either
+/// ceil(x) <= y and ceil(x) is the last quotient, or both share q = floor(x) and the answer is
+/// q + 1 / (the simplest rational in [1 / (y - q), 1 / (x - q)]). The answer is the
+/// convergent of the quotients so found, already in lowest terms. Each step is one integer
+/// division on shrinking numbers, so the whole costs O(L^2) word operations for L-bit
+/// ends (ends of thousands of bits occur when an algebraic number's rationality is settled).
 pub fn simplest_between(x: &Rational, y: &Rational) -> Rational {
-    if x <= &Rational::zero() && &Rational::zero() <= y {
+    if !x.is_positive() && !y.is_negative() {
         return Rational::zero();
     }
-    if y < &Rational::zero() {
+    if y.is_negative() {
         return -simplest_between(&-y, &-x);
     }
-    let c = x.ceil();
-    if &c <= y {
-        return c;
+    // 0 < x <= y: x = a / b, y = c / d in lowest terms with positive denominators.
+    let (mut a, mut b) = (x.numer().clone(), x.denom().clone());
+    let (mut c, mut d) = (y.numer().clone(), y.denom().clone());
+    let mut quotients = Vec::new();
+    loop {
+        let (q, r) = a.div_rem(&b);
+        if r.is_zero() {
+            // x is the integer q: it is the simplest in the interval.
+            quotients.push(q);
+            break;
+        }
+        let up = &q + 1u32;
+        if &up * &d <= c {
+            quotients.push(up);
+            break;
+        }
+        // floor(y) = q as well: recurse on [1 / (y - q), 1 / (x - q)] = [d / (c - q d), b / r].
+        let rest = &c - &q * &d;
+        quotients.push(q);
+        (a, b, c, d) = (d, rest, b, r);
     }
-    let fl = x.floor();
-    let inner = simplest_between(
-        &(Rational::one() / (y - &fl)),
-        &(Rational::one() / (x - &fl)),
-    );
-    fl + Rational::one() / inner
+    // The convergent h / k of [q0; q1, ..., qk].
+    let (mut h, mut h_prev) = (BigInt::one(), BigInt::zero());
+    let (mut k, mut k_prev) = (BigInt::zero(), BigInt::one());
+    for q in &quotients {
+        (h, h_prev) = (q * &h + &h_prev, h);
+        (k, k_prev) = (q * &k + &k_prev, k);
+    }
+    Rational::new_raw(h, k)
 }
 
 /// True when some prime l < 130 not dividing `lead` leaves f without a root modulo l, which
@@ -630,5 +658,55 @@ pub fn value_at(p: &[Rational], alpha: &AlgebraicReal) -> AlgebraicReal {
             return AlgebraicReal::from_isolated(&r, one);
         }
         t.refine();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::simplest_between;
+    use crate::num::ring::Rational;
+
+    /// By search: the least denominator k with an integer in [k x, k y], and the integer of
+    /// least absolute value there.
+    fn simplest_by_search(x: &Rational, y: &Rational) -> Rational {
+        (1i64..)
+            .find_map(|k| {
+                let k = Rational::from_integer(k.into());
+                let (lo, hi) = ((x * &k).ceil(), (y * &k).floor());
+                (lo <= hi).then(|| {
+                    let zero = Rational::from_integer(0.into());
+                    let n = if lo > zero {
+                        lo
+                    } else if hi < zero {
+                        hi
+                    } else {
+                        zero
+                    };
+                    n / k
+                })
+            })
+            .unwrap()
+    }
+
+    #[test]
+    fn simplest_between_is_the_least_denominator_in_the_interval() {
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = |m: u64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state % m) as i64
+        };
+        for _ in 0..3000 {
+            let x = Rational::new((next(401) - 200).into(), (next(60) + 1).into());
+            let y = &x + Rational::new(next(30).into(), (next(500) + 1).into());
+            assert_eq!(simplest_between(&x, &y), simplest_by_search(&x, &y), "[{x}, {y}]");
+        }
+        // Ends of thousands of bits, one apart in the last place: the convergent is exact.
+        let big = num_bigint::BigInt::from(3).pow(2000);
+        let x = Rational::new(big.clone() * 7 + 1, big.clone() * 5);
+        let y = Rational::new(big.clone() * 7 + 2, big * 5);
+        let c = simplest_between(&x, &y);
+        assert!(x <= c && c <= y);
     }
 }
