@@ -74,6 +74,37 @@ impl AlgebraicReal {
         a
     }
 
+    /// The root of the square-free integer polynomial `f` isolated by `iso` when a short
+    /// search finds it rational: an exact hit of the isolation, or the rational of least
+    /// denominator in the interval, tried every 8 of at most [`QUICK_BISECTIONS`] bisections.
+    /// `None` proves nothing. Callers divide the rational roots so found out of `f` before
+    /// settling the other roots, whose irrationality the modular test then proves quickly
+    /// (a polynomial with a rational root has a root modulo every prime).
+    pub(crate) fn quick_rational_root(f: &[BigInt], iso: &Isolated) -> Option<Rational> {
+        if iso.exact {
+            return Some(iso.lo.clone());
+        }
+        let mut a = AlgebraicReal {
+            poly: primitive(f),
+            lo: iso.lo.clone(),
+            hi: iso.hi.clone(),
+            exact: None,
+        };
+        for step in 0..=QUICK_BISECTIONS {
+            if let Some(r) = &a.exact {
+                return Some(r.clone());
+            }
+            if step % 8 == 0 {
+                let c = simplest_between(&a.lo, &a.hi);
+                if sign_at(&a.poly, &c) == Ordering::Equal {
+                    return Some(c);
+                }
+            }
+            a.refine();
+        }
+        None
+    }
+
     /// The one root of the square-free integer polynomial `f` in the interval [lo, hi] of
     /// doubles, when cheap exact tests prove it, else `None` (the caller then isolates the
     /// roots of `f` from scratch). Proved: lo == hi is a root; or f(lo), f(hi) are non-zero
@@ -438,6 +469,9 @@ fn next_up(x: f64) -> f64 {
         f64::from_bits(x.to_bits() - 1)
     }
 }
+
+/// The bisections of [`AlgebraicReal::quick_rational_root`].
+const QUICK_BISECTIONS: u32 = 48;
 
 /// The rational of least denominator in the closed interval [x, y] (x <= y) (the least
 /// numerator in absolute value among those, so 0 when the interval holds it).

@@ -56,12 +56,34 @@ pub(crate) fn roots_with_multiplicity(p: &[BigInt], a: &Rational, b: &Rational) 
         sqfree = mul(&sqfree, f);
     }
     let isolated = isolate(&sqfree, a, b);
+    let owners: Vec<usize> = isolated
+        .iter()
+        .map(|iso| {
+            factors
+                .iter()
+                .position(|(f, _)| holds_root(f, iso))
+                .expect("every root of the square-free part is a root of one factor")
+        })
+        .collect();
+    // The rational roots a short search finds are divided out of their factor first: the
+    // factor's other roots are then settled irrational by the modular test at once, where a
+    // rational root (an end point of a curve, say) would make them refine to 1 / lc(f)^2.
+    let rational: Vec<Option<Rational>> = isolated
+        .iter()
+        .zip(&owners)
+        .map(|(iso, &i)| AlgebraicReal::quick_rational_root(&factors[i].0, iso))
+        .collect();
+    let mut deflated: Vec<ZPoly> = factors.iter().map(|(f, _)| f.clone()).collect();
+    for (r, &i) in rational.iter().zip(&owners) {
+        if let Some(r) = r {
+            let linear = [-r.numer().clone(), r.denom().clone()];
+            deflated[i] = upoly::exact_div(&deflated[i], &linear)
+                .expect("a rational root's primitive linear factor divides the integer factor");
+        }
+    }
     let mut out: Vec<RootInfo> = Vec::with_capacity(isolated.len());
     for (k, iso) in isolated.iter().enumerate() {
-        let (f, multiplicity) = factors
-            .iter()
-            .find(|(f, _)| holds_root(f, iso))
-            .expect("every root of the square-free part is a root of one factor");
+        let multiplicity = factors[owners[k]].1;
         let nbhd = if iso.exact {
             let lo = if k > 0 {
                 isolated[k - 1].hi.clone()
@@ -76,9 +98,13 @@ pub(crate) fn roots_with_multiplicity(p: &[BigInt], a: &Rational, b: &Rational) 
         } else {
             (iso.lo.clone(), iso.hi.clone())
         };
+        let value = match &rational[k] {
+            Some(r) => AlgebraicReal::from_rational(r.clone()),
+            None => AlgebraicReal::from_isolated(&deflated[owners[k]], iso),
+        };
         out.push(RootInfo {
-            value: AlgebraicReal::from_isolated(f, iso),
-            multiplicity: *multiplicity,
+            value,
+            multiplicity,
             nbhd,
         });
     }
