@@ -734,7 +734,11 @@ mod tests {
         for _ in 0..3000 {
             let x = Rational::new((next(401) - 200).into(), (next(60) + 1).into());
             let y = &x + Rational::new(next(30).into(), (next(500) + 1).into());
-            assert_eq!(simplest_between(&x, &y), simplest_by_search(&x, &y), "[{x}, {y}]");
+            assert_eq!(
+                simplest_between(&x, &y),
+                simplest_by_search(&x, &y),
+                "[{x}, {y}]"
+            );
         }
         // Ends of thousands of bits, one apart in the last place: the convergent is exact.
         let big = num_bigint::BigInt::from(3).pow(2000);
