@@ -378,8 +378,8 @@ fn excluded(a: &BiPoly, b: &BiPoly, s: &AlgebraicReal, t: &AlgebraicReal) -> boo
         if s.exact().is_some() && t.exact().is_some() {
             return false;
         }
-        s.refine();
-        t.refine();
+        s.bisect();
+        t.bisect();
     }
     false
 }

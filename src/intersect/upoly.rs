@@ -334,8 +334,19 @@ pub fn is_zero(p: &[BigInt]) -> bool {
 /// The sign of p(x) for a rational x = n / d (d > 0), exactly, by homogeneous Horner:
 /// d^deg p(n/d) = sum c_i n^i d^(deg - i).
 pub fn sign_at(p: &[BigInt], x: &Rational) -> Ordering {
+    match scaled_value_at(p, x).sign() {
+        Sign::Minus => Ordering::Less,
+        Sign::NoSign => Ordering::Equal,
+        Sign::Plus => Ordering::Greater,
+    }
+}
+
+/// d^deg p(x) for a rational x = n / d in lowest terms (d > 0), deg the degree of `p`, by
+/// homogeneous Horner (sum c_i n^i d^(deg - i)): p(x) with its denominator cleared by a
+/// positive factor; zero for the zero polynomial.
+pub fn scaled_value_at(p: &[BigInt], x: &Rational) -> BigInt {
     let Some(deg) = degree(p) else {
-        return Ordering::Equal;
+        return BigInt::zero();
     };
     let (n, d) = (x.numer(), x.denom());
     let mut acc = p[deg].clone();
@@ -344,9 +355,5 @@ pub fn sign_at(p: &[BigInt], x: &Rational) -> Ordering {
         dpow *= d;
         acc = acc * n + c * &dpow;
     }
-    match acc.sign() {
-        Sign::Minus => Ordering::Less,
-        Sign::NoSign => Ordering::Equal,
-        Sign::Plus => Ordering::Greater,
-    }
+    acc
 }
