@@ -296,7 +296,7 @@ fn bad_input_names_the_field() {
 }
 
 #[test]
-fn degree_20_pairs_are_answered_and_the_budget_refuses_up_front() {
+fn degree_20_pairs_and_loops_are_answered_and_the_budget_refuses_up_front() {
     // Two degree-20 curves with small random integer coordinates (xorshift): the float
     // filter decides, and the answer comes back within the default budget. Every reported
     // point must be a common point: P(s) and Q(t) evaluated here (Horner on the Bernstein
@@ -347,16 +347,37 @@ fn degree_20_pairs_are_answered_and_the_budget_refuses_up_front() {
             );
         }
     }
-    // The same job under a small budget, and a degree-20 self-intersection (exact solver,
-    // estimated far over the default budget), are refused before computing, naming the field.
+    // The degree-20 self-intersection (exact solver) is answered within the default budget
+    // (the spec: degree 20 at least), each pair s < t a double point of P.
+    let x = answer(&[], &json!({"kind": "self", "curve": p}));
+    for pt in x["points"].as_array().unwrap() {
+        let (s, t) = (
+            pt["s"]["value"].as_f64().unwrap(),
+            pt["t"]["value"].as_f64().unwrap(),
+        );
+        assert!((0.0..=1.0).contains(&s) && s < t && t <= 1.0, "{pt}");
+        let (a, b) = (at(&pf, s), at(&pf, t));
+        for k in 0..2 {
+            assert!((a[k] - b[k]).abs() < 1e-9, "{pt}");
+        }
+    }
+    // The pair and the loop under a small budget are refused before computing, naming the
+    // field; so is a curve of degree 41, over the degree limit.
     let e = error(&["--max-work", "1000"], &job.to_string());
     assert!(
         e.starts_with("error: curves: the job's work is estimated at"),
         "{e}"
     );
-    let e = error(&[], &json!({"kind": "self", "curve": p}).to_string());
+    let loop_job = json!({"kind": "self", "curve": p}).to_string();
+    let e = error(&["--max-work", "1000"], &loop_job);
     assert!(
         e.starts_with("error: curve: the job's work is estimated at"),
+        "{e}"
+    );
+    let long: Vec<[i64; 2]> = p.iter().chain(qq.iter()).copied().collect();
+    let e = error(&[], &json!({"kind": "self", "curve": long}).to_string());
+    assert!(
+        e.starts_with("error: curve: degree 41 is over the limit"),
         "{e}"
     );
 }
