@@ -426,7 +426,7 @@ pub fn self_intersections_f64(p: &[[f64; 2]]) -> Result<Intersections> {
 /// degree n - 1) of degree 16 0.2 s, 20 about 1 s.
 pub fn intersection_work(n: usize, m: usize, bits: usize) -> u128 {
     let d = (n as u128) * (m as u128) + 1;
-    300 * d * d * coefficient_words(n, m, bits)
+    160 * d * d * coefficient_words(n, m, bits)
 }
 
 /// A work estimate, in nanoseconds as [`intersection_work`], for [`intersect_curves`] when
@@ -465,13 +465,20 @@ pub fn self_intersection_work(p: &[[Rational; 2]]) -> u128 {
     intersection_work(d, d, longest_coordinate(p))
 }
 
-/// The bits of the longest coordinate, numerator and denominator together (at least 1).
+/// The bits of the longest coordinate once the curve's coordinates are written over their
+/// common denominator (the integers the exact solver works on), at least 1: doubles share a
+/// power of two, so their numerators have about 53 bits plus the spread of their exponents.
 fn longest_coordinate(p: &[[Rational; 2]]) -> usize {
+    let common = p
+        .iter()
+        .flatten()
+        .fold(BigInt::one(), |l, c| l.lcm(c.denom()));
     p.iter()
         .flatten()
-        .map(|c| (c.numer().bits() + c.denom().bits()) as usize)
+        .map(|c| (c.numer() * (&common / c.denom())).bits() as usize)
         .max()
         .unwrap_or(1)
+        .max(1)
 }
 
 /// The 64-bit words of a resultant coefficient (see [`intersection_work`]).
