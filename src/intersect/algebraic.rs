@@ -76,15 +76,29 @@ impl AlgebraicReal {
         if iso.exact {
             return Self::from_rational(iso.lo.clone());
         }
-        let mut a = AlgebraicReal {
-            poly: primitive(f),
-            lo: iso.lo.clone(),
-            hi: iso.hi.clone(),
-            exact: None,
-            parts_log2: FIRST_PARTS_LOG2,
-        };
+        let mut a = Self::unsettled(primitive(f), iso.lo.clone(), iso.hi.clone());
         a.settle_rationality();
         a
+    }
+
+    /// The root of the primitive square-free `poly` in (lo, hi), whose rationality is not
+    /// decided yet (the caller decides it, or knows it irrational).
+    fn unsettled(poly: ZPoly, lo: Rational, hi: Rational) -> Self {
+        AlgebraicReal {
+            poly,
+            lo,
+            hi,
+            exact: None,
+            parts_log2: FIRST_PARTS_LOG2,
+        }
+    }
+
+    /// The rational of least denominator in the isolating interval, when it is a root of the
+    /// polynomial (the only rational root the interval can hold once it is shorter than
+    /// 1 / lc^2; see the module docs).
+    fn simplest_root(&self) -> Option<Rational> {
+        let c = simplest_between(&self.lo, &self.hi);
+        (sign_at(&self.poly, &c) == Ordering::Equal).then_some(c)
     }
 
     /// The root of the square-free integer polynomial `f` isolated by `iso` when a short
@@ -97,20 +111,13 @@ impl AlgebraicReal {
         if iso.exact {
             return Some(iso.lo.clone());
         }
-        let mut a = AlgebraicReal {
-            poly: primitive(f),
-            lo: iso.lo.clone(),
-            hi: iso.hi.clone(),
-            exact: None,
-            parts_log2: FIRST_PARTS_LOG2,
-        };
+        let mut a = Self::unsettled(primitive(f), iso.lo.clone(), iso.hi.clone());
         for step in 0..=QUICK_BISECTIONS {
             if let Some(r) = &a.exact {
                 return Some(r.clone());
             }
             if step % 8 == 0 {
-                let c = simplest_between(&a.lo, &a.hi);
-                if sign_at(&a.poly, &c) == Ordering::Equal {
+                if let Some(c) = a.simplest_root() {
                     return Some(c);
                 }
             }
@@ -148,17 +155,11 @@ impl AlgebraicReal {
             )));
         }
         let lead = poly[d].abs();
-        let c = simplest_between(&lo, &hi);
-        if sign_at(&poly, &c) == Ordering::Equal {
+        let a = Self::unsettled(poly, lo, hi);
+        if let Some(c) = a.simplest_root() {
             return Some(Self::from_rational(c));
         }
-        no_root_modulo_small_prime(&poly, &lead).then_some(AlgebraicReal {
-            poly,
-            lo,
-            hi,
-            exact: None,
-            parts_log2: FIRST_PARTS_LOG2,
-        })
+        no_root_modulo_small_prime(&a.poly, &lead).then_some(a)
     }
 
     /// The square-free primitive integer polynomial (ascending powers) vanishing at the number.
@@ -310,8 +311,7 @@ impl AlgebraicReal {
             }
             let done = self.width() < bound;
             if done || step.is_multiple_of(8) {
-                let c = simplest_between(&self.lo, &self.hi);
-                if sign_at(&self.poly, &c) == Ordering::Equal {
+                if let Some(c) = self.simplest_root() {
                     *self = Self::from_rational(c);
                     return;
                 }

@@ -477,7 +477,7 @@ fn longest_coordinate(p: &[[Rational; 2]]) -> usize {
         .flatten()
         .map(|c| (c.numer() * (&common / c.denom())).bits() as usize)
         .max()
-        .unwrap_or(1)
+        .unwrap_or(0)
         .max(1)
 }
 

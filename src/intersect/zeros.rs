@@ -76,8 +76,8 @@ pub(crate) fn roots_with_multiplicity(p: &[BigInt], a: &Rational, b: &Rational) 
     let mut deflated: Vec<ZPoly> = factors.iter().map(|(f, _)| f.clone()).collect();
     for (r, &i) in rational.iter().zip(&owners) {
         if let Some(r) = r {
-            let linear = [-r.numer().clone(), r.denom().clone()];
-            deflated[i] = upoly::exact_div(&deflated[i], &linear)
+            let linear = AlgebraicReal::from_rational(r.clone());
+            deflated[i] = upoly::exact_div(&deflated[i], linear.polynomial())
                 .expect("a rational root's primitive linear factor divides the integer factor");
         }
     }
