@@ -25,8 +25,10 @@
 //! gcd(Q_x - c_x, Q_y - c_y)); these pairs are not isolated, so each is reported as an
 //! overlap whose range on the single-point curve is all of [0, 1] and whose range on the
 //! other is the one value (t0 = t1): P maps [0, 1] onto the same set, {c}, as Q maps
-//! [t0, t0]. Two single points give one overlap [0, 1] x [0, 1] when equal, else nothing; a
-//! single point with itself gives the overlap s = t = [0, 1] (every pair).
+//! [t0, t0]. Two single points give one overlap [0, 1] x [0, 1] when equal, else nothing. A
+//! single point with itself gives one overlap in the form the spec gives a curve that
+//! retraces itself (t0 > t1, s1 <= t1): s = [0, 1/2], t = [1, 1/2], the two halves of the
+//! curve tracing the same set; every pair s < t is a double point and none is listed apart.
 //!
 //! **Self-intersection.** D(s, t) = (P(s) - P(t)) / (s - t) (exact division: the divided
 //! differences of the power coefficients, sum_k p_k sum_(i + j = k - 1) s^i t^j) vanishes off
@@ -378,15 +380,20 @@ pub fn self_intersections(p: &[[Rational; 2]]) -> Result<Intersections> {
     let pp = Power::of("curve", p)?;
     let (zero, one) = (Rational::zero(), Rational::one());
     if pp.single_point().is_some() {
-        let whole = [
-            AlgebraicReal::from_rational(zero),
-            AlgebraicReal::from_rational(one),
-        ];
+        // The whole curve as one retracing overlap in the spec's form (t0 > t1, s1 <= t1):
+        // [0, 1/2] and [1, 1/2] trace the same set, the point.
+        let half = Rational::from_integer(1.into()) / Rational::from_integer(2.into());
         return Ok(finish(
             Vec::new(),
             vec![Overlap {
-                s: whole.clone(),
-                t: whole,
+                s: [
+                    AlgebraicReal::from_rational(zero),
+                    AlgebraicReal::from_rational(half.clone()),
+                ],
+                t: [
+                    AlgebraicReal::from_rational(one),
+                    AlgebraicReal::from_rational(half),
+                ],
             }],
         ));
     }
