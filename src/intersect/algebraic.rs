@@ -625,6 +625,15 @@ pub fn simplest_between(x: &Rational, y: &Rational) -> Rational {
     Rational::new_raw(h, k)
 }
 
+/// True when f (non-zero) provably has no rational root: some prime l < 130 not dividing its
+/// leading coefficient leaves it without a root modulo l (see the module docs).
+pub(crate) fn has_no_rational_root(f: &[BigInt]) -> bool {
+    match f.iter().rposition(|c| !c.is_zero()) {
+        Some(d) => no_root_modulo_small_prime(&f[..=d], &f[d]),
+        None => false,
+    }
+}
+
 /// True when some prime l < 130 not dividing `lead` leaves f without a root modulo l, which
 /// proves that f has no rational root.
 fn no_root_modulo_small_prime(f: &[BigInt], lead: &BigInt) -> bool {

@@ -14,7 +14,8 @@
 //!    exactly one common t, t = -S_10(s_i) / S_11(s_i), a root of R2: refining s_i until the
 //!    interval value of that quotient lies in one root's neighbourhood (or misses the box)
 //!    names it exactly. When s_i is rational, the gcd over the rationals is computed and each
-//!    root t_j of R2 is tested for being its root. The same from the side of t. A root s_i
+//!    root t_j of R2 is tested for being its root. The same from the side of t, when some
+//!    in-box s_i is left unplaced (else every solution is already listed). A root s_i
 //!    left over (S_11 vanishes at an irrational s_i) gets its **fibre**: the square-free gcd
 //!    G of A(s_i, t) and B(s_i, t) over the real algebraic extension Q(s_i) (see
 //!    `extension`: dynamic evaluation over Q[x]/(m) with m = gcd(f, S_11), f the polynomial
@@ -79,9 +80,16 @@ pub(crate) fn solve(
     let mut s_side = side(&r, s_box);
     let mut t_side = side(&r2, t_box);
     let sub = subresultant_1(a, b);
-    let sub2 = subresultant_1(&sa, &sb);
     find_partners(&mut s_side, &t_side, a, b, sub.as_ref(), t_box);
-    find_partners(&mut t_side, &s_side, &sa, &sb, sub2.as_ref(), s_box);
+    // When every in-box s root has its complete list, every solution in the box is listed
+    // and the side of t could add nothing: its `single` flags only shorten the tangency
+    // decision, which the exact Jacobian test below makes without them.
+    let s_side_complete = (0..s_side.roots.len())
+        .all(|i| !s_side.in_box[i] || matches!(s_side.partners[i], Partners::Known { .. }));
+    if !s_side_complete {
+        let sub2 = subresultant_1(&sa, &sb);
+        find_partners(&mut t_side, &s_side, &sa, &sb, sub2.as_ref(), s_box);
+    }
     fibre_partners(&mut s_side, &t_side, a, b, sub.as_ref());
     // Pairs: the union of both sides' findings.
     let mut pairs: Vec<(usize, usize)> = Vec::new();

@@ -7,7 +7,7 @@
 //! root belongs to exactly one f_i (they are pairwise coprime), which gives its multiplicity
 //! i and the polynomial of its [`AlgebraicReal`]. Both ends 0 and 1 are included.
 
-use super::algebraic::AlgebraicReal;
+use super::algebraic::{has_no_rational_root, AlgebraicReal};
 use super::isolate::{isolate, Isolated};
 use super::upoly::{self, mul, sign_at, ZPoly};
 use crate::error::{Error, ErrorKind, Result};
@@ -68,10 +68,22 @@ pub(crate) fn roots_with_multiplicity(p: &[BigInt], a: &Rational, b: &Rational) 
     // The rational roots a short search finds are divided out of their factor first: the
     // factor's other roots are then settled irrational by the modular test at once, where a
     // rational root (an end point of a curve, say) would make them refine to 1 / lc(f)^2.
+    // A factor without a root modulo some small prime has no rational root at all (most
+    // factors of a resultant of random curves): its roots skip the search.
+    let may_be_rational: Vec<bool> = factors
+        .iter()
+        .map(|(f, _)| !has_no_rational_root(f))
+        .collect();
     let rational: Vec<Option<Rational>> = isolated
         .iter()
         .zip(&owners)
-        .map(|(iso, &i)| AlgebraicReal::quick_rational_root(&factors[i].0, iso))
+        .map(|(iso, &i)| {
+            if iso.exact || may_be_rational[i] {
+                AlgebraicReal::quick_rational_root(&factors[i].0, iso)
+            } else {
+                None
+            }
+        })
         .collect();
     let mut deflated: Vec<ZPoly> = factors.iter().map(|(f, _)| f.clone()).collect();
     for (r, &i) in rational.iter().zip(&owners) {
