@@ -661,18 +661,25 @@ pub(crate) fn shifted_poly(p: &[Rational], c: &Rational) -> ZPoly {
     upoly::positive_multiple(&q)
 }
 
-/// Encloses p([lo, hi]) for a rational polynomial p (ascending) by interval Horner.
+/// Encloses p([lo, hi]) for a rational polynomial p (ascending) by interval Horner, run on
+/// integers ([`enclose_scaled`] on the numerators over the common denominator c): the same
+/// interval as Horner on fractions (every intermediate is a positive multiple of the
+/// fraction one), with two reductions in all instead of four per coefficient.
 pub(crate) fn enclose(p: &[Rational], lo: &Rational, hi: &Rational) -> (Rational, Rational) {
-    let mut a = Rational::zero();
-    let mut b = Rational::zero();
-    for c in p.iter().rev() {
-        let products = [&a * lo, &a * hi, &b * lo, &b * hi];
-        let mn = products.iter().min().expect("four").clone();
-        let mx = products.iter().max().expect("four").clone();
-        a = mn + c;
-        b = mx + c;
-    }
-    (a, b)
+    let (numerators, c) = over_common_denominator(p);
+    let n = p.len().saturating_sub(1);
+    let (l, h) = enclose_scaled(&numerators, n, lo, hi);
+    let d = lo.denom().lcm(hi.denom());
+    let den = num_traits::pow(d, n) * c;
+    (Rational::new(l, den.clone()), Rational::new(h, den))
+}
+
+/// The integer numerators N and the positive common denominator c of a rational polynomial:
+/// p = N / c.
+fn over_common_denominator(p: &[Rational]) -> (ZPoly, BigInt) {
+    let c = p.iter().fold(BigInt::one(), |c, x| c.lcm(x.denom()));
+    let n = p.iter().map(|x| x.numer() * (&c / x.denom())).collect();
+    (n, c)
 }
 
 /// Encloses p([lo, hi]) for an integer polynomial p (ascending) of degree <= n without
@@ -778,11 +785,7 @@ pub fn value_at(p: &[Rational], alpha: &AlgebraicReal) -> AlgebraicReal {
     if let Some(r) = &alpha.exact {
         return AlgebraicReal::from_rational(upoly_eval_q(p, r));
     }
-    let mut scale = BigInt::one();
-    for c in p {
-        scale = scale.lcm(c.denom());
-    }
-    let n: ZPoly = p.iter().map(|c| c.numer() * (&scale / c.denom())).collect();
+    let (n, scale) = over_common_denominator(p);
     if degree(&n).unwrap_or(0) == 0 {
         return AlgebraicReal::from_rational(upoly_eval_q(p, &Rational::zero()));
     }
