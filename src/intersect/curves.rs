@@ -428,23 +428,25 @@ pub fn self_intersections_f64(p: &[[f64; 2]]) -> Result<Intersections> {
 /// resultant has degree n m and coefficients of about (n + m) (bits + n + m) bits, and with
 /// refinement by quadratic interval refinement the measured cost grows as (n m)^2 operations
 /// on numbers of that size (log-log slope 1.98 from n = m = 8 to 20). Measured in release
-/// (2026-12-06), random pairs with coordinates k / q (|k| <= 20, q <= 7): n = m = 8 about
-/// 0.06 s, 12 0.3-0.5 s, 16 0.5-0.9 s, 20 about 2.2 s; self-intersections (this estimate at
-/// degree n - 1) of degree 16 0.2 s, 20 about 1 s.
+/// (2026-12-06, 2-core machine), random pairs with coordinates k / q (|k| <= 20, q <= 7):
+/// n = m = 20 0.6-1.6 s, 24 3.1-5.2 s, 28 3.9-7.1 s; self-intersections (this estimate at
+/// degree n - 1) of degree 20 about 0.6 s, 24 0.9-2.4 s, 28 5-6 s. The constant puts the
+/// measured times within 0.5 to 2 times the estimate from degree 20 to 28.
 pub fn intersection_work(n: usize, m: usize, bits: usize) -> u128 {
     let d = (n as u128) * (m as u128) + 1;
-    160 * d * d * coefficient_words(n, m, bits)
+    200 * d * d * coefficient_words(n, m, bits)
 }
 
 /// A work estimate, in nanoseconds as [`intersection_work`], for [`intersect_curves`] when
 /// the float filter decides with `crossings` crossings: two multi-modular resultants of
 /// degree n m, and for each crossing the Bernstein coefficients of their square-free parts
 /// over its enclosure (Descartes' test), each about (n m)^2 operations on numbers of the
-/// resultant's size. Measured in release (2026-12-06): random pairs n = m = 20 with 2 to 10
-/// crossings 1.1 to 1.5 s, n = m = 16 0.6 to 0.9 s, n = m = 3 about 1 ms.
+/// resultant's size. Measured in release (2026-12-06, 2-core machine): random pairs with
+/// six-decimal coordinates, n = m = 20 0.55-1.5 s, 24 3.7-4.3 s, 28 7.9-13 s, n = m = 3
+/// about 1 ms; within 0.9 to 1.3 times the estimate from degree 20 to 28.
 pub fn filtered_intersection_work(n: usize, m: usize, bits: usize, crossings: usize) -> u128 {
     let d = (n as u128) * (m as u128) + 1;
-    8 * (2 + crossings as u128) * d * d * coefficient_words(n, m, bits)
+    12 * (2 + crossings as u128) * d * d * coefficient_words(n, m, bits)
 }
 
 /// The estimated work of [`intersect_curves`] on `p` and `q`, in nanoseconds as

@@ -272,11 +272,21 @@ fn bad_input_names_the_field() {
     }
     assert!(error(&[], r#"{"kind": "root", "control_points": [1]}"#)
         .contains("did you mean \"roots\"?"));
-    // A curve of degree 25 is over the documented limit of 20.
-    let long: Vec<Value> = (0..26).map(|i| json!([i, i * i % 7])).collect();
+    // A curve of degree 45 is over the documented limit of 40.
+    let long: Vec<Value> = (0..46).map(|i| json!([i, i * i % 7])).collect();
     let e = error(&[], &json!({"kind": "self", "curve": long}).to_string());
     assert!(
-        e.starts_with("error: curve: degree 25 is over the limit of 20"),
+        e.starts_with("error: curve: degree 45 is over the limit of 40"),
+        "{e}"
+    );
+    // Under the degree limit, a loop of degree 30 is refused by the default budget (its
+    // estimate, some 7e9 units, is over twice the default 1e9) before computing.
+    let loop30: Vec<Value> = (0..31)
+        .map(|i| json!([(i * 7) % 11 - 5, (i * i * 3) % 13 - 6]))
+        .collect();
+    let e = error(&[], &json!({"kind": "self", "curve": loop30}).to_string());
+    assert!(
+        e.starts_with("error: curve: the job's work is estimated at"),
         "{e}"
     );
     // Options.
