@@ -676,7 +676,7 @@ pub(crate) fn enclose(p: &[Rational], lo: &Rational, hi: &Rational) -> (Rational
 
 /// The integer numerators N and the positive common denominator c of a rational polynomial:
 /// p = N / c.
-fn over_common_denominator(p: &[Rational]) -> (ZPoly, BigInt) {
+pub(crate) fn over_common_denominator(p: &[Rational]) -> (ZPoly, BigInt) {
     let c = p.iter().fold(BigInt::one(), |c, x| c.lcm(x.denom()));
     let n = p.iter().map(|x| x.numer() * (&c / x.denom())).collect();
     (n, c)

@@ -38,7 +38,9 @@
 //! factor of its own, P = R(phi) with deg phi > 1) gives overlaps with t0 > t1, s1 <= t1,
 //! one per pair of monotone pieces of phi whose images overlap (see `components`).
 
-use super::algebraic::{exact_f64, round_polynomial_at, upoly_eval_q, AlgebraicReal};
+use super::algebraic::{
+    exact_f64, over_common_denominator, round_polynomial_at, upoly_eval_q, AlgebraicReal,
+};
 use super::bivariate::BiPoly;
 use super::bivariate::{resultant_t, swap};
 use super::components::{common_component, retracing};
@@ -382,7 +384,7 @@ pub fn self_intersections(p: &[[Rational; 2]]) -> Result<Intersections> {
     if pp.single_point().is_some() {
         // The whole curve as one retracing overlap in the spec's form (t0 > t1, s1 <= t1):
         // [0, 1/2] and [1, 1/2] trace the same set, the point.
-        let half = Rational::from_integer(1.into()) / Rational::from_integer(2.into());
+        let half = Rational::new(1.into(), 2.into());
         return Ok(finish(
             Vec::new(),
             vec![Overlap {
@@ -478,13 +480,11 @@ pub fn self_intersection_work(p: &[[Rational; 2]]) -> u128 {
 /// common denominator (the integers the exact solver works on), at least 1: doubles share a
 /// power of two, so their numerators have about 53 bits plus the spread of their exponents.
 fn longest_coordinate(p: &[[Rational; 2]]) -> usize {
-    let common = p
+    let coordinates: Vec<Rational> = p.iter().flatten().cloned().collect();
+    let (numerators, _) = over_common_denominator(&coordinates);
+    numerators
         .iter()
-        .flatten()
-        .fold(BigInt::one(), |l, c| l.lcm(c.denom()));
-    p.iter()
-        .flatten()
-        .map(|c| (c.numer() * (&common / c.denom())).bits() as usize)
+        .map(|c| c.bits() as usize)
         .max()
         .unwrap_or(0)
         .max(1)
