@@ -3,7 +3,8 @@
 //!
 //! * `curve`: a Bézier curve of degree n restricted to [a, b]: the engine without allocation
 //!   (`Bezier::subsegment_into`), the engine through the runtime-dimension API
-//!   (`BezierCurve::subsegment`, a new curve each call), a textbook de Casteljau restriction written here (split at b,
+//!   (`BezierCurve::subsegment`, a new curve each call, and `BezierCurve::subsegment_into`,
+//!   into a reused curve: `engine_vec_api_into`), a textbook de Casteljau restriction written here (split at b,
 //!   then the right part at a / b, in place, no allocation), and the previous default (to the
 //!   power basis by forward differences, then the Taylor shift: `before`);
 //! * `tensor`: a tensor patch of bidegree (n, n): the engine, and `before`;
@@ -150,6 +151,22 @@ fn curves(c: &mut Criterion) {
         group.bench_with_input(BenchmarkId::new("engine_vec_api", n), &n, |bench, _| {
             bench.iter(|| black_box(&vec_curve).subsegment(a..b))
         });
+        let mut vec_out = vec_curve.clone();
+        group.bench_with_input(
+            BenchmarkId::new("engine_vec_api_into", n),
+            &n,
+            |bench, _| {
+                bench.iter(|| {
+                    black_box(&vec_curve).subsegment_into(
+                        black_box(&a),
+                        black_box(&b),
+                        &mut vec_out,
+                        &mut scratch,
+                    );
+                    black_box(&vec_out);
+                })
+            },
+        );
         group.bench_with_input(BenchmarkId::new("before", n), &n, |bench, _| {
             bench.iter(|| black_box(before()))
         });

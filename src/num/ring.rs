@@ -56,6 +56,14 @@ pub trait Ring: Clone + PartialEq + Debug {
         let _ = (points, dim, a, b, out);
         false
     }
+    /// Runs `work` with a scratch buffer for the engine: for the hardware floats a buffer of
+    /// this thread, reused from call to call (so that the forms that return a new shape
+    /// allocate only their answer), for every other ring a fresh one (whose numbers allocate
+    /// anyway). The buffer's contents on entry are unspecified; the engine only writes before
+    /// it reads.
+    fn with_scratch<R>(work: impl FnOnce(&mut Vec<Self>) -> R) -> R {
+        work(&mut Vec::new())
+    }
     /// The additive identity.
     fn zero() -> Self;
     /// The multiplicative identity.
@@ -124,6 +132,17 @@ macro_rules! float_ring {
         impl Ring for $t {
             const UNROLLED: bool = true;
             type Coords = crate::engine::SmallCoords<Self, { crate::engine::INLINE_COORDINATES }>;
+            fn with_scratch<R>(work: impl FnOnce(&mut Vec<Self>) -> R) -> R {
+                thread_local! {
+                    static SCRATCH: std::cell::RefCell<Vec<$t>> =
+                        const { std::cell::RefCell::new(Vec::new()) };
+                }
+                // A fresh buffer when this thread's is in use already (`work` calling back).
+                SCRATCH.with(|cell| match cell.try_borrow_mut() {
+                    Ok(mut scratch) => work(&mut scratch),
+                    Err(_) => work(&mut Vec::new()),
+                })
+            }
             #[inline]
             fn restrict_unrolled(points: &[Self], dim: usize, a: &Self, b: &Self, out: &mut [Self]) -> bool {
                 (dim == 2 && crate::shape::unrolled::planar_cubic(points, a, b, out))

@@ -132,10 +132,13 @@ impl<T: Ring, const D: usize> Bezier<T, D> {
         )))
     }
 
-    /// The point at `t` (de Casteljau; one allocation for the working level).
+    /// The point at `t` (de Casteljau; the working level in [`Ring::with_scratch`]'s buffer, so
+    /// floats allocate nothing).
     pub fn eval(&self, t: &T) -> [T; D] {
         let mut out: [T; D] = std::array::from_fn(|_| T::zero());
-        flat::curve_eval_into(self.points.as_flattened(), D, t, &mut out, &mut Vec::new());
+        T::with_scratch(|scratch| {
+            flat::curve_eval_into(self.points.as_flattened(), D, t, &mut out, scratch)
+        });
         out
     }
 
@@ -143,8 +146,10 @@ impl<T: Ring, const D: usize> Bezier<T, D> {
     /// f(a^(n-j), b^j). Any a, b, also outside [0, 1] or with a > b.
     pub fn subsegment(&self, range: Range<T>) -> Self {
         let mut out = self.points.clone();
-        self.subsegment_into(&range.start, &range.end, &mut out, &mut Vec::new())
-            .expect("out has n + 1 points");
+        T::with_scratch(|scratch| {
+            self.subsegment_into(&range.start, &range.end, &mut out, scratch)
+        })
+        .expect("out has n + 1 points");
         Bezier { points: out }
     }
 
@@ -278,7 +283,7 @@ impl<T: Ring, const D: usize> BezierTensor<T, D> {
     /// [0, 1]^2.
     pub fn restrict(&self, rect: &[T; 4]) -> Self {
         let mut out = self.points.clone();
-        self.restrict_into(rect, &mut out, &mut Vec::new())
+        T::with_scratch(|scratch| self.restrict_into(rect, &mut out, scratch))
             .expect("out has as many points");
         BezierTensor {
             cols: self.cols,
@@ -370,7 +375,7 @@ impl<T: Ring, const D: usize> BezierTriangle<T, D> {
     /// reparametrised over the reference triangle: q_(ν μ λ) = f(A^ν, B^μ, C^λ).
     pub fn restrict(&self, corners: &[[T; 2]; 3]) -> Self {
         let mut out = self.points.clone();
-        self.restrict_into(corners, &mut out, &mut Vec::new())
+        T::with_scratch(|scratch| self.restrict_into(corners, &mut out, scratch))
             .expect("out has as many points");
         BezierTriangle {
             degree: self.degree,

@@ -224,7 +224,7 @@ impl<T: Ring> BezierCurve<T> {
     /// The point at parameter `t` (de Casteljau).
     pub fn eval(&self, t: &T) -> Point<T> {
         let mut out = vec![T::zero(); self.dim];
-        self.eval_into(t, &mut out, &mut Vec::new());
+        T::with_scratch(|scratch| self.eval_into(t, &mut out, scratch));
         out
     }
 
@@ -508,7 +508,7 @@ impl<T: Ring> TensorPatch<T> {
     /// [0, 1]^2: p_(ν μ) = b[a^(n-ν), b^ν; c^(m-μ), d^μ]. O(nm(n + m)) per coordinate.
     pub fn restrict(&self, rect: &[T; 4]) -> Self {
         let mut out = self.clone();
-        self.restrict_into(rect, &mut out, &mut Vec::new());
+        T::with_scratch(|scratch| self.restrict_into(rect, &mut out, scratch));
         out
     }
 
@@ -685,7 +685,7 @@ impl<T: Ring> TriangularPatch<T> {
     /// q_(ν μ λ) = b[A^ν, B^μ, C^λ]. O(N^3) per coordinate.
     pub fn restrict(&self, corners: &[[T; 2]; 3]) -> Self {
         let mut out = self.clone();
-        self.restrict_into(corners, &mut out, &mut Vec::new());
+        T::with_scratch(|scratch| self.restrict_into(corners, &mut out, scratch));
         out
     }
 

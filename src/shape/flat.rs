@@ -77,10 +77,11 @@ pub(crate) fn curve_subsegment_returned<T: Ring>(
     curve_subsegment_own_scratch(points, dim, a, b, out);
 }
 
-/// [`curve_subsegment_engine`] with a fresh scratch buffer, out of line.
+/// [`curve_subsegment_engine`] with the ring's scratch buffer ([`Ring::with_scratch`]: this
+/// thread's, reused, for the floats), out of line.
 #[inline(never)]
 fn curve_subsegment_own_scratch<T: Ring>(points: &[T], dim: usize, a: &T, b: &T, out: &mut [T]) {
-    curve_subsegment_engine(points, dim, a, b, out, &mut Vec::new());
+    T::with_scratch(|scratch| curve_subsegment_engine(points, dim, a, b, out, scratch));
 }
 
 /// The halving engine for [`curve_subsegment`]: with the width fixed at compile time in

@@ -1,0 +1,133 @@
+//! How often the everyday float calls allocate, counted by a global allocator that counts the
+//! allocations of the calling thread: the forms that return a new shape allocate once (the
+//! answer), the `_into` forms and the fixed-dimension evaluation not at all, at degrees on
+//! both sides of the unrolled evaluators (degree 24), where the engine needs scratch space.
+
+use blossom::{Bezier, BezierCurve, TensorPatch, TriangularPatch};
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+
+/// The system allocator, counting the allocations (and reallocations) of each thread.
+struct Counting;
+
+thread_local! {
+    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
+}
+
+// SAFETY: every call is forwarded to the system allocator unchanged; the count is a
+// thread-local `Cell` with a constant initialiser, which never allocates.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.with(|n| n.set(n.get() + 1));
+        // SAFETY: the caller's contract is the system allocator's.
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.with(|n| n.set(n.get() + 1));
+        // SAFETY: as above.
+        unsafe { System.alloc_zeroed(layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        ALLOCATIONS.with(|n| n.set(n.get() + 1));
+        // SAFETY: as above.
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: as above.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+/// The allocations `work` makes on this thread (its answer dropped after counting).
+fn allocations<R>(work: impl FnOnce() -> R) -> usize {
+    let before = ALLOCATIONS.with(Cell::get);
+    let answer = std::hint::black_box(work());
+    let count = ALLOCATIONS.with(Cell::get) - before;
+    drop(answer);
+    count
+}
+
+fn points(n: usize, dim: usize) -> Vec<Vec<f64>> {
+    (0..=n)
+        .map(|i| {
+            (0..dim)
+                .map(|k| ((i * 7 + k * 3) % 11) as f64 - 5.0)
+                .collect()
+        })
+        .collect()
+}
+
+#[test]
+fn returned_float_curves_allocate_only_their_answer() {
+    for n in [3, 12, 24, 25, 40, 64] {
+        for dim in [2, 3, 5] {
+            let curve = BezierCurve::new(points(n, dim)).unwrap();
+            // The first call may grow this thread's scratch buffer; later ones reuse it.
+            let _ = curve.subsegment(0.25..0.5);
+            let _ = curve.eval(&0.3);
+            let returned = allocations(|| curve.subsegment(-0.5..0.75));
+            // Small answers are held inline: no allocation at all.
+            let most = usize::from(n >= 3);
+            assert!(
+                returned <= most,
+                "degree {n}, dim {dim}: {returned} allocations"
+            );
+            let evaluated = allocations(|| curve.eval(&0.3));
+            assert_eq!(evaluated, 1, "eval, degree {n}, dim {dim}: the point only");
+            let mut out = curve.clone();
+            let mut scratch = Vec::new();
+            curve.subsegment_into(&0.1, &0.9, &mut out, &mut scratch);
+            let into = allocations(|| curve.subsegment_into(&0.2, &1.5, &mut out, &mut scratch));
+            assert_eq!(into, 0, "subsegment_into, degree {n}, dim {dim}");
+        }
+    }
+}
+
+#[test]
+fn fixed_dimension_curves_allocate_only_their_answer() {
+    for n in [3, 24, 40] {
+        let ctrl: Vec<[f64; 3]> = points(n, 3).iter().map(|p| [p[0], p[1], p[2]]).collect();
+        let curve = Bezier::new(ctrl).unwrap();
+        let _ = (curve.subsegment(0.25..0.5), curve.eval(&0.5));
+        assert_eq!(allocations(|| curve.eval(&0.3)), 0, "eval, degree {n}");
+        assert_eq!(
+            allocations(|| curve.subsegment(0.1..0.3)),
+            1,
+            "subsegment, degree {n}"
+        );
+    }
+}
+
+#[test]
+fn returned_float_patches_allocate_only_their_answer() {
+    for n in [2, 5, 9] {
+        let net: Vec<Vec<Vec<f64>>> = (0..=n)
+            .map(|i| {
+                points(n, 3)
+                    .into_iter()
+                    .map(|p| p.into_iter().map(|x| x + i as f64).collect())
+                    .collect()
+            })
+            .collect();
+        let patch = TensorPatch::new(net).unwrap();
+        let rect = [0.1, 0.6, -0.2, 0.9];
+        let _ = patch.restrict(&rect);
+        assert_eq!(
+            allocations(|| patch.restrict(&rect)),
+            1,
+            "tensor, degree {n}"
+        );
+        let count = (n + 1) * (n + 2) / 2;
+        let triangle = TriangularPatch::new(n, points(count - 1, 3)).unwrap();
+        let corners = [[0.1, 0.1], [0.8, 0.1], [0.2, 0.7]];
+        let _ = triangle.restrict(&corners);
+        assert_eq!(
+            allocations(|| triangle.restrict(&corners)),
+            1,
+            "triangle, degree {n}"
+        );
+    }
+}
