@@ -122,23 +122,17 @@ impl Power {
     }
 }
 
-/// The lcm of the denominators of the coefficients of two polynomials.
-fn common_denominator(a: &[Rational], b: &[Rational]) -> BigInt {
-    a.iter()
-        .chain(b)
-        .fold(BigInt::one(), |l, c| l.lcm(c.denom()))
-}
-
 /// f(s) - g(t) scaled by the lcm of the denominators, as an integer bivariate polynomial.
 fn separated(f: &[Rational], g: &[Rational]) -> BiPoly {
-    let l = common_denominator(f, g);
-    let int = |c: &Rational| c.numer() * (&l / c.denom());
+    let both: Vec<Rational> = f.iter().chain(g).cloned().collect();
+    let (numerators, _) = over_common_denominator(&both);
+    let (nf, ng) = numerators.split_at(f.len());
     let mut a: BiPoly = vec![vec![BigInt::zero(); g.len().max(1)]; f.len().max(1)];
-    for (i, c) in f.iter().enumerate() {
-        a[i][0] += int(c);
+    for (i, c) in nf.iter().enumerate() {
+        a[i][0] += c;
     }
-    for (j, c) in g.iter().enumerate() {
-        a[0][j] -= int(c);
+    for (j, c) in ng.iter().enumerate() {
+        a[0][j] -= c;
     }
     a
 }
