@@ -21,6 +21,7 @@ from fractions import Fraction as F
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from truth import (  # noqa: E402
     S,
+    bernstein_power,
     curve_truth,
     de_casteljau_restrict,
     elevate,
@@ -419,6 +420,239 @@ def family_self():
     for i, n in enumerate([4, 5, 5, 6, 6, 7]):
         add_self(fam + "/higher-degree", f"self-degree-{n}-{i}", rand_int_pts(n, -6, 6))
 
+# ---------------------------------------------------------------------------------------------
+# Families added after the first 426 cases (each reseeds, so the cases above are unchanged):
+# extreme f64 scales, rounding ties, structured cases rounded to doubles, degree 4-5 contacts.
+
+
+def padd(a, b):
+    n = max(len(a), len(b))
+    return [(a[i] if i < len(a) else F(0)) + (b[i] if i < len(b) else F(0)) for i in range(n)]
+
+
+def pscale(a, c):
+    return [x * c for x in a]
+
+
+def ppow(a, k):
+    out = [F(1)]
+    for _ in range(k):
+        out = poly_mul(out, a)
+    return out
+
+
+def compose(p, q):
+    """p(q(x)), ascending coefficients."""
+    out = [F(0)]
+    for c in reversed(p):
+        out = padd(poly_mul(out, q), [c])
+    return out
+
+
+def curve_power(P):
+    return [bernstein_power([F(p[0]) for p in P]), bernstein_power([F(p[1]) for p in P])]
+
+
+def curve_from_power(cx, cy):
+    n = max(len(cx), len(cy)) - 1
+    while n > 1 and all(c == 0 for c in cx[n:] + cy[n:]):
+        n -= 1
+    pad = lambda p: (list(p) + [F(0)] * (n + 1))[: n + 1]  # noqa: E731
+    assert all(c == 0 for c in cx[n + 1:] + cy[n + 1:])
+    return list(zip(power_to_bernstein(pad(cx)), power_to_bernstein(pad(cy))))
+
+
+def is_double(q):
+    q = F(q)
+    try:
+        return F(float(q)) == q
+    except OverflowError:
+        return False
+
+
+def rand_pts_kind(n, kind, span):
+    if kind == "int":
+        return [(F(random.randint(-span, span)), F(random.randint(-span, span))) for _ in range(n + 1)]
+    if kind == "dyadic":
+        d = 2 ** random.randint(1, 5)
+        return [(F(random.randint(-span * d, span * d), d), F(random.randint(-span * d, span * d), d)) for _ in range(n + 1)]
+    d = random.randint(2, 12)
+    return [(F(random.randint(-span * d, span * d), random.randint(1, d)), F(random.randint(-span * d, span * d), random.randint(1, d))) for _ in range(n + 1)]
+
+
+def rand_param(ends=0.25, den=None):
+    r = random.random()
+    if r < ends / 2:
+        return F(0)
+    if r < ends:
+        return F(1)
+    den = den or random.choice([2, 3, 4, 5, 7, 8, 10, 16, 12])
+    return F(random.randint(1, den - 1), den)
+
+
+def tangent_pair(P, s0, t0, variant, k):
+    """A curve Q through P(s0) at t = t0, tangent to P there: "quad" is
+    P(s0) + c (t - t0) P'(s0) + (t - t0)^2 w, "comp" is P(s0 + c (t - t0)) + (t - t0)^k w (contact
+    of order k)."""
+    d, a = deriv_at(P, s0), point_at(P, s0)
+    c = F(random.choice([1, -1, 2, -2, 3]), random.choice([1, 2, 3]))
+    w = (F(random.randint(-4, 4)), F(random.randint(-4, 4)))
+    if w == (0, 0):
+        w = (F(1), F(-2))
+    lin = [-t0, F(1)]
+    if variant == "quad":
+        cx = padd([a[0]], padd(pscale(lin, c * d[0]), pscale(ppow(lin, k), w[0])))
+        cy = padd([a[1]], padd(pscale(lin, c * d[1]), pscale(ppow(lin, k), w[1])))
+    else:
+        px, py = curve_power(P)
+        arg = padd([s0], pscale(lin, c))
+        cx = padd(compose(px, arg), pscale(ppow(lin, k), w[0]))
+        cy = padd(compose(py, arg), pscale(ppow(lin, k), w[1]))
+    return curve_from_power(cx, cy)
+
+
+def attempt(fn, *args, **kw):
+    """Adds a case unless the truth declines it (ValueError: a nonlinear common factor that is
+    not constructed); deterministic, so the same cases are dropped on every run."""
+    try:
+        fn(*args, **kw)
+        return True
+    except ValueError:
+        return False
+
+
+def scaled(P, k, off=(0, 0)):
+    return [(F(p[0]) * F(2) ** k + off[0], F(p[1]) * F(2) ** k + off[1]) for p in P]
+
+
+def family_f64_scaled():
+    """f64 jobs scaled by 2^k (k = +-300, +-600, -1000: products of coordinates over- or
+    underflow) or shifted by 2^20..2^40 (the shifted coordinates are rounded to doubles; the
+    truth is for the doubles of the job)."""
+    random.seed(20261206)
+    fam = "f64-scaled"
+    ks = [300, -300, 600, -600, -1000]
+    for i, k in enumerate(ks):
+        P, Q = rand_f64_pts(3), rand_f64_pts(random.choice([2, 3]))
+        P, Q = scaled(P, k), scaled(Q, k)
+        assert all(is_double(c) for p in P + Q for c in p)
+        attempt(add_cc, fam + "/curve-curve", f"scaled-cc-random-{i}-2^{k}", P, Q, arithmetic="f64")
+    par = [(F(0), F(0)), (F(1, 2), F(-1)), (F(1), F(0))]
+    line = [(F(0), F(-1, 2)), (F(1), F(-1, 2))]
+    for k in (300, -1000):
+        attempt(add_cc, fam + "/curve-curve", f"scaled-cc-tangent-parabola-line-2^{k}", scaled(par, k), scaled(line, k), arithmetic="f64")
+    for k in (-600, 600):
+        loop = [(0.1, 0.0), (3.3, 3.1), (-2.2, 2.9), (1.0, 0.3)]
+        attempt(add_self, fam + "/self", f"scaled-self-loop-2^{k}", scaled([(F(x), F(y)) for x, y in loop], k), arithmetic="f64")
+    for k in (-1000, 300):
+        n = random.randint(3, 6)
+        add_roots(fam + "/roots", f"scaled-roots-random-deg{n}-2^{k}", [F(random.uniform(-1, 1)) * F(2) ** k for _ in range(n + 1)], arithmetic="f64")
+    dbl = power_to_bernstein(from_roots([F(1, 4), F(1, 4), F(5, 8)], 3))
+    for k in (-600, 600):
+        add_roots(fam + "/roots", f"scaled-roots-double-root-2^{k}", [c * F(2) ** k for c in dbl], arithmetic="f64")
+    for i in range(3):
+        e1, e2 = random.randint(20, 40), random.randint(20, 40)
+        off = (F(random.choice([1, -1]) * 2**e1), F(2**e2))
+        P, Q = rand_f64_pts(3), rand_f64_pts(3)
+        attempt(add_cc, fam + "/shifted", f"shifted-cc-random-{i}-2^{e1}-2^{e2}", scaled(P, 0, off), scaled(Q, 0, off), arithmetic="f64")
+    attempt(add_cc, fam + "/shifted", "shifted-cc-tangent-parabola-line-2^40", scaled(par, 0, (F(2**40), F(-(2**40)))), scaled(line, 0, (F(2**40), F(-(2**40)))), arithmetic="f64")
+    attempt(add_self, fam + "/shifted", "shifted-self-loop-2^33", scaled([(F(0), F(0)), (F(3), F(3)), (F(-2), F(3)), (F(1), F(0))], 0, (F(2**33), F(2**33))), arithmetic="f64")
+    attempt(add_self, fam + "/shifted", "shifted-self-loop-inexact-2^21", scaled([(F(0.1), F(0.0)), (F(3.3), F(3.1)), (F(-2.2), F(2.9)), (F(1.0), F(0.3))], 0, (F(-(2**21)), F(2**21))), arithmetic="f64")
+
+
+def family_ties():
+    """Parameters at exact rounding ties (ties to even) and a hair away from them (rational and
+    irrational), as roots with multiplicity, crossings and a tangent (exact arithmetic)."""
+    random.seed(20261207)
+    fam = "ties"
+    ties = [F(1, 2) + F(1, 2**54), F(1, 2) + F(3, 2**54), 1 - F(1, 2**54), F(1, 4) + F(1, 2**56), F(3, 4) + F(5, 2**55), F(1, 2**60) * 3]
+    near = [F(1, 2) + F(1, 2**54) + F(1, 2**200), F(1, 2) + F(1, 2**54) - F(1, 2**200), F(1, 4) + F(1, 2**56) - F(1, 3 * 2**110)]
+    for i, r in enumerate(ties + near):
+        k = random.randint(1, 3)
+        add_roots(fam + "/roots", f"ties-roots-{i}-k{k}", power_to_bernstein(from_roots([r] * k + [F(random.randint(0, 4), 4)])))
+    # (t - m)^2 - 2 eps^2: two irrational roots m +- sqrt(2) eps astride the tie m.
+    for i, (m, e) in enumerate([(ties[0], 120), (ties[1], 200), (ties[3], 70)]):
+        add_roots(fam + "/roots", f"ties-roots-surds-astride-{i}-2^-{e}", power_to_bernstein([m * m - 2 * F(1, 2**e) ** 2, -2 * m, F(1)]))
+    for i in range(6):
+        s0, t0 = random.choice(ties + near), random.choice(ties + [F(1, 3)])
+        P = rand_pts_kind(random.choice([1, 2, 3]), "int", 5)
+        Q = rand_pts_kind(random.choice([1, 2]), "int", 5)
+        a, b = point_at(P, s0), point_at(Q, t0)
+        attempt(add_cc, fam + "/curve-curve", f"ties-cc-cross-{i}", P, translate(Q, (a[0] - b[0], a[1] - b[1])))
+    made = 0
+    while made < 2:
+        P = rand_pts_kind(2, "int", 5)
+        s0, t0 = random.choice(ties), random.choice(ties)
+        if deriv_at(P, s0) == (0, 0):
+            continue
+        if attempt(add_cc, fam + "/curve-curve", f"ties-cc-tangent-{made}", P, tangent_pair(P, s0, t0, "quad", 2)):
+            made += 1
+
+
+def family_f64_rounded():
+    """Structured exact configurations (multiple roots, tangencies, overlaps, loops) whose
+    rational data is rounded to doubles: a near-degenerate perturbation, solved for the doubles."""
+    random.seed(20261208)
+    fam = "f64-rounded"
+    for i in range(4):
+        r = [F(random.randint(1, 11), 12)] * random.randint(2, 5) + [F(random.randint(0, 12), 12) for _ in range(random.randint(0, 2))]
+        add_roots(fam + "/roots", f"rounded-roots-mult-{i}", power_to_bernstein(from_roots(r)), arithmetic="f64")
+    made = 0
+    while made < 4:
+        n = random.choice([2, 3, 3])
+        P = rand_pts_kind(n, "rat", 3)
+        s0, t0 = rand_param(0.2), rand_param(0.2)
+        if deriv_at(P, s0) == (0, 0):
+            continue
+        Q = tangent_pair(P, s0, t0, random.choice(["quad", "comp"]), 2)
+        if len(Q) > 5:
+            continue
+        if attempt(add_cc, fam + "/tangent", f"rounded-cc-tangent-{made}", P, Q, arithmetic="f64"):
+            made += 1
+    for i in range(4):
+        P = rand_pts_kind(random.choice([2, 3]), "rat", 3)
+        a, b = F(random.randint(0, 4), 10), F(random.randint(6, 10), 10)
+        Q = de_casteljau_restrict(P, a, b) if i % 3 else elevate(P)
+        if i % 2:
+            Q = Q[::-1]
+        attempt(add_cc, fam + "/overlap", f"rounded-cc-overlap-{i}", P, Q, arithmetic="f64")
+    for i in range(4):
+        P = rand_pts_kind(3, "rat", 3)
+        if i % 2:
+            P[-1] = P[0]
+        else:
+            P[2] = (P[0][0] + F(1, 3), P[0][1] - F(1, 7))
+        attempt(add_self, fam + "/self", f"rounded-self-{i}", P, arithmetic="f64")
+
+
+def family_heavy():
+    """Degree 4-5 pairs with a contact of order 2-5 (every third shifted off by 1e-9..1e-14
+    along the normal); dyadic ones also under f64."""
+    random.seed(20261209)
+    fam = "heavy"
+    made = 0
+    while made < 10:
+        n = random.choice([4, 5])
+        kind = random.choice(["int", "dyadic"])
+        P = rand_pts_kind(n, kind, 6)
+        s0, t0 = rand_param(0.3), rand_param(0.3)
+        if deriv_at(P, s0) == (0, 0):
+            continue
+        k = random.randint(2, 5)
+        Q = tangent_pair(P, s0, t0, "comp", k)
+        if len(Q) - 1 > 5:
+            continue
+        if made % 3 == 2:
+            d = deriv_at(P, s0)
+            eps = F(1, 10 ** random.randint(9, 14))
+            Q = translate(Q, (-eps * d[1], eps * d[0]))
+        name = f"heavy-cc-{made}-k{k}-deg{len(P) - 1}-{len(Q) - 1}"
+        if not attempt(add_cc, fam + "/contact", name, P, Q, style=random.choice(["frac", "int"])):
+            continue
+        if all(is_double(c) for p in P + Q for c in p):
+            attempt(add_cc, fam + "/contact", name + "-f64", P, Q, arithmetic="f64")
+        made += 1
+
 
 def main():
     t0 = time.time()
@@ -428,12 +662,17 @@ def main():
     t2 = time.time()
     family_self()
     t3 = time.time()
+    family_f64_scaled()
+    family_ties()
+    family_f64_rounded()
+    family_heavy()
+    t4 = time.time()
     out = os.path.join(os.path.dirname(os.path.abspath(__file__)), "cases.json")
     with open(out, "w") as f:
         json.dump({"generator": "tests/intersect_corpus/generate.py", "cases": CASES}, f, separators=(",", ":"))
         f.write("\n")
     fams = Counter(c["family"] for c in CASES)
-    print(f"{len(CASES)} cases, {os.path.getsize(out)} bytes, {t3 - t0:.1f} s (roots {t1 - t0:.1f} s, curve-curve {t2 - t1:.1f} s, self {t3 - t2:.1f} s)")
+    print(f"{len(CASES)} cases, {os.path.getsize(out)} bytes, {t4 - t0:.1f} s (roots {t1 - t0:.1f} s, curve-curve {t2 - t1:.1f} s, self {t3 - t2:.1f} s, added families {t4 - t3:.1f} s)")
     for k in sorted(fams):
         print(f"  {k:40s} {fams[k]}")
     npts = sum(len(c["expected"].get("points", c["expected"].get("roots", []))) for c in CASES)
