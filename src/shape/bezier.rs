@@ -248,7 +248,9 @@ impl<T: Ring> BezierCurve<T> {
     }
 
     /// The same curve over `range` = a..b, reparametrised over [0, 1]: control points
-    /// b[a^(n-j), b^j], j = 0..=n. Any a, b, also outside [0, 1] or with a > b.
+    /// b[a^(n-j), b^j], j = 0..=n. Any a, b, also outside [0, 1] or with a > b. For `f64`
+    /// and `f32` the answer is the one allocation (none for a curve held inline): the engine's
+    /// scratch is this thread's ([`Ring::with_scratch`]).
     #[inline]
     pub fn subsegment(&self, range: Range<T>) -> Self {
         if T::UNROLLED && self.dim == 2 {
