@@ -3,7 +3,8 @@
 //! answer), the `_into` forms and the fixed-dimension evaluation not at all, at degrees on
 //! both sides of the unrolled evaluators (degree 24), where the engine needs scratch space.
 
-use blossom::{Bezier, BezierCurve, TensorPatch, TriangularPatch};
+use blossom::engine::INLINE_COORDINATES;
+use blossom::{Bezier, BezierCurve, RationalBezierCurve, TensorPatch, TriangularPatch};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
@@ -62,19 +63,16 @@ fn points(n: usize, dim: usize) -> Vec<Vec<f64>> {
 
 #[test]
 fn returned_float_curves_allocate_only_their_answer() {
-    for n in [3, 12, 24, 25, 40, 64] {
+    for n in [1, 3, 12, 24, 25, 40, 64] {
         for dim in [2, 3, 5] {
             let curve = BezierCurve::new(points(n, dim)).unwrap();
             // The first call may grow this thread's scratch buffer; later ones reuse it.
             let _ = curve.subsegment(0.25..0.5);
             let _ = curve.eval(&0.3);
             let returned = allocations(|| curve.subsegment(-0.5..0.75));
-            // Small answers are held inline: no allocation at all.
-            let most = usize::from(n >= 3);
-            assert!(
-                returned <= most,
-                "degree {n}, dim {dim}: {returned} allocations"
-            );
+            // Answers of at most INLINE_COORDINATES numbers are held inline: no allocation.
+            let answer = usize::from((n + 1) * dim > INLINE_COORDINATES);
+            assert_eq!(returned, answer, "degree {n}, dim {dim}");
             let evaluated = allocations(|| curve.eval(&0.3));
             assert_eq!(evaluated, 1, "eval, degree {n}, dim {dim}: the point only");
             let mut out = curve.clone();
@@ -128,6 +126,20 @@ fn returned_float_patches_allocate_only_their_answer() {
             allocations(|| triangle.restrict(&corners)),
             1,
             "triangle, degree {n}"
+        );
+    }
+}
+
+#[test]
+fn rational_curves_evaluate_with_one_allocation() {
+    for n in [3, 24, 40] {
+        let weights: Vec<f64> = (0..=n).map(|i| 1.0 + (i % 3) as f64).collect();
+        let rational = RationalBezierCurve::new(points(n, 3), weights).unwrap();
+        let _ = rational.eval(&0.5);
+        assert_eq!(
+            allocations(|| rational.eval(&0.3)),
+            1,
+            "rational eval, degree {n}"
         );
     }
 }

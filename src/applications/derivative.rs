@@ -157,7 +157,7 @@ pub fn power_curve_derivative<T: Ring>(
     let level = fix_curve(scaled_curve(curve), dim, PowerVectorStep(&one), order);
     let mut out = vec![T::zero(); level.len()];
     let (a, b) = (PowerStep(a), PowerStep(b));
-    curve_net(&level, dim, &a, &b, &mut out, &mut Vec::new());
+    T::with_scratch(|scratch| curve_net(&level, dim, &a, &b, &mut out, scratch));
     scale_all(&mut out, &falling_factorial(n, order));
     BezierCurve::new(points_of(&out, dim))
 }
@@ -212,14 +212,7 @@ pub fn power_tensor_derivative<T: Ring>(
     let cols = m + 1 - order[1];
     let mut out = vec![T::zero(); level.len()];
     let steps = rect.each_ref().map(PowerStep);
-    tensor_net(
-        &level,
-        cols,
-        dim,
-        steps.each_ref(),
-        &mut out,
-        &mut Vec::new(),
-    );
+    T::with_scratch(|scratch| tensor_net(&level, cols, dim, steps.each_ref(), &mut out, scratch));
     let k = falling_factorial(n, order[0]) * falling_factorial(m, order[1]);
     scale_all(&mut out, &k);
     TensorPatch::new(
@@ -315,14 +308,9 @@ pub fn power_triangle_derivative<T: Ring>(
     level.truncate(triangle_len(degree) * dim);
     let mut out = vec![T::zero(); level.len()];
     let corners = tri.each_ref().map(PowerPairStep);
-    triangle_net(
-        &level,
-        degree,
-        dim,
-        corners.each_ref(),
-        &mut out,
-        &mut Vec::new(),
-    );
+    T::with_scratch(|scratch| {
+        triangle_net(&level, degree, dim, corners.each_ref(), &mut out, scratch)
+    });
     scale_all(&mut out, &falling_factorial(big_n, directions.len()));
     TriangularPatch::new(degree, points_of(&out, dim))
 }

@@ -62,14 +62,16 @@ pub(crate) fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> Be
     let dim = curve.dim();
     let scaled = scaled_curve(curve);
     let mut out = vec![T::zero(); scaled.len()];
-    curve_net(
-        &scaled,
-        dim,
-        &PowerStep(a),
-        &PowerStep(b),
-        &mut out,
-        &mut Vec::new(),
-    );
+    T::with_scratch(|scratch| {
+        curve_net(
+            &scaled,
+            dim,
+            &PowerStep(a),
+            &PowerStep(b),
+            &mut out,
+            scratch,
+        )
+    });
     BezierCurve::new(points_of(&out, dim)).expect("n + 1 points of one dimension")
 }
 
@@ -97,14 +99,7 @@ pub(crate) fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4])
     let scaled = scaled_tensor(surface);
     let mut out = vec![T::zero(); scaled.len()];
     let steps = rect.each_ref().map(PowerStep);
-    tensor_net(
-        &scaled,
-        m + 1,
-        dim,
-        steps.each_ref(),
-        &mut out,
-        &mut Vec::new(),
-    );
+    T::with_scratch(|scratch| tensor_net(&scaled, m + 1, dim, steps.each_ref(), &mut out, scratch));
     let net = out
         .chunks((m + 1) * dim)
         .map(|row| points_of(row, dim))
@@ -143,13 +138,8 @@ pub(crate) fn restrict_triangle<T: Ring>(
     let scaled = scaled_triangle(surface);
     let mut out = vec![T::zero(); scaled.len()];
     let steps = tri.each_ref().map(PowerPairStep);
-    triangle_net(
-        &scaled,
-        big_n,
-        dim,
-        steps.each_ref(),
-        &mut out,
-        &mut Vec::new(),
-    );
+    T::with_scratch(|scratch| {
+        triangle_net(&scaled, big_n, dim, steps.each_ref(), &mut out, scratch)
+    });
     TriangularPatch::new(big_n, points_of(&out, dim)).expect("a triangular net")
 }

@@ -118,7 +118,7 @@ impl<T: Field> RationalBezierCurve<T> {
     /// where the denominator vanishes.
     pub fn eval(&self, t: &T) -> Option<Point<T>> {
         let mut out = vec![T::zero(); self.dim];
-        self.eval_into(t, &mut out, &mut Vec::new()).ok()?;
+        T::with_scratch(|scratch| self.eval_into(t, &mut out, scratch)).ok()?;
         Some(out)
     }
 
@@ -152,7 +152,9 @@ impl<T: Field> RationalBezierCurve<T> {
             coords: Vec::with_capacity(self.weights.len() * (self.dim + 1)),
             weights: Vec::with_capacity(self.weights.len() * (self.dim + 1)),
         };
-        self.subsegment_into(&range.start, &range.end, &mut out, &mut Vec::new())?;
+        T::with_scratch(|scratch| {
+            self.subsegment_into(&range.start, &range.end, &mut out, scratch)
+        })?;
         Ok(out)
     }
 

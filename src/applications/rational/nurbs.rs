@@ -90,7 +90,7 @@ impl<T: Field> RationalBSpline<T> {
     /// the domain or where the denominator vanishes.
     pub fn eval(&self, t: &T) -> Result<Point<T>> {
         let mut out = vec![T::zero(); self.homogeneous.dim() - 1];
-        self.eval_into(t, &mut out, &mut Vec::new())?;
+        T::with_scratch(|scratch| self.eval_into(t, &mut out, scratch))?;
         Ok(out)
     }
 

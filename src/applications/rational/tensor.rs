@@ -219,7 +219,7 @@ impl<T: Field> RationalTensorPatch<T> {
     /// The point at (s, t) in [0, 1]^2, or `None` where the denominator vanishes.
     pub fn eval(&self, s: &T, t: &T) -> Option<Point<T>> {
         let mut out = vec![T::zero(); self.dim];
-        self.eval_into(s, t, &mut out, &mut Vec::new()).ok()?;
+        T::with_scratch(|scratch| self.eval_into(s, t, &mut out, scratch)).ok()?;
         Some(out)
     }
 
@@ -265,7 +265,7 @@ impl<T: Field> RationalTensorPatch<T> {
             coords: Vec::with_capacity(len),
             weights: Vec::with_capacity(len),
         };
-        self.restrict_into(rect, &mut out, &mut Vec::new())?;
+        T::with_scratch(|scratch| self.restrict_into(rect, &mut out, scratch))?;
         Ok(out)
     }
 

@@ -153,7 +153,7 @@ impl<T: Field> RationalTriangularPatch<T> {
     /// where the denominator vanishes.
     pub fn eval(&self, at: &[T; 2]) -> Option<Point<T>> {
         let mut out = vec![T::zero(); self.dim];
-        self.eval_into(at, &mut out, &mut Vec::new()).ok()?;
+        T::with_scratch(|scratch| self.eval_into(at, &mut out, scratch)).ok()?;
         Some(out)
     }
 
@@ -194,7 +194,7 @@ impl<T: Field> RationalTriangularPatch<T> {
             coords: Vec::with_capacity(len),
             weights: Vec::with_capacity(len),
         };
-        self.restrict_into(corners, &mut out, &mut Vec::new())?;
+        T::with_scratch(|scratch| self.restrict_into(corners, &mut out, scratch))?;
         Ok(out)
     }
 

@@ -180,7 +180,7 @@ impl<T: Field> RationalBSplineSurface<T> {
     /// error naming `u` or `v` outside the domain, or `(u, v)` where the denominator vanishes.
     pub fn eval(&self, u: &T, v: &T) -> Result<Point<T>> {
         let mut out = vec![T::zero(); self.homogeneous.dim() - 1];
-        self.eval_into(u, v, &mut out, &mut Vec::new())?;
+        T::with_scratch(|scratch| self.eval_into(u, v, &mut out, scratch))?;
         Ok(out)
     }
 
