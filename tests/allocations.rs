@@ -4,7 +4,10 @@
 //! both sides of the unrolled evaluators (degree 24), where the engine needs scratch space.
 
 use blossom::engine::INLINE_COORDINATES;
-use blossom::{Bezier, BezierCurve, RationalBezierCurve, TensorPatch, TriangularPatch};
+use blossom::{
+    restrict_power_curve, Bezier, BezierCurve, Method, PowerCurve, RationalBezierCurve,
+    TensorPatch, TriangularPatch,
+};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
@@ -141,5 +144,16 @@ fn rational_curves_evaluate_with_one_allocation() {
             1,
             "rational eval, degree {n}"
         );
+    }
+}
+
+#[test]
+fn power_form_restriction_allocates_no_point_by_point() {
+    for n in [3, 24, 40] {
+        let power = PowerCurve::new(points(n, 3)).unwrap();
+        let _ = restrict_power_curve(&power, &0.25, &0.5, Method::Bulk);
+        // The scaled coefficients and the answer's one buffer; none per control point.
+        let count = allocations(|| restrict_power_curve(&power, &0.1, &0.3, Method::Bulk));
+        assert_eq!(count, 2, "degree {n}");
     }
 }

@@ -34,7 +34,7 @@ use crate::shape::halving::{
     BernsteinPairVectorStep, BernsteinVectorStep, CurveStep, PowerPairStep, PowerPairVectorStep,
     PowerStep, PowerVectorStep,
 };
-use crate::shape::point::{points_of, Point};
+use crate::shape::point::Point;
 use crate::shape::power::{PowerCurve, PowerSurface};
 use crate::shape::power_triangle::PowerTriangle;
 use crate::shape::simplex::triangle_len;
@@ -159,7 +159,7 @@ pub fn power_curve_derivative<T: Ring>(
     let (a, b) = (PowerStep(a), PowerStep(b));
     T::with_scratch(|scratch| curve_net(&level, dim, &a, &b, &mut out, scratch));
     scale_all(&mut out, &falling_factorial(n, order));
-    BezierCurve::new(points_of(&out, dim))
+    BezierCurve::from_coordinates(dim, out)
 }
 
 /// The partial derivative d^(k+l) S / du^k dv^l (`order` = [k, l]) of the tensor patch
@@ -215,11 +215,7 @@ pub fn power_tensor_derivative<T: Ring>(
     T::with_scratch(|scratch| tensor_net(&level, cols, dim, steps.each_ref(), &mut out, scratch));
     let k = falling_factorial(n, order[0]) * falling_factorial(m, order[1]);
     scale_all(&mut out, &k);
-    TensorPatch::new(
-        out.chunks(cols * dim)
-            .map(|row| points_of(row, dim))
-            .collect(),
-    )
+    TensorPatch::from_coordinates((n - order[0], cols - 1), dim, out)
 }
 
 /// The directional derivative D_(d_1) ... D_(d_k) of the triangular patch `patch` (degree N),
@@ -312,5 +308,5 @@ pub fn power_triangle_derivative<T: Ring>(
         triangle_net(&level, degree, dim, corners.each_ref(), &mut out, scratch)
     });
     scale_all(&mut out, &falling_factorial(big_n, directions.len()));
-    TriangularPatch::new(degree, points_of(&out, dim))
+    TriangularPatch::from_coordinates(degree, dim, out)
 }

@@ -20,7 +20,6 @@
 use crate::num::binomial::binomial;
 use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
 use crate::shape::halving::{curve_net, tensor_net, triangle_net, PowerPairStep, PowerStep};
-use crate::shape::point::points_of;
 use crate::shape::power::{PowerCurve, PowerSurface};
 use crate::shape::power_triangle::PowerTriangle;
 use crate::shape::simplex::{triangle_index, triangle_len};
@@ -72,7 +71,7 @@ pub(crate) fn restrict_curve<T: Ring>(curve: &PowerCurve<T>, a: &T, b: &T) -> Be
             scratch,
         )
     });
-    BezierCurve::new(points_of(&out, dim)).expect("n + 1 points of one dimension")
+    BezierCurve::from_coordinates(dim, out).expect("n + 1 points of one dimension")
 }
 
 /// The coefficients d_ij = c_ij / (C(n, i) C(m, j)) of `surface` in the scaled tensor power
@@ -100,11 +99,7 @@ pub(crate) fn restrict_tensor<T: Ring>(surface: &PowerSurface<T>, rect: &[T; 4])
     let mut out = vec![T::zero(); scaled.len()];
     let steps = rect.each_ref().map(PowerStep);
     T::with_scratch(|scratch| tensor_net(&scaled, m + 1, dim, steps.each_ref(), &mut out, scratch));
-    let net = out
-        .chunks((m + 1) * dim)
-        .map(|row| points_of(row, dim))
-        .collect();
-    TensorPatch::new(net).expect("a rectangular net")
+    TensorPatch::from_coordinates(surface.degree(), dim, out).expect("a rectangular net")
 }
 
 /// The coefficients d_ij = c_ij / M(N; i, j) of `surface` (total degree N) as a triangular form
@@ -141,5 +136,5 @@ pub(crate) fn restrict_triangle<T: Ring>(
     T::with_scratch(|scratch| {
         triangle_net(&scaled, big_n, dim, steps.each_ref(), &mut out, scratch)
     });
-    TriangularPatch::new(big_n, points_of(&out, dim)).expect("a triangular net")
+    TriangularPatch::from_coordinates(big_n, dim, out).expect("a triangular net")
 }

@@ -38,11 +38,6 @@ pub fn scaled_rational<T: Ring>(p: &[T], k: &crate::Rational) -> Point<T> {
     p.iter().map(|x| x.scale(k)).collect()
 }
 
-/// Splits flat coordinates `flat` back into points of `dim` coordinates.
-pub(crate) fn points_of<T: Clone>(flat: &[T], dim: usize) -> Vec<Point<T>> {
-    flat.chunks(dim).map(<[T]>::to_vec).collect()
-}
-
 /// Splits each point of `rows` into concatenated coordinates: rows of a grid become long
 /// points, so that a pass along one variable treats a whole row as one point.
 pub(crate) fn flatten<T: Clone>(rows: &[Vec<Point<T>>]) -> Vec<Point<T>> {

@@ -2,7 +2,8 @@
 """A floating-point sanity check of cases.json, independent of truth.py's exact machinery
 (it proves nothing; it catches a generator bug): every point satisfies P(s) ~ Q(t) and its
 coordinates match (to 1e-6 of the largest coordinate); for the random families, the roots
-agree with mpmath's polyroots at 60 digits, and the number of interior intersections with the crossings of 600-segment polylines.
+agree with mpmath's polyroots at 60 digits, and the number of interior intersections with the
+crossings of 600-segment polylines.
 Prints every disagreement and "bad N" at the end (0 expected)."""
 import json, os, sys
 from fractions import Fraction as F
