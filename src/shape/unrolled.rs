@@ -53,25 +53,14 @@ impl<T: Ring> Evaluators<T> {
 }
 
 macro_rules! unrolled {
-    ($($n:literal => $name:ident, $into:ident;)*) => {
+    (
+        default: $($n:literal => $name:ident, $into:ident;)*
+        high: $($hn:literal => $hname:ident, $hinto:ident;)*
+    ) => {
+        $(unrolled!(@one $n => $name, $into);)*
         $(
-            crate::restriction!(name = $name, shape = bezier_curve, degree = $n);
-
-            /// The evaluator of this degree on flat slices, read as `[T; D]` points in place
-            /// (`as_chunks`), so nothing is copied on the way in. Filed in the table under its
-            /// exact length, so the conversions cannot fail there; a slice of another length
-            /// leaves `out` untouched.
-            #[inline]
-            fn $into<T: Ring, const D: usize>(points: &[T], a: &T, b: &T, out: &mut [T]) {
-                let (points, _) = points.as_chunks::<D>();
-                let (out, _) = out.as_chunks_mut::<D>();
-                if let (Ok(ctrl), Ok(out)) = (
-                    <&[[T; D]; $n + 1]>::try_from(points),
-                    <&mut [[T; D]; $n + 1]>::try_from(out),
-                ) {
-                    *out = $name(ctrl, a, b);
-                }
-            }
+            #[cfg(feature = "unrolled-high")]
+            unrolled!(@one $hn => $hname, $hinto);
         )*
 
         /// The table of every unrolled evaluator of `T`, built at compile time.
@@ -84,15 +73,46 @@ macro_rules! unrolled {
                 by_shape[2][3 * ($n + 1)] = Some($into::<T, 3> as Evaluator<T>);
                 by_shape[3][4 * ($n + 1)] = Some($into::<T, 4> as Evaluator<T>);
             )*
+            #[cfg(feature = "unrolled-high")]
+            {
+                $(
+                    by_shape[0][$hn + 1] = Some($hinto::<T, 1> as Evaluator<T>);
+                    by_shape[1][2 * ($hn + 1)] = Some($hinto::<T, 2> as Evaluator<T>);
+                    by_shape[2][3 * ($hn + 1)] = Some($hinto::<T, 3> as Evaluator<T>);
+                    by_shape[3][4 * ($hn + 1)] = Some($hinto::<T, 4> as Evaluator<T>);
+                )*
+            }
             Evaluators { by_shape }
+        }
+    };
+    (@one $n:literal => $name:ident, $into:ident) => {
+        crate::restriction!(name = $name, shape = bezier_curve, degree = $n);
+
+        /// The evaluator of this degree on flat slices, read as `[T; D]` points in place
+        /// (`as_chunks`), so nothing is copied on the way in. Filed in the table under its
+        /// exact length, so the conversions cannot fail there; a slice of another length
+        /// leaves `out` untouched.
+        #[inline]
+        fn $into<T: Ring, const D: usize>(points: &[T], a: &T, b: &T, out: &mut [T]) {
+            let (points, _) = points.as_chunks::<D>();
+            let (out, _) = out.as_chunks_mut::<D>();
+            if let (Ok(ctrl), Ok(out)) = (
+                <&[[T; D]; $n + 1]>::try_from(points),
+                <&mut [[T; D]; $n + 1]>::try_from(out),
+            ) {
+                *out = $name(ctrl, a, b);
+            }
         }
     };
 }
 
 unrolled! {
+    default:
     1 => degree_1, into_1; 2 => degree_2, into_2; 3 => degree_3, into_3;
     4 => degree_4, into_4; 5 => degree_5, into_5; 6 => degree_6, into_6;
-    7 => degree_7, into_7; 8 => degree_8, into_8; 9 => degree_9, into_9;
+    7 => degree_7, into_7; 8 => degree_8, into_8;
+    high:
+    9 => degree_9, into_9;
     10 => degree_10, into_10; 11 => degree_11, into_11; 12 => degree_12, into_12;
     13 => degree_13, into_13; 14 => degree_14, into_14; 15 => degree_15, into_15;
     16 => degree_16, into_16; 17 => degree_17, into_17; 18 => degree_18, into_18;
