@@ -89,15 +89,26 @@ fn returned_float_curves_allocate_only_their_answer() {
 
 #[test]
 fn fixed_dimension_curves_allocate_only_their_answer() {
-    for n in [3, 24, 40] {
+    for n in [1, 2, 3, 4, 8, 24, 40, 41, 64] {
         let ctrl: Vec<[f64; 3]> = points(n, 3).iter().map(|p| [p[0], p[1], p[2]]).collect();
         let curve = Bezier::new(ctrl).unwrap();
-        let _ = (curve.subsegment(0.25..0.5), curve.eval(&0.5));
+        let _ = (
+            curve.subsegment(0.25..0.5),
+            curve.eval(&0.5),
+            curve.split(&0.5),
+        );
         assert_eq!(allocations(|| curve.eval(&0.3)), 0, "eval, degree {n}");
+        // A 3-D curve of at most INLINE_COORDINATES numbers (a cubic) is returned inline.
+        let answer = usize::from((n + 1) * 3 > INLINE_COORDINATES);
         assert_eq!(
             allocations(|| curve.subsegment(0.1..0.3)),
-            1,
+            answer,
             "subsegment, degree {n}"
+        );
+        assert_eq!(
+            allocations(|| curve.split(&0.3)),
+            2 * answer,
+            "split, degree {n}"
         );
     }
 }

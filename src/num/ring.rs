@@ -149,6 +149,7 @@ macro_rules! float_ring {
             #[inline]
             fn restrict_unrolled(points: &[Self], dim: usize, a: &Self, b: &Self, out: &mut [Self]) -> bool {
                 (dim == 2 && crate::shape::unrolled::planar_cubic(points, a, b, out))
+                    || (dim == 3 && crate::shape::unrolled::spatial_cubic(points, a, b, out))
                     || $evaluators.restrict(points, dim, a, b, out)
                     || $two_pass(points, dim, *a, *b, out)
             }

@@ -140,6 +140,17 @@ pub(crate) fn planar_cubic<T: Ring>(points: &[T], a: &T, b: &T, out: &mut [T]) -
     true
 }
 
+/// [`planar_cubic`] for the 3-D cubic, as common in CAD and graphics: inlined too, so that
+/// the answer skips the table's indirect call.
+#[inline(always)]
+pub(crate) fn spatial_cubic<T: Ring>(points: &[T], a: &T, b: &T, out: &mut [T]) -> bool {
+    if points.len() != 12 || out.len() != 12 {
+        return false;
+    }
+    into_3::<T, 3>(points, a, b, out);
+    true
+}
+
 /// The unrolled evaluators in `f64`.
 pub(crate) static F64: Evaluators<f64> = evaluators::<f64>();
 

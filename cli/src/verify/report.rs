@@ -141,7 +141,7 @@ impl Report {
             "{}; `--verbose` shows every entry and finding",
             self.counts()
         );
-        let _ = writeln!(out, "{LEGEND}");
+        out.push_str(&wrap(LEGEND, "", WIDTH));
         let _ = writeln!(
             out,
             "\n{:11}  {:>7}  section (where in the papers)",
@@ -152,13 +152,9 @@ impl Report {
                 None => String::from("-"),
                 Some((matched, total)) => format!("{matched}/{total}"),
             };
-            let _ = writeln!(
-                out,
-                "{:11}  {entries:>7}  {} ({})",
-                row.status.name(),
-                row.title,
-                row.source
-            );
+            let head = format!("{:11}  {entries:>7}  ", row.status.name());
+            let text = format!("{head}{} ({})", row.title, row.source);
+            out.push_str(&wrap(&text, &" ".repeat(head.len()), WIDTH));
         }
         let unexplained: Vec<&str> = self
             .sections
@@ -302,6 +298,30 @@ impl Row {
     }
 }
 
+/// The width the short report wraps its lines to.
+const WIDTH: usize = 100;
+
+/// `text` broken at spaces into lines of at most `width` characters (a longer word stands
+/// alone), every line after the first starting with `indent`; each line ends in a newline.
+fn wrap(text: &str, indent: &str, width: usize) -> String {
+    let mut out = String::new();
+    let mut line = String::new();
+    for word in text.split(' ') {
+        let fresh = line.is_empty() || line.chars().all(|c| c == ' ');
+        if !fresh && line.chars().count() + 1 + word.chars().count() > width {
+            out.push_str(line.trim_end());
+            out.push('\n');
+            line = indent.to_string();
+        } else if !fresh {
+            line.push(' ');
+        }
+        line.push_str(word);
+    }
+    out.push_str(line.trim_end());
+    out.push('\n');
+    out
+}
+
 /// What the statuses mean, printed under the counts.
 const LEGEND: &str = "reproduced: every value printed in the paper computed again and equal; \
 explained: some printed values differ, and the report shows why (a misprint, a transcription \
@@ -350,25 +370,24 @@ mod tests {
             "blossom verify: every printed value reproduced or explained"
         );
         assert!(lines[1].starts_with("2 sections: 1 reproduced, 1 explained, 0 unexplained"));
-        assert!(lines[2].starts_with("reproduced: ") && lines[2].contains("explained: "));
+        assert!(lines[2].starts_with("reproduced: ") && text.contains("explained: some"));
+        assert!(lines.iter().all(|l| l.chars().count() <= WIDTH), "{text}");
         let rows: Vec<&&str> = lines
             .iter()
-            .filter(|l| l.ends_with(" paper)") || l.ends_with("Table 1)"))
+            .filter(|l| l.starts_with("reproduced  ") || l.starts_with("explained  "))
             .collect();
         assert_eq!(rows.len(), 2, "{text}");
         assert!(
-            rows[0].starts_with("reproduced ") && rows[0].contains("2/2"),
+            rows[0].contains("2/2") && rows[0].contains("Table 1, S_1"),
             "{text}"
         );
+        assert!(rows[1].contains("0/1"), "{text}");
+        // Titles are printed whole (wrapped, not cut), with the paper named as the README
+        // names it.
+        let joined = text.split_whitespace().collect::<Vec<_>>().join(" ");
+        let whole = "A title far longer than the column it is printed in, by a lot";
         assert!(
-            rows[1].starts_with("explained ") && rows[1].contains("0/1"),
-            "{text}"
-        );
-        // Titles are printed whole, with the paper named as the README names it.
-        assert!(
-            rows[1].contains("A title far longer than the column it is printed in, by a lot")
-                && rows[1].ends_with("(inverse relations paper)")
-                && !text.contains('~'),
+            joined.contains(&format!("{whole} (inverse relations paper)")) && !text.contains('~'),
             "{text}"
         );
         assert!(!text.contains("MISMATCH") && !text.contains("an index convention"));
@@ -396,6 +415,13 @@ mod tests {
             "{text}"
         );
         assert!(text.contains("unexplained: Formula (2)"), "{text}");
+    }
+
+    #[test]
+    fn wrapping_breaks_at_spaces_and_indents_the_continuation() {
+        assert_eq!(wrap("a b c", "  ", 3), "a b\n  c\n");
+        assert_eq!(wrap("long word", "", 3), "long\nword\n");
+        assert_eq!(wrap("", "", 3), "\n");
     }
 
     #[test]
