@@ -26,6 +26,15 @@ mod validity;
 
 use pyo3::prelude::*;
 
+/// Panics inside the library-call guard: the one way to check from Python (the tests) that a
+/// Rust panic surfaces as `blossom.Error` (kind `Panic`) instead of aborting the interpreter.
+#[pyfunction]
+fn _panic_for_tests() -> PyResult<()> {
+    errors::call(&[], || -> Result<(), ::blossom::Error> {
+        panic!("a deliberate panic (blossom._panic_for_tests)")
+    })
+}
+
 /// The module `blossom`.
 #[pymodule]
 fn blossom(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -49,6 +58,7 @@ fn blossom(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(power::restrict_power_triangle_py, m)?)?;
     m.add_function(wrap_pyfunction!(power::restrict_curves, m)?)?;
     m.add_function(wrap_pyfunction!(power::bezier_zeros_py, m)?)?;
+    m.add_function(wrap_pyfunction!(_panic_for_tests, m)?)?;
     m.add("DEFAULT_MAX_WORK", curve::DEFAULT_MAX_WORK)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

@@ -141,10 +141,11 @@ pub fn read_array(obj: &Bound<'_, PyAny>, arg: &str, ndim: usize, what: &str) ->
     let kind: String = array.getattr("dtype")?.getattr("kind")?.extract()?;
     match kind.as_str() {
         "f" | "i" | "u" => {
+            // Converted and back, compared in the original type: numpy's own comparison of an
+            // integer with a float array would compare them as floats (2^60 + 1 == 2^60).
             let converted = array.call_method1("astype", ("float64",))?;
-            let equal: bool = numpy
-                .call_method1("array_equal", (&array, &converted))?
-                .extract()?;
+            let back = converted.call_method1("astype", (array.getattr("dtype")?,))?;
+            let equal: bool = numpy.call_method1("array_equal", (&array, &back))?.extract()?;
             if !equal {
                 return Err(bad(
                     arg,
