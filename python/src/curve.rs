@@ -2,7 +2,7 @@
 //! (Fractions), with the certified intersections, bounding box and nearest point.
 
 use crate::errors::{bad, call, call_detached, Rename};
-use crate::numbers::{positive_zero, read_array, points_of_columns, Coords, Num};
+use crate::numbers::{points_of_columns, positive_zero, read_array, Coords, Num};
 use crate::records::{
     extremes_record, intersection_records, nearest_record, Extremes, IntersectionRecords,
     NearestPoint,
@@ -10,8 +10,7 @@ use crate::records::{
 use blossom::{
     curve_pair_work, intersect_curves, intersect_curves_f64_rounded, nearest_point,
     nearest_point_f64, self_intersection_work, self_intersections, tight_bounding_box,
-    tight_bounding_box_f64, BezierCurve, Intersections, Rational, Reduction,
-    RoundedIntersections,
+    tight_bounding_box_f64, BezierCurve, Intersections, Rational, Reduction, RoundedIntersections,
 };
 use num_rational::Ratio;
 use pyo3::prelude::*;
@@ -130,8 +129,7 @@ impl Curve {
                 ),
             ));
         }
-        Ok(c
-            .coordinates()
+        Ok(c.coordinates()
             .chunks_exact(2)
             .map(|p| [p[0].clone(), p[1].clone()])
             .collect())
@@ -141,7 +139,10 @@ impl Curve {
         Self::planar(&self.exact_curve(), arg)
     }
 
-    fn both_f64<'a>(&'a self, other: &'a Curve) -> Option<(&'a BezierCurve<f64>, &'a BezierCurve<f64>)> {
+    fn both_f64<'a>(
+        &'a self,
+        other: &'a Curve,
+    ) -> Option<(&'a BezierCurve<f64>, &'a BezierCurve<f64>)> {
         match (&self.shape, &other.shape) {
             (CurveShape::F64(a), CurveShape::F64(b)) => Some((a, b)),
             _ => None,
@@ -310,7 +311,10 @@ impl Curve {
             (_, q) => {
                 let ce = self.exact_curve();
                 let qe = Rational::of_coords(q, "point")?;
-                (call_detached(py, &renames, || nearest_point(&ce, &qe))?, None)
+                (
+                    call_detached(py, &renames, || nearest_point(&ce, &qe))?,
+                    None,
+                )
             }
         };
         // On the curve: exactly for exact input; for float64 within the tolerance (a point
@@ -390,7 +394,9 @@ impl Curve {
         let (d, n) = (self.dim(), self.degree() + 1);
         match &self.shape {
             CurveShape::F64(c) => f64::columns(py, d, n, c.coordinates().to_vec()),
-            CurveShape::Exact(c) => f64::columns(py, d, n, crate::numbers::rounded(c.coordinates())),
+            CurveShape::Exact(c) => {
+                f64::columns(py, d, n, crate::numbers::rounded(c.coordinates()))
+            }
         }
     }
 
@@ -455,12 +461,20 @@ impl Curve {
     }
 
     /// B at every value of the 1-D `s_vals`, a `D x M` array.
-    fn evaluate_multi<'py>(&self, py: Python<'py>, s_vals: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    fn evaluate_multi<'py>(
+        &self,
+        py: Python<'py>,
+        s_vals: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
         on_curve!(&self.shape, c => evaluate_multi(py, c, s_vals))
     }
 
     /// B'(s) as a `D x 1` array.
-    fn evaluate_hodograph<'py>(&self, py: Python<'py>, s: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    fn evaluate_hodograph<'py>(
+        &self,
+        py: Python<'py>,
+        s: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
         on_curve!(&self.shape, c => {
             let t = Num::arg(s, "s")?;
             let p = c.deriv().eval(&t);
@@ -517,7 +531,11 @@ impl Curve {
             }
         };
         if self.degree() == 0 {
-            return Err(bad("self", "Degree", "a curve of degree 0 has no lower degree"));
+            return Err(bad(
+                "self",
+                "Degree",
+                "a curve of degree 0 has no lower degree",
+            ));
         }
         let c = self.exact_curve();
         let r = call(&[], || blossom::reduce(&c, c.degree() - 1, method))?;

@@ -27,7 +27,8 @@ struct Speed {
 
 impl Speed {
     fn at(&mut self, s: f64) -> f64 {
-        self.hodograph.eval_into(&s, &mut self.point, &mut self.level);
+        self.hodograph
+            .eval_into(&s, &mut self.point, &mut self.level);
         self.point.iter().map(|x| x * x).sum::<f64>().sqrt()
     }
 
@@ -65,7 +66,11 @@ pub fn arc_length(curve: &BezierCurve<f64>) -> f64 {
         .step_by(curve.dim())
         .map(|w| {
             let (p, q) = w.split_at(curve.dim());
-            p.iter().zip(q).map(|(a, b)| (b - a) * (b - a)).sum::<f64>().sqrt()
+            p.iter()
+                .zip(q)
+                .map(|(a, b)| (b - a) * (b - a))
+                .sum::<f64>()
+                .sqrt()
         })
         .sum();
     speed.adaptive(0.0, 1.0, whole, polygon.max(f64::MIN_POSITIVE), 0)

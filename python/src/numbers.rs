@@ -145,7 +145,9 @@ pub fn read_array(obj: &Bound<'_, PyAny>, arg: &str, ndim: usize, what: &str) ->
             // integer with a float array would compare them as floats (2^60 + 1 == 2^60).
             let converted = array.call_method1("astype", ("float64",))?;
             let back = converted.call_method1("astype", (array.getattr("dtype")?,))?;
-            let equal: bool = numpy.call_method1("array_equal", (&array, &back))?.extract()?;
+            let equal: bool = numpy
+                .call_method1("array_equal", (&array, &back))?
+                .extract()?;
             if !equal {
                 return Err(bad(
                     arg,
@@ -247,7 +249,10 @@ pub fn f64_arg(obj: &Bound<'_, PyAny>, path: &str) -> PyResult<f64> {
             "Invalid",
             format!(
                 "expected a number, found {}",
-                obj.get_type().name().map(|n| n.to_string()).unwrap_or_default()
+                obj.get_type()
+                    .name()
+                    .map(|n| n.to_string())
+                    .unwrap_or_default()
             ),
         )
     })?;
@@ -288,7 +293,12 @@ pub fn exact_values(obj: &Bound<'_, PyAny>, arg: &str) -> PyResult<Vec<Rational>
 }
 
 /// A `d x n` float64 array (Fortran order, as bezier's nodes) from point-major coordinates.
-pub fn f64_columns(py: Python<'_>, d: usize, n: usize, coords: Vec<f64>) -> Bound<'_, PyArray2<f64>> {
+pub fn f64_columns(
+    py: Python<'_>,
+    d: usize,
+    n: usize,
+    coords: Vec<f64>,
+) -> Bound<'_, PyArray2<f64>> {
     let zeroed: Vec<f64> = coords.into_iter().map(positive_zero).collect();
     Array2::from_shape_vec((d, n).f(), zeroed)
         .expect("d * n coordinates")
@@ -328,7 +338,10 @@ pub fn exact_columns<'py>(
 }
 
 /// `numpy.array(nested, dtype=object)`.
-pub fn object_array<'py>(py: Python<'py>, nested: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+pub fn object_array<'py>(
+    py: Python<'py>,
+    nested: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyAny>> {
     let kwargs = pyo3::types::PyDict::new(py);
     kwargs.set_item("dtype", "object")?;
     py.import("numpy")?
@@ -358,8 +371,12 @@ pub trait Num: blossom::Ring + Send + Sync + 'static {
     /// Coordinates read by [`read_array`] in this type (floats read exactly for `Rational`).
     fn of_coords(c: Coords, arg: &str) -> PyResult<Vec<Self>>;
     /// A `d x n` array from point-major coordinates.
-    fn columns<'py>(py: Python<'py>, d: usize, n: usize, coords: Vec<Self>)
-        -> PyResult<Bound<'py, PyAny>>;
+    fn columns<'py>(
+        py: Python<'py>,
+        d: usize,
+        n: usize,
+        coords: Vec<Self>,
+    ) -> PyResult<Bound<'py, PyAny>>;
     /// The nearest double.
     fn to_f64(&self) -> f64;
     /// The number `k / 2^e` exactly (`k` small).

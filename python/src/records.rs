@@ -34,7 +34,12 @@ impl Algebraic {
     /// Integer coefficients, ascending powers, of the square-free polynomial it is a root of.
     #[getter]
     fn polynomial<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        Ok(self.inner.polynomial().to_vec().into_pyobject(py)?.into_any())
+        Ok(self
+            .inner
+            .polynomial()
+            .to_vec()
+            .into_pyobject(py)?
+            .into_any())
     }
 
     /// The isolating interval (lo, hi), two Fractions: the number is the one root of
@@ -52,7 +57,11 @@ impl Algebraic {
     fn __repr__(&self) -> String {
         match self.inner.exact() {
             Some(r) => format!("Algebraic({r})"),
-            None => format!("Algebraic({:?}, polynomial={:?})", self.value(), self.inner.polynomial()),
+            None => format!(
+                "Algebraic({:?}, polynomial={:?})",
+                self.value(),
+                self.inner.polynomial()
+            ),
         }
     }
 }
@@ -167,7 +176,11 @@ pub struct Zero {
 #[pymethods]
 impl Zero {
     fn __repr__(&self) -> String {
-        format!("Zero(t={}, multiplicity={})", self.t.get().__repr__(), self.multiplicity)
+        format!(
+            "Zero(t={}, multiplicity={})",
+            self.t.get().__repr__(),
+            self.multiplicity
+        )
     }
 }
 
@@ -185,7 +198,11 @@ impl Zeros {
         format!(
             "Zeros({} zero(s), identically_zero={})",
             self.zeros.len(),
-            if self.identically_zero { "True" } else { "False" }
+            if self.identically_zero {
+                "True"
+            } else {
+                "False"
+            }
         )
     }
 }
@@ -222,7 +239,11 @@ pub struct Extreme {
 #[pymethods]
 impl Extreme {
     fn __repr__(&self) -> String {
-        format!("Extreme(value={}, at {} parameter(s))", self.value.get().__repr__(), self.at.len())
+        format!(
+            "Extreme(value={}, at {} parameter(s))",
+            self.value.get().__repr__(),
+            self.at.len()
+        )
     }
 }
 

@@ -58,7 +58,11 @@ pub fn library_order(n: usize) -> impl Iterator<Item = (usize, usize)> {
 
 /// The degree of a triangle of `count` nodes, if `count` is (n + 1)(n + 2) / 2.
 pub fn triangle_degree(count: usize) -> Option<usize> {
-    (0..).map(|n: usize| (n, (n + 1) * (n + 2) / 2)).take_while(|&(_, c)| c <= count).find(|&(_, c)| c == count).map(|(n, _)| n)
+    (0..)
+        .map(|n: usize| (n, (n + 1) * (n + 2) / 2))
+        .take_while(|&(_, c)| c <= count)
+        .find(|&(_, c)| c == count)
+        .map(|(n, _)| n)
 }
 
 /// The library's coordinates (point-major, its order) of bezier's `d x count` nodes read in C
@@ -88,7 +92,9 @@ where
             out[col * d + x] = Some(q[x].clone());
         }
     }
-    out.into_iter().map(|x| x.expect("every column filled")).collect()
+    out.into_iter()
+        .map(|x| x.expect("every column filled"))
+        .collect()
 }
 
 /// A triangular Bézier patch B(s, t) = sum C(n; i, j) lambda1^(n-i-j) lambda2^i lambda3^j
@@ -119,7 +125,10 @@ impl Triangle {
         }
         let n = match degree {
             Some(n) => {
-                let want = n.checked_add(1).and_then(|a| a.checked_mul(n + 2)).map(|x| x / 2);
+                let want = n
+                    .checked_add(1)
+                    .and_then(|a| a.checked_mul(n + 2))
+                    .map(|x| x / 2);
                 if want != Some(count) {
                     return Err(bad(
                         "degree",
@@ -257,7 +266,11 @@ fn barycentric<T: Num>(p: &TriangularPatch<T>, l: [T; 3]) -> PyResult<Vec<T>> {
 }
 
 fn param_rows<T: Num>(obj: &Bound<'_, PyAny>, cols: usize) -> PyResult<Vec<Vec<T>>> {
-    let what = if cols == 3 { "N x 3 barycentric weights" } else { "N x 2 (s, t) values" };
+    let what = if cols == 3 {
+        "N x 3 barycentric weights"
+    } else {
+        "N x 2 (s, t) values"
+    };
     let read = read_array(obj, "param_vals", 2, what)?;
     if read.shape[1] != cols {
         return Err(bad(
@@ -271,12 +284,20 @@ fn param_rows<T: Num>(obj: &Bound<'_, PyAny>, cols: usize) -> PyResult<Vec<Vec<T
 }
 
 pub fn corners_arg<T: Num>(obj: &Bound<'_, PyAny>) -> PyResult<[[T; 2]; 3]> {
-    let read = read_array(obj, "corners", 2, "3 x 2, the (s, t) images of (0, 0), (1, 0), (0, 1)")?;
+    let read = read_array(
+        obj,
+        "corners",
+        2,
+        "3 x 2, the (s, t) images of (0, 0), (1, 0), (0, 1)",
+    )?;
     if read.shape != [3, 2] {
         return Err(bad(
             "corners",
             "Shape",
-            format!("expected shape (3, 2): the (s, t) images of (0, 0), (1, 0), (0, 1), found {:?}", read.shape),
+            format!(
+                "expected shape (3, 2): the (s, t) images of (0, 0), (1, 0), (0, 1), found {:?}",
+                read.shape
+            ),
         ));
     }
     let v = T::of_coords(read.coords, "corners")?;
@@ -524,7 +545,10 @@ impl Triangle {
             return Err(bad(
                 "self.nodes",
                 "Dimension",
-                format!("area is defined for planar triangles (dimension 2), found dimension {}", self.dim()),
+                format!(
+                    "area is defined for planar triangles (dimension 2), found dimension {}",
+                    self.dim()
+                ),
             ));
         }
         let edges = edges_of(&self.exact_patch());
@@ -599,7 +623,11 @@ fn end_points(c: &Curve) -> (Vec<f64>, Vec<f64>) {
 impl CurvedPolygon {
     #[new]
     #[pyo3(signature = (*edges, metadata = None, verify = true))]
-    fn new(edges: &Bound<'_, PyTuple>, metadata: Option<Py<PyAny>>, verify: bool) -> PyResult<Self> {
+    fn new(
+        edges: &Bound<'_, PyTuple>,
+        metadata: Option<Py<PyAny>>,
+        verify: bool,
+    ) -> PyResult<Self> {
         let mut curves = Vec::new();
         for (k, e) in edges.iter().enumerate() {
             let c = e.cast::<Curve>().map_err(|_| {
@@ -613,7 +641,11 @@ impl CurvedPolygon {
             }
             for (k, c) in curves.iter().enumerate() {
                 if c.dim() != 2 {
-                    return Err(bad(format!("edges[{k}]"), "Dimension", format!("expected a planar curve, found dimension {}", c.dim())));
+                    return Err(bad(
+                        format!("edges[{k}]"),
+                        "Dimension",
+                        format!("expected a planar curve, found dimension {}", c.dim()),
+                    ));
                 }
                 let next = (k + 1) % curves.len();
                 let (_, end) = end_points(c);
@@ -627,7 +659,10 @@ impl CurvedPolygon {
                 }
             }
         }
-        Ok(CurvedPolygon { edges: curves, metadata })
+        Ok(CurvedPolygon {
+            edges: curves,
+            metadata,
+        })
     }
 
     #[getter]
@@ -650,7 +685,11 @@ impl CurvedPolygon {
     fn area(&self) -> PyResult<f64> {
         for (k, c) in self.edges.iter().enumerate() {
             if c.dim() != 2 {
-                return Err(bad(format!("edges[{k}]"), "Dimension", "area needs planar edges"));
+                return Err(bad(
+                    format!("edges[{k}]"),
+                    "Dimension",
+                    "area needs planar edges",
+                ));
             }
         }
         let exact: Vec<BezierCurve<Rational>> = self.edges.iter().map(Curve::exact_curve).collect();

@@ -22,18 +22,22 @@ use num_traits::{One, Signed, Zero};
 pub const MAX_PIECES: usize = 1 << 14;
 
 /// The coefficient of each point of a scalar patch, in the library's order.
-fn scalar_product(
-    a: &[Rational],
-    n: usize,
-    b: &[Rational],
-    m: usize,
-) -> TriangularPatch<Rational> {
+fn scalar_product(a: &[Rational], n: usize, b: &[Rational], m: usize) -> TriangularPatch<Rational> {
     let order = |n: usize| -> Vec<(usize, usize)> {
-        (0..=n).flat_map(|i| (0..=n - i).map(move |j| (i, j))).collect()
+        (0..=n)
+            .flat_map(|i| (0..=n - i).map(move |j| (i, j)))
+            .collect()
     };
-    let tri = |n: usize, i: usize, j: usize| multinomial(n as i64, &[i as i64, j as i64, (n - i - j) as i64]);
+    let tri = |n: usize, i: usize, j: usize| {
+        multinomial(n as i64, &[i as i64, j as i64, (n - i - j) as i64])
+    };
     let out_order = order(n + m);
-    let index = |i: usize, j: usize| out_order.iter().position(|&p| p == (i, j)).expect("in range");
+    let index = |i: usize, j: usize| {
+        out_order
+            .iter()
+            .position(|&p| p == (i, j))
+            .expect("in range")
+    };
     let mut out = vec![Rational::zero(); out_order.len()];
     for (&(i, j), u) in order(n).iter().zip(a) {
         if u.is_zero() {
@@ -49,7 +53,10 @@ fn scalar_product(
 
 /// Component `x` of every point of a planar patch.
 fn component(p: &TriangularPatch<Rational>, x: usize) -> Vec<Rational> {
-    p.control_points().into_iter().map(|q| q[x].clone()).collect()
+    p.control_points()
+        .into_iter()
+        .map(|q| q[x].clone())
+        .collect()
 }
 
 /// The Jacobian of a planar patch of degree n >= 1, as a scalar patch of degree 2(n - 1).
@@ -79,7 +86,10 @@ pub fn is_valid(p: &TriangularPatch<Rational>) -> Result<Option<bool>, Error> {
         return Err(Error::of(
             ErrorKind::Dimension,
             "self.nodes",
-            format!("validity is defined for planar triangles (dimension 2), found dimension {}", p.dim()),
+            format!(
+                "validity is defined for planar triangles (dimension 2), found dimension {}",
+                p.dim()
+            ),
         ));
     }
     if p.degree() == 0 {
@@ -90,10 +100,26 @@ pub fn is_valid(p: &TriangularPatch<Rational>) -> Result<Option<bool>, Error> {
     let one = Rational::one;
     // Sub-triangles as the library's corners: the images of (1, 0), (0, 1), (0, 0).
     let quarters = [
-        [[half.clone(), zero()], [zero(), half.clone()], [zero(), zero()]],
-        [[zero(), half.clone()], [half.clone(), zero()], [half.clone(), half.clone()]],
-        [[one(), zero()], [half.clone(), half.clone()], [half.clone(), zero()]],
-        [[half.clone(), half.clone()], [zero(), one()], [zero(), half.clone()]],
+        [
+            [half.clone(), zero()],
+            [zero(), half.clone()],
+            [zero(), zero()],
+        ],
+        [
+            [zero(), half.clone()],
+            [half.clone(), zero()],
+            [half.clone(), half.clone()],
+        ],
+        [
+            [one(), zero()],
+            [half.clone(), half.clone()],
+            [half.clone(), zero()],
+        ],
+        [
+            [half.clone(), half.clone()],
+            [zero(), one()],
+            [zero(), half.clone()],
+        ],
     ];
     let mut pending = vec![jacobian(p)?];
     let mut examined = 0;
