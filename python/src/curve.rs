@@ -466,7 +466,15 @@ impl Curve {
         py: Python<'py>,
         s_vals: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        on_curve!(&self.shape, c => evaluate_multi(py, c, s_vals))
+        match &self.shape {
+            CurveShape::F64(c) => {
+                let s = f64::values(s_vals, "s_vals")?;
+                let mut out = vec![0.0; c.dim() * s.len()];
+                crate::multi_eval::eval_many(c.coordinates(), c.dim(), &s, &mut out);
+                f64::columns(py, c.dim(), s.len(), out)
+            }
+            CurveShape::Exact(c) => evaluate_multi(py, c, s_vals),
+        }
     }
 
     /// B'(s) as a `D x 1` array.

@@ -8,7 +8,7 @@
 //! Modules, one job each: [`errors`] (exceptions, panics), [`numbers`] (arrays and Fractions in
 //! and out), [`curve`] (`Curve`), [`triangle`] (`Triangle`, `CurvedPolygon`), [`records`] (the
 //! certified answers), [`power`] (the power-form restrictions, `TensorPatch`, the batch, zeros),
-//! [`area`] (exact signed areas), [`length`] (arc length by quadrature), [`validity`] (the
+//! [`area`] (exact signed areas), [`length`] (arc length by quadrature), [`multi_eval`] (evaluation at many parameters), [`validity`] (the
 //! exact sign of a triangle's Jacobian).
 
 // The pyclasses' methods are called from Python only.
@@ -18,6 +18,7 @@ mod area;
 mod curve;
 mod errors;
 mod length;
+mod multi_eval;
 mod numbers;
 mod power;
 mod records;
