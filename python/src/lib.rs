@@ -5,10 +5,10 @@
 //! work, and maps the library's errors (and any panic) to `blossom.Error`, a `ValueError`.
 //! Nothing here depends on Python at the library's side: the library never sees this crate.
 //!
-//! Modules, one job each: [`errors`] (exceptions, panics), [`numbers`] (arrays and Fractions in
-//! and out), [`curve`] (`Curve`), [`triangle`] (`Triangle`, `CurvedPolygon`), [`records`] (the
-//! certified answers), [`power`] (the power-form restrictions, `TensorPatch`, the batch, zeros),
-//! [`area`] (exact signed areas), [`length`] (arc length by quadrature), [`multi_eval`] (evaluation at many parameters), [`validity`] (the
+//! Modules, one job each: `errors` (exceptions, panics), `numbers` (arrays and Fractions in
+//! and out), `curve` (`Curve`), `triangle` (`Triangle`, `CurvedPolygon`), `records` (the
+//! certified answers), `power` (the power-form restrictions, `TensorPatch`, the batch, zeros),
+//! `area` (exact signed areas), `length` (arc length by quadrature), `multi_eval` (evaluation at many parameters), `validity` (the
 //! exact sign of a triangle's Jacobian).
 
 // The pyclasses' methods are called from Python only.

@@ -528,7 +528,10 @@ fn first_not_finite(v: &[f64]) -> Option<usize> {
     let (blocks, rest) = v.as_chunks::<8>();
     for block in blocks {
         for (lane, x) in lanes.iter_mut().zip(block) {
-            *lane += x - x;
+            // x - x: zero exactly when x is finite (the point of the expression).
+            #[allow(clippy::eq_op)]
+            let zero_if_finite = x - x;
+            *lane += zero_if_finite;
         }
     }
     let finite = lanes.iter().sum::<f64>() == 0.0 && rest.iter().all(|x| x.is_finite());

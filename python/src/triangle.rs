@@ -79,10 +79,7 @@ pub fn from_bezier_order<T: Clone>(c: &[T], d: usize, count: usize, n: usize) ->
 }
 
 /// bezier's point-major coordinates (its column order) of a library patch.
-pub fn to_bezier_order<T: Clone>(p: &TriangularPatch<T>) -> Vec<T>
-where
-    T: blossom::Ring,
-{
+pub fn to_bezier_order<T: blossom::Ring>(p: &TriangularPatch<T>) -> Vec<T> {
     let (n, d) = (p.degree(), p.dim());
     let count = (n + 1) * (n + 2) / 2;
     let mut out: Vec<Option<T>> = vec![None; count * d];
