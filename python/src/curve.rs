@@ -209,6 +209,18 @@ const SELF: [Rename; 1] = [Rename {
     points: true,
 }];
 
+/// The `max_work` argument: a positive number of nanoseconds (or None for the default).
+pub fn max_work_arg(max_work: Option<f64>) -> PyResult<Option<f64>> {
+    match max_work {
+        Some(x) if x.is_nan() || x <= 0.0 => Err(bad(
+            "max_work",
+            "Domain",
+            format!("expected a positive number of nanoseconds, found {x}"),
+        )),
+        other => Ok(other),
+    }
+}
+
 /// Refuses an estimated work over the limit (`max_work`, default [`DEFAULT_MAX_WORK`]).
 pub fn check_work(estimate: u128, max_work: Option<f64>) -> PyResult<()> {
     let limit = max_work.unwrap_or(DEFAULT_MAX_WORK);
@@ -571,6 +583,7 @@ impl Curve {
         verify: bool,
         max_work: Option<f64>,
     ) -> PyResult<Bound<'py, PyAny>> {
+        let max_work = max_work_arg(max_work)?;
         let _ = (strategy, verify);
         let other = other.cast::<Curve>().map_err(|_| {
             pyo3::exceptions::PyTypeError::new_err("other: can only intersect with another Curve")
@@ -600,6 +613,7 @@ impl Curve {
         verify: bool,
         max_work: Option<f64>,
     ) -> PyResult<Bound<'py, PyAny>> {
+        let max_work = max_work_arg(max_work)?;
         let _ = (strategy, verify);
         let x = self.exact_self_intersections(py, max_work)?;
         let pairs = rounded_pairs(&RoundedIntersections::from(&x))
@@ -619,6 +633,7 @@ impl Curve {
         other: PyRef<'_, Curve>,
         max_work: Option<f64>,
     ) -> PyResult<IntersectionRecords> {
+        let max_work = max_work_arg(max_work)?;
         let x = self.exact_intersections(py, &other, max_work)?;
         intersection_records(py, &x)
     }
@@ -631,6 +646,7 @@ impl Curve {
         py: Python<'_>,
         max_work: Option<f64>,
     ) -> PyResult<IntersectionRecords> {
+        let max_work = max_work_arg(max_work)?;
         let x = self.exact_self_intersections(py, max_work)?;
         intersection_records(py, &x)
     }

@@ -678,6 +678,7 @@ pub fn bezier_zeros_py(
     coefficients: &Bound<'_, PyAny>,
     max_work: Option<f64>,
 ) -> PyResult<Zeros> {
+    let max_work = crate::curve::max_work_arg(max_work)?;
     let read = read_array(
         coefficients,
         "coefficients",

@@ -104,6 +104,8 @@ def test_work_over_the_limit_is_refused_before_computing():
     raises("max_work", "TooLarge", p.intersect, q, max_work=1e6)
     raises("max_work", "TooLarge", p.self_intersections, max_work=1e6)
     raises("max_work", "TooLarge", blossom.bezier_zeros, rng.uniform(-1, 1, 40), max_work=1e3)
+    raises("max_work", "Domain", p.intersect, q, max_work=-1.0)
+    raises("max_work", "Domain", blossom.bezier_zeros, [1.0, -1.0], max_work=float("nan"))
 
 
 def test_a_rust_panic_is_an_exception():
