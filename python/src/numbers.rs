@@ -93,15 +93,16 @@ fn entry(obj: &Bound<'_, PyAny>, path: &str) -> PyResult<Entry> {
     if obj.is_instance_of::<PyInt>() {
         return Ok(Entry::Int(obj.extract::<BigInt>()?));
     }
-    // numpy scalars: integers through __index__, floating types through __float__ when they
-    // are numpy floating (float32, float16, longdouble is refused: it may not fit a double).
+    // numpy scalars: integers through __index__; floating types of at most 8 bytes through
+    // __float__, exactly (a longdouble may not fit a double and is refused).
     if let Ok(i) = obj.extract::<BigInt>() {
         return Ok(Entry::Int(i));
     }
-    let type_name = obj.get_type().name()?.to_string();
-    if type_name == "float32" || type_name == "float16" {
+    let floating = py.import("numpy")?.getattr("floating")?;
+    if obj.is_instance(&floating)? && obj.getattr("itemsize")?.extract::<usize>()? <= 8 {
         return Ok(Entry::Float(obj.extract::<f64>()?));
     }
+    let type_name = obj.get_type().name()?.to_string();
     Err(bad(
         path,
         "Invalid",

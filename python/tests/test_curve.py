@@ -42,6 +42,13 @@ def test_integer_nodes_convert_losslessly():
     assert c.nodes.dtype == np.float64 and c.nodes[1, 1] == 3.0
 
 
+def test_numpy_scalars_in_object_arrays_are_read_exactly():
+    nodes = np.array([[np.float32(0.1), Fraction(1, 3)], [np.int64(2), np.float64(0.25)]], dtype=object)
+    c = blossom.Curve(nodes, 1)
+    assert c.exact
+    assert c.exact_nodes.tolist() == [[Fraction(float(np.float32(0.1))), Fraction(1, 3)], [2, Fraction(1, 4)]]
+
+
 def test_evaluate_and_multi_match_the_bernstein_sum(rng):
     for d, n in [(1, 0), (2, 1), (2, 3), (3, 7), (2, 12)]:
         nodes = random_nodes(rng, d, n)

@@ -32,6 +32,8 @@ def test_nodes_shape_and_values():
     raises("nodes[0, 1]", "Invalid", blossom.Curve, np.array([[0.0, "x"], [0.0, 1.0]], dtype=object), 1)
     raises("nodes[0, 1]", "Invalid", blossom.Curve, np.array([[Fraction(0), True], [0.0, 1.0]], dtype=object), 1)
     raises("nodes[1, 1]", "Invalid", blossom.Curve, np.array([[0.0, 1.0], [0.0, 2**70 + 1]], dtype=object), 1)
+    if np.dtype(np.longdouble).itemsize > 8:
+        raises("nodes[0, 0]", "Invalid", blossom.Curve, np.array([[np.longdouble(1), 1.0], [0.0, 1.0]], dtype=object), 1)
     raises("degree", "Degree", blossom.Triangle, np.zeros((2, 4)), 1)
     raises("nodes", "Shape", blossom.Triangle.from_nodes, np.zeros((2, 4)))
     raises("nodes", "Shape", blossom.TensorPatch, np.zeros((2, 3)))
