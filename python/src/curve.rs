@@ -296,7 +296,13 @@ fn evaluate_multi<'py, T: Num>(
 pub const LOCATE_TOLERANCE: f64 = 1.0 / (1u64 << 40) as f64;
 
 impl Curve {
-    fn locate_point(&self, py: Python<'_>, point: &Bound<'_, PyAny>) -> PyResult<Option<f64>> {
+    /// The certified nearest point to `point`, and for a float64 curve and point the scale
+    /// of their numbers (the largest magnitude, at least 1); `None` for exact input.
+    fn nearest(
+        &self,
+        py: Python<'_>,
+        point: &Bound<'_, PyAny>,
+    ) -> PyResult<(blossom::NearestPoint, Option<f64>)> {
         let q = point_arg(point, self.dim())?;
         let renames = [
             Rename {
@@ -310,7 +316,7 @@ impl Curve {
                 points: false,
             },
         ];
-        let (near, tolerance) = match (&self.shape, q) {
+        match (&self.shape, q) {
             (CurveShape::F64(c), Coords::F64(qf)) => {
                 let scale = c
                     .coordinates()
@@ -318,17 +324,20 @@ impl Curve {
                     .chain(&qf)
                     .fold(1.0f64, |m, x| m.max(x.abs()));
                 let near = call_detached(py, &renames, || nearest_point_f64(c, &qf))?;
-                (near, Some(LOCATE_TOLERANCE * scale))
+                Ok((near, Some(scale)))
             }
             (_, q) => {
                 let ce = self.exact_curve();
                 let qe = Rational::of_coords(q, "point")?;
-                (
-                    call_detached(py, &renames, || nearest_point(&ce, &qe))?,
-                    None,
-                )
+                let near = call_detached(py, &renames, || nearest_point(&ce, &qe))?;
+                Ok((near, None))
             }
-        };
+        }
+    }
+
+    fn locate_point(&self, py: Python<'_>, point: &Bound<'_, PyAny>) -> PyResult<Option<f64>> {
+        let (near, scale) = self.nearest(py, point)?;
+        let tolerance = scale.map(|s| LOCATE_TOLERANCE * s);
         // On the curve: exactly for exact input; for float64 within the tolerance (a point
         // evaluated in float64 is off the curve by its rounding).
         let on_curve = match tolerance {
@@ -670,22 +679,7 @@ impl Curve {
     /// The points of the curve nearest to `point`, certified (a float64 curve and point are
     /// read exactly).
     fn nearest_point(&self, py: Python<'_>, point: &Bound<'_, PyAny>) -> PyResult<NearestPoint> {
-        let q = point_arg(point, self.dim())?;
-        let renames = [Rename {
-            rust: "q",
-            python: "point",
-            points: false,
-        }];
-        let near = match (&self.shape, q) {
-            (CurveShape::F64(c), Coords::F64(qf)) => {
-                call_detached(py, &renames, || nearest_point_f64(c, &qf))?
-            }
-            (_, q) => {
-                let ce = self.exact_curve();
-                let qe = Rational::of_coords(q, "point")?;
-                call_detached(py, &renames, || nearest_point(&ce, &qe))?
-            }
-        };
+        let (near, _) = self.nearest(py, point)?;
         nearest_record(py, &near)
     }
 }
