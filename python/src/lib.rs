@@ -62,5 +62,18 @@ fn blossom(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(_panic_for_tests, m)?)?;
     m.add("DEFAULT_MAX_WORK", curve::DEFAULT_MAX_WORK)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    // Every name above: the wheel's package re-exports the extension with `import *`, which
+    // takes `__all__` (and would otherwise drop `__version__` and `_panic_for_tests`).
+    let names: Vec<String> = m
+        .dict()
+        .keys()
+        .iter()
+        .map(|k| k.extract::<String>())
+        .collect::<PyResult<_>>()?;
+    let all: Vec<String> = names
+        .into_iter()
+        .filter(|n| !n.starts_with("__") || n == "__version__")
+        .collect();
+    m.add("__all__", all)?;
     Ok(())
 }
