@@ -183,3 +183,19 @@ def test_zero_parameters_are_positive_zero():
     st = p.intersect(q)
     assert st.tolist() == [[0.0], [0.0]]
     assert math.copysign(1.0, st[0, 0]) == 1.0 and math.copysign(1.0, st[1, 0]) == 1.0
+
+
+def test_a_retracing_curve_is_an_overlap_with_itself():
+    # x(s) = 4 s (1 - s) on the x axis runs to 1 and back: B(s) = B(1 - s) for every s, so
+    # [0, 1/2] is traced again by t = 1 - s (checked here in Fractions).
+    nodes = np.array([[0.0, 2.0, 0.0], [0.0, 0.0, 0.0]])
+    for s in [Fraction(0), Fraction(1, 7), Fraction(1, 3)]:
+        assert bernstein_point(nodes, s) == bernstein_point(nodes, 1 - s)
+    c = blossom.Curve(nodes, 2)
+    rec = c.self_intersection_records()
+    assert rec.points == [] and len(rec.overlaps) == 1
+    o = rec.overlaps[0]
+    assert [a.exact for a in o.s] == [0, Fraction(1, 2)]
+    assert [a.exact for a in o.t] == [1, Fraction(1, 2)]
+    # The array: the end pairs with s < t, (1/2, 1/2) being no pair.
+    assert c.self_intersections().tolist() == [[0.0], [1.0]]
