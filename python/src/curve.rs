@@ -284,10 +284,13 @@ fn evaluate_multi<'py, T: Num>(
     let s = T::values(s_vals, "s_vals")?;
     let d = c.dim();
     let mut out = vec![T::zero(); d * s.len()];
-    let mut level = Vec::new();
-    for (si, o) in s.iter().zip(out.chunks_exact_mut(d)) {
-        c.eval_into(si, o, &mut level);
-    }
+    call(&[], || {
+        let mut level = Vec::new();
+        for (si, o) in s.iter().zip(out.chunks_exact_mut(d)) {
+            c.eval_into(si, o, &mut level);
+        }
+        Ok(())
+    })?;
     T::columns(py, d, s.len(), out)
 }
 
@@ -448,7 +451,7 @@ impl Curve {
     /// The arc length: adaptive Gauss-Legendre quadrature of |B'(s)| over [0, 1] in float64
     /// (relative error about 1e-13; not certified).
     #[getter]
-    fn length(&self) -> f64 {
+    fn length(&self) -> PyResult<f64> {
         let c = match &self.shape {
             CurveShape::F64(c) => c.clone(),
             CurveShape::Exact(c) => {
@@ -456,7 +459,7 @@ impl Curve {
                     .expect("the shape of a curve")
             }
         };
-        crate::length::arc_length(&c)
+        call(&[], || Ok(crate::length::arc_length(&c)))
     }
 
     fn copy(&self) -> Self {
@@ -476,7 +479,7 @@ impl Curve {
     fn evaluate<'py>(&self, py: Python<'py>, s: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
         on_curve!(&self.shape, c => {
             let t = Num::arg(s, "s")?;
-            let p = c.eval(&t);
+            let p = call(&[], || Ok(c.eval(&t)))?;
             Num::columns(py, c.dim(), 1, p)
         })
     }
@@ -491,7 +494,10 @@ impl Curve {
             CurveShape::F64(c) => {
                 let s = f64::values(s_vals, "s_vals")?;
                 let mut out = vec![0.0; c.dim() * s.len()];
-                crate::multi_eval::eval_many(c.coordinates(), c.dim(), &s, &mut out);
+                call(&[], || {
+                    crate::multi_eval::eval_many(c.coordinates(), c.dim(), &s, &mut out);
+                    Ok(())
+                })?;
                 f64::columns(py, c.dim(), s.len(), out)
             }
             CurveShape::Exact(c) => evaluate_multi(py, c, s_vals),
@@ -506,16 +512,16 @@ impl Curve {
     ) -> PyResult<Bound<'py, PyAny>> {
         on_curve!(&self.shape, c => {
             let t = Num::arg(s, "s")?;
-            let p = c.deriv().eval(&t);
+            let p = call(&[], || Ok(c.deriv().eval(&t)))?;
             Num::columns(py, c.dim(), 1, p)
         })
     }
 
     /// The halves over [0, 1/2] and [1/2, 1].
-    fn subdivide(&self) -> (Curve, Curve) {
+    fn subdivide(&self) -> PyResult<(Curve, Curve)> {
         on_curve!(&self.shape, c => {
-            let (left, right) = c.split(&Num::dyadic(1, 1));
-            (curve_of(left), curve_of(right))
+            let (left, right) = call(&[], || Ok(c.split(&Num::dyadic(1, 1))))?;
+            Ok((curve_of(left), curve_of(right)))
         })
     }
 
@@ -524,7 +530,7 @@ impl Curve {
         on_curve!(&self.shape, c => {
             let a = Num::arg(start, "start")?;
             let b = Num::arg(end, "end")?;
-            Ok(curve_of(c.subsegment(a..b)))
+            Ok(curve_of(call(&[], || Ok(c.subsegment(a..b)))?))
         })
     }
 

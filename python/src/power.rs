@@ -275,7 +275,8 @@ impl TensorPatchPy {
     ) -> PyResult<Bound<'py, PyAny>> {
         on_tensor!(&self.shape, p => {
             let (s, t) = (Num::arg(s, "s")?, Num::arg(t, "t")?);
-            Num::columns(py, p.dim(), 1, p.eval(&s, &t))
+            let q = call(&[], || Ok(p.eval(&s, &t)))?;
+            Num::columns(py, p.dim(), 1, q)
         })
     }
 
@@ -283,7 +284,7 @@ impl TensorPatchPy {
     fn specialize(&self, rect: &Bound<'_, PyAny>) -> PyResult<TensorPatchPy> {
         on_tensor!(&self.shape, p => {
             let r = rect_arg(rect)?;
-            Ok(tensor_of(p.restrict(&r)))
+            Ok(tensor_of(call(&[], || Ok(p.restrict(&r)))?))
         })
     }
 

@@ -219,9 +219,12 @@ const QUARTERS: [[(i64, i64); 3]; 4] = [
 
 /// The patch over the sub-triangle whose vertices (images of (0, 0), (1, 0), (0, 1)) are
 /// `corners`: the library's corners are the images of (1, 0), (0, 1), (0, 0).
-fn specialize_patch<T: Num>(p: &TriangularPatch<T>, corners: [[T; 2]; 3]) -> TriangularPatch<T> {
+fn specialize_patch<T: Num>(
+    p: &TriangularPatch<T>,
+    corners: [[T; 2]; 3],
+) -> PyResult<TriangularPatch<T>> {
     let [c0, c1, c2] = corners;
-    p.restrict(&[c1, c2, c0])
+    call(&[], || Ok(p.restrict(&[c1, c2, c0])))
 }
 
 fn check_barycentric(l: [f64; 3]) -> PyResult<()> {
@@ -353,7 +356,8 @@ fn eval_cartesian<'py, T: Num>(
     if verify {
         check_cartesian(at[0].to_f64(), at[1].to_f64())?;
     }
-    T::columns(py, p.dim(), 1, p.eval(&at))
+    let q = call(&[], || Ok(p.eval(&at)))?;
+    T::columns(py, p.dim(), 1, q)
 }
 
 fn eval_cartesian_multi<'py, T: Num>(
@@ -369,7 +373,7 @@ fn eval_cartesian_multi<'py, T: Num>(
         if verify {
             check_cartesian(at[0].to_f64(), at[1].to_f64())?;
         }
-        out.extend(p.eval(&at));
+        out.extend(call(&[], || Ok(p.eval(&at)))?);
     }
     let m = out.len() / p.dim();
     T::columns(py, p.dim(), m, out)
@@ -490,14 +494,13 @@ impl Triangle {
 
     /// The four sub-triangles of the midpoint subdivision, in bezier's order: lower left,
     /// central, lower right, upper left.
-    fn subdivide(&self) -> (Triangle, Triangle, Triangle, Triangle) {
+    fn subdivide(&self) -> PyResult<(Triangle, Triangle, Triangle, Triangle)> {
         on_triangle!(&self.shape, p => {
-            let mut parts = QUARTERS.iter().map(|q| {
+            let [a, b, c, d] = QUARTERS.map(|q| {
                 let corners = q.map(|(s, t)| [Num::dyadic(s, 1), Num::dyadic(t, 1)]);
-                triangle_of(specialize_patch(p, corners))
+                specialize_patch(p, corners).map(triangle_of)
             });
-            let mut next = || parts.next().expect("four quarters");
-            (next(), next(), next(), next())
+            Ok((a?, b?, c?, d?))
         })
     }
 
@@ -507,7 +510,7 @@ impl Triangle {
     fn specialize(&self, corners: &Bound<'_, PyAny>) -> PyResult<Triangle> {
         on_triangle!(&self.shape, p => {
             let c = corners_arg(corners)?;
-            Ok(triangle_of(specialize_patch(p, c)))
+            Ok(triangle_of(specialize_patch(p, c)?))
         })
     }
 
@@ -549,7 +552,7 @@ impl Triangle {
             ));
         }
         let edges = edges_of(&self.exact_patch());
-        Ok(Rational::to_f64(&chain_area(&edges)))
+        Ok(Rational::to_f64(&call(&[], || Ok(chain_area(&edges)))?))
     }
 
     /// Whether the (planar) triangle is valid: the Jacobian of its map from the reference
@@ -690,7 +693,7 @@ impl CurvedPolygon {
             }
         }
         let exact: Vec<BezierCurve<Rational>> = self.edges.iter().map(Curve::exact_curve).collect();
-        Ok(Rational::to_f64(&chain_area(&exact)))
+        Ok(Rational::to_f64(&call(&[], || Ok(chain_area(&exact)))?))
     }
 
     fn __repr__(&self) -> String {
