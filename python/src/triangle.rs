@@ -110,7 +110,8 @@ fn triangle_of<T: WrapTriangle>(p: TriangularPatch<T>) -> Triangle {
 }
 
 impl Triangle {
-    pub fn read(nodes: &Bound<'_, PyAny>, arg: &str, degree: Option<usize>) -> PyResult<Triangle> {
+    pub fn read(nodes: &Bound<'_, PyAny>, degree: Option<usize>) -> PyResult<Triangle> {
+        let arg = "nodes";
         let read = read_array(nodes, arg, 2, "D x N, one column per control point")?;
         let (d, count) = (read.shape[0], read.shape[1]);
         if d == 0 || count == 0 {
@@ -145,7 +146,7 @@ impl Triangle {
         };
         let renames = [Rename {
             rust: "coordinates",
-            python: arg_static(arg),
+            python: "nodes",
             points: false,
         }];
         let shape = match read.coords {
@@ -180,14 +181,6 @@ impl Triangle {
                     .expect("the shape of a patch")
             }
         }
-    }
-}
-
-fn arg_static(arg: &str) -> &'static str {
-    if arg == "nodes" {
-        "nodes"
-    } else {
-        "coefficients"
     }
 }
 
@@ -387,14 +380,14 @@ impl Triangle {
     #[pyo3(signature = (nodes, degree, *, copy = true, verify = true))]
     fn new(nodes: &Bound<'_, PyAny>, degree: usize, copy: bool, verify: bool) -> PyResult<Self> {
         let _ = (copy, verify);
-        Triangle::read(nodes, "nodes", Some(degree))
+        Triangle::read(nodes, Some(degree))
     }
 
     #[staticmethod]
     #[pyo3(signature = (nodes, copy = true))]
     fn from_nodes(nodes: &Bound<'_, PyAny>, copy: bool) -> PyResult<Self> {
         let _ = copy;
-        Triangle::read(nodes, "nodes", None)
+        Triangle::read(nodes, None)
     }
 
     /// The float64 nodes in bezier's order (an exact triangle's rounded).
