@@ -5,16 +5,18 @@
 //! work, and maps the library's errors (and any panic) to `blossom.Error`, a `ValueError`.
 //! Nothing here depends on Python at the library's side: the library never sees this crate.
 //!
-//! Modules, one job each: `errors` (exceptions, panics), `numbers` (arrays and Fractions in
-//! and out), `curve` (`Curve`), `triangle` (`Triangle`, `CurvedPolygon`), `records` (the
-//! certified answers), `power` (the power-form restrictions, `TensorPatch`, the batch, zeros),
-//! `area` (exact signed areas), `length` (arc length by quadrature), `multi_eval` (evaluation at many parameters), `validity` (the
-//! exact sign of a triangle's Jacobian).
+//! Modules, one job each: `errors` (exceptions, panics), `numbers` (arrays and Fractions in and
+//! out), `curve` (`Curve`), `triangle` (`Triangle`, `CurvedPolygon`), `tensor` (`TensorPatch`),
+//! `records` (the certified answers), `power` (the power-form restrictions), `batch`
+//! (`restrict_curves`), `zeros` (`bezier_zeros`), `area` (exact signed areas), `length` (arc
+//! length by quadrature), `multi_eval` (evaluation at many parameters), `validity` (the exact
+//! sign of a triangle's Jacobian).
 
 // The pyclasses' methods are called from Python only.
 #![allow(clippy::new_ret_no_self)]
 
 mod area;
+mod batch;
 mod curve;
 mod errors;
 mod length;
@@ -22,8 +24,10 @@ mod multi_eval;
 mod numbers;
 mod power;
 mod records;
+mod tensor;
 mod triangle;
 mod validity;
+mod zeros;
 
 use pyo3::prelude::*;
 
@@ -44,7 +48,7 @@ fn blossom(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<curve::Curve>()?;
     m.add_class::<triangle::Triangle>()?;
     m.add_class::<triangle::CurvedPolygon>()?;
-    m.add_class::<power::TensorPatchPy>()?;
+    m.add_class::<tensor::TensorPatchPy>()?;
     m.add_class::<records::Algebraic>()?;
     m.add_class::<records::IntersectionPoint>()?;
     m.add_class::<records::Overlap>()?;
@@ -57,8 +61,8 @@ fn blossom(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(power::restrict_power_curve_py, m)?)?;
     m.add_function(wrap_pyfunction!(power::restrict_power_surface_py, m)?)?;
     m.add_function(wrap_pyfunction!(power::restrict_power_triangle_py, m)?)?;
-    m.add_function(wrap_pyfunction!(power::restrict_curves, m)?)?;
-    m.add_function(wrap_pyfunction!(power::bezier_zeros_py, m)?)?;
+    m.add_function(wrap_pyfunction!(batch::restrict_curves, m)?)?;
+    m.add_function(wrap_pyfunction!(zeros::bezier_zeros_py, m)?)?;
     m.add_function(wrap_pyfunction!(_panic_for_tests, m)?)?;
     m.add("DEFAULT_MAX_WORK", curve::DEFAULT_MAX_WORK)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
