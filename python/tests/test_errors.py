@@ -97,6 +97,11 @@ def test_power_and_batch_arguments():
     raises("start", "NotFinite", blossom.restrict_curves, np.zeros((1, 2, 4)), float("nan"), 1.0)
     raises("nodes", "Invalid", blossom.restrict_curves, [[[Fraction(1), Fraction(2)]]], 0.0, 1.0)
     raises("coefficients", "Empty", blossom.bezier_zeros, [])
+    nodes = np.zeros((3, 2, 4))
+    raises("out", "Shape", blossom.restrict_curves, nodes, 0.0, 1.0, out=np.zeros((3, 2, 5)))
+    raises("out", "Shape", blossom.restrict_curves, nodes, 0.0, 1.0, out=np.zeros((3, 4, 2)).transpose(0, 2, 1))
+    raises("out", "Invalid", blossom.restrict_curves, nodes, 0.0, 1.0, out=np.zeros((3, 2, 4), dtype=np.float32))
+    raises("out", "Invalid", blossom.restrict_curves, nodes, 0.0, 1.0, out=nodes)
 
 
 def test_work_over_the_limit_is_refused_before_computing():
