@@ -1,0 +1,285 @@
+//! `restrict_curves`: many Bézier curves restricted to one interval at once, by the library's
+//! batch call, with the GIL released.
+
+use crate::errors::{bad, call_detached};
+use crate::numbers::{read_array, Coords};
+use blossom::RestrictionMap;
+use numpy::ndarray::Array3;
+use numpy::{IntoPyArray, PyArray3, PyArrayMethods, PyUntypedArrayMethods};
+use pyo3::prelude::*;
+
+/// Many Bézier curves restricted to one interval: `nodes` an `N x D x (n + 1)` float64 array
+/// (curve k's nodes `nodes[k]`, as a `Curve`'s), answer the same shape, curve k over
+/// [start, end] reparametrised to [0, 1], bit for bit `Curve.specialize`'s answer, in the
+/// layout of `nodes` (or written into `out`, an array of that shape and layout). The library's
+/// batch call (`RestrictionMap::restrict_arrays`) does the work where the numbers lie, with the
+/// GIL released: on `[[f64; D]; n + 1]` curves when the array's memory holds each curve point
+/// after point (strides (8 D (n + 1), 8, 8 D): the `(N, D, n + 1)` view of an `(N, n + 1, D)`
+/// array, the layout of the Rust call), else on the N D coordinate rows as one-dimensional
+/// curves (C order). Any other layout is first copied to C order.
+#[pyfunction]
+#[pyo3(signature = (nodes, start, end, *, out = None))]
+pub fn restrict_curves<'py>(
+    py: Python<'py>,
+    nodes: &Bound<'py, PyAny>,
+    start: f64,
+    end: f64,
+    out: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    for (name, x) in [("start", start), ("end", end)] {
+        if !x.is_finite() {
+            return Err(bad(
+                name,
+                "NotFinite",
+                format!("expected a finite number, found {x}"),
+            ));
+        }
+    }
+    let array = batch_array(py, nodes)?;
+    let shape = array.shape().to_vec();
+    let (n, d, k) = (shape[0], shape[1], shape[2]);
+    if d == 0 || k == 0 {
+        return Err(bad(
+            "nodes",
+            "Empty",
+            format!(
+                "expected at least one coordinate and one node per curve, found shape {shape:?}"
+            ),
+        ));
+    }
+    let point_major = is_point_major(&array);
+    // The memory as it is when it holds the curves point after point or in C order; any other
+    // layout is copied to C order first.
+    let array = if point_major || array.is_c_contiguous() {
+        array
+    } else {
+        py.import("numpy")?
+            .call_method1("ascontiguousarray", (&array,))?
+            .cast_into::<PyArray3<f64>>()?
+    };
+    let answer = match out {
+        Some(o) => {
+            let o = o.cast::<PyArray3<f64>>().map_err(|_| {
+                bad(
+                    "out",
+                    "Invalid",
+                    "expected a float64 array of three dimensions",
+                )
+            })?;
+            let same_layout = if point_major {
+                is_point_major(o)
+            } else {
+                o.is_c_contiguous()
+            };
+            if o.shape() != shape.as_slice() || !same_layout {
+                return Err(bad(
+                    "out",
+                    "Shape",
+                    format!(
+                        "expected an array of shape {shape:?} laid out as nodes ({})",
+                        if point_major {
+                            "point after point"
+                        } else {
+                            "C order"
+                        }
+                    ),
+                ));
+            }
+            o.clone()
+        }
+        None if point_major => {
+            // Allocated (n, k, d) in C order, answered as its (n, d, k) view.
+            let buffer = PyArray3::<f64>::zeros(py, [n, k, d], false);
+            buffer
+                .call_method1("transpose", ((0, 2, 1),))?
+                .cast_into::<PyArray3<f64>>()?
+        }
+        None => PyArray3::<f64>::zeros(py, [n, d, k], false),
+    };
+    let readonly = array.readonly();
+    let input = readonly.as_array();
+    let input = input.as_slice_memory_order().expect("contiguous");
+    if let Some(i) = first_not_finite(input) {
+        let logical = if point_major {
+            (i / (d * k)) * d * k + (i % d) * k + (i % (d * k)) / d
+        } else {
+            i
+        };
+        return Err(bad(
+            crate::numbers::index_path("nodes", &shape, logical),
+            "NotFinite",
+            format!("expected a finite number, found {}", input[i]),
+        ));
+    }
+    let mut writable = answer.try_readwrite().map_err(|_| {
+        bad(
+            "out",
+            "Invalid",
+            "expected a writable array not in use elsewhere",
+        )
+    })?;
+    let mut output = writable.as_array_mut();
+    let output = output.as_slice_memory_order_mut().expect("contiguous");
+    call_detached(py, &[], || {
+        restrict_batch(input, output, d, k, start, end, point_major)
+    })?;
+    drop(writable);
+    Ok(answer.into_any())
+}
+
+/// Whether the array's memory holds each curve's points one after the other (strides
+/// (8 D (n + 1), 8, 8 D) of an `N x D x (n + 1)` array).
+fn is_point_major(a: &Bound<'_, PyArray3<f64>>) -> bool {
+    let shape = a.shape();
+    let item = std::mem::size_of::<f64>() as isize;
+    let (d, k) = (shape[1] as isize, shape[2] as isize);
+    shape[0] > 0 && shape[1] > 1 && a.strides() == [item * d * k, item, item * d]
+}
+
+/// The index of the first NaN or infinity. The common case, all finite, is one pass the
+/// compiler vectorises: x - x is 0 for a finite x and NaN otherwise, summed in eight lanes.
+fn first_not_finite(v: &[f64]) -> Option<usize> {
+    let mut lanes = [0.0f64; 8];
+    let (blocks, rest) = v.as_chunks::<8>();
+    for block in blocks {
+        for (lane, x) in lanes.iter_mut().zip(block) {
+            // x - x: zero exactly when x is finite (the point of the expression).
+            #[allow(clippy::eq_op)]
+            let zero_if_finite = x - x;
+            *lane += zero_if_finite;
+        }
+    }
+    let finite = lanes.iter().sum::<f64>() == 0.0 && rest.iter().all(|x| x.is_finite());
+    if finite {
+        None
+    } else {
+        v.iter().position(|x| !x.is_finite())
+    }
+}
+
+/// The `nodes` argument of `restrict_curves` as a float64 array of three dimensions.
+fn batch_array<'py>(
+    py: Python<'py>,
+    nodes: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyArray3<f64>>> {
+    if let Ok(a) = nodes.cast::<PyArray3<f64>>() {
+        return Ok(a.clone());
+    }
+    let read = read_array(nodes, "nodes", 3, "N x D x (n + 1)")?;
+    let Coords::F64(c) = read.coords else {
+        return Err(bad(
+            "nodes",
+            "Invalid",
+            "the batch restriction is float64 only; give floats",
+        ));
+    };
+    let shape = (read.shape[0], read.shape[1], read.shape[2]);
+    Ok(Array3::from_shape_vec(shape, c)
+        .expect("the shape read")
+        .into_pyarray(py))
+}
+
+/// Restricts every curve of `input` (point-major curves, or C order `N x D x K`) into `output`
+/// in the same layout, by the library's `RestrictionMap::restrict_arrays`: point-major curves
+/// as they are (`[[f64; D]; K]`, D = 2, 3), C order as N D one-dimensional curves (each
+/// coordinate row; de Casteljau's steps act on each coordinate alone, so the answer is the
+/// same bit for bit). Other sizes go through the engine row by row.
+fn restrict_batch(
+    input: &[f64],
+    output: &mut [f64],
+    d: usize,
+    k: usize,
+    start: f64,
+    end: f64,
+    point_major: bool,
+) -> Result<(), blossom::Error> {
+    if !point_major {
+        return restrict_rows(input, output, k, start, end);
+    }
+    macro_rules! fixed {
+        ($(($dd:literal, $kk:literal)),*) => {
+            match (d, k) {
+                $(($dd, $kk) => return restrict_points::<$kk, $dd>(input, output, start, end),)*
+                _ => {}
+            }
+        };
+    }
+    fixed!(
+        (2, 2),
+        (2, 3),
+        (2, 4),
+        (2, 5),
+        (2, 6),
+        (2, 7),
+        (2, 8),
+        (2, 9),
+        (3, 2),
+        (3, 3),
+        (3, 4),
+        (3, 5),
+        (3, 6),
+        (3, 7),
+        (3, 8),
+        (3, 9)
+    );
+    let c_order = transpose_curves(input, k, d);
+    let mut answer = vec![0.0; c_order.len()];
+    restrict_rows(&c_order, &mut answer, k, start, end)?;
+    output.copy_from_slice(&transpose_curves(&answer, d, k));
+    Ok(())
+}
+
+/// Restricts every run of `k` numbers of `input` as a one-dimensional curve.
+fn restrict_rows(
+    input: &[f64],
+    output: &mut [f64],
+    k: usize,
+    start: f64,
+    end: f64,
+) -> Result<(), blossom::Error> {
+    macro_rules! fixed {
+        ($($kk:literal),*) => {
+            match k {
+                $($kk => return restrict_points::<$kk, 1>(input, output, start, end),)*
+                _ => {}
+            }
+        };
+    }
+    fixed!(2, 3, 4, 5, 6, 7, 8, 9);
+    let (rows_in, _) = input.as_chunks::<1>();
+    let (rows_out, _) = output.as_chunks_mut::<1>();
+    let mut scratch = Vec::new();
+    for (row, answer) in rows_in.chunks_exact(k).zip(rows_out.chunks_exact_mut(k)) {
+        blossom::engine::subsegment_into::<f64, 1>(row, &start, &end, answer, &mut scratch)?;
+    }
+    Ok(())
+}
+
+/// Each curve's `a x b` block of `v` transposed to `b x a`.
+fn transpose_curves(v: &[f64], a: usize, b: usize) -> Vec<f64> {
+    let mut out = vec![0.0; v.len()];
+    for (curve, t) in v.chunks_exact(a * b).zip(out.chunks_exact_mut(a * b)) {
+        for i in 0..a {
+            for j in 0..b {
+                t[j * a + i] = curve[i * b + j];
+            }
+        }
+    }
+    out
+}
+
+/// Curves of `K` points of dimension `D`, point after point, restricted by the library's
+/// `restrict_arrays` where they lie.
+fn restrict_points<const K: usize, const D: usize>(
+    input: &[f64],
+    output: &mut [f64],
+    start: f64,
+    end: f64,
+) -> Result<(), blossom::Error> {
+    let map = RestrictionMap::curve(K - 1, start, end)?;
+    let (points_in, _) = input.as_chunks::<D>();
+    let (curves_in, _) = points_in.as_chunks::<K>();
+    let (points_out, _) = output.as_chunks_mut::<D>();
+    let (curves_out, _) = points_out.as_chunks_mut::<K>();
+    map.restrict_arrays(curves_in, curves_out)
+}
