@@ -123,6 +123,7 @@ mod interop;
 
 // Numbers.
 pub use num::bounded::BoundedF64;
+pub use num::exact::ExactInput;
 pub use num::limits::MAX_ENTRIES;
 pub use num::linalg::Field;
 pub use num::poly::Poly;

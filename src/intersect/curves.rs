@@ -47,8 +47,9 @@ use super::components::{common_component, retracing};
 use super::filter::certified_crossings_f64;
 use super::solve::{solve, Solution};
 use super::upoly::{self, from_rationals, square_free_part};
-use super::zeros::{rationals_of, roots_with_multiplicity};
+use super::zeros::roots_with_multiplicity;
 use crate::error::{Error, ErrorKind, Result};
+use crate::num::exact::exact_coordinates;
 use crate::num::ring::{rational_to_f64, Rational};
 use crate::shape::basis::bernstein_to_power;
 use num_bigint::BigInt;
@@ -144,8 +145,18 @@ fn separated(f: &[Rational], g: &[Rational]) -> BiPoly {
 /// [`ErrorKind::Empty`] on `p` or `q` for fewer than two control points; on `curves` only
 /// for an internal inconsistency of the common-component case (never expected).
 pub fn intersect_curves(p: &[[Rational; 2]], q: &[[Rational; 2]]) -> Result<Intersections> {
-    let pp = Power::of("p", p)?;
-    let qq = Power::of("q", q)?;
+    intersect_named(p, q, ["p", "q"])
+}
+
+/// [`intersect_curves`] with the names of the two arguments for its errors: the one
+/// implementation behind the free functions and the methods of the curve types.
+pub(crate) fn intersect_named(
+    p: &[[Rational; 2]],
+    q: &[[Rational; 2]],
+    names: [&str; 2],
+) -> Result<Intersections> {
+    let pp = Power::of(names[0], p)?;
+    let qq = Power::of(names[1], q)?;
     if let Some(answer) = single_point_pair(&pp, &qq) {
         return Ok(answer);
     }
@@ -225,14 +236,16 @@ pub fn intersect_curves_f64(p: &[[f64; 2]], q: &[[f64; 2]]) -> Result<Intersecti
     intersect_curves(&exact_points("p", p)?, &exact_points("q", q)?)
 }
 
-/// Points of doubles read exactly.
+/// Points of doubles read exactly, a coordinate that is not finite refused as `field[i][j]`.
 fn exact_points(field: &str, p: &[[f64; 2]]) -> Result<Vec<[Rational; 2]>> {
-    p.iter()
-        .enumerate()
-        .map(|(i, xy)| {
-            let v = rationals_of(&format!("{field}[{i}]"), xy)?;
-            Ok([v[0].clone(), v[1].clone()])
-        })
+    Ok(pairs(&exact_coordinates(field, p.as_flattened(), 2)?))
+}
+
+/// Flat coordinates (two per point) as points.
+pub(crate) fn pairs(coordinates: &[Rational]) -> Vec<[Rational; 2]> {
+    coordinates
+        .chunks_exact(2)
+        .map(|xy| [xy[0].clone(), xy[1].clone()])
         .collect()
 }
 
@@ -373,7 +386,12 @@ fn divided_difference_solutions(
 /// [`ErrorKind::Empty`] on `curve` for fewer than two control points; on `curves` only for
 /// an internal inconsistency of the retracing case (never expected).
 pub fn self_intersections(p: &[[Rational; 2]]) -> Result<Intersections> {
-    let pp = Power::of("curve", p)?;
+    self_intersections_named(p, "curve")
+}
+
+/// [`self_intersections`] with the name of the argument for its errors.
+pub(crate) fn self_intersections_named(p: &[[Rational; 2]], name: &str) -> Result<Intersections> {
+    let pp = Power::of(name, p)?;
     let (zero, one) = (Rational::zero(), Rational::one());
     if pp.single_point().is_some() {
         // The whole curve as one retracing overlap in the spec's form (t0 > t1, s1 <= t1):

@@ -30,8 +30,9 @@
 
 use super::algebraic::{enclose, value_at, AlgebraicReal};
 use super::upoly;
-use super::zeros::{power_coefficients, rationals_of, roots_with_multiplicity};
+use super::zeros::{power_coefficients, roots_with_multiplicity};
 use crate::error::{Error, ErrorKind, Result};
+use crate::num::exact::{exact_coordinates, exact_values};
 use crate::num::ring::Rational;
 use crate::shape::bezier::BezierCurve;
 use num_traits::{One, Zero};
@@ -103,19 +104,7 @@ pub struct NearestPoint {
 /// # Ok::<(), blossom::Error>(())
 /// ```
 pub fn tight_bounding_box(curve: &BezierCurve<Rational>) -> TightBox {
-    let (mut min, mut max) = (Vec::new(), Vec::new());
-    for j in 0..curve.dim() {
-        let coordinate: Vec<Rational> = curve
-            .control_points()
-            .iter()
-            .map(|p| p[j].clone())
-            .collect();
-        let p = power_coefficients(&coordinate);
-        let candidates = critical_parameters(&p);
-        min.push(extreme(&p, &candidates, Ordering::Less));
-        max.push(extreme(&p, &candidates, Ordering::Greater));
-    }
-    TightBox { min, max }
+    box_of(curve.coordinates(), curve.dim())
 }
 
 /// [`tight_bounding_box`] of a curve of doubles, each read exactly.
@@ -123,7 +112,22 @@ pub fn tight_bounding_box(curve: &BezierCurve<Rational>) -> TightBox {
 /// # Errors
 /// [`ErrorKind::NotFinite`] on `control_points[i][j]` for a NaN or an infinity.
 pub fn tight_bounding_box_f64(curve: &BezierCurve<f64>) -> Result<TightBox> {
-    Ok(tight_bounding_box(&exact_curve(curve)?))
+    let exact = exact_coordinates("control_points", curve.coordinates(), curve.dim())?;
+    Ok(box_of(&exact, curve.dim()))
+}
+
+/// The tight box of the curve with flat control points `coordinates` (`dim` per point, at
+/// least one point): the one implementation behind the functions and methods.
+pub(crate) fn box_of(coordinates: &[Rational], dim: usize) -> TightBox {
+    let (mut min, mut max) = (Vec::new(), Vec::new());
+    for j in 0..dim {
+        let coordinate: Vec<Rational> = coordinates.iter().skip(j).step_by(dim).cloned().collect();
+        let p = power_coefficients(&coordinate);
+        let candidates = critical_parameters(&p);
+        min.push(extreme(&p, &candidates, Ordering::Less));
+        max.push(extreme(&p, &candidates, Ordering::Greater));
+    }
+    TightBox { min, max }
 }
 
 /// The points of the Bézier curve `curve` over [0, 1] nearest to `q`, exactly (see the module
@@ -148,24 +152,41 @@ pub fn tight_bounding_box_f64(curve: &BezierCurve<f64>) -> Result<TightBox> {
 /// # Errors
 /// [`ErrorKind::Dimension`] on `q` when it has not the curve's dimension.
 pub fn nearest_point(curve: &BezierCurve<Rational>, q: &[Rational]) -> Result<NearestPoint> {
-    if q.len() != curve.dim() {
+    nearest_of(curve.coordinates(), curve.dim(), q, "q")
+}
+
+/// [`nearest_point`] for a curve and a point of doubles, each read exactly.
+///
+/// # Errors
+/// [`ErrorKind::NotFinite`] on `control_points[i][j]` or `q[j]` for a NaN or an infinity, and as
+/// [`nearest_point`].
+pub fn nearest_point_f64(curve: &BezierCurve<f64>, q: &[f64]) -> Result<NearestPoint> {
+    let exact = exact_coordinates("control_points", curve.coordinates(), curve.dim())?;
+    nearest_of(&exact, curve.dim(), &exact_values("q", q)?, "q")
+}
+
+/// The nearest points to `q` (named `q_field` in errors) of the curve with flat control
+/// points `coordinates` (`dim` per point): the one implementation behind the functions and
+/// methods.
+pub(crate) fn nearest_of(
+    coordinates: &[Rational],
+    dim: usize,
+    q: &[Rational],
+    q_field: &str,
+) -> Result<NearestPoint> {
+    if q.len() != dim {
         return Err(Error::of(
             ErrorKind::Dimension,
-            "q",
+            q_field,
             format!(
-                "expected a point of {} coordinates (the curve's dimension), found {}",
-                curve.dim(),
+                "expected a point of {dim} coordinates (the curve's dimension), found {}",
                 q.len()
             ),
         ));
     }
-    let coordinates: Vec<Vec<Rational>> = (0..curve.dim())
+    let coordinates: Vec<Vec<Rational>> = (0..dim)
         .map(|j| {
-            let c: Vec<Rational> = curve
-                .control_points()
-                .iter()
-                .map(|p| p[j].clone())
-                .collect();
+            let c: Vec<Rational> = coordinates.iter().skip(j).step_by(dim).cloned().collect();
             power_coefficients(&c)
         })
         .collect();
@@ -188,27 +209,6 @@ pub fn nearest_point(curve: &BezierCurve<Rational>, q: &[Rational]) -> Result<Ne
         points,
         everywhere: best.everywhere,
     })
-}
-
-/// [`nearest_point`] for a curve and a point of doubles, each read exactly.
-///
-/// # Errors
-/// [`ErrorKind::NotFinite`] on `control_points[i][j]` or `q[j]` for a NaN or an infinity, and as
-/// [`nearest_point`].
-pub fn nearest_point_f64(curve: &BezierCurve<f64>, q: &[f64]) -> Result<NearestPoint> {
-    let exact = exact_curve(curve)?;
-    nearest_point(&exact, &rationals_of("q", q)?)
-}
-
-/// A curve of doubles read exactly, NaN and infinities refused naming the control point.
-fn exact_curve(curve: &BezierCurve<f64>) -> Result<BezierCurve<Rational>> {
-    let points = curve
-        .control_points()
-        .iter()
-        .enumerate()
-        .map(|(i, p)| rationals_of(&format!("control_points[{i}]"), p))
-        .collect::<Result<Vec<_>>>()?;
-    BezierCurve::new(points)
 }
 
 /// 0, the zeros of p' in (0, 1) and 1, ascending (only 0 when p is constant).

@@ -6,9 +6,10 @@
 //! each coordinate correctly rounded. Only the exact path reports overlaps, tangencies and
 //! end-point contacts, and only it returns errors (bad input, undecided common components).
 
-use super::curves::{intersect_curves_f64, Intersections};
+use super::curves::{intersect_named, pairs, Intersections};
 use super::filter::certified_crossings_f64;
 use crate::error::Result;
+use crate::num::exact::{exact_coordinates, ExactInput};
 
 /// One isolated intersection P(s) = Q(t), rounded.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -93,20 +94,39 @@ pub fn intersect_curves_f64_rounded(
     p: &[[f64; 2]],
     q: &[[f64; 2]],
 ) -> Result<RoundedIntersections> {
-    if let Some(crossings) = certified_crossings_f64(p, q) {
-        return Ok(RoundedIntersections {
-            points: crossings
-                .iter()
-                .map(|c| RoundedPoint {
-                    s: c.s,
-                    t: c.t,
-                    tangent: false,
-                    point: c.point,
-                })
-                .collect(),
-            overlaps: Vec::new(),
-            by_filter: true,
-        });
+    rounded_named(p.as_flattened(), q.as_flattened(), ["p", "q"])
+}
+
+/// The rounded intersections of the planar curves with flat control points `p` and `q` (two
+/// coordinates per point, of any [`ExactInput`] type), `names` naming them in errors: the
+/// filter when both are doubles exactly and it decides, else the exact answer rounded. The
+/// one implementation behind [`intersect_curves_f64_rounded`] and the `intersect_rounded`
+/// methods.
+pub(crate) fn rounded_named<T: ExactInput>(
+    p: &[T],
+    q: &[T],
+    names: [&str; 2],
+) -> Result<RoundedIntersections> {
+    if let (Some(pd), Some(qd)) = (T::as_doubles(p), T::as_doubles(q)) {
+        if let Some(crossings) = certified_crossings_f64(pd.as_chunks().0, qd.as_chunks().0) {
+            return Ok(RoundedIntersections {
+                points: crossings
+                    .iter()
+                    .map(|c| RoundedPoint {
+                        s: c.s,
+                        t: c.t,
+                        tangent: false,
+                        point: c.point,
+                    })
+                    .collect(),
+                overlaps: Vec::new(),
+                by_filter: true,
+            });
+        }
     }
-    Ok(RoundedIntersections::from(&intersect_curves_f64(p, q)?))
+    let exact_p = pairs(&exact_coordinates(names[0], p, 2)?);
+    let exact_q = pairs(&exact_coordinates(names[1], q, 2)?);
+    Ok(RoundedIntersections::from(&intersect_named(
+        &exact_p, &exact_q, names,
+    )?))
 }

@@ -11,6 +11,7 @@ use super::algebraic::{has_no_rational_root, AlgebraicReal};
 use super::isolate::{isolate, Isolated};
 use super::upoly::{self, mul, sign_at, ZPoly};
 use crate::error::{Error, ErrorKind, Result};
+use crate::num::exact::exact_values;
 use crate::num::ring::Rational;
 use crate::shape::basis::bernstein_to_power_flat;
 use num_bigint::BigInt;
@@ -179,25 +180,7 @@ pub(crate) fn power_coefficients(coefficients: &[Rational]) -> Vec<Rational> {
 /// [`ErrorKind::NotFinite`] on `coefficients[i]` for a NaN or an infinity, and as
 /// [`bezier_zeros`].
 pub fn bezier_zeros_f64(coefficients: &[f64]) -> Result<BezierZeros> {
-    let exact = rationals_of("coefficients", coefficients)?;
-    bezier_zeros(&exact)
-}
-
-/// Doubles read exactly as rationals, NaN and infinities refused naming `field[i]`.
-pub(crate) fn rationals_of(field: &str, values: &[f64]) -> Result<Vec<Rational>> {
-    values
-        .iter()
-        .enumerate()
-        .map(|(i, &x)| {
-            Rational::from_float(x).ok_or_else(|| {
-                Error::of(
-                    ErrorKind::NotFinite,
-                    format!("{field}[{i}]"),
-                    format!("expected a finite number, found {x}"),
-                )
-            })
-        })
-        .collect()
+    bezier_zeros(&exact_values("coefficients", coefficients)?)
 }
 
 /// A coarse work estimate for [`bezier_zeros`] of degree `n` with coefficients of at most

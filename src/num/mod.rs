@@ -4,6 +4,7 @@
 
 pub(crate) mod binomial;
 pub(crate) mod bounded;
+pub(crate) mod exact;
 pub(crate) mod limits;
 pub(crate) mod linalg;
 // Public through `blossom::meter` with the feature `meter`.

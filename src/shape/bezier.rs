@@ -179,7 +179,7 @@ impl<T: Ring> BezierCurve<T> {
 
     /// The curve of `len` zero coordinates, `dim` each: the buffer an answer is written into.
     #[inline]
-    fn zeros(dim: usize, len: usize) -> Self {
+    fn zero_filled(dim: usize, len: usize) -> Self {
         BezierCurve {
             dim,
             coords: T::Coords::filled(len, T::zero()),
@@ -269,7 +269,7 @@ impl<T: Ring> BezierCurve<T> {
                 };
             }
         }
-        let mut out = Self::zeros(self.dim, self.coords.as_slice().len());
+        let mut out = Self::zero_filled(self.dim, self.coords.as_slice().len());
         flat::curve_subsegment_returned(
             self.coords.as_slice(),
             self.dim,
@@ -317,7 +317,7 @@ impl<T: Ring> BezierCurve<T> {
     /// constant curve, the zero curve of degree 0.
     pub fn deriv(&self) -> Self {
         if self.degree() == 0 {
-            return Self::zeros(self.dim, self.dim);
+            return Self::zero_filled(self.dim, self.dim);
         }
         crate::bezier_derivative(self, 1).expect("order 1 <= degree")
     }
