@@ -126,6 +126,7 @@ pub use num::bounded::BoundedF64;
 pub use num::exact::ExactInput;
 pub use num::limits::MAX_ENTRIES;
 pub use num::linalg::Field;
+pub use num::parse::{parse_f64, parse_rational, MAX_DECIMAL_EXPONENT};
 pub use num::poly::Poly;
 pub use num::ring::{rational_to_f64, Rational, Ring};
 

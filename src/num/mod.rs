@@ -9,5 +9,6 @@ pub(crate) mod limits;
 pub(crate) mod linalg;
 // Public through `blossom::meter` with the feature `meter`.
 pub mod meter;
+pub(crate) mod parse;
 pub(crate) mod poly;
 pub(crate) mod ring;
