@@ -8,7 +8,8 @@
 //! The group `batch` (`cargo bench -p blossom --bench restrict -- batch`): 10^5 planar cubics
 //! held as plain arrays, restricted to one interval and read back as plain arrays, through a
 //! [`Batch`] (pack, restrict, unpack) against [`RestrictionMap::restrict_arrays`] (the
-//! caller's layout), and the three steps of the round trip apart.
+//! caller's layout), the three steps of the round trip apart, and the round trip with every
+//! buffer reused (`Batch::copy_from_arrays`, `Batch::copy_to_arrays`).
 
 use blossom::{
     restrict_power_curve, restrict_power_surface, restrict_power_surface_to_triangle, Batch,
@@ -121,7 +122,10 @@ fn batch(c: &mut Criterion) {
         })
     });
     group.bench_function("restrict_arrays", |bench| {
-        bench.iter(|| map.restrict_arrays(black_box(&input), &mut out).expect("fits"))
+        bench.iter(|| {
+            map.restrict_arrays(black_box(&input), &mut out)
+                .expect("fits")
+        })
     });
     group.bench_function("pack", |bench| {
         bench.iter(|| Batch::from_arrays(black_box(&input)).expect("fits"))
@@ -131,6 +135,21 @@ fn batch(c: &mut Criterion) {
     });
     group.bench_function("unpack", |bench| {
         bench.iter(|| black_box(&packed).to_arrays::<4, 2>().expect("fits"))
+    });
+    // The same round trip with every buffer reused from call to call.
+    let mut reused = Batch::zeros(4, 2, 0).expect("fits");
+    group.bench_function("round_trip_reused", |bench| {
+        bench.iter(|| {
+            reused.copy_from_arrays(black_box(&input)).expect("fits");
+            reused.restrict_into(&map, &mut restricted).expect("fits");
+            restricted.copy_to_arrays(&mut out).expect("fits")
+        })
+    });
+    group.bench_function("pack_reused", |bench| {
+        bench.iter(|| reused.copy_from_arrays(black_box(&input)).expect("fits"))
+    });
+    group.bench_function("unpack_reused", |bench| {
+        bench.iter(|| black_box(&packed).copy_to_arrays(&mut out).expect("fits"))
     });
     group.finish();
 }

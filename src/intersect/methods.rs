@@ -39,7 +39,10 @@ impl<T: ExactInput> BezierCurve<T> {
     /// Every intersection of this planar curve P with the planar curve `other` Q over
     /// [0, 1]: the isolated points P(s) = Q(t) with the exact parameters and an exact tangency
     /// flag, and the overlaps (maximal common stretches), all **certified**; see
-    /// [`Intersections`] for the guarantee, the method and its limits. The same as
+    /// [`Intersections`] for the guarantee, the method and its limits. An overlap is a common
+    /// piece of the two exact curves: a piece computed in `f64` at a parameter that is not
+    /// dyadic has rounded control points and is another curve, with no overlap
+    /// ([`Intersections`] shows the exact route that finds it). The same as
     /// [`Bezier::intersect`] and [`intersect_curves`](crate::intersect_curves).
     ///
     /// ```

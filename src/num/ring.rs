@@ -29,7 +29,7 @@ const ZERO: Rational = Rational::ZERO;
 /// use blossom::{parse_rational, Rational};
 /// assert!("0.25".parse::<Rational>().is_err());
 /// assert_eq!(parse_rational("0.25")?, Rational::new(1.into(), 4.into()));
-/// assert_eq!("3/4".parse::<Rational>(), parse_rational("3/4"));
+/// assert_eq!("3/4".parse::<Rational>().ok(), parse_rational("3/4").ok());
 /// # Ok::<(), blossom::Error>(())
 /// ```
 pub type Rational = BigRational;

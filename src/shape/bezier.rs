@@ -94,7 +94,10 @@ pub(crate) fn check_triangle_net<T: Clone>(
 /// [`BezierCurve::subsegment`] and [`BezierCurve::split`] of such a curve allocate nothing.
 ///
 /// This is the curve type of the library: every operation on Bézier curves is a method here
-/// (or takes this type). [`crate::Bezier`] is the same curve with the dimension in the type
+/// (or takes this type), the certified ones included, for `f64` and [`crate::Rational`] alike:
+/// [`intersect`](Self::intersect), [`self_intersections`](Self::self_intersections),
+/// [`bounding_box`](Self::bounding_box), [`nearest_point`](Self::nearest_point),
+/// [`zeros`](Self::zeros) (defined with the intersection layer, which they call). [`crate::Bezier`] is the same curve with the dimension in the type
 /// (`[T; D]` points), for code that knows it at compile time; the two convert into each other
 /// without loss ([`From`] one way, [`TryFrom`] the other).
 ///
