@@ -120,7 +120,16 @@ pub struct RestrictionMap {
 }
 
 impl RestrictionMap {
-    /// Bézier curves of degree `degree` over [0, 1] restricted to [a, b].
+    /// Bézier curves of degree `degree` over [0, 1] restricted to [a, b] (any a, b: outside
+    /// [0, 1] or a > b too).
+    ///
+    /// ```
+    /// use blossom::{ErrorKind, RestrictionMap};
+    /// let map = RestrictionMap::curve(3, 0.25, 0.75)?;
+    /// assert_eq!((map.inputs(), map.outputs()), (4, 4));
+    /// assert_eq!(RestrictionMap::curve(3, f64::NAN, 1.0).unwrap_err().kind(), ErrorKind::NotFinite);
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
     ///
     /// # Errors
     /// [`ErrorKind::NotFinite`] on `a` or `b` when not finite; [`ErrorKind::TooLarge`] on
@@ -331,6 +340,14 @@ impl RestrictionMap {
 ///   multi-megabyte buffers, which cost more than the restriction.
 /// * [`Batch::get`], [`Batch::set`], [`Batch::net`] (a vector per call), [`Batch::from_nets`]
 ///   and [`Batch::from_curves`] are for a few objects, not for bulk data.
+///
+/// Measured on 10^5 planar cubics (`cargo bench -p blossom --bench restrict -- batch`, one
+/// run on a busy 2-core machine, 2026-12-07): `restrict_arrays` 1.45 ms; the batch's own
+/// restriction 1.52 ms, packing into a reused batch 1.25 ms and unpacking into a reused
+/// vector 1.10 ms, the whole round trip with reused buffers 6.3 ms; the same round trip
+/// building a new batch, answer batch and vector every call 32 ms, of which 24 ms are the
+/// allocator's: with glibc's return of memory to the system turned off
+/// (`MALLOC_TRIM_THRESHOLD_` and `MALLOC_MMAP_THRESHOLD_` at 4e9) it takes 8.4 ms.
 ///
 /// ```
 /// use blossom::{Batch, RestrictionMap};
@@ -693,7 +710,19 @@ impl Batch {
 
     /// Writes the restriction of every object by `map` into `out`, which must hold as many
     /// objects of `map.outputs()` points of the same dimension (see [`Batch::zeros`]). One
-    /// allocation per call (the engine's scratch, shared by all blocks).
+    /// allocation per call (the engine's scratch, shared by all blocks). Each object's answer
+    /// is bit for bit that of the engine on the object alone.
+    ///
+    /// ```
+    /// use blossom::{Batch, BezierCurve, RestrictionMap};
+    /// let curve = BezierCurve::new(vec![vec![0.0, 0.0], vec![1.0, 2.0], vec![3.0, 3.0]])?;
+    /// let batch = Batch::from_curves(&vec![curve.clone(); 10])?;
+    /// let mut out = Batch::zeros(3, 2, 10)?;
+    /// batch.restrict_into(&RestrictionMap::curve(2, 0.25, 0.75)?, &mut out)?;
+    /// let alone = curve.subsegment(0.25..0.75);
+    /// assert_eq!(out.net(9), alone.into_control_points());
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
     ///
     /// # Errors
     /// `map` or `out` when their shapes do not fit this batch; [`ErrorKind::TooLarge`] on `map`

@@ -442,7 +442,18 @@ impl AlgebraicReal {
         }
     }
 
-    /// Exact comparison (refines copies until the intervals are disjoint).
+    /// Exact comparison (refines copies until the intervals are disjoint; two equal numbers
+    /// are recognised by the gcd of their polynomials, not by refinement).
+    ///
+    /// ```
+    /// use blossom::{bezier_zeros, Rational};
+    /// let q = |n: i64| Rational::from_integer(n.into());
+    /// // The zeros of 2t^2 - 1 and of 4t^2 - 2 (Bernstein coefficients), both 1/sqrt(2).
+    /// let a = bezier_zeros(&[q(-1), q(-1), q(1)])?.zeros[0].t.clone();
+    /// let b = bezier_zeros(&[q(-2), q(-2), q(2)])?.zeros[0].t.clone();
+    /// assert!(a.compare(&b).is_eq() && a.equals(&b));
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
     pub fn compare(&self, other: &Self) -> Ordering {
         if let Some(b) = &other.exact {
             return self.cmp_rational(b);
@@ -472,7 +483,15 @@ impl AlgebraicReal {
         }
     }
 
-    /// The double nearest to the number (ties to even), exactly.
+    /// The double nearest to the number (ties to even), **correctly rounded**: the interval
+    /// is refined until both ends round alike, or the one rounding boundary between them is
+    /// decided by an exact sign.
+    ///
+    /// ```
+    /// use blossom::{AlgebraicReal, Rational};
+    /// let third = AlgebraicReal::from_rational(Rational::new(1.into(), 3.into()));
+    /// assert_eq!(third.to_f64(), 1.0 / 3.0);
+    /// ```
     pub fn to_f64(&self) -> f64 {
         let mut a = self.clone();
         loop {

@@ -385,7 +385,9 @@ fn finish(mut points: Vec<IntersectionPoint>, mut overlaps: Vec<Overlap>) -> Int
     Intersections { points, overlaps }
 }
 
-/// The answer when P or Q is a single point (see the module docs), else `None`.
+/// The answer when P or Q is a single point (every control point the same), as
+/// [`Intersections`] states it (overlaps pairing all of [0, 1] with each parameter where the
+/// other curve passes through the point), else `None`.
 fn single_point_pair(pp: &Power, qq: &Power) -> Option<Intersections> {
     let whole = || {
         [

@@ -80,7 +80,8 @@ fn polynomial(f: &mut Formatter<'_>, p: &[BigInt]) -> fmt::Result {
 }
 
 /// `1/2` for a rational number; `0.17267316464601143 (root of 7x^2 - 7x + 1 in [0, 1/2])`
-/// for an irrational one; the double alone with `{:#}` or a precision (see the module docs).
+/// for an irrational one; the double alone with `{:#}` or a precision (a precision formats
+/// that double).
 ///
 /// ```
 /// use blossom::{bezier_zeros, AlgebraicReal, Rational};
