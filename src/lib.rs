@@ -261,7 +261,7 @@ pub mod engine {
 pub use blossom_macros::restriction;
 
 // Interoperation (features `mint`, `kurbo`).
-#[cfg(any(feature = "mint", feature = "kurbo"))]
+#[cfg(any(feature = "mint", feature = "kurbo", feature = "lyon"))]
 pub use interop::points::ForeignPoint;
 
 /// The README's examples, compiled and run as doc tests.

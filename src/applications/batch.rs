@@ -206,7 +206,7 @@ impl RestrictionMap {
     /// writing the answers to `output` in the same layout: no [`Batch`] to build or read back.
     ///
     /// Curves are restricted one at a time where they lie, by the engine with the dimension
-    /// fixed (unrolled for degrees 1..=24 in dimensions 1..=4): for small objects the
+    /// fixed (unrolled for degrees 1..=8 in dimensions 1..=4): for small objects the
     /// transposes into and out of a block cost more than the restriction (10^5 planar cubics:
     /// 1.7 ms through blocks, 1.1 ms in place, `benches/peers.rs`, group `cubics_end_to_end`).
     /// Patches are packed [`BATCH_LANES`] at a time into one block buffer (which stays in the

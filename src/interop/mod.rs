@@ -1,12 +1,14 @@
-//! Interoperation with the ecosystem's types, each behind an optional feature: mint's and
-//! kurbo's points and curves (conversions, `with_mint.rs`, `with_kurbo.rs`, on the one trait of
-//! `points.rs`) and serde (`with_serde.rs`). This layer sits beside the applications: it
+//! Interoperation with the ecosystem's types, each behind an optional feature: mint's,
+//! kurbo's and lyon_geom's points and curves (conversions, `with_mint.rs`, `with_kurbo.rs`,
+//! `with_lyon.rs`, on the one trait and the one segment macro of `points.rs`) and serde (`with_serde.rs`). This layer sits beside the applications: it
 //! imports the shapes and applications and nothing imports it.
 
-#[cfg(any(feature = "mint", feature = "kurbo"))]
+#[cfg(any(feature = "mint", feature = "kurbo", feature = "lyon"))]
 pub(crate) mod points;
 #[cfg(feature = "kurbo")]
 mod with_kurbo;
+#[cfg(feature = "lyon")]
+mod with_lyon;
 #[cfg(feature = "mint")]
 mod with_mint;
 #[cfg(feature = "serde")]

@@ -100,3 +100,92 @@ impl<T: Ring, P: ForeignPoint<T>> TryFrom<&BezierCurve<T>> for Vec<P> {
             .collect()
     }
 }
+
+/// The `K` control points `points` (about `field`) of a foreign segment called `name`, as the
+/// foreign point type `P`: [`ErrorKind::Degree`] on `field` when there are not `K`,
+/// [`ErrorKind::Dimension`] on `field[i]` when point i is not 2-D.
+pub(crate) fn foreign_points<const K: usize, P: ForeignPoint<f64> + Copy, Q: AsRef<[f64]>>(
+    points: &[Q],
+    field: &str,
+    name: &str,
+) -> Result<[P; K]> {
+    if points.len() != K {
+        return Err(Error::of(
+            ErrorKind::Degree,
+            field,
+            format!(
+                "a {name} has degree {} ({K} control points), found degree {}",
+                K - 1,
+                points.len().saturating_sub(1)
+            ),
+        ));
+    }
+    let mut out = Vec::with_capacity(K);
+    for (i, p) in points.iter().enumerate() {
+        out.push(P::try_from_point(p.as_ref(), &format!("{field}[{i}]"))?);
+    }
+    Ok(out
+        .try_into()
+        .unwrap_or_else(|_| unreachable!("K points were checked")))
+}
+
+/// The conversions between a foreign planar Bézier segment of degree `K - 1` (a struct whose
+/// fields `$p` are its control points in order, of the [`ForeignPoint`] type `$point`) and
+/// [`BezierCurve<f64>`](crate::BezierCurve) and [`Bezier<f64, 2>`](crate::Bezier): `From`
+/// into the library, `TryFrom` back (a degree or dimension error naming the field).
+macro_rules! foreign_segment {
+    ($segment:ty, $point:ty, $name:expr, $k:literal, $($p:ident),+) => {
+        impl From<$segment> for BezierCurve<f64> {
+            fn from(segment: $segment) -> Self {
+                BezierCurve::new(vec![$(segment.$p.into_point()),+])
+                    .expect("a non-empty polygon of 2-D points")
+            }
+        }
+
+        impl TryFrom<&BezierCurve<f64>> for $segment {
+            type Error = Error;
+
+            fn try_from(curve: &BezierCurve<f64>) -> Result<Self> {
+                let points: Vec<&[f64]> = curve.control_points().iter().collect();
+                let [$($p),+] = super::points::foreign_points::<$k, $point, _>(
+                    &points, "control_points", $name,
+                )?;
+                Ok(Self { $($p),+ })
+            }
+        }
+
+        impl TryFrom<BezierCurve<f64>> for $segment {
+            type Error = Error;
+
+            fn try_from(curve: BezierCurve<f64>) -> Result<Self> {
+                <$segment>::try_from(&curve)
+            }
+        }
+
+        impl From<$segment> for Bezier<f64, 2> {
+            fn from(segment: $segment) -> Self {
+                Bezier::new(vec![$([segment.$p.x, segment.$p.y]),+])
+                    .expect("a non-empty polygon")
+            }
+        }
+
+        impl TryFrom<&Bezier<f64, 2>> for $segment {
+            type Error = Error;
+
+            fn try_from(curve: &Bezier<f64, 2>) -> Result<Self> {
+                let [$($p),+] =
+                    super::points::foreign_points::<$k, $point, _>(curve.points(), "points", $name)?;
+                Ok(Self { $($p),+ })
+            }
+        }
+
+        impl TryFrom<Bezier<f64, 2>> for $segment {
+            type Error = Error;
+
+            fn try_from(curve: Bezier<f64, 2>) -> Result<Self> {
+                <$segment>::try_from(&curve)
+            }
+        }
+    };
+}
+pub(crate) use foreign_segment;

@@ -45,82 +45,12 @@ macro_rules! kurbo_point {
 kurbo_point!(Point);
 kurbo_point!(Vec2);
 
-/// The `K` control points `points` (about `field`) of a kurbo segment called `name`.
-fn kurbo_points<const K: usize, P: AsRef<[f64]>>(
-    points: &[P],
-    field: &str,
-    name: &str,
-) -> Result<[kurbo::Point; K]> {
-    if points.len() != K {
-        return Err(Error::of(
-            ErrorKind::Degree,
-            field,
-            format!(
-                "a {name} has degree {} ({K} control points), found degree {}",
-                K - 1,
-                points.len().saturating_sub(1)
-            ),
-        ));
-    }
-    let mut out = [kurbo::Point::ZERO; K];
-    for (i, (o, p)) in out.iter_mut().zip(points).enumerate() {
-        *o = kurbo::Point::try_from_point(p.as_ref(), &format!("{field}[{i}]"))?;
-    }
-    Ok(out)
-}
-
 macro_rules! kurbo_segment {
     ($name:ident, $k:literal, $($p:ident),+) => {
-        impl From<kurbo::$name> for BezierCurve<f64> {
-            fn from(segment: kurbo::$name) -> Self {
-                BezierCurve::new(vec![$(segment.$p.into_point()),+])
-                    .expect("a non-empty polygon of 2-D points")
-            }
-        }
-
-        impl TryFrom<&BezierCurve<f64>> for kurbo::$name {
-            type Error = Error;
-
-            fn try_from(curve: &BezierCurve<f64>) -> Result<Self> {
-                let name = concat!("kurbo::", stringify!($name));
-                let points: Vec<&[f64]> = curve.control_points().iter().collect();
-                let [$($p),+] = kurbo_points::<$k, _>(&points, "control_points", name)?;
-                Ok(kurbo::$name { $($p),+ })
-            }
-        }
-
-        impl TryFrom<BezierCurve<f64>> for kurbo::$name {
-            type Error = Error;
-
-            fn try_from(curve: BezierCurve<f64>) -> Result<Self> {
-                kurbo::$name::try_from(&curve)
-            }
-        }
-
-        impl From<kurbo::$name> for Bezier<f64, 2> {
-            fn from(segment: kurbo::$name) -> Self {
-                Bezier::new(vec![$([segment.$p.x, segment.$p.y]),+])
-                    .expect("a non-empty polygon")
-            }
-        }
-
-        impl TryFrom<&Bezier<f64, 2>> for kurbo::$name {
-            type Error = Error;
-
-            fn try_from(curve: &Bezier<f64, 2>) -> Result<Self> {
-                let name = concat!("kurbo::", stringify!($name));
-                let [$($p),+] = kurbo_points::<$k, _>(curve.points(), "points", name)?;
-                Ok(kurbo::$name { $($p),+ })
-            }
-        }
-
-        impl TryFrom<Bezier<f64, 2>> for kurbo::$name {
-            type Error = Error;
-
-            fn try_from(curve: Bezier<f64, 2>) -> Result<Self> {
-                kurbo::$name::try_from(&curve)
-            }
-        }
+        super::points::foreign_segment!(
+            kurbo::$name, kurbo::Point,
+            concat!("kurbo::", stringify!($name)), $k, $($p),+
+        );
     };
 }
 

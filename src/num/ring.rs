@@ -57,10 +57,13 @@ pub trait Ring: Clone + PartialEq + Debug {
     /// `out` = the control points of the Bézier curve with flat control points `points` (`dim`
     /// numbers per point) over [a, b] by the unrolled evaluators of the types that set
     /// [`Ring::UNROLLED`], or `false` (and `out` untouched) when there is none for this
-    /// degree and dimension; the caller then runs the engine, which gives the same answer.
-    /// The default has none; `f64` and `f32` have them for degrees 1..=24 in dimensions
-    /// 1..=4, in functions that are compiled once, in this crate, rather than in every crate
-    /// that restricts a float curve.
+    /// degree and dimension; the caller then runs the engine. The unrolled evaluators give the
+    /// engine's answer bit for bit.
+    /// The default has none; `f64` and `f32` have them for degrees 1..=8 in dimensions
+    /// 1..=4 (1..=24 with the feature `unrolled-high`), in functions that are compiled once,
+    /// in this crate, rather than in every crate that restricts a float curve, and beyond
+    /// those up to degree 40 the two de Casteljau subdivisions of `shape/two_pass.rs` (the
+    /// same curve, rounded differently: not the engine's bits).
     fn restrict_unrolled(
         points: &[Self],
         dim: usize,
@@ -142,7 +145,7 @@ pub fn rational_to_f64(k: &Rational) -> f64 {
 }
 
 macro_rules! float_ring {
-    ($(#[$doc:meta])* $t:ty => $evaluators:path) => {
+    ($(#[$doc:meta])* $t:ty => $evaluators:path, $two_pass:path) => {
         $(#[$doc])*
         impl Ring for $t {
             const UNROLLED: bool = true;
@@ -162,6 +165,7 @@ macro_rules! float_ring {
             fn restrict_unrolled(points: &[Self], dim: usize, a: &Self, b: &Self, out: &mut [Self]) -> bool {
                 (dim == 2 && crate::shape::unrolled::planar_cubic(points, a, b, out))
                     || $evaluators.restrict(points, dim, a, b, out)
+                    || $two_pass(points, dim, *a, *b, out)
             }
             #[inline]
             fn zero() -> Self {
@@ -215,7 +219,7 @@ float_ring!(
     /// Doubles: every operation rounded once (`scale` multiplies by the constant rounded to
     /// the nearest double). `docs/accuracy.md` and `docs/error_bounds.md` give
     /// the measured errors of every method.
-    f64 => crate::shape::unrolled::F64
+    f64 => crate::shape::unrolled::F64, crate::shape::two_pass::restrict_f64
 );
 float_ring!(
     /// Single precision: every operation rounded once, with unit roundoff u = 2^-24 ≈ 6.0e-8
@@ -227,7 +231,7 @@ float_ring!(
     /// `tests/suite/applications/f32_accuracy.rs`; the measured table is in `docs/error_bounds.md`,
     /// section "f32", printed by
     /// `cargo test -p blossom --test suite f32_restriction -- --nocapture`).
-    f32 => crate::shape::unrolled::F32
+    f32 => crate::shape::unrolled::F32, crate::shape::two_pass::restrict_f32
 );
 
 /// Every operation but `zero`, `one` and `is_zero` charges the work meter first

@@ -13,6 +13,7 @@
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::shape::bezier::{BezierCurve, TensorPatch, TriangularPatch};
+use crate::shape::coords::CoordinateBuffer;
 use crate::shape::flat;
 use crate::shape::halving::curve_split;
 use crate::shape::simplex::{checked_triangle_len, triangle_index};
@@ -71,9 +72,37 @@ fn to_points<T: Clone, const D: usize>(flat: &[T]) -> Vec<[T; D]> {
 /// assert_eq!(left.points()[3], right.points()[0]);
 /// # Ok::<(), blossom::Error>(())
 /// ```
-#[derive(Clone, Debug, PartialEq)]
-pub struct Bezier<T, const D: usize> {
-    points: Vec<[T; D]>,
+///
+/// The points are kept in the number type's coordinate buffer ([`Ring::Coords`]): for `f64`
+/// and `f32` up to [`crate::engine::INLINE_COORDINATES`] numbers inline (a planar quintic, a
+/// 3-D cubic, a 4-D quadratic), so that [`Bezier::subsegment`] and [`Bezier::split`] return
+/// such curves without touching the heap.
+#[repr(C)]
+pub struct Bezier<T: Ring, const D: usize> {
+    /// D numbers per point, point after point; a whole number of points, at least one.
+    coords: T::Coords,
+}
+
+impl<T: Ring, const D: usize> Clone for Bezier<T, D> {
+    fn clone(&self) -> Self {
+        Bezier {
+            coords: self.coords.clone(),
+        }
+    }
+}
+
+impl<T: Ring, const D: usize> PartialEq for Bezier<T, D> {
+    fn eq(&self, other: &Self) -> bool {
+        self.coords.as_slice() == other.coords.as_slice()
+    }
+}
+
+impl<T: Ring + std::fmt::Debug, const D: usize> std::fmt::Debug for Bezier<T, D> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Bezier")
+            .field("points", &self.points())
+            .finish()
+    }
 }
 
 impl<T: Ring, const D: usize> Bezier<T, D> {
@@ -90,22 +119,38 @@ impl<T: Ring, const D: usize> Bezier<T, D> {
                 "expected at least one control point",
             ));
         }
-        Ok(Bezier { points })
+        Ok(Bezier {
+            coords: T::Coords::from_vec(points.into_iter().flatten().collect()),
+        })
+    }
+
+    /// The curve with flat coordinates `coords`: a whole, nonzero number of points (the
+    /// callers' invariant).
+    fn from_coords(coords: T::Coords) -> Self {
+        debug_assert!(
+            D > 0 && !coords.as_slice().is_empty() && coords.as_slice().len().is_multiple_of(D)
+        );
+        Bezier { coords }
     }
 
     /// The degree n.
     pub fn degree(&self) -> usize {
-        self.points.len() - 1
+        self.coords.as_slice().len() / D - 1
     }
 
     /// The control points p_0, ..., p_n.
     pub fn points(&self) -> &[[T; D]] {
-        &self.points
+        self.coords.as_slice().as_chunks::<D>().0
     }
 
     /// Consumes the curve, returning its control points.
     pub fn into_points(self) -> Vec<[T; D]> {
-        self.points
+        self.points().to_vec()
+    }
+
+    /// The coordinates, D per point, point after point.
+    fn flat(&self) -> &[T] {
+        self.coords.as_slice()
     }
 
     /// The blossom f(t_1, ..., t_n) (de Casteljau with one argument per level).
@@ -125,39 +170,37 @@ impl<T: Ring, const D: usize> Bezier<T, D> {
                 ),
             ));
         }
-        Ok(first_point(&flat::curve_blossom(
-            self.points.as_flattened(),
-            D,
-            args,
-        )))
+        Ok(first_point(&flat::curve_blossom(self.flat(), D, args)))
     }
 
     /// The point at `t` (de Casteljau; the working level in [`Ring::with_scratch`]'s buffer, so
     /// floats allocate nothing).
     pub fn eval(&self, t: &T) -> [T; D] {
         let mut out: [T; D] = std::array::from_fn(|_| T::zero());
-        T::with_scratch(|scratch| {
-            flat::curve_eval_into(self.points.as_flattened(), D, t, &mut out, scratch)
-        });
+        T::with_scratch(|scratch| flat::curve_eval_into(self.flat(), D, t, &mut out, scratch));
         out
     }
 
     /// The same curve over `range` = a..b, reparametrised over [0, 1]: control points
     /// f(a^(n-j), b^j). Any a, b, also outside [0, 1] or with a > b.
     pub fn subsegment(&self, range: Range<T>) -> Self {
-        let mut out = self.points.clone();
-        T::with_scratch(|scratch| {
-            self.subsegment_into(&range.start, &range.end, &mut out, scratch)
-        })
-        .expect("out has n + 1 points");
-        Bezier { points: out }
+        let mut out = self.coords.clone();
+        flat::curve_subsegment_returned(
+            self.flat(),
+            D,
+            &range.start,
+            &range.end,
+            out.as_mut_slice(),
+        );
+        Bezier::from_coords(out)
     }
 
     /// [`Bezier::subsegment`] into `out` (n + 1 points), with `scratch` grown to
     /// [`crate::engine::curve_scratch_len`]`(n, D)` on first use and reused afterwards: no allocation
-    /// once it is large enough. Degrees 1..=24 run the engine's steps unrolled by
-    /// `blossom::restriction!` (no scratch at all), higher degrees [`crate::engine::curve_net`]; the
-    /// answer is the same bit for bit.
+    /// once it is large enough. In `f64` and `f32` (dimensions 1..=4), degrees 1..=8 run the
+    /// engine's steps unrolled by `blossom::restriction!` (no scratch; the engine's answer bit
+    /// for bit), degrees 9..=40 two de Casteljau subdivisions (no scratch), higher degrees and
+    /// every other ring [`crate::engine::curve_net`].
     ///
     /// # Errors
     /// `out` when it does not hold n + 1 points.
@@ -168,23 +211,16 @@ impl<T: Ring, const D: usize> Bezier<T, D> {
         out: &mut [[T; D]],
         scratch: &mut Vec<T>,
     ) -> Result<()> {
-        subsegment_into(&self.points, a, b, out, scratch)
+        subsegment_into(self.points(), a, b, out, scratch)
     }
 
     /// The parts over [0, t] and [t, 1], each over [0, 1], by one de Casteljau pyramid.
     pub fn split(&self, t: &T) -> (Self, Self) {
-        let src = self.points.as_flattened();
-        let mut left = src.to_vec();
-        let mut right = src.to_vec();
-        curve_split(src, D, t, &mut left, &mut right);
-        (
-            Bezier {
-                points: to_points(&left),
-            },
-            Bezier {
-                points: to_points(&right),
-            },
-        )
+        let src = self.flat();
+        let mut left = self.coords.clone();
+        let mut right = self.coords.clone();
+        curve_split(src, D, t, left.as_mut_slice(), right.as_mut_slice());
+        (Bezier::from_coords(left), Bezier::from_coords(right))
     }
 }
 
@@ -429,13 +465,13 @@ fn to_arrays<T: Clone, const D: usize>(coords: &[T], dim: usize) -> Result<Vec<[
 
 impl<T: Ring, const D: usize> From<Bezier<T, D>> for BezierCurve<T> {
     fn from(curve: Bezier<T, D>) -> Self {
-        BezierCurve::from_raw(D, curve.points.into_iter().flatten().collect())
+        BezierCurve::from_buffer(D, curve.coords)
     }
 }
 
 impl<T: Ring, const D: usize> From<&Bezier<T, D>> for BezierCurve<T> {
     fn from(curve: &Bezier<T, D>) -> Self {
-        BezierCurve::from_raw(D, curve.points.as_flattened().to_vec())
+        BezierCurve::from_buffer(D, curve.coords.clone())
     }
 }
 
@@ -445,9 +481,12 @@ impl<T: Ring, const D: usize> TryFrom<&BezierCurve<T>> for Bezier<T, D> {
     /// # Errors
     /// `dim` when the curve's dimension is not `D`.
     fn try_from(curve: &BezierCurve<T>) -> Result<Self> {
-        Ok(Bezier {
-            points: to_arrays(curve.coordinates(), curve.dim())?,
-        })
+        if curve.dim() != D {
+            return Err(other_dimension::<D>(curve.dim()));
+        }
+        Ok(Bezier::from_coords(T::Coords::from_slice(
+            curve.coordinates(),
+        )))
     }
 }
 

@@ -116,7 +116,7 @@ pub(crate) fn check_triangle_net<T: Clone>(
 /// ```
 #[repr(C)]
 pub struct BezierCurve<T: Ring> {
-    /// `Vec<T>`, or for `f64`/`f32` a buffer that keeps up to 8 coordinates inline
+    /// `Vec<T>`, or for `f64`/`f32` a buffer that keeps up to 12 coordinates inline
     /// ([`crate::engine::SmallCoords`]): [`Ring::Coords`]. First, so that the inline numbers
     /// start the struct (see [`crate::engine::SmallCoords`] on moves of fresh curves).
     coords: T::Coords,
@@ -178,6 +178,13 @@ impl<T: Ring> BezierCurve<T> {
             dim,
             coords: T::Coords::from_vec(coords),
         }
+    }
+
+    /// [`BezierCurve::from_raw`] from a coordinate buffer as it is (the fixed-dimension
+    /// [`crate::Bezier`] keeps the same buffer type).
+    pub(crate) fn from_buffer(dim: usize, coords: T::Coords) -> Self {
+        debug_assert!(dim >= 1 && !coords.as_slice().is_empty());
+        BezierCurve { dim, coords }
     }
 
     /// The curve of `len` zero coordinates, `dim` each: the buffer an answer is written into.
@@ -286,8 +293,9 @@ impl<T: Ring> BezierCurve<T> {
     /// [`BezierCurve::subsegment`] over [a, b] into `out`, whose buffer is reused (resized
     /// when its degree or dimension differ), with `scratch` grown to
     /// [`crate::engine::curve_scratch_len`] on first use. Nothing is allocated once both have
-    /// their size; `f64` and `f32` curves of degree up to 24 in dimension up to 4 need no
-    /// scratch at all (the unrolled evaluators of `blossom::restriction!`).
+    /// their size; `f64` and `f32` curves of degree up to 40 in dimension up to 4 need no
+    /// scratch at all (the unrolled evaluators of `blossom::restriction!` to degree 8, two
+    /// de Casteljau subdivisions above).
     #[inline]
     pub fn subsegment_into(&self, a: &T, b: &T, out: &mut Self, scratch: &mut Vec<T>) {
         out.dim = self.dim;

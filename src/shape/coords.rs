@@ -3,8 +3,8 @@
 //!
 //! * [`Vec<T>`] for the exact and symbolic numbers ([`crate::Rational`], [`crate::Poly`]) and
 //!   the interval types, whose values live on the heap anyway;
-//! * [`SmallCoords<T, INLINE_COORDINATES>`] for `f64` and `f32`: up to 8 coordinates (a planar cubic, a 3-D
-//!   quadratic, a 4-D line) are kept inline in the curve, more on the heap. A curve returned by
+//! * [`SmallCoords<T, INLINE_COORDINATES>`] for `f64` and `f32`: up to 12 coordinates (a 3-D
+//!   cubic, a planar quintic, a 4-D quadratic) are kept inline in the curve, more on the heap. A curve returned by
 //!   [`crate::BezierCurve::subsegment`] or `split` then costs no allocation in the cases a
 //!   vector-graphics user meets most, which is what makes the returning form as fast as
 //!   kurbo's and lyon's stack values (`benches/peers.rs`, group `cubic2d`).
@@ -15,8 +15,9 @@
 
 use std::fmt::Debug;
 
-/// How many coordinates a float curve keeps inline ([`SmallCoords`]): a planar cubic.
-pub const INLINE_COORDINATES: usize = 8;
+/// How many coordinates a float curve keeps inline ([`SmallCoords`]): a 3-D cubic (a planar
+/// quintic, a 4-D quadratic).
+pub const INLINE_COORDINATES: usize = 12;
 
 /// A contiguous, growable run of numbers: what a [`crate::BezierCurve`] keeps its coordinates
 /// in. Implemented by [`Vec<T>`] and by [`SmallCoords`].

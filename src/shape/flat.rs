@@ -5,8 +5,10 @@
 //! two typings: every method of either front end is a call of one function here.
 //!
 //! * restriction: the halving engine ([`crate::engine::curve_net`] and its siblings) with
-//!   de Casteljau's steps; for `f64`/`f32` curves of degree 1..=24 in dimension 1..=4 the same
-//!   steps unrolled by `blossom::restriction!` (no scratch, the same answer bit for bit);
+//!   de Casteljau's steps; for `f64`/`f32` curves of degree 1..=8 in dimension 1..=4 the same
+//!   steps unrolled by `blossom::restriction!` (no scratch, the same answer bit for bit;
+//!   degrees 1..=24 with the feature `unrolled-high`), then up to degree 40 two de Casteljau
+//!   subdivisions (`shape/two_pass.rs`, no scratch, fewer steps);
 //! * evaluation and blossoms: de Casteljau's pyramid, eq. (2) of seed 004 for curves, its
 //!   triangular form b^r_(ijk) = u_r b_(i+1,j,k) + v_r b_(i,j+1,k) + w_r b_(i,j,k+1), and the
 //!   tensor product as curves of curves (eq. (9) of seed 004).

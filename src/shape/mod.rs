@@ -14,4 +14,5 @@ pub(crate) mod power;
 pub(crate) mod power_triangle;
 pub(crate) mod simplex;
 pub(crate) mod traits;
+pub(crate) mod two_pass;
 pub(crate) mod unrolled;

@@ -1,12 +1,19 @@
-//! The restriction of Bézier curves of degree 1..=24 in dimensions 1..=4 by the evaluators
-//! `blossom::restriction!` generates: the engine's halving unrolled for one degree (the same
-//! steps in the same order, so the same answer bit for bit), with every level in registers
-//! instead of scratch buffers. [`crate::Bezier`] and [`crate::BezierCurve`] dispatch here first.
+//! The restriction of Bézier curves of degree 1..=8 (1..=24 with the feature `unrolled-high`)
+//! in dimensions 1..=4 by the evaluators `blossom::restriction!` generates: the engine's
+//! halving unrolled for one degree (the same steps in the same order, so the same answer bit
+//! for bit), with every level in registers instead of scratch buffers. [`crate::Bezier`] and
+//! [`crate::BezierCurve`] dispatch here first.
+//!
+//! Why only to degree 8 by default: every crate that depends on this one compiles these
+//! tables. Degrees 9..=24 were 70 % of the library's LLVM IR; without them a dependent
+//! crate's first release build went from 146 s to 21 s of wall time on 2 cores and its
+//! largest rustc process from 4.6 GB to 0.56 GB (README, "Build time"), and those degrees
+//! restrict by two de Casteljau subdivisions ([`crate::shape::two_pass`]) instead.
 //!
 //! The evaluators are generic, but only `f64` and `f32` run them ([`crate::Ring::UNROLLED`]):
 //! the two tables [`F64`] and [`F32`] hold one function pointer per (dimension, number of
-//! coordinates), filled at compile time, so the grid of 24 degrees x 4 dimensions is compiled
-//! once, in this crate. (Reached from generic code instead, it was monomorphised anew in every
+//! coordinates), filled at compile time, so the grid of 8 (or 24) degrees x 4 dimensions is
+//! compiled once, in this crate. (Reached from generic code instead, it was monomorphised anew in every
 //! crate that restricts a float curve: about 100 s of CPU at `opt-level = 2` for a program of a
 //! few lines, in every example and test crate.) A call is one bounds-checked table load and
 //! one indirect call, with no division by the dimension and no match on the degree. The front
@@ -145,18 +152,19 @@ mod tests {
     use crate::test_rng::XorShift;
     use crate::BezierCurve;
 
-    /// `BezierCurve::subsegment` of float curves (inline answers up to 8 coordinates (restricted in place
+    /// `BezierCurve::subsegment` of float curves (inline answers up to 12 coordinates (restricted in place
     /// through [`super::F64`]), heap answers through the flat path) gives, bit for bit, the
     /// control points of the halving engine run with a runtime width (no unrolled code), and
-    /// the same as `subsegment_into`; in every dimension 1..=6 and degree 0..=9, so across
-    /// the inline limit, the degree 0 (no unrolled evaluator) and dimensions above 4.
+    /// the same as `subsegment_into`; in every dimension 1..=6 and degree 0..=8, so across
+    /// the inline limit, the degree 0 (no unrolled evaluator) and dimensions above 4 (degrees
+    /// 9..=40 are `shape::two_pass`'s, tested there).
     #[test]
     fn returned_subsegments_are_the_engines_bit_for_bit() {
         let mut rng = XorShift(0x5eed_cafe);
         let mut unit = || (rng.next() >> 11) as f64 / (1u64 << 53) as f64 * 4.0 - 2.0;
         let mut inline_answers = 0;
         for dim in 1..=6 {
-            for degree in 0..=9 {
+            for degree in 0..=8 {
                 let coords: Vec<f64> = (0..(degree + 1) * dim).map(|_| unit()).collect();
                 let curve = BezierCurve::from_coordinates(dim, coords.clone()).expect("a curve");
                 let (a, b) = (unit(), unit());
@@ -180,7 +188,7 @@ mod tests {
                 assert_eq!(curve32.subsegment(a32..b32).coordinates(), &want32[..]);
             }
         }
-        // Every (dim, degree) with (degree + 1) dim <= 8: 8 + 4 + 2 + 2 + 1 + 1.
-        assert_eq!(inline_answers, 18);
+        // Every (dim, degree) with (degree + 1) dim <= 12: 9 + 6 + 4 + 3 + 2 + 2.
+        assert_eq!(inline_answers, 26);
     }
 }

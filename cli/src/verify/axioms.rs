@@ -589,7 +589,7 @@ pub fn section() -> Section {
         .collect();
     Section::from_entries(
         "The blossom axioms, proved symbolically for every algorithm",
-        "seed 002, Teorema 2.1 i)-iii); seeds 000/001, section 2; seed 004, section 2",
+        "de Boor points paper, Teorema 2.1 i)-iii); subdivision paper, section 2; inverse relations paper, section 2",
         entries,
         vec![
             format!(

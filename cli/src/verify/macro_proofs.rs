@@ -34,7 +34,7 @@ pub fn section() -> Section {
     Section {
         title: "Symbolic proofs of the generated evaluators (formulae (3), (9), (14) unrolled)"
             .into(),
-        source: "seed 000/001 Theorems 1-3; the `blossom::restriction!` macro".into(),
+        source: "subdivision paper Theorems 1-3; the `blossom::restriction!` macro".into(),
         status: if identical == rows.len() {
             Status::Reproduced
         } else {

@@ -63,7 +63,7 @@ pub fn section() -> Section {
     );
     Section {
         title: "Symbolic proofs of the restriction methods".into(),
-        source: "definitions (2), (8), (13); Theorems 1-3; seed 004 eqs. (2), (9), (19)-(21)"
+        source: "definitions (2), (8), (13); Theorems 1-3; inverse relations paper eqs. (2), (9), (19)-(21)"
             .into(),
         status: if ok {
             Status::Reproduced

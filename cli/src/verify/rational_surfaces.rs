@@ -143,7 +143,7 @@ fn tensor_section(
     ];
     Section::from_entries(
         title,
-        "seed 004, section 4 (homogeneous control points by the inverse formula (22), two passes)",
+        "inverse relations paper, section 4 (homogeneous control points by the inverse formula (22), two passes)",
         entries,
         vec![
             format!(
@@ -320,7 +320,7 @@ fn sphere() -> Section {
         .collect();
     Section::from_entries(
         "Rational surfaces: a spherical triangle as a rational quadratic triangle",
-        "seed 004, section 4, eq. (23) on the homogeneous form (2u, 2v, u^2 + v^2 - 1, 1 + u^2 + v^2)",
+        "inverse relations paper, section 4, eq. (23) on the homogeneous form (2u, 2v, u^2 + v^2 - 1, 1 + u^2 + v^2)",
         entries,
         vec![
             format!("control points and weights (b_ijk at a^i b^j c^k): {}", net.join("; ")),

@@ -129,13 +129,11 @@ impl Report {
         }
     }
 
-    /// The verdict, then a table of the sections: title, source, entries matched, status.
-    /// Consecutive sections on formulae as printed (titles `Formula ...`) share one row, the
-    /// worst of their statuses; columns are cut to keep lines within 100 characters.
-    /// `--verbose` has everything whole.
+    /// The verdict, what the statuses mean, then one line per section: status, entries
+    /// matched, the whole title and its source in the papers (named as the README names
+    /// them). Consecutive sections on formulae as printed (titles `Formula ...`) share one
+    /// line, the worst of their statuses. `--verbose` has every entry and finding.
     fn to_short_text(&self) -> String {
-        const TITLE: usize = 36;
-        const SOURCE: usize = 40;
         let mut out = String::new();
         let _ = writeln!(out, "blossom verify: {}", self.verdict());
         let _ = writeln!(
@@ -143,10 +141,11 @@ impl Report {
             "{}; `--verbose` shows every entry and finding",
             self.counts()
         );
+        let _ = writeln!(out, "{LEGEND}");
         let _ = writeln!(
             out,
-            "\n{:TITLE$}  {:SOURCE$}  {:>7}  status",
-            "section", "source", "entries"
+            "\n{:11}  {:>7}  section (where in the papers)",
+            "status", "entries"
         );
         for row in self.rows() {
             let entries = match row.entries {
@@ -155,10 +154,10 @@ impl Report {
             };
             let _ = writeln!(
                 out,
-                "{}  {}  {entries:>7}  {}",
-                cut(&row.title, TITLE),
-                cut(&row.source, SOURCE),
-                row.status.name()
+                "{:11}  {entries:>7}  {} ({})",
+                row.status.name(),
+                row.title,
+                row.source
             );
         }
         let unexplained: Vec<&str> = self
@@ -201,7 +200,8 @@ impl Report {
     /// Today's full report: every section with its findings and entries, the summary last.
     fn to_full_text(&self) -> String {
         let mut out = String::new();
-        out.push_str("blossom verify: the seed papers' tables and examples, re-derived exactly\n");
+        out.push_str("blossom verify: the papers' tables and examples, re-derived exactly\n");
+        let _ = writeln!(out, "{LEGEND}");
         for s in &self.sections {
             let _ = writeln!(out, "\n== {} [{}]", s.title, s.status.name());
             let _ = writeln!(out, "   source: {}", s.source);
@@ -289,7 +289,7 @@ impl Row {
             .unwrap_or(Status::Reproduced);
         Row {
             title: format!("{} formulae as printed", group.len()),
-            source: String::from("seeds 000/001, Theorems 2, 3, proofs"),
+            source: String::from("subdivision paper, Theorems 2, 3, proofs"),
             entries,
             status,
         }
@@ -302,20 +302,10 @@ impl Row {
     }
 }
 
-/// `text` in exactly `width` characters: cut with `~` at the end when longer, padded with
-/// spaces when shorter (counting characters, not bytes).
-fn cut(text: &str, width: usize) -> String {
-    let mut short: String = if text.chars().count() <= width {
-        text.to_string()
-    } else {
-        let mut short: String = text.chars().take(width.saturating_sub(1)).collect();
-        short.push('~');
-        short
-    };
-    let pad = width.saturating_sub(short.chars().count());
-    short.extend(std::iter::repeat_n(' ', pad));
-    short
-}
+/// What the statuses mean, printed under the counts.
+const LEGEND: &str = "reproduced: every value printed in the paper computed again and equal; \
+explained: some printed values differ, and the report shows why (a misprint, a transcription \
+error, a different convention), with the corrected value computed";
 
 #[cfg(test)]
 mod tests {
@@ -335,14 +325,14 @@ mod tests {
             sections: vec![
                 Section::from_entries(
                     "Table 1, S_1",
-                    "seed 000, Table 1",
+                    "subdivision paper (transcription 000), Table 1",
                     vec![entry("p_00", true), entry("p_01", true)],
                     vec![],
                     Status::Unexplained,
                 ),
                 Section::from_entries(
                     "A title far longer than the column it is printed in, by a lot",
-                    "seed 004",
+                    "inverse relations paper",
                     vec![entry("w_1", false)],
                     vec!["an index convention".into()],
                     Status::Explained,
@@ -360,13 +350,25 @@ mod tests {
             "blossom verify: every printed value reproduced or explained"
         );
         assert!(lines[1].starts_with("2 sections: 1 reproduced, 1 explained, 0 unexplained"));
-        assert!(lines.iter().all(|l| l.chars().count() <= 100), "{text}");
-        let rows: Vec<&&str> = lines.iter().filter(|l| l.contains("seed 00")).collect();
+        assert!(lines[2].starts_with("reproduced: ") && lines[2].contains("explained: "));
+        let rows: Vec<&&str> = lines
+            .iter()
+            .filter(|l| l.ends_with(" paper)") || l.ends_with("Table 1)"))
+            .collect();
         assert_eq!(rows.len(), 2, "{text}");
-        assert!(rows[0].contains("2/2") && rows[0].ends_with("reproduced"));
-        assert!(rows[1].contains("0/1") && rows[1].ends_with("explained"));
         assert!(
-            rows[1].contains("~") && !rows[1].contains("by a lot"),
+            rows[0].starts_with("reproduced ") && rows[0].contains("2/2"),
+            "{text}"
+        );
+        assert!(
+            rows[1].starts_with("explained ") && rows[1].contains("0/1"),
+            "{text}"
+        );
+        // Titles are printed whole, with the paper named as the README names it.
+        assert!(
+            rows[1].contains("A title far longer than the column it is printed in, by a lot")
+                && rows[1].ends_with("(inverse relations paper)")
+                && !text.contains('~'),
             "{text}"
         );
         assert!(!text.contains("MISMATCH") && !text.contains("an index convention"));
@@ -377,7 +379,7 @@ mod tests {
         let mut r = report();
         let formula = |title: &str, status| Section {
             title: title.into(),
-            source: "seed 000".into(),
+            source: "subdivision paper (transcription 000)".into(),
             status,
             entries: vec![entry("x", status == Status::Reproduced)],
             findings: vec![],
@@ -388,9 +390,9 @@ mod tests {
         let text = r.to_text(false);
         let row: Vec<&str> = text.lines().filter(|l| l.contains("formulae")).collect();
         assert_eq!(row.len(), 1, "{text}");
-        assert!(row[0].starts_with("3 formulae as printed"), "{text}");
+        assert!(row[0].contains("3 formulae as printed"), "{text}");
         assert!(
-            row[0].contains("1/3") && row[0].ends_with("unexplained"),
+            row[0].contains("1/3") && row[0].starts_with("unexplained "),
             "{text}"
         );
         assert!(text.contains("unexplained: Formula (2)"), "{text}");

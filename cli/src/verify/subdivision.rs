@@ -66,7 +66,7 @@ fn coefficients_section() -> Section {
         .collect();
     Section::from_entries(
         "Example 1: Table 1's coefficients c_ij against the printed x(u,v), y(u,v), z(u,v)",
-        "seeds 000/001, section 3, Example 1 and Table 1",
+        "subdivision paper, section 3, Example 1 and Table 1",
         entries,
         vec!["the coefficient table is read off the printed coordinate functions".into()],
         Status::Unexplained,
@@ -112,7 +112,7 @@ pub fn tensor_section(title: &str, table: &[Labelled; 12], rect: &[&str; 4]) -> 
     ];
     let mut section = Section::from_entries(
         title,
-        "seeds 000/001, Example 1, Table 1, formula (9)",
+        "subdivision paper, Example 1, Table 1, formula (9)",
         entries,
         findings,
         Status::Unexplained,
@@ -255,7 +255,7 @@ pub fn triangle_section(title: &str, table: &[Labelled; 21], tri: &[[&str; 2]; 3
     };
     Section {
         title: title.into(),
-        source: "seeds 000/001, Example 2, Table 2, formula (14)".into(),
+        source: "subdivision paper, Example 2, Table 2, formula (14)".into(),
         status,
         entries,
         findings,
@@ -298,7 +298,7 @@ fn formula_sections() -> Vec<Section> {
         }
         sections.push(Section {
             title: format!("Formula {}", version.name),
-            source: "seeds 000/001, Theorem 3 and its proof".into(),
+            source: "subdivision paper, Theorem 3 and its proof".into(),
             status,
             entries: vec![],
             findings,

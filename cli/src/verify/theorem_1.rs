@@ -246,7 +246,7 @@ pub fn section() -> Section {
     ];
     Section::from_entries(
         "Theorem 1, eq. (18): the multilinear polar form of a homogeneous form",
-        "seed 004, section 3, Theorem 1, eqs. (14)-(19)",
+        "inverse relations paper, section 3, Theorem 1, eqs. (14)-(19)",
         entries,
         vec![
             "eq. (18) is implemented once, generically over Ring, as blossom::multilinear_polar_form (2^n - 1 values of q \

@@ -12,7 +12,7 @@ use blossom::engine::{binomial, THEOREM_3};
 use blossom::{curve_blossom, restrict_power_surface, triangle_blossom, Method};
 use blossom::{Poly, PowerCurve, PowerSurface, Rational, Ring};
 
-const SOURCE: &str = "seeds 000/001, proof of Theorem 2, eqs. (10)-(11)";
+const SOURCE: &str = "subdivision paper, proof of Theorem 2, eqs. (10)-(11)";
 
 /// A printed version of eq. (11): the exponent of a in b^k a^(.) as a function of (n, i, k).
 pub struct Eleven {
@@ -189,7 +189,7 @@ fn reduction_section() -> Section {
     ];
     Section::from_entries(
         "Formula under (13): b_i0^Delta and b_0j^Delta as curve blossoms (000 b_i~, 001 b_i^Delta)",
-        "seeds 000/001, section 3, after eq. (13)",
+        "subdivision paper, section 3, after eq. (13)",
         entries,
         vec!["the 000 reading is proved: the triangle blossom of u^i (of v^j) at N points is the degree-N curve blossom \
               of u^i at their u-coordinates (of v^j at their v-coordinates)"
@@ -240,7 +240,7 @@ fn j_beta_section() -> Section {
     let ok = entries[0].matches && !entries[1].matches;
     Section::from_entries(
         "Formula: the upper bound of j_beta in the proof of Theorem 3 (000 j_beta, 001 underline j_beta)",
-        "seeds 000/001, proof of Theorem 3, after eq. (20)",
+        "subdivision paper, proof of Theorem 3, after eq. (20)",
         entries,
         vec!["000's statement is the upper bound of Theorem 3's statement; 001 underlines j_beta, which as a bound of \
               the sum gives a single term, and as an inequality about the lower bound leaves the upper one unstated"
@@ -303,7 +303,7 @@ fn summary_section(judged: &[Section]) -> Section {
         .collect();
     Section::from_entries(
         "Transcriptions 000 and 001: the formulas they print differently",
-        "seeds 000 and 001, compared line by line",
+        "the subdivision paper's two transcriptions, compared line by line",
         entries,
         vec![
             "judged in their own sections: (11), (15), (16) (and the unnumbered formula before (15), whose 001 \

@@ -1,8 +1,8 @@
-//! The optional features `mint`, `kurbo` and `serde`: conversions both ways, their errors on a
-//! wrong degree or dimension, kurbo's evaluation and subdivision against the library's on random
+//! The optional features `mint`, `kurbo`, `lyon` and `serde`: conversions both ways, their errors on a
+//! wrong degree or dimension, kurbo's and lyon's evaluation and subdivision against the library's on random
 //! curves, JSON round trips of every geometry type and the refusal of invalid documents.
 //!
-//! Each part compiles only with its feature: `cargo test -p blossom --features mint,kurbo,serde
+//! Each part compiles only with its feature: `cargo test -p blossom --features mint,kurbo,lyon,serde
 //! --test suite interop`. `cargo test --workspace` runs them too (the application's
 //! dev-dependency on `blossom` turns the features on; see cli/Cargo.toml).
 
@@ -211,6 +211,127 @@ mod kurbo_curves {
                 assert!(d <= 1e-12, "subsegment {a}..{b}: {d:e}");
                 // And the library's answer converts back to the kurbo segment of that degree.
                 assert!(PathSeg::try_from(&mine).is_ok());
+            }
+        }
+    }
+}
+
+#[cfg(feature = "lyon")]
+mod lyon_curves {
+    use crate::common::Rng;
+    use blossom::{Bezier, BezierCurve, ErrorKind, ForeignPoint};
+    use lyon_geom::{
+        point, vector, CubicBezierSegment, LineSegment, Point, QuadraticBezierSegment, Vector,
+    };
+
+    fn pt(rng: &mut Rng) -> Point<f64> {
+        point(rng.unit(), rng.unit())
+    }
+
+    #[test]
+    fn lyon_points_convert_both_ways() {
+        assert_eq!(point(1.0, 2.0).into_point(), vec![1.0, 2.0]);
+        assert_eq!(
+            Vector::<f64>::try_from_point(&[3.0, 4.0], "v").unwrap(),
+            vector(3.0, 4.0)
+        );
+        let e = Point::<f64>::try_from_point(&[1.0, 2.0, 3.0], "p").unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "p: expected 2 coordinates (a lyon_geom::Point), found 3"
+        );
+    }
+
+    #[test]
+    fn lyon_segments_round_trip() {
+        let mut rng = Rng(16);
+        let line = LineSegment {
+            from: pt(&mut rng),
+            to: pt(&mut rng),
+        };
+        let quad = QuadraticBezierSegment {
+            from: pt(&mut rng),
+            ctrl: pt(&mut rng),
+            to: pt(&mut rng),
+        };
+        let cubic = CubicBezierSegment {
+            from: pt(&mut rng),
+            ctrl1: pt(&mut rng),
+            ctrl2: pt(&mut rng),
+            to: pt(&mut rng),
+        };
+        let b = BezierCurve::from(cubic);
+        assert_eq!(b.degree(), 3);
+        assert_eq!(b.control_points()[2], vec![cubic.ctrl2.x, cubic.ctrl2.y]);
+        assert_eq!(CubicBezierSegment::try_from(&b).unwrap(), cubic);
+        assert_eq!(
+            QuadraticBezierSegment::try_from(BezierCurve::from(quad)).unwrap(),
+            quad
+        );
+        assert_eq!(
+            LineSegment::try_from(&BezierCurve::from(line)).unwrap(),
+            line
+        );
+        let fixed = Bezier::<f64, 2>::from(cubic);
+        assert_eq!(fixed.points()[3], [cubic.to.x, cubic.to.y]);
+        assert_eq!(CubicBezierSegment::try_from(&fixed).unwrap(), cubic);
+        assert_eq!(
+            QuadraticBezierSegment::try_from(Bezier::from(quad)).unwrap(),
+            quad
+        );
+        assert_eq!(LineSegment::try_from(&Bezier::from(line)).unwrap(), line);
+    }
+
+    #[test]
+    fn lyon_wrong_degree_or_dimension_is_an_error() {
+        let quadratic =
+            BezierCurve::new(vec![vec![0.0, 0.0], vec![1.0, 1.0], vec![2.0, 0.0]]).unwrap();
+        let e = CubicBezierSegment::<f64>::try_from(&quadratic).unwrap_err();
+        assert_eq!((e.path(), e.kind()), ("control_points", ErrorKind::Degree));
+        assert_eq!(
+            e.to_string(),
+            "control_points: a lyon_geom::CubicBezierSegment has degree 3 (4 control points), found degree 2"
+        );
+        let spatial = BezierCurve::new(vec![vec![0.0, 0.0, 0.0], vec![1.0, 1.0, 1.0]]).unwrap();
+        let e = LineSegment::<f64>::try_from(&spatial).unwrap_err();
+        assert_eq!(
+            (e.path(), e.kind()),
+            ("control_points[0]", ErrorKind::Dimension)
+        );
+        let e = QuadraticBezierSegment::<f64>::try_from(&Bezier::new(vec![[0.0, 0.0]; 4]).unwrap())
+            .unwrap_err();
+        assert_eq!((e.path(), e.kind()), ("points", ErrorKind::Degree));
+    }
+
+    /// lyon's own evaluation and `split_range` against the library's on random cubics: the
+    /// conversion keeps the curve, not only the numbers.
+    #[test]
+    fn lyon_and_blossom_agree_on_random_curves() {
+        let mut rng = Rng(2025);
+        for _ in 0..200 {
+            let cubic = CubicBezierSegment {
+                from: pt(&mut rng),
+                ctrl1: pt(&mut rng),
+                ctrl2: pt(&mut rng),
+                to: pt(&mut rng),
+            };
+            let ours = BezierCurve::from(cubic);
+            for k in 0..=16 {
+                let t = k as f64 / 16.0;
+                let (mine, theirs) = (ours.eval(&t), cubic.sample(t));
+                let d = (mine[0] - theirs.x).abs().max((mine[1] - theirs.y).abs());
+                assert!(d <= 1e-14, "eval at {t}: {d:e}");
+            }
+            let (a, b) = (rng.unit().abs() * 0.5, 0.5 + rng.unit().abs() * 0.5);
+            let theirs = cubic.split_range(a..b);
+            let mine = CubicBezierSegment::try_from(&ours.subsegment(a..b)).unwrap();
+            for (p, q) in [
+                (mine.from, theirs.from),
+                (mine.ctrl1, theirs.ctrl1),
+                (mine.ctrl2, theirs.ctrl2),
+                (mine.to, theirs.to),
+            ] {
+                assert!((p - q).length() <= 1e-12, "subsegment {a}..{b}");
             }
         }
     }

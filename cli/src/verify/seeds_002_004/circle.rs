@@ -156,7 +156,7 @@ fn section(
     ));
     Section::from_entries(
         title,
-        "seed 004, section 4, Example 1",
+        "inverse relations paper, section 4, Example 1",
         entries,
         vec![format!(
             "the homogeneous control points (w_i b_i, w_i) are blossom values of (1 - t^2, 2t, 1 + t^2) at alpha^({n}-i) beta^i \

@@ -20,7 +20,7 @@ use blossom::{Poly, Rational, Ring};
 use num_bigint::BigInt;
 use std::cell::Cell;
 
-const SOURCE: &str = "seed 004";
+const SOURCE: &str = "inverse relations paper";
 
 /// The symbolic parametrisation of a curve: b(x) is the symbol `b[x]`.
 fn symbolic_curve(x: &Poly) -> Vec<Poly> {

@@ -271,7 +271,7 @@ fn section() -> Section {
     let sqrt = |x: &Rational| blossom::rational_to_f64(x).sqrt();
     Section::from_entries(
         "Example 3: ln t on [1/2, 1] as a cubic, and its L2 error",
-        "seed 004, section 4, Example 3",
+        "inverse relations paper, section 4, Example 3",
         entries,
         vec![
             "ln of a rational is written exactly as a combination of ln2, ln3, ln5; the samples of (22) at 1/2, 2/3, 3/4, 5/6, 1 give \

@@ -76,7 +76,7 @@ fn polygon() -> Section {
         .collect();
     Section::from_entries(
         "Example 2: the control polygon of the degree-10 curve",
-        "seed 004, section 4, Example 2",
+        "inverse relations paper, section 4, Example 2",
         entries,
         vec!["computed from the printed b(t) by the Bernstein basis change (u^i = sum_v C(v, i)/C(n, i) B_v^n)".into()],
         Status::Unexplained,
@@ -166,7 +166,7 @@ fn reductions_section() -> Section {
     findings.insert(0, "the paper shows the three reductions in Figures 2-4 only; the values below are computed exactly (the same as `reduce` jobs of `blossom restrict` give)".into());
     Section::from_entries(
         "Example 2: reductions to degree 6 and their L2 errors",
-        "seed 004, section 4, Example 2, Figures 2-4",
+        "inverse relations paper, section 4, Example 2, Figures 2-4",
         entries,
         findings,
         Status::Unexplained,

@@ -11,7 +11,7 @@ use blossom::{
 };
 use blossom::{Poly, PowerCurve, Rational, Ring};
 
-const SOURCE: &str = "seed 002";
+const SOURCE: &str = "de Boor points paper";
 
 /// Ejemplo 1 as printed: the knots and the 8 de Boor points of a cubic.
 const EXAMPLE_1_KNOTS: &str = "0, 0, 0, 0, 1, 2, 4, 5, 6, 6, 6, 6, 6";
