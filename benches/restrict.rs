@@ -4,10 +4,16 @@
 //!
 //! Run: `cargo bench --bench restrict`, then `cargo run --release --example bench_slopes` for
 //! the log-log slopes and ratios.
+//!
+//! The group `batch` (`cargo bench -p blossom --bench restrict -- batch`): 10^5 planar cubics
+//! held as plain arrays, restricted to one interval and read back as plain arrays, through a
+//! [`Batch`] (pack, restrict, unpack) against [`RestrictionMap::restrict_arrays`] (the
+//! caller's layout), the three steps of the round trip apart, and the round trip with every
+//! buffer reused (`Batch::copy_from_arrays`, `Batch::copy_to_arrays`).
 
 use blossom::{
-    restrict_power_curve, restrict_power_surface, restrict_power_surface_to_triangle, Method,
-    PowerCurve, PowerSurface,
+    restrict_power_curve, restrict_power_surface, restrict_power_surface_to_triangle, Batch,
+    Method, PowerCurve, PowerSurface, RestrictionMap,
 };
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::time::Duration;
@@ -95,12 +101,65 @@ fn triangles(c: &mut Criterion) {
     group.finish();
 }
 
+/// Planar cubics for the group `batch`.
+const CUBICS: usize = 100_000;
+
+fn batch(c: &mut Criterion) {
+    let input: Vec<[[f64; 2]; 4]> = (0..CUBICS)
+        .map(|k| std::array::from_fn(|p| [value(8 * k + 2 * p), value(8 * k + 2 * p + 1)]))
+        .collect();
+    let map = RestrictionMap::curve(3, 0.25, 0.75).expect("a finite interval");
+    let mut out = vec![[[0.0; 2]; 4]; CUBICS];
+    let packed = Batch::from_arrays(&input).expect("fits");
+    let mut restricted = Batch::zeros(4, 2, CUBICS).expect("fits");
+    let mut group = c.benchmark_group("batch");
+    group.bench_function("round_trip", |bench| {
+        bench.iter(|| {
+            let batch = Batch::from_arrays(black_box(&input)).expect("fits");
+            let mut restricted = Batch::zeros(4, 2, CUBICS).expect("fits");
+            batch.restrict_into(&map, &mut restricted).expect("fits");
+            restricted.to_arrays::<4, 2>().expect("fits")
+        })
+    });
+    group.bench_function("restrict_arrays", |bench| {
+        bench.iter(|| {
+            map.restrict_arrays(black_box(&input), &mut out)
+                .expect("fits")
+        })
+    });
+    group.bench_function("pack", |bench| {
+        bench.iter(|| Batch::from_arrays(black_box(&input)).expect("fits"))
+    });
+    group.bench_function("restrict_into", |bench| {
+        bench.iter(|| packed.restrict_into(&map, &mut restricted).expect("fits"))
+    });
+    group.bench_function("unpack", |bench| {
+        bench.iter(|| black_box(&packed).to_arrays::<4, 2>().expect("fits"))
+    });
+    // The same round trip with every buffer reused from call to call.
+    let mut reused = Batch::zeros(4, 2, 0).expect("fits");
+    group.bench_function("round_trip_reused", |bench| {
+        bench.iter(|| {
+            reused.copy_from_arrays(black_box(&input)).expect("fits");
+            reused.restrict_into(&map, &mut restricted).expect("fits");
+            restricted.copy_to_arrays(&mut out).expect("fits")
+        })
+    });
+    group.bench_function("pack_reused", |bench| {
+        bench.iter(|| reused.copy_from_arrays(black_box(&input)).expect("fits"))
+    });
+    group.bench_function("unpack_reused", |bench| {
+        bench.iter(|| black_box(&packed).copy_to_arrays(&mut out).expect("fits"))
+    });
+    group.finish();
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default()
         .warm_up_time(Duration::from_millis(300))
         .measurement_time(Duration::from_secs(1))
         .sample_size(20);
-    targets = curves, tensors, triangles
+    targets = curves, tensors, triangles, batch
 }
 criterion_main!(benches);

@@ -27,13 +27,18 @@
 //! The modules are private; everything public is re-exported below, one path per item. Each
 //! layer imports only the layers above it in this list:
 //!
-//! 1. **numbers** (`num/`): [`Ring`], [`Field`], [`Rational`], [`Poly`], [`engine::binomial`];
+//! 1. **numbers** (`num/`): [`Ring`], [`Field`], [`Rational`] (read from text exactly by
+//!    [`parse_rational`]), [`Poly`], [`BoundedF64`], [`engine::binomial`];
 //! 2. **shapes** (`shape/`): [`PowerCurve`], [`PowerSurface`], [`BezierCurve`], [`TensorPatch`],
 //!    [`TriangularPatch`], their evaluation (Horner, de Casteljau) and the changes of basis;
 //! 3. **restriction** (`restrict/`): one file per algorithm, the dispatch on [`Method`];
 //! 4. **applications** (`applications/`): Bézier input, batches, B-splines, rational forms,
 //!    degree change, derivatives;
-//! 5. **certified zeros and intersections** (`intersect/`): [`bezier_zeros`] (every zero of
+//! 5. **certified zeros and intersections** (`intersect/`), methods of the curve types for
+//!    `f64` and [`Rational`] alike ([`ExactInput`]): [`BezierCurve::intersect`],
+//!    [`BezierCurve::self_intersections`], [`BezierCurve::bounding_box`],
+//!    [`BezierCurve::nearest_point`], [`BezierCurve::zeros`] (and the same on [`Bezier`]);
+//!    the free functions [`bezier_zeros`] (every zero of
 //!    a Bézier function with its multiplicity), [`AlgebraicReal`] (exact comparison, correctly
 //!    rounded `to_f64`), [`intersect_curves`] (isolated points with an exact tangency flag,
 //!    overlaps) and [`self_intersections`], all exact: Descartes' rule on Bernstein
@@ -123,8 +128,10 @@ mod interop;
 
 // Numbers.
 pub use num::bounded::BoundedF64;
+pub use num::exact::ExactInput;
 pub use num::limits::MAX_ENTRIES;
 pub use num::linalg::Field;
+pub use num::parse::{parse_f64, parse_rational, MAX_DECIMAL_EXPONENT};
 pub use num::poly::Poly;
 pub use num::ring::{rational_to_f64, Rational, Ring};
 

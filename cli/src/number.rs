@@ -15,6 +15,9 @@
 //! digits   = one or more of 0-9 (leading zeros allowed)
 //! ```
 //!
+//! The grammar and both readers are the library's ([`blossom::parse_rational`],
+//! [`blossom::parse_f64`]); this module adds the JSON layer.
+//!
 //! Under exact arithmetic every such number is read exactly as a [`Rational`]; the decimal
 //! exponent is capped at [`MAX_EXPONENT`] in absolute value so that `"1e999999999"` is a clear
 //! error instead of an attempt to build a number with a billion digits (digits that are all
@@ -39,16 +42,14 @@
 //!
 //! Error messages here name no field: the caller prefixes the path of the offending value.
 
-use blossom::rational_to_f64;
 use blossom::{BoundedF64, Rational};
-use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 use serde_json::Value;
 
-/// The largest decimal exponent (in absolute value) that exact reading accepts: `1e100000` has
-/// 100001 digits, about 41 KB as a big integer.
-pub const MAX_EXPONENT: u64 = 100_000;
+/// The largest decimal exponent (in absolute value) that exact reading accepts: the library's
+/// [`blossom::MAX_DECIMAL_EXPONENT`].
+pub const MAX_EXPONENT: u64 = blossom::MAX_DECIMAL_EXPONENT;
 
 /// How many characters of an offending text an error message quotes.
 const QUOTE_LIMIT: usize = 40;
@@ -185,26 +186,6 @@ pub fn take_error_bound(answer: &mut Value) -> Option<f64> {
     largest
 }
 
-/// The shape of a number written as text, after checking the grammar, with its pieces.
-#[derive(Debug, PartialEq, Eq)]
-enum Syntax<'a> {
-    /// `[sign] digits "/" digits`.
-    Fraction {
-        negative: bool,
-        numerator: &'a str,
-        denominator: &'a str,
-    },
-    /// `[sign] int [. frac] [e exp]`: the value is `int.frac * 10^exp` (either digit string
-    /// may be empty, not both).
-    Decimal {
-        negative: bool,
-        int: &'a str,
-        frac: &'a str,
-        exponent_negative: bool,
-        exponent: &'a str,
-    },
-}
-
 /// The JSON type of a value, for messages.
 pub fn json_type(value: &Value) -> &'static str {
     match value {
@@ -229,103 +210,8 @@ fn quote(text: &str) -> String {
     serde_json::to_string(&shown).unwrap_or_else(|_| String::from("\"?\""))
 }
 
-/// Splits off a leading `+` or `-`.
-fn split_sign(text: &str) -> (bool, &str) {
-    match text.as_bytes().first() {
-        Some(b'-') => (true, &text[1..]),
-        Some(b'+') => (false, &text[1..]),
-        _ => (false, text),
-    }
-}
-
-fn all_digits(s: &str) -> bool {
-    s.bytes().all(|b| b.is_ascii_digit())
-}
-
-/// The message for a text that is not a number of the grammar.
-fn unparsable(text: &str) -> String {
-    if text.is_empty() {
-        return String::from("expected a number, found an empty string");
-    }
-    let (_, body) = split_sign(text);
-    let lower = body.to_ascii_lowercase();
-    if ["inf", "infinity", "nan"].contains(&lower.as_str()) {
-        return format!("{} is not a finite number", quote(text));
-    }
-    format!(
-        "cannot read {} as a number (expected an integer such as \"-7\", a fraction such as \
-         \"3/4\" or a decimal such as \"0.125\")",
-        quote(text)
-    )
-}
-
-/// Checks `text` against the grammar of the module documentation.
-fn scan(text: &str) -> Result<Syntax<'_>, String> {
-    let (negative, body) = split_sign(text);
-    if let Some((numerator, denominator)) = body.split_once('/') {
-        let ok = !numerator.is_empty()
-            && !denominator.is_empty()
-            && all_digits(numerator)
-            && all_digits(denominator);
-        return if ok {
-            Ok(Syntax::Fraction {
-                negative,
-                numerator,
-                denominator,
-            })
-        } else {
-            Err(unparsable(text))
-        };
-    }
-    let (mantissa, exponent_part) = match body.find(['e', 'E']) {
-        Some(k) => (&body[..k], Some(&body[k + 1..])),
-        None => (body, None),
-    };
-    let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
-    let mantissa_ok = all_digits(int) && all_digits(frac) && !(int.is_empty() && frac.is_empty());
-    let (exponent_negative, exponent) = match exponent_part {
-        Some(e) => split_sign(e),
-        None => (false, ""),
-    };
-    let exponent_ok = match exponent_part {
-        Some(_) => !exponent.is_empty() && all_digits(exponent),
-        None => true,
-    };
-    if mantissa_ok && exponent_ok {
-        Ok(Syntax::Decimal {
-            negative,
-            int,
-            frac,
-            exponent_negative,
-            exponent,
-        })
-    } else {
-        Err(unparsable(text))
-    }
-}
-
-/// A non-empty string of ASCII digits as a big integer.
-fn digits_to_bigint(digits: &str) -> BigInt {
-    if digits.is_empty() {
-        return BigInt::zero();
-    }
-    // The digits were checked by `scan`, so parsing cannot fail; zero is a safe fallback.
-    digits.parse::<BigInt>().unwrap_or_default()
-}
-
-/// The value of an exponent's digits, or `None` when it exceeds [`MAX_EXPONENT`].
-fn small_exponent(digits: &str) -> Option<u64> {
-    let mut value: u64 = 0;
-    for b in digits.bytes() {
-        value = value.checked_mul(10)?.checked_add(u64::from(b - b'0'))?;
-        if value > MAX_EXPONENT {
-            return None;
-        }
-    }
-    Some(value)
-}
-
-/// Reads a number written as text (see the module documentation) exactly.
+/// Reads a number written as text (see the module documentation) exactly: the library's
+/// reader, [`blossom::parse_rational`], with its message as the error.
 ///
 /// ```
 /// use blossom_cli::number::{format_rational, parse_rational};
@@ -334,79 +220,11 @@ fn small_exponent(digits: &str) -> Option<u64> {
 /// assert!(parse_rational("1/0").is_err());
 /// ```
 pub fn parse_rational(text: &str) -> Result<Rational, String> {
-    match scan(text)? {
-        Syntax::Fraction {
-            negative,
-            numerator,
-            denominator,
-        } => {
-            let den = digits_to_bigint(denominator);
-            if den.is_zero() {
-                return Err(format!("zero denominator in {}", quote(text)));
-            }
-            let num = digits_to_bigint(numerator);
-            let q = Rational::new(num, den);
-            Ok(if negative { -q } else { q })
-        }
-        Syntax::Decimal {
-            negative,
-            int,
-            frac,
-            exponent_negative,
-            exponent,
-        } => {
-            if int.bytes().chain(frac.bytes()).all(|d| d == b'0') {
-                // Zero times any power of ten, however large the exponent.
-                return Ok(Rational::zero());
-            }
-            let Some(e) = small_exponent(exponent) else {
-                return Err(format!(
-                    "the exponent of {} is too large (at most {MAX_EXPONENT} in absolute value)",
-                    quote(text)
-                ));
-            };
-            // value = (int frac) * 10^(±e - frac.len())
-            let mut digits = String::with_capacity(int.len() + frac.len());
-            digits.push_str(int);
-            digits.push_str(frac);
-            let mantissa = digits_to_bigint(&digits);
-            let frac_len = frac.len() as u64;
-            let (scale_up, power) = if exponent_negative {
-                (false, e + frac_len)
-            } else if e >= frac_len {
-                (true, e - frac_len)
-            } else {
-                (false, frac_len - e)
-            };
-            let ten_power = power_of_ten(power);
-            let q = if scale_up {
-                Rational::from_integer(mantissa * ten_power)
-            } else {
-                Rational::new(mantissa, ten_power)
-            };
-            Ok(if negative { -q } else { q })
-        }
-    }
+    blossom::parse_rational(text).map_err(|e| e.message)
 }
 
-/// `10^k` as a big integer.
-fn power_of_ten(k: u64) -> BigInt {
-    let mut result = BigInt::one();
-    let mut base = BigInt::from(10u32);
-    let mut k = k;
-    while k > 0 {
-        if k & 1 == 1 {
-            result *= &base;
-        }
-        k >>= 1;
-        if k > 0 {
-            base = &base * &base;
-        }
-    }
-    result
-}
-
-/// Reads a number written as text (see the module documentation) as the nearest `f64`.
+/// Reads a number written as text (see the module documentation) as the nearest `f64`: the
+/// library's reader, [`blossom::parse_f64`], with its message as the error.
 ///
 /// ```
 /// use blossom_cli::number::parse_f64;
@@ -415,17 +233,7 @@ fn power_of_ten(k: u64) -> BigInt {
 /// assert!(parse_f64("1e400").is_err());
 /// ```
 pub fn parse_f64(text: &str) -> Result<f64, String> {
-    let value = match scan(text)? {
-        Syntax::Fraction { .. } => rational_to_f64(&parse_rational(text)?),
-        // The grammar is a subset of the standard parser's, which rounds correctly and copes
-        // with any exponent (huge ones overflow to infinity, caught below).
-        Syntax::Decimal { .. } => text.parse::<f64>().map_err(|_| unparsable(text))?,
-    };
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(format!("{} is out of the range of f64", quote(text)))
-    }
+    blossom::parse_f64(text).map_err(|e| e.message)
 }
 
 /// The text of a JSON number (its exact spelling, kept by `arbitrary_precision`).
@@ -522,6 +330,7 @@ pub fn f64_to_json(x: f64) -> Result<Value, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use num_bigint::BigInt;
     use serde_json::json;
 
     fn q(n: i64, d: i64) -> Rational {

@@ -1,25 +1,7 @@
 //! Real algebraic numbers: a square-free primitive integer polynomial f with an isolating
 //! interval, and exact operations on them (refinement, comparison, sign of a polynomial at
-//! the number, correctly rounded conversion to `f64`).
-//!
-//! Invariant of [`AlgebraicReal`]: either the number is the rational r (then `exact` is r, the
-//! polynomial is the primitive linear q x - p of r = p / q, and the interval is [r, r]), or it
-//! is irrational, lo < hi, f(lo) and f(hi) are non-zero with opposite signs and f has exactly
-//! one root in (lo, hi). Rationality is always decided exactly when a number is built:
-//! * a factor of degree 1 gives a rational root;
-//! * for degree >= 2, a root p/q in lowest terms has q | lc(f) (Gauss), and two distinct
-//!   rationals with denominators <= L = |lc(f)| differ by at least 1/L^2. So once the interval
-//!   is shorter than 1/L^2 the only possible rational root is the rational of least
-//!   denominator in it (found by continued fractions), and one exact evaluation decides.
-//!   Before that, a cheap sufficient test: a rational root reduces to a root of f modulo every
-//!   prime l not dividing lc(f), so f without a root modulo some such small prime has no
-//!   rational root at all.
-//!
-//! Refinement is bisection with exact sign evaluation (homogeneous Horner at dyadic points).
-//! `to_f64` is correctly rounded (ties to even): refine until both ends round to the same
-//! double; when exactly one rounding boundary m (the midpoint of two adjacent doubles) lies
-//! between the ends, the sign of f at m tells the side (m itself would be a rational root,
-//! already detected).
+//! the number, correctly rounded conversion to `f64`). The invariant and the guarantees are
+//! documented on [`AlgebraicReal`], where rustdoc shows them.
 
 use super::bivariate::{resultant_t, BiPoly};
 use super::isolate::{bernstein_on, isolate, sign_changes, Isolated};
@@ -30,7 +12,59 @@ use num_integer::Integer;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use std::cmp::Ordering;
 
-/// A real algebraic number (see the module docs for the invariant).
+/// A real algebraic number, **exact**: a square-free primitive integer polynomial f with an
+/// isolating interval [lo, hi] holding exactly one of its roots (or the rational number
+/// itself). The parameters, values and coordinates of the certified answers (intersections,
+/// zeros, boxes, nearest points) are of this type.
+///
+/// Guarantees: [`compare`](Self::compare), [`equals`](Self::equals),
+/// [`cmp_rational`](Self::cmp_rational) and [`sign_of`](Self::sign_of) are decided exactly;
+/// [`to_f64`](Self::to_f64) is correctly rounded (ties to even), [`to_f64_down`](Self::to_f64_down)
+/// and [`to_f64_up`](Self::to_f64_up) round exactly towards -∞ and +∞; a rational number is
+/// always known as one ([`exact`](Self::exact)). `Display` writes a rational exactly (`1/2`)
+/// and an irrational number as its correctly rounded double followed by its definition,
+/// `0.7071067811865476 (root of 2x^2 - 1 in [lo, hi])`; `{:#}` writes the double alone.
+///
+/// Limits: none but time and memory: comparing two numbers that are equal costs a gcd of
+/// their polynomials; the cost of refinement grows with the degree and the size of the
+/// coefficients.
+///
+/// ```
+/// use blossom::{bezier_zeros, AlgebraicReal, Rational};
+/// let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
+/// // 1/sqrt(2), the zero of 2t^2 - 1 in [0, 1] (Bernstein coefficients -1, -1, 1).
+/// let root = bezier_zeros(&[q(-1, 1), q(-1, 1), q(1, 1)])?.zeros[0].t.clone();
+/// assert_eq!(root.exact(), None);
+/// assert_eq!(root.polynomial(), [(-1).into(), 0.into(), 2.into()]);
+/// assert_eq!(root.to_f64(), 0.5f64.sqrt());
+/// assert!(root.to_f64_down() < root.to_f64_up());
+/// assert!(root.compare(&AlgebraicReal::from_rational(q(7, 10))).is_gt());
+/// assert!(root.cmp_rational(&q(71, 100)).is_lt());
+/// assert!(format!("{root}").starts_with("0.7071067811865476 (root of 2x^2 - 1 in ["));
+/// # Ok::<(), blossom::Error>(())
+/// ```
+///
+/// # Method
+///
+/// Invariant: either the number is the rational r (then `exact` is r, the
+/// polynomial is the primitive linear q x - p of r = p / q, and the interval is [r, r]), or it
+/// is irrational, lo < hi, f(lo) and f(hi) are non-zero with opposite signs and f has exactly
+/// one root in (lo, hi). Rationality is always decided exactly when a number is built:
+/// * a factor of degree 1 gives a rational root;
+/// * for degree >= 2, a root p/q in lowest terms has q | lc(f) (Gauss), and two distinct
+///   rationals with denominators <= L = |lc(f)| differ by at least 1/L^2. So once the interval
+///   is shorter than 1/L^2 the only possible rational root is the rational of least
+///   denominator in it (found by continued fractions), and one exact evaluation decides.
+///   Before that, a cheap sufficient test: a rational root reduces to a root of f modulo every
+///   prime l not dividing lc(f), so f without a root modulo some such small prime has no
+///   rational root at all.
+///
+/// Refinement is quadratic interval refinement falling back to bisection, every decision an
+/// exact sign (homogeneous Horner at rational points).
+/// `to_f64` is correctly rounded (ties to even): refine until both ends round to the same
+/// double; when exactly one rounding boundary m (the midpoint of two adjacent doubles) lies
+/// between the ends, the sign of f at m tells the side (m itself would be a rational root,
+/// already detected).
 #[derive(Clone, Debug)]
 pub struct AlgebraicReal {
     poly: ZPoly,
@@ -95,7 +129,7 @@ impl AlgebraicReal {
 
     /// The rational of least denominator in the isolating interval, when it is a root of the
     /// polynomial (the only rational root the interval can hold once it is shorter than
-    /// 1 / lc^2; see the module docs).
+    /// 1 / lc^2; see the type's docs).
     fn simplest_root(&self) -> Option<Rational> {
         let c = simplest_between(&self.lo, &self.hi);
         (sign_at(&self.poly, &c) == Ordering::Equal).then_some(c)
@@ -131,7 +165,7 @@ impl AlgebraicReal {
     /// roots of `f` from scratch). Proved: lo == hi is a root; or f(lo), f(hi) are non-zero
     /// and the Bernstein coefficients of f over [lo, hi] have exactly one sign change
     /// (Descartes' rule: exactly one root, counted with multiplicity, in (lo, hi)).
-    /// Rationality is settled only by the cheap tests of the module docs (degree 1, no root
+    /// Rationality is settled only by the cheap tests of the type's docs (degree 1, no root
     /// modulo a small prime, the simplest rational in the interval is a root): when they do
     /// not decide, the answer is `None` rather than a long refinement.
     pub(crate) fn from_double_enclosure(f: &[BigInt], lo: f64, hi: f64) -> Option<Self> {
@@ -291,7 +325,7 @@ impl AlgebraicReal {
         }
     }
 
-    /// Decides whether the (irrational-so-far) number is rational; see the module docs.
+    /// Decides whether the (irrational-so-far) number is rational; see the type's docs.
     fn settle_rationality(&mut self) {
         let d = degree(&self.poly).unwrap_or(0);
         if d == 1 {
@@ -408,7 +442,18 @@ impl AlgebraicReal {
         }
     }
 
-    /// Exact comparison (refines copies until the intervals are disjoint).
+    /// Exact comparison (refines copies until the intervals are disjoint; two equal numbers
+    /// are recognised by the gcd of their polynomials, not by refinement).
+    ///
+    /// ```
+    /// use blossom::{bezier_zeros, Rational};
+    /// let q = |n: i64| Rational::from_integer(n.into());
+    /// // The zeros of 2t^2 - 1 and of 4t^2 - 2 (Bernstein coefficients), both 1/sqrt(2).
+    /// let a = bezier_zeros(&[q(-1), q(-1), q(1)])?.zeros[0].t.clone();
+    /// let b = bezier_zeros(&[q(-2), q(-2), q(2)])?.zeros[0].t.clone();
+    /// assert!(a.compare(&b).is_eq() && a.equals(&b));
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
     pub fn compare(&self, other: &Self) -> Ordering {
         if let Some(b) = &other.exact {
             return self.cmp_rational(b);
@@ -438,7 +483,15 @@ impl AlgebraicReal {
         }
     }
 
-    /// The double nearest to the number (ties to even), exactly.
+    /// The double nearest to the number (ties to even), **correctly rounded**: the interval
+    /// is refined until both ends round alike, or the one rounding boundary between them is
+    /// decided by an exact sign.
+    ///
+    /// ```
+    /// use blossom::{AlgebraicReal, Rational};
+    /// let third = AlgebraicReal::from_rational(Rational::new(1.into(), 3.into()));
+    /// assert_eq!(third.to_f64(), 1.0 / 3.0);
+    /// ```
     pub fn to_f64(&self) -> f64 {
         let mut a = self.clone();
         loop {
@@ -626,7 +679,7 @@ pub fn simplest_between(x: &Rational, y: &Rational) -> Rational {
 }
 
 /// True when f (non-zero) provably has no rational root: some prime l < 130 not dividing its
-/// leading coefficient leaves it without a root modulo l (see the module docs).
+/// leading coefficient leaves it without a root modulo l (see [`AlgebraicReal`]'s docs).
 pub(crate) fn has_no_rational_root(f: &[BigInt]) -> bool {
     match f.iter().rposition(|c| !c.is_zero()) {
         Some(d) => no_root_modulo_small_prime(&f[..=d], &f[d]),

@@ -90,7 +90,10 @@ pub fn swap(a: &BiPoly) -> BiPoly {
         .collect()
 }
 
-/// Res_t(A, B) as a polynomial in s (see the module docs). Zero when one of A, B is zero.
+/// Res_t(A, B), the Sylvester resultant in t, as a polynomial in s, exactly: evaluated at
+/// s = 0..D modulo word-size primes by remainder sequences and interpolated, the integers
+/// recovered by Chinese remaindering (D and the number of primes from proven bounds). Zero
+/// when one of A, B is zero.
 pub fn resultant_t(a: &BiPoly, b: &BiPoly) -> ZPoly {
     let (Some(da), Some(db)) = (degree_t(a), degree_t(b)) else {
         return Vec::new();
@@ -98,8 +101,10 @@ pub fn resultant_t(a: &BiPoly, b: &BiPoly) -> ZPoly {
     subresultant(a, b, da, db, 0).swap_remove(0)
 }
 
-/// The first subresultant (S_11(s), S_10(s)) of A and B in t, or `None` when one of them
-/// has degree 0 in t (see the module docs).
+/// The first subresultant S_1 = S_11(s) t + S_10(s) of A and B in t, as (S_11, S_10), by the
+/// same multi-modular method as [`resultant_t`], or `None` when one of them has degree 0 in
+/// t. At a root s0 of the resultant, gcd_t(A(s0, t), B(s0, t)) has degree 1 exactly when
+/// S_11(s0) != 0, and is then S_1(s0, t).
 pub fn subresultant_1(a: &BiPoly, b: &BiPoly) -> Option<(ZPoly, ZPoly)> {
     let (da, db) = (degree_t(a)?, degree_t(b)?);
     if da == 0 || db == 0 {
@@ -309,7 +314,9 @@ fn weighted_degree(a: &BiPoly, ws: usize, wt: usize) -> usize {
     w
 }
 
-/// A bound on deg_s of every S_ji (see the module docs).
+/// A bound on deg_s of every S_ji: with weights w_s for s and w_t for t, the weighted degree
+/// of each row's entries summed over the rows, the least over the weights (1, 0), (1, 1) and
+/// (max deg_t, max deg_s).
 fn degree_bound(a: &BiPoly, b: &BiPoly, p: usize, q: usize, j: usize) -> usize {
     let (rows_a, rows_b) = (q - j, p - j);
     // The chosen columns: powers j + 1 .. p + q - j - 1 and the variable one (>= 0).
@@ -444,7 +451,8 @@ mod tests {
         p
     }
 
-    /// Res_t(A, B) as a polynomial in s (see the module docs). Zero when one of A, B is zero.
+    /// Res_t(A, B) as a polynomial in s, by exact determinants (the independent oracle of
+    /// [`resultant_t`]). Zero when one of A, B is zero.
     fn resultant_oracle(a: &BiPoly, b: &BiPoly) -> ZPoly {
         let (Some(da), Some(db)) = (degree_t(a), degree_t(b)) else {
             return Vec::new();
@@ -463,8 +471,8 @@ mod tests {
         interpolate(&values)
     }
 
-    /// The first subresultant (S_11(s), S_10(s)) of A and B in t, or `None` when one of them
-    /// has degree 0 in t (see the module docs).
+    /// The first subresultant (S_11(s), S_10(s)) of A and B in t by exact determinants (the
+    /// independent oracle of [`subresultant_1`]), or `None` when one of them has degree 0 in t.
     fn subresultant_1_oracle(a: &BiPoly, b: &BiPoly) -> Option<(ZPoly, ZPoly)> {
         let (da, db) = (degree_t(a)?, degree_t(b)?);
         if da == 0 || db == 0 {

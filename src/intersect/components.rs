@@ -57,7 +57,9 @@ fn true_degree(x: &[Rational], y: &[Rational]) -> usize {
     deg_q(x).unwrap_or(0).max(deg_q(y).unwrap_or(0))
 }
 
-/// P = R(phi) with R proper (see the module docs); P must not be a single point.
+/// P = R(phi) with R proper and phi monic with phi(0) = 0 (Lüroth: phi is the right
+/// component of largest degree k, the approximate k-th root of a coordinate whose h-adic
+/// expansions of x and y have constant digits); P must not be a single point.
 pub(crate) fn decompose(x: &[Rational], y: &[Rational]) -> Decomposed {
     let n = true_degree(x, y);
     let f = if deg_q(x) == Some(n) { x } else { y };
@@ -192,8 +194,9 @@ fn unexplained() -> Error {
     )
 }
 
-/// The answer for P = R1(phi) and Q = R2(psi) sharing a component (see the module docs):
-/// isolated solutions (tangential flags decided) and overlaps, all pairs in [0, 1]^2.
+/// The answer for P = R1(phi) and Q = R2(psi) sharing a component, with R2(w) =
+/// R1(alpha w + beta) so that P = R(f), Q = R(g): overlaps from the monotone pieces of f and
+/// g whose images share a segment, touching points, and R's double points; isolated solutions (tangential flags decided) and overlaps, all pairs in [0, 1]^2.
 pub(crate) fn common_component(
     p: (&[Rational], &[Rational]),
     q: (&[Rational], &[Rational]),

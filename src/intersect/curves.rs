@@ -1,42 +1,15 @@
 //! Intersections of two 2-D polynomial Bézier curves P (degree n) and Q (degree m) over
-//! [0, 1], and of one curve with itself, exactly.
+//! [0, 1], and of one curve with itself, exactly: the mathematics, the guarantee and the
+//! limits are documented on [`Intersections`], where rustdoc shows them.
 //!
-//! **Isolated points.** With the power forms of the control points (the library's
-//! [`bernstein_to_power`]), the common denominators of each coordinate cleared,
-//! A(s, t) = P_x(s) - Q_x(t) and B(s, t) = P_y(s) - Q_y(t) are integer polynomials with
-//! constant leading coefficients in s and in t, and their common zeros in [0, 1]^2 are the
-//! intersections. `solve` finds them through the resultants Res_t and Res_s and first
-//! subresultants; a pair is tangential exactly when its intersection multiplicity exceeds one,
-//! i.e. when the Jacobian det d(A, B)/d(s, t) = -cross(P'(s), Q'(t)) vanishes (a zero
-//! derivative included). The common point is P(s) exactly (rounded) when s or t is rational,
-//! else each coordinate P_x(s), P_y(s) is rounded correctly by refining s until the interval
-//! value of the coordinate has one rounding (a rounding boundary in it is decided by the exact
-//! sign of P_x - m at s).
-//!
-//! **Overlaps.** Res_t(A, B) vanishes identically exactly when A and B share a factor, i.e.
-//! the curves share a component. Then both are decomposed as P = R(phi), Q = R(g) with R
-//! proper and the answer is decided exactly by `components` (overlaps between the monotone
-//! pieces of phi and g, cut at turning points that may be irrational algebraic numbers,
-//! touching points, and R's own double points): curves on one line, reparametrised curves
-//! such as Q(t) = P(t^2), and curves that retrace themselves are all answered.
-//!
-//! **Single points.** A curve whose control points are all one point c is accepted. Every s
-//! then pairs with each t where the other curve passes through c (the roots in [0, 1] of
-//! gcd(Q_x - c_x, Q_y - c_y)); these pairs are not isolated, so each is reported as an
-//! overlap whose range on the single-point curve is all of [0, 1] and whose range on the
-//! other is the one value (t0 = t1): P maps [0, 1] onto the same set, {c}, as Q maps
-//! [t0, t0]. Two single points give one overlap [0, 1] x [0, 1] when equal, else nothing. A
-//! single point with itself gives one overlap in the form the spec gives a curve that
-//! retraces itself (t0 > t1, s1 <= t1): s = [0, 1/2], t = [1, 1/2], the two halves of the
-//! curve tracing the same set; every pair s < t is a double point and none is listed apart.
-//!
-//! **Self-intersection.** D(s, t) = (P(s) - P(t)) / (s - t) (exact division: the divided
-//! differences of the power coefficients, sum_k p_k sum_(i + j = k - 1) s^i t^j) vanishes off
-//! the diagonal exactly where P(s) = P(t); pairs s < t are kept (s = t only at cusps).
-//! A closed curve gives (0, 1). The Jacobian of D at a solution is -cross(P'(s), P'(t)) /
-//! (s - t)^2, so the tangency rule is the same. A curve that retraces itself (D has a
-//! factor of its own, P = R(phi) with deg phi > 1) gives overlaps with t0 > t1, s1 <= t1,
-//! one per pair of monotone pieces of phi whose images overlap (see `components`).
+//! The operations are methods of the curve types ([`BezierCurve::intersect`](crate::BezierCurve::intersect),
+//! [`BezierCurve::self_intersections`](crate::BezierCurve::self_intersections), and the same on [`crate::Bezier`]`<T, 2>`), for `f64`
+//! and [`Rational`] alike. The free functions stay where they add something:
+//! [`intersect_curves`] and [`self_intersections`] take the control points as slices held
+//! anywhere (no curve to build; the `blossom` binary's path), and name their arguments `p`,
+//! `q`, `curve` in errors; [`intersect_curves_f64`] and [`self_intersections_f64`] are the
+//! same for slices of doubles. One implementation ([`intersect_named`],
+//! [`self_intersections_named`]) answers all of them.
 
 use super::algebraic::{
     exact_f64, over_common_denominator, round_polynomial_at, upoly_eval_q, AlgebraicReal,
@@ -47,8 +20,9 @@ use super::components::{common_component, retracing};
 use super::filter::certified_crossings_f64;
 use super::solve::{solve, Solution};
 use super::upoly::{self, from_rationals, square_free_part};
-use super::zeros::{rationals_of, roots_with_multiplicity};
+use super::zeros::roots_with_multiplicity;
 use crate::error::{Error, ErrorKind, Result};
+use crate::num::exact::exact_coordinates;
 use crate::num::ring::{rational_to_f64, Rational};
 use crate::shape::basis::bernstein_to_power;
 use num_bigint::BigInt;
@@ -56,7 +30,9 @@ use num_integer::Integer;
 use num_traits::{One, Zero};
 use std::cmp::Ordering;
 
-/// One isolated intersection P(s) = Q(t).
+/// One isolated intersection P(s) = Q(t), certified (see [`Intersections`]): the exact
+/// parameters, the exact tangency flag, the correctly rounded point. `Display` writes
+/// `s = 1/2, t = ..., point = (x, y)`, then `, tangent` for a tangency.
 #[derive(Clone, Debug)]
 pub struct IntersectionPoint {
     /// The parameter on the first curve.
@@ -69,8 +45,10 @@ pub struct IntersectionPoint {
     pub point: [f64; 2],
 }
 
-/// One maximal common stretch: P over `[s[0], s[1]]` (`s[0] < s[1]`) traces what Q traces
-/// between `t[0]` and `t[1]`, with `P(s[0]) = Q(t[0])` and `P(s[1]) = Q(t[1])`.
+/// One maximal common stretch, decided exactly (see [`Intersections`]): P over
+/// `[s[0], s[1]]` (`s[0] < s[1]`) traces what Q traces between `t[0]` and `t[1]`, with
+/// `P(s[0]) = Q(t[0])` and `P(s[1]) = Q(t[1])`; the ends are exact. `Display` writes
+/// `s = [s0, s1], t = [t0, t1]`.
 #[derive(Clone, Debug)]
 pub struct Overlap {
     /// The ends on the first curve, increasing.
@@ -79,7 +57,98 @@ pub struct Overlap {
     pub t: [AlgebraicReal; 2],
 }
 
-/// Every intersection of two curves (or of a curve with itself).
+/// Every intersection of two planar polynomial Bézier curves P (degree n) and Q (degree m)
+/// over [0, 1], or of one curve with itself: the answer of [`BezierCurve::intersect`](crate::BezierCurve::intersect),
+/// [`BezierCurve::self_intersections`](crate::BezierCurve::self_intersections) (and the same methods of [`crate::Bezier`]`<T, 2>`),
+/// [`intersect_curves`] and [`self_intersections`].
+///
+/// # Guarantee
+///
+/// **Certified**: every intersection is listed, once, and nothing else. Each parameter is an
+/// exact [`AlgebraicReal`] (rational, or a root of an integer polynomial with an isolating
+/// interval), the tangency flag is decided exactly, each common point is correctly rounded.
+/// Overlaps are decided exactly (a common component of the two curves), never by a distance
+/// tolerance. Doubles are read exactly (every finite double is a rational): the answer is
+/// the exact answer for the curves with those control points.
+///
+/// # The f64 sub-curve trap
+///
+/// A sub-curve computed in `f64` at a parameter that is not dyadic is **another curve**: its
+/// control points are rounded, so it is not a piece of the original, and the certified answer
+/// correctly lists no overlap with the original (at most isolated crossings). To find the
+/// overlap, compute the sub-curve exactly, in [`Rational`], and intersect exactly:
+///
+/// ```
+/// use blossom::{BezierCurve, Rational};
+/// let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
+/// let points = [[0, 0], [1, 2], [3, 3], [4, 0]];
+/// let c = BezierCurve::new(points.iter().map(|p| vec![p[0] as f64, p[1] as f64]).collect())?;
+/// // In f64 the piece over [1/3, 2/3] has rounded control points: no overlap with `c`.
+/// let rounded_piece = c.subsegment(1.0 / 3.0..2.0 / 3.0);
+/// assert!(c.intersect(&rounded_piece)?.overlaps.is_empty());
+/// // In exact arithmetic it is the curve itself over [1/3, 2/3]: one overlap.
+/// let exact = BezierCurve::new(points.iter().map(|p| vec![q(p[0], 1), q(p[1], 1)]).collect())?;
+/// let piece = exact.subsegment(q(1, 3)..q(2, 3));
+/// let x = exact.intersect(&piece)?;
+/// assert_eq!(x.overlaps.len(), 1);
+/// assert_eq!(x.overlaps[0].s[0].exact(), Some(&q(1, 3)));
+/// assert_eq!(x.overlaps[0].t[1].exact(), Some(&q(1, 1)));
+/// # Ok::<(), blossom::Error>(())
+/// ```
+///
+/// # Limits
+///
+/// Any degree n, m >= 1 (a curve of one control point is refused; one whose control points
+/// are all equal is a single point, answered as below). No budget is enforced here: for a
+/// transversal `f64` pair a float filter ([`crate::certified_crossings_f64`]) proves the
+/// answer in microseconds and the exact parameters cost two resultants; otherwise the cost
+/// grows about as (n m)^2 operations on integers of (n + m)(bits + n + m) bits (measured on
+/// a 2-core machine in release: random pairs of degree 20 with small rational coordinates
+/// 0.6-1.6 s, degree 28 4-7 s). Bound the degree, or run under the `meter` feature's budget,
+/// when the input is not yours.
+///
+/// `Display` writes one line per point, then one per overlap (`overlap: s = [..], t = [..]`),
+/// or `no intersection`.
+///
+/// # Method
+///
+/// **Isolated points.** With the power forms of the control points (the library's
+/// [`bernstein_to_power`](crate::engine::bernstein_to_power)), the common denominators of
+/// each coordinate cleared,
+/// A(s, t) = P_x(s) - Q_x(t) and B(s, t) = P_y(s) - Q_y(t) are integer polynomials with
+/// constant leading coefficients in s and in t, and their common zeros in [0, 1]^2 are the
+/// intersections. An exact bivariate solver finds them through the resultants Res_t and
+/// Res_s and first subresultants; a pair is tangential exactly when its intersection multiplicity exceeds one,
+/// i.e. when the Jacobian det d(A, B)/d(s, t) = -cross(P'(s), Q'(t)) vanishes (a zero
+/// derivative included). The common point is P(s) exactly (rounded) when s or t is rational,
+/// else each coordinate P_x(s), P_y(s) is rounded correctly by refining s until the interval
+/// value of the coordinate has one rounding (a rounding boundary in it is decided by the exact
+/// sign of P_x - m at s).
+///
+/// **Overlaps.** Res_t(A, B) vanishes identically exactly when A and B share a factor, i.e.
+/// the curves share a component. Then both are decomposed as P = R(phi), Q = R(g) with R
+/// proper and the answer is decided exactly (overlaps between the monotone
+/// pieces of phi and g, cut at turning points that may be irrational algebraic numbers,
+/// touching points, and R's own double points): curves on one line, reparametrised curves
+/// such as Q(t) = P(t^2), and curves that retrace themselves are all answered.
+///
+/// **Single points.** A curve whose control points are all one point c is accepted. Every s
+/// then pairs with each t where the other curve passes through c (the roots in [0, 1] of
+/// gcd(Q_x - c_x, Q_y - c_y)); these pairs are not isolated, so each is reported as an
+/// overlap whose range on the single-point curve is all of [0, 1] and whose range on the
+/// other is the one value (t0 = t1): P maps [0, 1] onto the same set, {c}, as Q maps
+/// [t0, t0]. Two single points give one overlap [0, 1] x [0, 1] when equal, else nothing. A
+/// single point with itself gives one overlap in the form of a curve that retraces itself
+/// (t0 > t1, s1 <= t1): s = [0, 1/2], t = [1, 1/2], the two halves of the
+/// curve tracing the same set; every pair s < t is a double point and none is listed apart.
+///
+/// **Self-intersection.** D(s, t) = (P(s) - P(t)) / (s - t) (exact division: the divided
+/// differences of the power coefficients, sum_k p_k sum_(i + j = k - 1) s^i t^j) vanishes off
+/// the diagonal exactly where P(s) = P(t); pairs s < t are kept (s = t only at cusps).
+/// A closed curve gives (0, 1). The Jacobian of D at a solution is -cross(P'(s), P'(t)) /
+/// (s - t)^2, so the tangency rule is the same. A curve that retraces itself (D has a
+/// factor of its own, P = R(phi) with deg phi > 1) gives overlaps with t0 > t1, s1 <= t1,
+/// one per pair of monotone pieces of phi whose images overlap (decided as above).
 #[derive(Clone, Debug, Default)]
 pub struct Intersections {
     /// Isolated points, sorted by s then t.
@@ -137,15 +206,37 @@ fn separated(f: &[Rational], g: &[Rational]) -> BiPoly {
     a
 }
 
-/// Every intersection of the curves with control points `p` and `q` (exact rationals): see
-/// the module docs for the method and its limits.
+/// Every intersection of the planar curves with control points `p` and `q` (exact rationals)
+/// over [0, 1], **certified**: isolated points with exact parameters and tangency flag, and
+/// overlaps ([`Intersections`] states the guarantee, the method, the limits and the f64
+/// sub-curve trap). The method [`BezierCurve::intersect`](crate::BezierCurve::intersect) is
+/// the same on a curve; this form takes the control points as slices held anywhere.
+///
+/// ```
+/// use blossom::{intersect_curves, Rational};
+/// let q = |n: i64| Rational::from_integer(n.into());
+/// // The diagonals of the square [0, 2]^2 cross at (1, 1), halfway along both.
+/// let x = intersect_curves(&[[q(0), q(0)], [q(2), q(2)]], &[[q(0), q(2)], [q(2), q(0)]])?;
+/// assert_eq!(x.to_string(), "s = 1/2, t = 1/2, point = (1, 1)");
+/// # Ok::<(), blossom::Error>(())
+/// ```
 ///
 /// # Errors
 /// [`ErrorKind::Empty`] on `p` or `q` for fewer than two control points; on `curves` only
 /// for an internal inconsistency of the common-component case (never expected).
 pub fn intersect_curves(p: &[[Rational; 2]], q: &[[Rational; 2]]) -> Result<Intersections> {
-    let pp = Power::of("p", p)?;
-    let qq = Power::of("q", q)?;
+    intersect_named(p, q, ["p", "q"])
+}
+
+/// [`intersect_curves`] with the names of the two arguments for its errors: the one
+/// implementation behind the free functions and the methods of the curve types.
+pub(crate) fn intersect_named(
+    p: &[[Rational; 2]],
+    q: &[[Rational; 2]],
+    names: [&str; 2],
+) -> Result<Intersections> {
+    let pp = Power::of(names[0], p)?;
+    let qq = Power::of(names[1], q)?;
     if let Some(answer) = single_point_pair(&pp, &qq) {
         return Ok(answer);
     }
@@ -216,23 +307,35 @@ fn as_doubles(points: &[[Rational; 2]]) -> Option<Vec<[f64; 2]>> {
         .collect()
 }
 
-/// [`intersect_curves`] of control points given as doubles, each read exactly.
+/// [`intersect_curves`] of control points given as doubles, each read exactly (the exact
+/// answer for those doubles, **certified**). The same as
+/// [`Bezier::intersect`](crate::Bezier::intersect) on `Bezier<f64, 2>`; for doubles out,
+/// [`intersect_curves_f64_rounded`](crate::intersect_curves_f64_rounded) is faster.
+///
+/// ```
+/// use blossom::intersect_curves_f64;
+/// let x = intersect_curves_f64(&[[0.0, 0.0], [1.0, 1.0]], &[[0.0, 1.0], [1.0, 0.0]])?;
+/// assert_eq!(x.points[0].s.to_f64(), 0.5);
+/// # Ok::<(), blossom::Error>(())
+/// ```
 ///
 /// # Errors
-/// [`ErrorKind::NotFinite`] on `p[i]` / `q[i]` for a NaN or infinity, else as
+/// [`ErrorKind::NotFinite`] on `p[i][j]` / `q[i][j]` for a NaN or infinity, else as
 /// [`intersect_curves`].
 pub fn intersect_curves_f64(p: &[[f64; 2]], q: &[[f64; 2]]) -> Result<Intersections> {
     intersect_curves(&exact_points("p", p)?, &exact_points("q", q)?)
 }
 
-/// Points of doubles read exactly.
+/// Points of doubles read exactly, a coordinate that is not finite refused as `field[i][j]`.
 fn exact_points(field: &str, p: &[[f64; 2]]) -> Result<Vec<[Rational; 2]>> {
-    p.iter()
-        .enumerate()
-        .map(|(i, xy)| {
-            let v = rationals_of(&format!("{field}[{i}]"), xy)?;
-            Ok([v[0].clone(), v[1].clone()])
-        })
+    Ok(pairs(&exact_coordinates(field, p.as_flattened(), 2)?))
+}
+
+/// Flat coordinates (two per point) as points.
+pub(crate) fn pairs(coordinates: &[Rational]) -> Vec<[Rational; 2]> {
+    coordinates
+        .chunks_exact(2)
+        .map(|xy| [xy[0].clone(), xy[1].clone()])
         .collect()
 }
 
@@ -282,7 +385,9 @@ fn finish(mut points: Vec<IntersectionPoint>, mut overlaps: Vec<Overlap>) -> Int
     Intersections { points, overlaps }
 }
 
-/// The answer when P or Q is a single point (see the module docs), else `None`.
+/// The answer when P or Q is a single point (every control point the same), as
+/// [`Intersections`] states it (overlaps pairing all of [0, 1] with each parameter where the
+/// other curve passes through the point), else `None`.
 fn single_point_pair(pp: &Power, qq: &Power) -> Option<Intersections> {
     let whole = || {
         [
@@ -366,14 +471,33 @@ fn divided_difference_solutions(
     solve(&a, &b, s_box, t_box)
 }
 
-/// Every pair s < t in [0, 1] with P(s) = P(t) of the curve with control points `p`, and
-/// the overlaps of a curve that retraces itself (see the module docs).
+/// Every pair s < t in [0, 1] with P(s) = P(t) of the planar curve with control points `p`,
+/// and the overlaps of a curve that retraces itself, **certified** ([`Intersections`] states
+/// the guarantee, the method and the limits). The method
+/// [`BezierCurve::self_intersections`](crate::BezierCurve::self_intersections) is the same on
+/// a curve; this form takes the control points as a slice held anywhere.
+///
+/// ```
+/// use blossom::{self_intersections, Rational};
+/// let q = |n: i64| Rational::from_integer(n.into());
+/// // A closed curve meets itself at its ends: (s, t) = (0, 1).
+/// let closed = [[q(0), q(0)], [q(4), q(4)], [q(-4), q(4)], [q(0), q(0)]];
+/// let x = self_intersections(&closed)?;
+/// assert_eq!(x.points[0].s.to_string(), "0");
+/// assert_eq!(x.points[0].t.to_string(), "1");
+/// # Ok::<(), blossom::Error>(())
+/// ```
 ///
 /// # Errors
 /// [`ErrorKind::Empty`] on `curve` for fewer than two control points; on `curves` only for
 /// an internal inconsistency of the retracing case (never expected).
 pub fn self_intersections(p: &[[Rational; 2]]) -> Result<Intersections> {
-    let pp = Power::of("curve", p)?;
+    self_intersections_named(p, "curve")
+}
+
+/// [`self_intersections`] with the name of the argument for its errors.
+pub(crate) fn self_intersections_named(p: &[[Rational; 2]], name: &str) -> Result<Intersections> {
+    let pp = Power::of(name, p)?;
     let (zero, one) = (Rational::zero(), Rational::one());
     if pp.single_point().is_some() {
         // The whole curve as one retracing overlap in the spec's form (t0 > t1, s1 <= t1):
@@ -410,10 +534,19 @@ pub fn self_intersections(p: &[[Rational; 2]]) -> Result<Intersections> {
     Ok(finish(points, Vec::new()))
 }
 
-/// [`self_intersections`] of control points given as doubles, each read exactly.
+/// [`self_intersections`] of control points given as doubles, each read exactly (the exact
+/// answer for those doubles, **certified**). The same as
+/// [`Bezier::self_intersections`](crate::Bezier::self_intersections) on `Bezier<f64, 2>`.
+///
+/// ```
+/// use blossom::self_intersections_f64;
+/// let line = self_intersections_f64(&[[0.0, 0.0], [1.0, 1.0]])?;
+/// assert!(line.points.is_empty() && line.overlaps.is_empty());
+/// # Ok::<(), blossom::Error>(())
+/// ```
 ///
 /// # Errors
-/// [`ErrorKind::NotFinite`] on `curve[i]`, else as [`self_intersections`].
+/// [`ErrorKind::NotFinite`] on `curve[i][j]`, else as [`self_intersections`].
 pub fn self_intersections_f64(p: &[[f64; 2]]) -> Result<Intersections> {
     self_intersections(&exact_points("curve", p)?)
 }

@@ -55,7 +55,9 @@ pub(crate) type Elem = Vec<Rational>;
 /// A polynomial in t over Q(alpha): its coefficients, ascending.
 pub(crate) type EPoly = Vec<Elem>;
 
-/// Q(alpha) = Q[x]/(m), with the modulus split as divisions require (see the module docs).
+/// Q(alpha) = Q[x]/(m) for a square-free m with m(alpha) = 0, not necessarily irreducible:
+/// a division by a zero divisor splits m = g (m / g) and keeps the factor that alpha is a
+/// root of (dynamic evaluation), so every zero test is exact.
 #[derive(Clone, Debug)]
 pub(crate) struct Extension {
     alpha: AlgebraicReal,
@@ -407,7 +409,8 @@ impl Extension {
             .fold(Elem::new(), |acc, c| add_q(&scale_q(&acc, t0), c))
     }
 
-    /// Whether the real algebraic beta is a root of p(alpha, t) (see the module docs).
+    /// Whether the real algebraic beta is a root of p(alpha, t): H = gcd(p, f_beta) over
+    /// Q(alpha) changes sign over beta's isolating interval (f_beta its polynomial).
     pub(crate) fn vanishes_at(&mut self, p: &EPoly, beta: &AlgebraicReal) -> bool {
         let mut p = p.clone();
         self.trim(&mut p);

@@ -1,43 +1,22 @@
 //! The tight bounding box and the nearest point of a Bézier curve, certified: both built on
-//! the exact zeros of a derivative.
-//!
-//! Both are extremes over [0, 1] of a polynomial p(t) in the power basis, which are attained
-//! at an end or at a zero of p'(t) inside:
-//!
-//! * **bounding box**: for each coordinate, p = x_j(t), the coordinate of the curve (its
-//!   Bernstein coefficients are the control points' j-th coordinates); its minimum and maximum
-//!   are the sides of the tightest box holding the curve (not the control polygon's box, which
-//!   can be far larger);
-//! * **nearest point** to q: p = D(t) = |P(t) - q|^2, whose minimum is the squared distance
-//!   from q to the curve.
-//!
-//! The candidates 0, 1 and the zeros of p' in (0, 1) are exact ([`roots_with_multiplicity`]:
-//! Yun's square-free factorisation and Descartes' rule), and so are the values of p at them:
-//! each is an [`AlgebraicReal`] ([`value_at`]: the resultant Res_t(f(t), c v - c p(t)) for the
-//! polynomial f of the candidate). Which candidate is smallest is decided by exact comparison
-//! ([`AlgebraicReal::compare`]), and every candidate of equal value is reported (a curve
-//! symmetric about q has two nearest points). Interval Horner enclosures of p over the
-//! candidates' isolating intervals only prune: a candidate whose enclosure lies wholly above
-//! another's upper end cannot be the minimum, and is dropped before its exact value is built.
-//!
-//! Rounding: [`AlgebraicReal::to_f64_down`] and [`AlgebraicReal::to_f64_up`] round exactly, so
-//! [`TightBox::outward`] is the smallest box of doubles that contains the curve, and
-//! [`AlgebraicReal::to_f64`] the correctly rounded value.
-//!
-//! Cost: one exact root isolation of a polynomial of degree n - 1 (box, per coordinate) or
-//! 2n - 1 (nearest point), and one resultant per surviving candidate; a cubic takes well
-//! under a millisecond. There is no limit here; the caller bounds the degree.
+//! the exact zeros of a derivative. The method, guarantee and limits are documented on
+//! [`TightBox`] and [`NearestPoint`], where rustdoc shows them. The operations are methods of
+//! the curve types ([`BezierCurve::bounding_box`], [`BezierCurve::nearest_point`], the same on
+//! [`crate::Bezier`]); the free functions [`tight_bounding_box`], [`nearest_point`] and their
+//! `_f64` forms are the same operations on a [`BezierCurve`], kept for existing callers.
 
 use super::algebraic::{enclose, value_at, AlgebraicReal};
 use super::upoly;
-use super::zeros::{power_coefficients, rationals_of, roots_with_multiplicity};
+use super::zeros::{power_coefficients, roots_with_multiplicity};
 use crate::error::{Error, ErrorKind, Result};
+use crate::num::exact::{exact_coordinates, exact_values};
 use crate::num::ring::Rational;
 use crate::shape::bezier::BezierCurve;
 use num_traits::{One, Zero};
 use std::cmp::Ordering;
 
-/// One extreme of a polynomial over [0, 1]: its value and where it is attained.
+/// One extreme of a polynomial over [0, 1], exactly: its value and where it is attained (see
+/// [`TightBox`]). `Display` writes `1 at t = 1/2`, or `1 everywhere`.
 #[derive(Clone, Debug)]
 pub struct Extreme {
     /// The extreme value, exactly.
@@ -49,7 +28,55 @@ pub struct Extreme {
     pub everywhere: bool,
 }
 
-/// The tight bounding box of a curve over [0, 1], one minimum and one maximum per coordinate.
+/// The tight bounding box of a curve over [0, 1], one minimum and one maximum per coordinate,
+/// **exact**: the answer of [`BezierCurve::bounding_box`] (and of [`crate::Bezier`]'s
+/// method, [`tight_bounding_box`]). `Display` writes one line per coordinate,
+/// `x0: min 0 at t = 0, max 2 at t = 1`.
+///
+/// Guarantee: each side is the exact extreme of that coordinate along the curve (an
+/// [`AlgebraicReal`]), with every parameter attaining it; [`TightBox::outward`] rounds them
+/// outwards, exactly, to the smallest box of doubles that holds the curve.
+///
+/// Limits: any degree and dimension, no budget enforced here (a cubic takes well under a
+/// millisecond; the cost is one exact root isolation of degree n - 1 per coordinate).
+///
+/// ```
+/// use blossom::Bezier;
+/// let arch = Bezier::new(vec![[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]])?;
+/// let bounds = arch.bounding_box()?;
+/// assert_eq!(bounds.max[1].value.to_string(), "1");
+/// assert_eq!(bounds.outward(), (vec![0.0, 0.0], vec![2.0, 1.0]));
+/// # Ok::<(), blossom::Error>(())
+/// ```
+///
+/// # Method
+///
+/// Both are extremes over [0, 1] of a polynomial p(t) in the power basis, which are attained
+/// at an end or at a zero of p'(t) inside:
+///
+/// * **bounding box**: for each coordinate, p = x_j(t), the coordinate of the curve (its
+///   Bernstein coefficients are the control points' j-th coordinates); its minimum and maximum
+///   are the sides of the tightest box holding the curve (not the control polygon's box, which
+///   can be far larger);
+/// * **nearest point** to q: p = D(t) = |P(t) - q|^2, whose minimum is the squared distance
+///   from q to the curve.
+///
+/// The candidates 0, 1 and the zeros of p' in (0, 1) are exact (Yun's square-free
+/// factorisation and Descartes' rule), and so are the values of p at them: each is an
+/// [`AlgebraicReal`] (the resultant Res_t(f(t), c v - c p(t)) for the polynomial f of the
+/// candidate). Which candidate is smallest is decided by exact comparison
+/// ([`AlgebraicReal::compare`]), and every candidate of equal value is reported (a curve
+/// symmetric about q has two nearest points). Interval Horner enclosures of p over the
+/// candidates' isolating intervals only prune: a candidate whose enclosure lies wholly above
+/// another's upper end cannot be the minimum, and is dropped before its exact value is built.
+///
+/// Rounding: [`AlgebraicReal::to_f64_down`] and [`AlgebraicReal::to_f64_up`] round exactly, so
+/// [`TightBox::outward`] is the smallest box of doubles that contains the curve, and
+/// [`AlgebraicReal::to_f64`] the correctly rounded value.
+///
+/// Cost: one exact root isolation of a polynomial of degree n - 1 (box, per coordinate) or
+/// 2n - 1 (nearest point), and one resultant per surviving candidate; a cubic takes well
+/// under a millisecond. There is no limit here; the caller bounds the degree.
 #[derive(Clone, Debug)]
 pub struct TightBox {
     /// The smallest value of each coordinate along the curve.
@@ -69,7 +96,22 @@ impl TightBox {
     }
 }
 
-/// The points of a curve nearest to a given point.
+/// The points of a curve nearest to a given point, **exact**: the answer of
+/// [`BezierCurve::nearest_point`] (and of [`crate::Bezier`]'s method, [`nearest_point`]).
+///
+/// Guarantee: the squared distance is exact (an [`AlgebraicReal`]); every parameter
+/// attaining it is listed (a curve symmetric about the point has two), with the nearest
+/// points' coordinates exact. The method is that of [`TightBox`] on D(t) = |P(t) - q|^2,
+/// a polynomial of degree 2n. Limits: any degree and dimension, no budget enforced here.
+/// `Display` writes `squared distance 9 at t = 1/4, point (1, 0)`.
+///
+/// ```
+/// use blossom::BezierCurve;
+/// let line = BezierCurve::new(vec![vec![0.0, 0.0], vec![4.0, 0.0]])?;
+/// let nearest = line.nearest_point(&[1.0, 3.0])?;
+/// assert_eq!(nearest.to_string(), "squared distance 9 at t = 1/4, point (1, 0)");
+/// # Ok::<(), blossom::Error>(())
+/// ```
 #[derive(Clone, Debug)]
 pub struct NearestPoint {
     /// The squared distance from the point to the curve, exactly.
@@ -84,8 +126,9 @@ pub struct NearestPoint {
     pub everywhere: bool,
 }
 
-/// The tight bounding box of the Bézier curve `curve` over [0, 1], exactly (see the module
-/// docs).
+/// The tight bounding box of the Bézier curve `curve` over [0, 1], **exact** ([`TightBox`]
+/// states the guarantee, method and limits). The same as the method
+/// [`BezierCurve::bounding_box`].
 ///
 /// ```
 /// use blossom::{tight_bounding_box, BezierCurve, Rational};
@@ -103,13 +146,32 @@ pub struct NearestPoint {
 /// # Ok::<(), blossom::Error>(())
 /// ```
 pub fn tight_bounding_box(curve: &BezierCurve<Rational>) -> TightBox {
+    box_of(curve.coordinates(), curve.dim())
+}
+
+/// [`tight_bounding_box`] of a curve of doubles, each read exactly: the same as the method
+/// [`BezierCurve::bounding_box`].
+///
+/// ```
+/// use blossom::{tight_bounding_box_f64, BezierCurve};
+/// let c = BezierCurve::new(vec![vec![0.0], vec![3.0], vec![0.0]])?;
+/// assert_eq!(tight_bounding_box_f64(&c)?.outward(), (vec![0.0], vec![1.5]));
+/// # Ok::<(), blossom::Error>(())
+/// ```
+///
+/// # Errors
+/// [`ErrorKind::NotFinite`] on `control_points[i][j]` for a NaN or an infinity.
+pub fn tight_bounding_box_f64(curve: &BezierCurve<f64>) -> Result<TightBox> {
+    let exact = exact_coordinates("control_points", curve.coordinates(), curve.dim())?;
+    Ok(box_of(&exact, curve.dim()))
+}
+
+/// The tight box of the curve with flat control points `coordinates` (`dim` per point, at
+/// least one point): the one implementation behind the functions and methods.
+pub(crate) fn box_of(coordinates: &[Rational], dim: usize) -> TightBox {
     let (mut min, mut max) = (Vec::new(), Vec::new());
-    for j in 0..curve.dim() {
-        let coordinate: Vec<Rational> = curve
-            .control_points()
-            .iter()
-            .map(|p| p[j].clone())
-            .collect();
+    for j in 0..dim {
+        let coordinate: Vec<Rational> = coordinates.iter().skip(j).step_by(dim).cloned().collect();
         let p = power_coefficients(&coordinate);
         let candidates = critical_parameters(&p);
         min.push(extreme(&p, &candidates, Ordering::Less));
@@ -118,16 +180,9 @@ pub fn tight_bounding_box(curve: &BezierCurve<Rational>) -> TightBox {
     TightBox { min, max }
 }
 
-/// [`tight_bounding_box`] of a curve of doubles, each read exactly.
-///
-/// # Errors
-/// [`ErrorKind::NotFinite`] on `control_points[i][j]` for a NaN or an infinity.
-pub fn tight_bounding_box_f64(curve: &BezierCurve<f64>) -> Result<TightBox> {
-    Ok(tight_bounding_box(&exact_curve(curve)?))
-}
-
-/// The points of the Bézier curve `curve` over [0, 1] nearest to `q`, exactly (see the module
-/// docs).
+/// The points of the Bézier curve `curve` over [0, 1] nearest to `q`, **exact**
+/// ([`NearestPoint`] states the guarantee and limits). The same as the method
+/// [`BezierCurve::nearest_point`].
 ///
 /// ```
 /// use blossom::{nearest_point, BezierCurve, Rational};
@@ -148,24 +203,49 @@ pub fn tight_bounding_box_f64(curve: &BezierCurve<f64>) -> Result<TightBox> {
 /// # Errors
 /// [`ErrorKind::Dimension`] on `q` when it has not the curve's dimension.
 pub fn nearest_point(curve: &BezierCurve<Rational>, q: &[Rational]) -> Result<NearestPoint> {
-    if q.len() != curve.dim() {
+    nearest_of(curve.coordinates(), curve.dim(), q, "q")
+}
+
+/// [`nearest_point`] for a curve and a point of doubles, each read exactly: the same as the
+/// method [`BezierCurve::nearest_point`].
+///
+/// ```
+/// use blossom::{nearest_point_f64, BezierCurve};
+/// let c = BezierCurve::new(vec![vec![0.0, 0.0], vec![2.0, 0.0]])?;
+/// assert_eq!(nearest_point_f64(&c, &[1.0, 1.0])?.squared_distance.to_string(), "1");
+/// # Ok::<(), blossom::Error>(())
+/// ```
+///
+/// # Errors
+/// [`ErrorKind::NotFinite`] on `control_points[i][j]` or `q[j]` for a NaN or an infinity, and as
+/// [`nearest_point`].
+pub fn nearest_point_f64(curve: &BezierCurve<f64>, q: &[f64]) -> Result<NearestPoint> {
+    let exact = exact_coordinates("control_points", curve.coordinates(), curve.dim())?;
+    nearest_of(&exact, curve.dim(), &exact_values("q", q)?, "q")
+}
+
+/// The nearest points to `q` (named `q_field` in errors) of the curve with flat control
+/// points `coordinates` (`dim` per point): the one implementation behind the functions and
+/// methods.
+pub(crate) fn nearest_of(
+    coordinates: &[Rational],
+    dim: usize,
+    q: &[Rational],
+    q_field: &str,
+) -> Result<NearestPoint> {
+    if q.len() != dim {
         return Err(Error::of(
             ErrorKind::Dimension,
-            "q",
+            q_field,
             format!(
-                "expected a point of {} coordinates (the curve's dimension), found {}",
-                curve.dim(),
+                "expected a point of {dim} coordinates (the curve's dimension), found {}",
                 q.len()
             ),
         ));
     }
-    let coordinates: Vec<Vec<Rational>> = (0..curve.dim())
+    let coordinates: Vec<Vec<Rational>> = (0..dim)
         .map(|j| {
-            let c: Vec<Rational> = curve
-                .control_points()
-                .iter()
-                .map(|p| p[j].clone())
-                .collect();
+            let c: Vec<Rational> = coordinates.iter().skip(j).step_by(dim).cloned().collect();
             power_coefficients(&c)
         })
         .collect();
@@ -188,27 +268,6 @@ pub fn nearest_point(curve: &BezierCurve<Rational>, q: &[Rational]) -> Result<Ne
         points,
         everywhere: best.everywhere,
     })
-}
-
-/// [`nearest_point`] for a curve and a point of doubles, each read exactly.
-///
-/// # Errors
-/// [`ErrorKind::NotFinite`] on `control_points[i][j]` or `q[j]` for a NaN or an infinity, and as
-/// [`nearest_point`].
-pub fn nearest_point_f64(curve: &BezierCurve<f64>, q: &[f64]) -> Result<NearestPoint> {
-    let exact = exact_curve(curve)?;
-    nearest_point(&exact, &rationals_of("q", q)?)
-}
-
-/// A curve of doubles read exactly, NaN and infinities refused naming the control point.
-fn exact_curve(curve: &BezierCurve<f64>) -> Result<BezierCurve<Rational>> {
-    let points = curve
-        .control_points()
-        .iter()
-        .enumerate()
-        .map(|(i, p)| rationals_of(&format!("control_points[{i}]"), p))
-        .collect::<Result<Vec<_>>>()?;
-    BezierCurve::new(points)
 }
 
 /// 0, the zeros of p' in (0, 1) and 1, ascending (only 0 when p is constant).

@@ -133,7 +133,8 @@ fn taylor_shift_integer(p: &mut [BigInt], a: &BigInt) {
     }
 }
 
-/// The two halves of the integer Bernstein vector `b` (see the module docs), each scaled by
+/// The two halves of the integer Bernstein vector `b` (de Casteljau at u = 1/2 with sums
+/// instead of averages, then the powers of two evened out), each scaled by
 /// a positive factor; the left half's last entry is (a positive multiple of) f at the middle.
 pub fn halve(b: &[BigInt]) -> (Vec<BigInt>, Vec<BigInt>) {
     let n = b.len() - 1;

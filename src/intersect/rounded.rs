@@ -1,16 +1,19 @@
 //! The `f64` answer of curve-curve intersection for every input: the float filter
 //! ([`super::filter::certified_crossings_f64`]) when it proves the complete answer, otherwise
-//! the exact path ([`super::curves::intersect_curves_f64`]) with every parameter rounded to the
-//! nearest double ([`super::algebraic::AlgebraicReal::to_f64`]). Both give the same doubles:
-//! correctly rounded parameters (ties to even), the exact tangency flag, the common point with
-//! each coordinate correctly rounded. Only the exact path reports overlaps, tangencies and
-//! end-point contacts, and only it returns errors (bad input, undecided common components).
+//! the exact path ([`super::curves::intersect_named`]) with every parameter rounded to the
+//! nearest double ([`super::algebraic::AlgebraicReal::to_f64`]). Both give the same doubles.
+//! The method form is [`crate::BezierCurve::intersect_rounded`] (and the same on
+//! [`crate::Bezier`]); the free function [`intersect_curves_f64_rounded`] stays for slices of
+//! doubles held anywhere, the fastest call for them (the filter runs on the slices as given).
 
-use super::curves::{intersect_curves_f64, Intersections};
+use super::curves::{intersect_named, pairs, Intersections};
 use super::filter::certified_crossings_f64;
 use crate::error::Result;
+use crate::num::exact::{exact_coordinates, ExactInput};
 
-/// One isolated intersection P(s) = Q(t), rounded.
+/// One isolated intersection P(s) = Q(t) of [`RoundedIntersections`]: the exact answer's
+/// parameters correctly rounded. `Display` writes `s = 0.5, t = 0.5, point = (0.5, 0.5)`,
+/// then `, tangent` for a tangency.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RoundedPoint {
     /// The double nearest to the exact parameter on the first curve.
@@ -23,7 +26,8 @@ pub struct RoundedPoint {
     pub point: [f64; 2],
 }
 
-/// One maximal common stretch, its ends rounded (see [`crate::Overlap`]).
+/// One maximal common stretch, its exact ends correctly rounded (see [`crate::Overlap`]).
+/// `Display` writes `s = [s0, s1], t = [t0, t1]`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RoundedOverlap {
     /// The ends on the first curve, increasing.
@@ -32,7 +36,16 @@ pub struct RoundedOverlap {
     pub t: [f64; 2],
 }
 
-/// Every intersection of two curves with `f64` control points, rounded.
+/// Every intersection of two planar curves, as doubles: the answer of
+/// [`BezierCurve::intersect_rounded`](crate::BezierCurve::intersect_rounded) and
+/// [`intersect_curves_f64_rounded`].
+///
+/// Guarantee (**certified**, then correctly rounded): the points and overlaps are those of
+/// the exact answer ([`crate::Intersections`], which states the method, the limits and the
+/// f64 sub-curve trap), every parameter and every coordinate of a common point the double
+/// nearest to the exact value (ties to even), the tangency flag exact. Whether the float
+/// filter or the exact path answered, the doubles are the same; `by_filter` says which.
+/// `Display` writes one line per point, then one per overlap, or `no intersection`.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct RoundedIntersections {
     /// Isolated points, sorted by s then t.
@@ -70,9 +83,14 @@ impl From<&Intersections> for RoundedIntersections {
     }
 }
 
-/// Every intersection of the curves with control points `p` and `q` (doubles read exactly),
-/// as doubles: the float filter's certified answer when it decides, else the exact one
-/// rounded (module documentation).
+/// Every intersection of the planar curves with control points `p` and `q` (doubles read
+/// exactly), as doubles, **certified** then correctly rounded ([`RoundedIntersections`]): the
+/// float filter's answer when it proves the complete answer (transversal crossings inside
+/// (0, 1)^2, in microseconds), else the exact path's, rounded. The method
+/// [`Bezier::intersect_rounded`](crate::Bezier::intersect_rounded) is the same on a curve;
+/// this form takes slices of doubles held anywhere. An overlap is found only between the
+/// exact curves given: a piece computed in `f64` at a parameter that is not dyadic is
+/// another curve ([`crate::Intersections`], "The f64 sub-curve trap").
 ///
 /// ```
 /// use blossom::intersect_curves_f64_rounded;
@@ -88,25 +106,46 @@ impl From<&Intersections> for RoundedIntersections {
 /// ```
 ///
 /// # Errors
-/// As [`intersect_curves_f64`].
+/// [`ErrorKind::Empty`](crate::ErrorKind::Empty) on `p` or `q` for fewer than two control
+/// points, [`ErrorKind::NotFinite`](crate::ErrorKind::NotFinite) on `p[i][j]` or `q[i][j]`
+/// for a NaN or an infinity.
 pub fn intersect_curves_f64_rounded(
     p: &[[f64; 2]],
     q: &[[f64; 2]],
 ) -> Result<RoundedIntersections> {
-    if let Some(crossings) = certified_crossings_f64(p, q) {
-        return Ok(RoundedIntersections {
-            points: crossings
-                .iter()
-                .map(|c| RoundedPoint {
-                    s: c.s,
-                    t: c.t,
-                    tangent: false,
-                    point: c.point,
-                })
-                .collect(),
-            overlaps: Vec::new(),
-            by_filter: true,
-        });
+    rounded_named(p.as_flattened(), q.as_flattened(), ["p", "q"])
+}
+
+/// The rounded intersections of the planar curves with flat control points `p` and `q` (two
+/// coordinates per point, of any [`ExactInput`] type), `names` naming them in errors: the
+/// filter when both are doubles exactly and it decides, else the exact answer rounded. The
+/// one implementation behind [`intersect_curves_f64_rounded`] and the `intersect_rounded`
+/// methods.
+pub(crate) fn rounded_named<T: ExactInput>(
+    p: &[T],
+    q: &[T],
+    names: [&str; 2],
+) -> Result<RoundedIntersections> {
+    if let (Some(pd), Some(qd)) = (T::as_doubles(p), T::as_doubles(q)) {
+        if let Some(crossings) = certified_crossings_f64(pd.as_chunks().0, qd.as_chunks().0) {
+            return Ok(RoundedIntersections {
+                points: crossings
+                    .iter()
+                    .map(|c| RoundedPoint {
+                        s: c.s,
+                        t: c.t,
+                        tangent: false,
+                        point: c.point,
+                    })
+                    .collect(),
+                overlaps: Vec::new(),
+                by_filter: true,
+            });
+        }
     }
-    Ok(RoundedIntersections::from(&intersect_curves_f64(p, q)?))
+    let exact_p = pairs(&exact_coordinates(names[0], p, 2)?);
+    let exact_q = pairs(&exact_coordinates(names[1], q, 2)?);
+    Ok(RoundedIntersections::from(&intersect_named(
+        &exact_p, &exact_q, names,
+    )?))
 }

@@ -1,23 +1,22 @@
-//! Zeros of a polynomial in Bernstein form over [0, 1], with multiplicities.
-//!
-//! The Bernstein coefficients b_0..b_n (exact rationals) are turned into power coefficients
-//! by the library's [`bernstein_to_power_flat`], scaled to a primitive integer polynomial p, and
-//! split by Yun's square-free factorisation p = c f_1 f_2^2 ... f_k^k. The square-free part
-//! f_1 f_2 ... f_k is isolated on [0, 1] by Descartes' rule (see `isolate`); each isolated
-//! root belongs to exactly one f_i (they are pairwise coprime), which gives its multiplicity
-//! i and the polynomial of its [`AlgebraicReal`]. Both ends 0 and 1 are included.
+//! Zeros of a polynomial in Bernstein form over [0, 1], with multiplicities: the method,
+//! the guarantee and the limits are documented on [`bezier_zeros`], where rustdoc shows them.
+//! The same operation is the method `zeros` of a 1-D curve ([`crate::BezierCurve::zeros`],
+//! [`crate::Bezier::zeros`]); the free functions stay because they take the coefficients of
+//! a function as a plain slice, which need not be a curve the caller holds.
 
 use super::algebraic::{has_no_rational_root, AlgebraicReal};
 use super::isolate::{isolate, Isolated};
 use super::upoly::{self, mul, sign_at, ZPoly};
 use crate::error::{Error, ErrorKind, Result};
+use crate::num::exact::exact_values;
 use crate::num::ring::Rational;
 use crate::shape::basis::bernstein_to_power_flat;
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
 use std::cmp::Ordering;
 
-/// One distinct zero of a polynomial: the parameter and its multiplicity.
+/// One distinct zero of a polynomial, exactly: the parameter and its multiplicity. `Display`
+/// writes `t = 1/2, multiplicity 2`.
 #[derive(Clone, Debug)]
 pub struct PolynomialZero {
     /// The zero, exactly.
@@ -26,7 +25,8 @@ pub struct PolynomialZero {
     pub multiplicity: usize,
 }
 
-/// The zeros of a Bézier function over [0, 1].
+/// The zeros of a Bézier function over [0, 1], exactly (see [`bezier_zeros`]). `Display`
+/// writes one zero per line, or `identically zero`, or `no zero in [0, 1]`.
 #[derive(Clone, Debug)]
 pub struct BezierZeros {
     /// Whether the function is zero everywhere (then `zeros` is empty).
@@ -132,8 +132,38 @@ fn holds_root(f: &[BigInt], iso: &Isolated) -> bool {
     }
 }
 
-/// Every zero in [0, 1] of the Bézier function with Bernstein coefficients `coefficients`
-/// over [0, 1], exactly, with multiplicities (see the module docs).
+/// Every zero in [0, 1] of the Bézier function f(t) = sum_i b_i B_i^n(t) with Bernstein
+/// coefficients `coefficients` = b_0..b_n, **exact**, with multiplicities; both ends 0 and 1
+/// included. The method `zeros` of a 1-D curve ([`crate::BezierCurve::zeros`],
+/// [`crate::Bezier::zeros`]) is the same.
+///
+/// Guarantee: every distinct zero is listed once, in increasing order, as an exact
+/// [`AlgebraicReal`] (a rational zero is found exactly; an irrational one is a root of a
+/// square-free integer polynomial with an isolating interval), with its exact multiplicity.
+///
+/// Method: the coefficients are turned into power coefficients (exact change of basis),
+/// scaled to a primitive integer polynomial p and split by Yun's square-free factorisation
+/// p = c f_1 f_2^2 ... f_k^k. The square-free part f_1 f_2 ... f_k is isolated on [0, 1] by
+/// Descartes' rule on exact Bernstein coefficients; each isolated root belongs to exactly one
+/// f_i (they are pairwise coprime), which gives its multiplicity i and its polynomial.
+///
+/// Limits: any degree; no budget is enforced here. The cost grows about as n^3 operations
+/// on integers of about n + bits bits (bits: the longest coefficient over the common
+/// denominator), so bound the degree and the size of the coefficients when the input is
+/// not yours (the `blossom` binary refuses degree above 200 and meters the work).
+///
+/// ```
+/// use blossom::{bezier_zeros, Rational};
+/// let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
+/// // f(t) = (2t - 1)^2 (Bernstein coefficients 1, -1, 1): one double zero at 1/2.
+/// let z = bezier_zeros(&[q(1, 1), q(-1, 1), q(1, 1)])?;
+/// assert_eq!(z.to_string(), "t = 1/2, multiplicity 2");
+/// // f(t) = 2t^2 - 1 (coefficients -1, -1, 1): the irrational zero 1/sqrt(2).
+/// let z = bezier_zeros(&[q(-1, 1), q(-1, 1), q(1, 1)])?;
+/// assert_eq!(z.zeros[0].t.to_f64(), 0.5f64.sqrt());
+/// assert_eq!(z.zeros[0].t.polynomial(), [(-1).into(), 0.into(), 2.into()]);
+/// # Ok::<(), blossom::Error>(())
+/// ```
 ///
 /// # Errors
 /// [`ErrorKind::Empty`] on `coefficients` when there are none.
@@ -173,31 +203,22 @@ pub(crate) fn power_coefficients(coefficients: &[Rational]) -> Vec<Rational> {
     power
 }
 
-/// [`bezier_zeros`] of doubles, each read exactly (every finite double is a rational).
+/// [`bezier_zeros`] of doubles, each read exactly (every finite double is a rational): the
+/// exact zeros of the function with those coefficients.
+///
+/// ```
+/// use blossom::bezier_zeros_f64;
+/// // f(t) = 1 - 3t (coefficients 1, -2): its zero 1/3, exactly, though 1/3 is no double.
+/// let z = bezier_zeros_f64(&[1.0, -2.0])?;
+/// assert_eq!(z.zeros[0].t.to_string(), "1/3");
+/// # Ok::<(), blossom::Error>(())
+/// ```
 ///
 /// # Errors
 /// [`ErrorKind::NotFinite`] on `coefficients[i]` for a NaN or an infinity, and as
 /// [`bezier_zeros`].
 pub fn bezier_zeros_f64(coefficients: &[f64]) -> Result<BezierZeros> {
-    let exact = rationals_of("coefficients", coefficients)?;
-    bezier_zeros(&exact)
-}
-
-/// Doubles read exactly as rationals, NaN and infinities refused naming `field[i]`.
-pub(crate) fn rationals_of(field: &str, values: &[f64]) -> Result<Vec<Rational>> {
-    values
-        .iter()
-        .enumerate()
-        .map(|(i, &x)| {
-            Rational::from_float(x).ok_or_else(|| {
-                Error::of(
-                    ErrorKind::NotFinite,
-                    format!("{field}[{i}]"),
-                    format!("expected a finite number, found {x}"),
-                )
-            })
-        })
-        .collect()
+    bezier_zeros(&exact_values("coefficients", coefficients)?)
 }
 
 /// A coarse work estimate for [`bezier_zeros`] of degree `n` with coefficients of at most

@@ -1,43 +1,5 @@
-//! [`BoundedF64`]: a double that carries a rigorous bound on its own rounding error.
-//!
-//! A `BoundedF64` is a pair (x̂, e): x̂ is exactly the double that plain `f64` arithmetic
-//! computes by the same operations on the same inputs (bit for bit: every operation below does
-//! the `f64` operation of [`Ring for f64`](crate::Ring) on the values), and e bounds the distance
-//! |x - x̂| to the number x that *exact* arithmetic computes by the same operations on the same
-//! inputs. Inputs made by [`BoundedF64::exact`] have e = 0; constants the algorithms make from
-//! exact rationals ([`Ring::scale`], [`Ring::from_rational`], [`Ring::scale_frac`],
-//! [`Ring::from_int`]) carry the exact error of their conversion to a double.
-//!
-//! Since every algorithm of the crate is generic over [`Ring`], running it on `BoundedF64` gives
-//! its `f64` answer together with a bound on the answer's error, for free. The bound is a
-//! *running error analysis* (Wilkinson): first-order effects and second-order terms are both
-//! kept, so the bound is rigorous, not an estimate.
-//!
-//! # The rounding model
-//!
-//! With round-to-nearest in binary64 and u = 2^-53, the rounded result fl(s) of an operation
-//! whose exact result is s satisfies |s - fl(s)| <= u |fl(s)| + η, where η = 2^-1074 covers
-//! underflow into the subnormal range (half an ulp of a subnormal is at most 2^-1075). With
-//! |x - x̂| <= e_x and |y - ŷ| <= e_y:
-//!
-//! * x ± y:  |(x ± y) - fl(x̂ ± ŷ)| <= e_x + e_y + u |v| + η, v = fl(x̂ ± ŷ);
-//! * x y:    |x y - fl(x̂ ŷ)| <= |x̂| e_y + |ŷ| e_x + e_x e_y + u |v| + η;
-//! * x / y:  when e_y < |ŷ|, |x/y - fl(x̂/ŷ)| <= (e_x |ŷ| + |x̂| e_y) / (|ŷ| (|ŷ| - e_y)) + u |v| + η,
-//!   and no finite bound otherwise (the exact divisor may be zero).
-//!
-//! The bound itself is computed in `f64`, so it is rounded too: each bound is the computed
-//! expression times (1 + 16u) plus 8η, which covers the downward rounding of the at most seven
-//! operations of any bound formula above (each loses at most a factor (1 - u) and, in a product,
-//! η). An overflowing bound is +∞, which is still a bound; a NaN value or bound means "no bound"
-//! and is reported as an infinite bound by [`BoundedF64::error_bound`].
-//!
-//! # Comparisons
-//!
-//! Equality and order compare the values only, exactly as the `f64` path does, so that every
-//! algorithm takes the same branches as it does on `f64` (the polarisation formula groups equal
-//! arguments, say). Such a branch decides on x̂, not on x: the bound is rigorous for the
-//! operations the `f64` path performed, which is what it claims. Inputs are exact (e = 0), so a
-//! comparison of inputs (a knot span search, a parameter against an interval) decides exactly.
+//! [`BoundedF64`]: a double that carries a rigorous bound on its own rounding error. The
+//! model and the guarantee are documented on the type, where rustdoc shows them.
 
 use crate::num::linalg::Field;
 use crate::num::meter::{charge_bounded, charge_bounded_constant};
@@ -49,14 +11,16 @@ use std::fmt;
 /// The unit roundoff of binary64 with round-to-nearest, u = 2^-53.
 pub(crate) const UNIT_ROUNDOFF: f64 = f64::EPSILON / 2.0;
 
-/// The smallest positive subnormal double, 2^-1074 (η of the module documentation).
+/// The smallest positive subnormal double, 2^-1074 (η of [`BoundedF64`]'s model).
 pub(crate) const ETA: f64 = 5e-324;
 
 /// The factor (1 + 16u) that makes a computed bound an upper bound of the exact expression.
 const SAFETY: f64 = 1.0 + 16.0 * UNIT_ROUNDOFF;
 
 /// A double together with a rigorous bound on its distance to the exact result of the same
-/// operations on the same inputs (see the module documentation for the model).
+/// operations on the same inputs: the value is **bit for bit** plain `f64`'s, the bound is
+/// **certified** (a running error analysis, not an estimate). No limits beyond `f64`'s: an
+/// overflowing bound is +∞, still a bound.
 ///
 /// ```
 /// use blossom::{restrict_power_curve, BoundedF64, Method, PowerCurve};
@@ -73,13 +37,55 @@ const SAFETY: f64 = 1.0 + 16.0 * UNIT_ROUNDOFF;
 /// }
 /// # Ok::<(), blossom::Error>(())
 /// ```
+///
+/// # The model
+///
+/// A `BoundedF64` is a pair (x̂, e): x̂ is exactly the double that plain `f64` arithmetic
+/// computes by the same operations on the same inputs (bit for bit: every operation below does
+/// the `f64` operation of [`Ring for f64`](crate::Ring) on the values), and e bounds the distance
+/// |x - x̂| to the number x that *exact* arithmetic computes by the same operations on the same
+/// inputs. Inputs made by [`BoundedF64::exact`] have e = 0; constants the algorithms make from
+/// exact rationals ([`Ring::scale`], [`Ring::from_rational`], [`Ring::scale_frac`],
+/// [`Ring::from_int`]) carry the exact error of their conversion to a double.
+///
+/// Since every algorithm of the crate is generic over [`Ring`], running it on `BoundedF64` gives
+/// its `f64` answer together with a bound on the answer's error, for free. The bound is a
+/// *running error analysis* (Wilkinson): first-order effects and second-order terms are both
+/// kept, so the bound is rigorous, not an estimate.
+///
+/// ## The rounding model
+///
+/// With round-to-nearest in binary64 and u = 2^-53, the rounded result fl(s) of an operation
+/// whose exact result is s satisfies |s - fl(s)| <= u |fl(s)| + η, where η = 2^-1074 covers
+/// underflow into the subnormal range (half an ulp of a subnormal is at most 2^-1075). With
+/// |x - x̂| <= e_x and |y - ŷ| <= e_y:
+///
+/// * x ± y:  |(x ± y) - fl(x̂ ± ŷ)| <= e_x + e_y + u |v| + η, v = fl(x̂ ± ŷ);
+/// * x y:    |x y - fl(x̂ ŷ)| <= |x̂| e_y + |ŷ| e_x + e_x e_y + u |v| + η;
+/// * x / y:  when e_y < |ŷ|, |x/y - fl(x̂/ŷ)| <= (e_x |ŷ| + |x̂| e_y) / (|ŷ| (|ŷ| - e_y)) + u |v| + η,
+///   and no finite bound otherwise (the exact divisor may be zero).
+///
+/// The bound itself is computed in `f64`, so it is rounded too: each bound is the computed
+/// expression times (1 + 16u) plus 8η, which covers the downward rounding of the at most seven
+/// operations of any bound formula above (each loses at most a factor (1 - u) and, in a product,
+/// η). An overflowing bound is +∞, which is still a bound; a NaN value or bound means "no bound"
+/// and is reported as an infinite bound by [`BoundedF64::error_bound`].
+///
+/// ## Comparisons
+///
+/// Equality and order compare the values only, exactly as the `f64` path does, so that every
+/// algorithm takes the same branches as it does on `f64` (the polarisation formula groups equal
+/// arguments, say). Such a branch decides on x̂, not on x: the bound is rigorous for the
+/// operations the `f64` path performed, which is what it claims. Inputs are exact (e = 0), so a
+/// comparison of inputs (a knot span search, a parameter against an interval) decides exactly.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct BoundedF64 {
     value: f64,
     bound: f64,
 }
 
-/// `(e) * (1 + 16u) + 8η`: the computed bound expression `e`, rounded upwards (module docs).
+/// `(e) * (1 + 16u) + 8η`: the computed bound expression `e`, rounded upwards (the model of
+/// [`BoundedF64`]).
 #[inline]
 pub(crate) fn upward(e: f64) -> f64 {
     e * SAFETY + 8.0 * ETA
@@ -221,14 +227,14 @@ impl BoundedF64 {
 }
 
 impl PartialEq for BoundedF64 {
-    /// Compares the values only (module documentation, "Comparisons").
+    /// Compares the values only (see "Comparisons" in the type's docs).
     fn eq(&self, other: &Self) -> bool {
         self.value == other.value
     }
 }
 
 impl PartialOrd for BoundedF64 {
-    /// Orders the values only (module documentation, "Comparisons").
+    /// Orders the values only (see "Comparisons" in the type's docs).
     fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
         self.value.partial_cmp(&other.value)
     }

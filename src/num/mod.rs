@@ -4,9 +4,11 @@
 
 pub(crate) mod binomial;
 pub(crate) mod bounded;
+pub(crate) mod exact;
 pub(crate) mod limits;
 pub(crate) mod linalg;
 // Public through `blossom::meter` with the feature `meter`.
 pub mod meter;
+pub(crate) mod parse;
 pub(crate) mod poly;
 pub(crate) mod ring;

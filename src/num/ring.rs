@@ -16,7 +16,22 @@ use super::meter::{charge_rational, charge_rational_sum};
 /// Zero, the second operand of the charge of a one-operand operation.
 const ZERO: Rational = Rational::ZERO;
 
-/// Exact rational numbers with unbounded numerator and denominator.
+/// Exact rational numbers with unbounded numerator and denominator: num-rational's
+/// `BigRational`, under this name.
+///
+/// Being a type alias, it has num-rational's `FromStr`, which reads integers and fractions
+/// (`"-7"`, `"3/4"`) but no decimal: `"0.25".parse::<Rational>()` fails, and this crate cannot
+/// change that. Read numbers written as text with [`parse_rational`](crate::parse_rational),
+/// which takes integers, fractions and finite decimals with exponents exactly (`"0.25"` is
+/// 1/4, `"-1e-3"` is -1/1000), with an error naming the kind of problem otherwise.
+///
+/// ```
+/// use blossom::{parse_rational, Rational};
+/// assert!("0.25".parse::<Rational>().is_err());
+/// assert_eq!(parse_rational("0.25")?, Rational::new(1.into(), 4.into()));
+/// assert_eq!("3/4".parse::<Rational>().ok(), parse_rational("3/4").ok());
+/// # Ok::<(), blossom::Error>(())
+/// ```
 pub type Rational = BigRational;
 
 /// A commutative ring with unit, plus multiplication by an exact rational constant.

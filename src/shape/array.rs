@@ -108,6 +108,15 @@ impl<T: Ring + std::fmt::Debug, const D: usize> std::fmt::Debug for Bezier<T, D>
 impl<T: Ring, const D: usize> Bezier<T, D> {
     /// The curve with control points `points` (degree `points.len() - 1`).
     ///
+    /// ```
+    /// use blossom::{Bezier, ErrorKind};
+    /// let c = Bezier::new(vec![[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]])?;
+    /// assert_eq!((c.degree(), c.points()[1]), (2, [1.0, 2.0]));
+    /// let none: Vec<[f64; 2]> = Vec::new();
+    /// assert_eq!(Bezier::new(none).unwrap_err().kind(), ErrorKind::Empty);
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
+    ///
     /// # Errors
     /// `points` when it is empty, `D` when `D == 0`.
     pub fn new(points: Vec<[T; D]>) -> Result<Self> {
@@ -153,7 +162,16 @@ impl<T: Ring, const D: usize> Bezier<T, D> {
         self.coords.as_slice()
     }
 
-    /// The blossom f(t_1, ..., t_n) (de Casteljau with one argument per level).
+    /// The blossom f(t_1, ..., t_n) (de Casteljau with one argument per level): symmetric,
+    /// affine in each argument, f(t, ..., t) the point at t; exact for [`crate::Rational`].
+    ///
+    /// ```
+    /// use blossom::Bezier;
+    /// let c = Bezier::new(vec![[0.0], [1.0], [4.0]])?;
+    /// assert_eq!(c.blossom(&[0.0, 1.0])?, [1.0]); // a control point
+    /// assert_eq!(c.blossom(&[0.5, 0.5])?, c.eval(&0.5));
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
     ///
     /// # Errors
     /// `args` when it does not hold n arguments.

@@ -94,7 +94,10 @@ pub(crate) fn check_triangle_net<T: Clone>(
 /// [`BezierCurve::subsegment`] and [`BezierCurve::split`] of such a curve allocate nothing.
 ///
 /// This is the curve type of the library: every operation on Bézier curves is a method here
-/// (or takes this type). [`crate::Bezier`] is the same curve with the dimension in the type
+/// (or takes this type), the certified ones included, for `f64` and [`crate::Rational`] alike:
+/// [`intersect`](Self::intersect), [`self_intersections`](Self::self_intersections),
+/// [`bounding_box`](Self::bounding_box), [`nearest_point`](Self::nearest_point),
+/// [`zeros`](Self::zeros) (defined with the intersection layer, which they call). [`crate::Bezier`] is the same curve with the dimension in the type
 /// (`[T; D]` points), for code that knows it at compile time; the two convert into each other
 /// without loss ([`From`] one way, [`TryFrom`] the other).
 ///
@@ -150,6 +153,15 @@ impl<T: Ring> BezierCurve<T> {
     /// A curve from its control points `w_0, ..., w_n`, all of one dimension `D >= 1` (copied
     /// once into the curve's buffer; [`BezierCurve::from_coordinates`] takes a buffer as it is).
     ///
+    /// ```
+    /// use blossom::{BezierCurve, ErrorKind};
+    /// let c = BezierCurve::new(vec![vec![0.0, 0.0], vec![1.0, 2.0], vec![2.0, 0.0]])?;
+    /// assert_eq!((c.degree(), c.dim()), (2, 2));
+    /// let e = BezierCurve::new(vec![vec![0.0, 0.0], vec![1.0]]).unwrap_err();
+    /// assert_eq!((e.kind(), e.path()), (ErrorKind::Dimension, "control_points[1]"));
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
+    ///
     /// # Errors
     /// `control_points` when it is empty, `control_points[i]` when point i has no coordinate or
     /// another dimension than the first.
@@ -159,6 +171,14 @@ impl<T: Ring> BezierCurve<T> {
     }
 
     /// A curve from the coordinates of its control points, point after point, `dim` each.
+    ///
+    /// ```
+    /// use blossom::BezierCurve;
+    /// let c = BezierCurve::from_coordinates(2, vec![0.0, 0.0, 1.0, 2.0, 2.0, 0.0])?;
+    /// assert_eq!(c.control_points()[1], [1.0, 2.0]);
+    /// assert!(BezierCurve::from_coordinates(2, vec![0.0, 0.0, 1.0]).is_err());
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
     ///
     /// # Errors
     /// `dim` when it is 0, `coordinates` when it is empty or not a whole number of points.
@@ -186,7 +206,7 @@ impl<T: Ring> BezierCurve<T> {
 
     /// The curve of `len` zero coordinates, `dim` each: the buffer an answer is written into.
     #[inline]
-    fn zeros(dim: usize, len: usize) -> Self {
+    fn zero_filled(dim: usize, len: usize) -> Self {
         BezierCurve {
             dim,
             coords: T::Coords::filled(len, T::zero()),
@@ -228,7 +248,16 @@ impl<T: Ring> BezierCurve<T> {
         self.control_points().to_vec()
     }
 
-    /// The point at parameter `t` (de Casteljau).
+    /// The point at parameter `t` by de Casteljau's algorithm: exact for [`crate::Rational`],
+    /// in `f64` within the stability bound of de Casteljau's convex steps (any `t` is
+    /// accepted; outside [0, 1] the steps extrapolate).
+    ///
+    /// ```
+    /// use blossom::BezierCurve;
+    /// let c = BezierCurve::new(vec![vec![0.0, 0.0], vec![1.0, 2.0], vec![2.0, 0.0]])?;
+    /// assert_eq!(c.eval(&0.5), vec![1.0, 1.0]);
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
     pub fn eval(&self, t: &T) -> Point<T> {
         let mut out = vec![T::zero(); self.dim];
         T::with_scratch(|scratch| self.eval_into(t, &mut out, scratch));
@@ -246,6 +275,16 @@ impl<T: Ring> BezierCurve<T> {
     }
 
     /// The blossom b[t_1, ..., t_n], eq. (2) of seed 004.
+    ///
+    /// ```
+    /// use blossom::BezierCurve;
+    /// let c = BezierCurve::new(vec![vec![0.0], vec![1.0], vec![4.0]])?;
+    /// // The blossom is symmetric and gives the control points at (0, 0), (0, 1), (1, 1).
+    /// assert_eq!(c.blossom(&[0.0, 1.0])?, vec![1.0]);
+    /// assert_eq!(c.blossom(&[0.5, 0.5])?, c.eval(&0.5));
+    /// assert!(c.blossom(&[0.5]).is_err());
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
     ///
     /// # Errors
     /// `args` when it does not hold n arguments.
@@ -276,7 +315,7 @@ impl<T: Ring> BezierCurve<T> {
                 };
             }
         }
-        let mut out = Self::zeros(self.dim, self.coords.as_slice().len());
+        let mut out = Self::zero_filled(self.dim, self.coords.as_slice().len());
         flat::curve_subsegment_returned(
             self.coords.as_slice(),
             self.dim,
@@ -307,7 +346,17 @@ impl<T: Ring> BezierCurve<T> {
         );
     }
 
-    /// The parts over [0, t] and [t, 1], each over [0, 1], from one de Casteljau pyramid.
+    /// The parts over [0, t] and [t, 1], each over [0, 1], from one de Casteljau pyramid:
+    /// exact for [`crate::Rational`], each control point one de Casteljau evaluation in `f64`.
+    ///
+    /// ```
+    /// use blossom::BezierCurve;
+    /// let c = BezierCurve::new(vec![vec![0.0, 0.0], vec![1.0, 2.0], vec![2.0, 0.0]])?;
+    /// let (left, right) = c.split(&0.5);
+    /// assert_eq!(left.control_points()[2], right.control_points()[0]);
+    /// assert_eq!(right.control_points()[2], [2.0, 0.0]);
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
     pub fn split(&self, t: &T) -> (Self, Self) {
         let mut left = self.clone();
         let mut right = self.clone();
@@ -322,15 +371,32 @@ impl<T: Ring> BezierCurve<T> {
     }
 
     /// The first derivative (the hodograph): n (w_(i+1) - w_i), a curve of degree n - 1; for a
-    /// constant curve, the zero curve of degree 0.
+    /// constant curve, the zero curve of degree 0. Exact for [`crate::Rational`].
+    ///
+    /// ```
+    /// use blossom::BezierCurve;
+    /// let c = BezierCurve::new(vec![vec![0.0, 0.0], vec![1.0, 2.0], vec![2.0, 0.0]])?;
+    /// assert_eq!(c.deriv().into_control_points(), vec![vec![2.0, 4.0], vec![2.0, -4.0]]);
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
     pub fn deriv(&self) -> Self {
         if self.degree() == 0 {
-            return Self::zeros(self.dim, self.dim);
+            return Self::zero_filled(self.dim, self.dim);
         }
         crate::bezier_derivative(self, 1).expect("order 1 <= degree")
     }
 
     /// The same curve at degree `to_degree` >= n (degree elevation, seed 004).
+    ///
+    /// ```
+    /// use blossom::{BezierCurve, Rational};
+    /// let q = |n: i64| Rational::from_integer(n.into());
+    /// let line = BezierCurve::new(vec![vec![q(0)], vec![q(3)]])?;
+    /// // Exact: the same curve with control points 0, 1, 2, 3.
+    /// assert_eq!(line.elevate(3)?.into_control_points(), vec![vec![q(0)], vec![q(1)], vec![q(2)], vec![q(3)]]);
+    /// assert!(line.elevate(0).is_err());
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
     ///
     /// # Errors
     /// `to_degree` when it is below the degree.
@@ -339,6 +405,16 @@ impl<T: Ring> BezierCurve<T> {
     }
 
     /// The curve of degree `to_degree` <= n nearest to this one by `method` (seed 004).
+    ///
+    /// ```
+    /// use blossom::{BezierCurve, Rational, Reduction};
+    /// let q = |n: i64| Rational::from_integer(n.into());
+    /// let line = BezierCurve::new(vec![vec![q(0)], vec![q(1)], vec![q(2)], vec![q(3)]])?;
+    /// // A cubic that is a line reduces to that line exactly, by any method.
+    /// let back = line.reduce(1, Reduction::LeastSquares)?;
+    /// assert_eq!(back.into_control_points(), vec![vec![q(0)], vec![q(3)]]);
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
     ///
     /// # Errors
     /// As [`crate::reduce`].
