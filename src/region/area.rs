@@ -43,16 +43,8 @@ struct Term<'a> {
 
 impl Term<'_> {
     fn enclose(&mut self) {
-        let (lo, hi) = match self.at.exact() {
-            Some(r) => {
-                let v = super::curve::eval(self.f, r);
-                (v.clone(), v)
-            }
-            None => {
-                let (l, h) = self.at.interval();
-                enclose(self.f, l, h)
-            }
-        };
+        let (l, h) = self.at.interval();
+        let (lo, hi) = enclose(self.f, l, h);
         self.enclosure = if self.sign { (lo, hi) } else { (-hi, -lo) };
     }
 
@@ -73,6 +65,9 @@ pub(crate) fn enclose_loops(
     for runs in loops {
         for r in runs.iter() {
             for (sign, k) in [(true, r.to), (false, r.from)] {
+                if arr.params[r.curve][k].exact().is_some_and(Zero::is_zero) {
+                    continue; // F(0) = 0.
+                }
                 let mut t = Term {
                     sign,
                     f: &primitives[r.curve],

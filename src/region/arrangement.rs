@@ -24,6 +24,8 @@ use super::curve::{one, zero, Curve};
 use super::transfer::transfer;
 use crate::error::Result;
 use crate::intersect::algebraic::AlgebraicReal;
+pub(crate) use super::prune::one_to_one;
+use super::prune::consecutive_meet_only_at_join;
 use crate::intersect::curves::{intersect_curves, self_intersections, Overlap};
 use std::cmp::Ordering;
 
@@ -122,6 +124,20 @@ struct Shared {
     overlap: Overlap,
 }
 
+/// For curves i < j that follow each other in a loop and are proved to meet only at their
+/// join ([`consecutive_meet_only_at_join`]): `Some(true)` when curve i ends at the join
+/// (their one intersection is (1, 0)), `Some(false)` when curve j does ((0, 1)); `None`
+/// when the exact intersector must answer.
+pub(crate) fn proved_join(curves: &[Curve], next: &[usize], i: usize, j: usize) -> Option<bool> {
+    if next[i] == j && next[j] != i && consecutive_meet_only_at_join(&curves[i].points, &curves[j].points) {
+        Some(true)
+    } else if next[j] == i && next[i] != j && consecutive_meet_only_at_join(&curves[j].points, &curves[i].points) {
+        Some(false)
+    } else {
+        None
+    }
+}
+
 /// The index of `x` among the sorted distinct `params` (present by construction).
 fn index_of(params: &[AlgebraicReal], x: &AlgebraicReal) -> usize {
     params
@@ -157,16 +173,13 @@ impl Arrangement {
         let mut params: Vec<Vec<AlgebraicReal>> = vec![vec![zero(), one()]; n];
         let mut same = Vec::new();
         let mut shared = Vec::new();
-        let mut record = |p: usize, q: usize, found: crate::intersect::curves::Intersections| {
-            for point in found.points {
-                params[p].push(point.s.clone());
-                params[q].push(point.t.clone());
-                same.push(Same {
-                    a: (p, point.s),
-                    b: (q, point.t),
-                });
+        let mut record = |p: usize, q: usize, points: Vec<(AlgebraicReal, AlgebraicReal)>, overlaps: Vec<Overlap>| {
+            for (s, t) in points {
+                params[p].push(s.clone());
+                params[q].push(t.clone());
+                same.push(Same { a: (p, s), b: (q, t) });
             }
-            for overlap in found.overlaps {
+            for overlap in overlaps {
                 let ends = [&overlap.s[0], &overlap.s[1], &overlap.t[0], &overlap.t[1]];
                 if ends[0].equals(ends[1]) || ends[2].equals(ends[3]) {
                     continue;
@@ -176,13 +189,30 @@ impl Arrangement {
                 shared.push(Shared { p, q, overlap });
             }
         };
-        for (i, j) in candidate_pairs(&curves) {
-            let found = intersect_curves(&curves[i].points, &curves[j].points)?;
-            record(i, j, found);
+        let clock = std::time::Instant::now();
+        let pairs = candidate_pairs(&curves);
+        let timing = std::env::var_os("BLOSSOM_REGION_TIMING").is_some();
+        for &(i, j) in &pairs {
+            match proved_join(&curves, next, i, j) {
+                Some(true) => record(i, j, vec![(one(), zero())], Vec::new()),
+                Some(false) => record(i, j, vec![(zero(), one())], Vec::new()),
+                None => {
+                    let found = intersect_curves(&curves[i].points, &curves[j].points)?;
+                    let points = found.points.into_iter().map(|x| (x.s, x.t)).collect();
+                    record(i, j, points, found.overlaps);
+                }
+            }
         }
         for (i, curve) in curves.iter().enumerate() {
+            if one_to_one(&curve.points) {
+                continue;
+            }
             let found = self_intersections(&curve.points)?;
-            record(i, i, found);
+            let points = found.points.into_iter().map(|x| (x.s, x.t)).collect();
+            record(i, i, points, found.overlaps);
+        }
+        if timing {
+            eprintln!("pairs {} intersections {:?}", pairs.len(), clock.elapsed());
         }
         for (c, &d) in next.iter().enumerate() {
             same.push(Same {
@@ -194,6 +224,9 @@ impl Arrangement {
             sort_distinct(p);
         }
         carry_across_overlaps(&curves, &shared, &mut params);
+        if timing {
+            eprintln!("sorted {:?}", clock.elapsed());
+        }
 
         // Vertices.
         let mut offset = Vec::with_capacity(n + 1);

@@ -65,7 +65,7 @@ pub(crate) fn boundary_groups(
                     .zip(&arr.ids)
                     .filter(|(_, id)| id.region == r)
                     .map(|(c, _)| c);
-                let count = ray_count(curves, &x, axis, AtStart::Skip);
+                let count = ray_count(curves, &x, axis, AtStart::Skip, Some((curve, &m)));
                 let mult: i64 = g
                     .members
                     .iter()

@@ -29,6 +29,10 @@ pub(crate) struct Monotone {
     pub values: Vec<AlgebraicReal>,
     /// Whether the coordinate is constant (then no piece changes it).
     pub constant: bool,
+    /// For each piece: whether the coordinate increases along it.
+    pub rising: Vec<bool>,
+    /// Outward-rounded doubles around each value: `(down, up)`.
+    pub bounds: Vec<(f64, f64)>,
 }
 
 /// An input curve with its exact power form and cached derived data.
@@ -172,10 +176,20 @@ fn monotone_breaks(c: &[Rational]) -> Monotone {
         }
     }
     params.push(one());
-    let values = params.iter().map(|t| value_at(c, t)).collect();
+    let values: Vec<AlgebraicReal> = params.iter().map(|t| value_at(c, t)).collect();
+    let rising = values
+        .windows(2)
+        .map(|v| v[0].compare(&v[1]) == Ordering::Less)
+        .collect();
+    let bounds = values
+        .iter()
+        .map(|v| (v.to_f64_down(), v.to_f64_up()))
+        .collect();
     Monotone {
         params,
         values,
         constant,
+        rising,
+        bounds,
     }
 }

@@ -70,6 +70,7 @@ mod classify;
 mod angle;
 mod curve;
 mod pipeline;
+mod prune;
 mod region;
 mod transfer;
 mod winding;

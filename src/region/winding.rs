@@ -61,12 +61,16 @@ pub(crate) enum AtStart {
 
 /// The signed count of the crossings of the ray from `p` along +`axis` with `curves`, as the
 /// module docs define it. With [`AtStart::Skip`] a crossing exactly at p is not counted (the
-/// count is then that of p + δ e_axis for an infinitesimal δ > ε > 0).
+/// count is then that of p + δ e_axis for an infinitesimal δ > ε > 0). `through` may name a
+/// curve known to pass through p at the rational parameter m, strictly inside one of its
+/// monotone pieces along the other axis: that piece's crossing is then p itself, skipped
+/// without isolating it.
 pub(crate) fn ray_count<'a>(
     curves: impl IntoIterator<Item = &'a Curve>,
     p: &[Rational; 2],
     axis: usize,
     at_start: AtStart,
+    through: Option<(&Curve, &Rational)>,
 ) -> i64 {
     let (a, b) = (axis, 1 - axis);
     let (pa_lo, pb_lo, pb_hi) = (f64_down(&p[a]), f64_down(&p[b]), f64_up(&p[b]));
@@ -85,24 +89,41 @@ pub(crate) fn ray_count<'a>(
         }
         let mut roots: Option<Vec<AlgebraicReal>> = None;
         for k in 0..mono.params.len() - 1 {
-            let (v0, v1) = (&mono.values[k], &mono.values[k + 1]);
-            let rising = v0.compare(v1) == Ordering::Less;
-            let (lo, hi, lo_param) = if rising {
-                (v0, v1, &mono.params[k])
-            } else {
-                (v1, v0, &mono.params[k + 1])
-            };
-            if lo.cmp_rational(&p[b]) == Ordering::Greater
-                || hi.cmp_rational(&p[b]) != Ordering::Greater
-            {
+            let rising = mono.rising[k];
+            let (lo_k, hi_k) = if rising { (k, k + 1) } else { (k + 1, k) };
+            let (lo_b, hi_b) = (mono.bounds[lo_k], mono.bounds[hi_k]);
+            // The doubles decide lo <= p_b < hi when they separate; else the exact test.
+            if pb_hi < lo_b.0 || pb_lo > hi_b.1 {
                 continue;
             }
+            let surely_between = lo_b.1 < pb_lo && pb_hi < hi_b.0;
+            let (lo, hi, lo_param) = (&mono.values[lo_k], &mono.values[hi_k], &mono.params[lo_k]);
+            let at_lo = if surely_between {
+                false
+            } else {
+                let c = lo.cmp_rational(&p[b]);
+                if c == Ordering::Greater || hi.cmp_rational(&p[b]) != Ordering::Greater {
+                    continue;
+                }
+                c == Ordering::Equal
+            };
             let sign = if rising { orientation } else { -orientation };
+            if let Some((known, m)) = through {
+                // The piece crosses the height once; when it holds m, that crossing is p.
+                let (t0, t1) = (&mono.params[k], &mono.params[k + 1]);
+                if std::ptr::eq(known, curve)
+                    && t0.cmp_rational(m) == Ordering::Less
+                    && t1.cmp_rational(m) == Ordering::Greater
+                {
+                    debug_assert_eq!(at_start, AtStart::Skip);
+                    continue;
+                }
+            }
             if wholly_beyond {
                 total += sign;
                 continue;
             }
-            let crossing = if lo.cmp_rational(&p[b]) == Ordering::Equal {
+            let crossing = if at_lo {
                 lo_param.clone()
             } else {
                 let all = roots.get_or_insert_with(|| {
@@ -154,7 +175,7 @@ pub(crate) fn winding_of(curves: &[Curve], p: &[Rational; 2]) -> Winding {
     if on_curves(curves, p) {
         Winding::Boundary
     } else {
-        Winding::Number(ray_count(curves, p, 0, AtStart::Impossible))
+        Winding::Number(ray_count(curves, p, 0, AtStart::Impossible, None))
     }
 }
 
