@@ -60,11 +60,18 @@ fn class(curves: &[Curve], b: &Branch) -> (u8, [Ordering; 2]) {
         dy = derivative(&dy);
         let (sx, sy) = (sign_at(&dx, &b.at), sign_at(&dy, &b.at));
         if sx == Ordering::Equal && sy == Ordering::Equal {
-            assert!(!dx.is_empty() || !dy.is_empty(), "a curve that traces more than a point");
+            assert!(
+                !dx.is_empty() || !dy.is_empty(),
+                "a curve that traces more than a point"
+            );
             continue;
         }
         let flip = sigma_negative && k % 2 == 1;
-        let (sx, sy) = if flip { (sx.reverse(), sy.reverse()) } else { (sx, sy) };
+        let (sx, sy) = if flip {
+            (sx.reverse(), sy.reverse())
+        } else {
+            (sx, sy)
+        };
         use Ordering::{Equal as Z, Greater as P, Less as N};
         let class = match (sx, sy) {
             (P, Z) => 0,
@@ -129,7 +136,13 @@ fn first_root(g: &[Rational], from: &AlgebraicReal, to: &AlgebraicReal) -> Algeb
 
 /// The height (coordinate `1 - axis`) where the branch crosses the line coordinate `axis`
 /// = `level`, on its monotone stretch from its vertex to `limit`.
-fn height_at(curves: &[Curve], b: &Branch, axis: usize, level: &Rational, limit: &AlgebraicReal) -> AlgebraicReal {
+fn height_at(
+    curves: &[Curve],
+    b: &Branch,
+    axis: usize,
+    level: &Rational,
+    limit: &AlgebraicReal,
+) -> AlgebraicReal {
     let c = &curves[b.curve];
     let f = shifted_poly(&c.power[axis], level);
     let forward = b.forward();

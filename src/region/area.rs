@@ -10,9 +10,9 @@
 //! decided the same way: a simple loop bounds a positive area, so refinement until the
 //! enclosure excludes zero terminates.
 
+use super::arrangement::Arrangement;
 use super::chain::Run;
 use super::curve::derivative;
-use super::arrangement::Arrangement;
 use crate::intersect::algebraic::{enclose, AlgebraicReal};
 use crate::num::ring::Rational;
 use num_traits::Zero;

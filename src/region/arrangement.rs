@@ -21,11 +21,11 @@
 //!   lower parameters on that curve.
 
 use super::curve::{one, zero, Curve};
+use super::prune::consecutive_meet_only_at_join;
+pub(crate) use super::prune::one_to_one;
 use super::transfer::transfer;
 use crate::error::Result;
 use crate::intersect::algebraic::AlgebraicReal;
-pub(crate) use super::prune::one_to_one;
-use super::prune::consecutive_meet_only_at_join;
 use crate::intersect::curves::{intersect_curves, self_intersections, Overlap};
 use std::cmp::Ordering;
 
@@ -129,9 +129,15 @@ struct Shared {
 /// (their one intersection is (1, 0)), `Some(false)` when curve j does ((0, 1)); `None`
 /// when the exact intersector must answer.
 pub(crate) fn proved_join(curves: &[Curve], next: &[usize], i: usize, j: usize) -> Option<bool> {
-    if next[i] == j && next[j] != i && consecutive_meet_only_at_join(&curves[i].points, &curves[j].points) {
+    if next[i] == j
+        && next[j] != i
+        && consecutive_meet_only_at_join(&curves[i].points, &curves[j].points)
+    {
         Some(true)
-    } else if next[j] == i && next[i] != j && consecutive_meet_only_at_join(&curves[j].points, &curves[i].points) {
+    } else if next[j] == i
+        && next[i] != j
+        && consecutive_meet_only_at_join(&curves[j].points, &curves[i].points)
+    {
         Some(false)
     } else {
         None
@@ -173,11 +179,17 @@ impl Arrangement {
         let mut params: Vec<Vec<AlgebraicReal>> = vec![vec![zero(), one()]; n];
         let mut same = Vec::new();
         let mut shared = Vec::new();
-        let mut record = |p: usize, q: usize, points: Vec<(AlgebraicReal, AlgebraicReal)>, overlaps: Vec<Overlap>| {
+        let mut record = |p: usize,
+                          q: usize,
+                          points: Vec<(AlgebraicReal, AlgebraicReal)>,
+                          overlaps: Vec<Overlap>| {
             for (s, t) in points {
                 params[p].push(s.clone());
                 params[q].push(t.clone());
-                same.push(Same { a: (p, s), b: (q, t) });
+                same.push(Same {
+                    a: (p, s),
+                    b: (q, t),
+                });
             }
             for overlap in overlaps {
                 let ends = [&overlap.s[0], &overlap.s[1], &overlap.t[0], &overlap.t[1]];
@@ -189,9 +201,7 @@ impl Arrangement {
                 shared.push(Shared { p, q, overlap });
             }
         };
-        let clock = std::time::Instant::now();
         let pairs = candidate_pairs(&curves);
-        let timing = std::env::var_os("BLOSSOM_REGION_TIMING").is_some();
         for &(i, j) in &pairs {
             match proved_join(&curves, next, i, j) {
                 Some(true) => record(i, j, vec![(one(), zero())], Vec::new()),
@@ -211,9 +221,6 @@ impl Arrangement {
             let points = found.points.into_iter().map(|x| (x.s, x.t)).collect();
             record(i, i, points, found.overlaps);
         }
-        if timing {
-            eprintln!("pairs {} intersections {:?}", pairs.len(), clock.elapsed());
-        }
         for (c, &d) in next.iter().enumerate() {
             same.push(Same {
                 a: (c, one()),
@@ -224,9 +231,6 @@ impl Arrangement {
             sort_distinct(p);
         }
         carry_across_overlaps(&curves, &shared, &mut params);
-        if timing {
-            eprintln!("sorted {:?}", clock.elapsed());
-        }
 
         // Vertices.
         let mut offset = Vec::with_capacity(n + 1);
@@ -261,10 +265,20 @@ impl Arrangement {
         let mut groups = Joins::new(pieces.len());
         for sh in &shared {
             let o = &sh.overlap;
-            let (i0, i1) = (index_of(&params[sh.p], &o.s[0]), index_of(&params[sh.p], &o.s[1]));
-            let (j0, j1) = (index_of(&params[sh.q], &o.t[0]), index_of(&params[sh.q], &o.t[1]));
+            let (i0, i1) = (
+                index_of(&params[sh.p], &o.s[0]),
+                index_of(&params[sh.p], &o.s[1]),
+            );
+            let (j0, j1) = (
+                index_of(&params[sh.q], &o.t[0]),
+                index_of(&params[sh.q], &o.t[1]),
+            );
             let forward = j0 < j1;
-            debug_assert_eq!(i1 - i0, j0.abs_diff(j1), "both sides of an overlap split alike");
+            debug_assert_eq!(
+                i1 - i0,
+                j0.abs_diff(j1),
+                "both sides of an overlap split alike"
+            );
             for k in 0..=(i1 - i0) {
                 let j = if forward { j0 + k } else { j0 - k };
                 nodes.join(offset[sh.p] + i0 + k, offset[sh.q] + j, false);
@@ -358,29 +372,27 @@ fn insert(p: &mut Vec<AlgebraicReal>, x: AlgebraicReal) -> bool {
 /// an overlap's range.
 fn carry_across_overlaps(curves: &[Curve], shared: &[Shared], params: &mut [Vec<AlgebraicReal>]) {
     let strictly_inside = |x: &AlgebraicReal, a: &AlgebraicReal, b: &AlgebraicReal| {
-        let (lo, hi) = if a.compare(b) == Ordering::Greater { (b, a) } else { (a, b) };
+        let (lo, hi) = if a.compare(b) == Ordering::Greater {
+            (b, a)
+        } else {
+            (a, b)
+        };
         x.compare(lo) == Ordering::Greater && x.compare(hi) == Ordering::Less
     };
     loop {
         let mut changed = false;
         for sh in shared {
             let o = &sh.overlap;
-            for (from, to, from_range, to_range) in [
-                (sh.p, sh.q, &o.s, &o.t),
-                (sh.q, sh.p, &o.t, &o.s),
-            ] {
+            for (from, to, from_range, to_range) in
+                [(sh.p, sh.q, &o.s, &o.t), (sh.q, sh.p, &o.t, &o.s)]
+            {
                 let inner: Vec<AlgebraicReal> = params[from]
                     .iter()
                     .filter(|x| strictly_inside(x, &from_range[0], &from_range[1]))
                     .cloned()
                     .collect();
                 for x in inner {
-                    let t = transfer(
-                        &curves[from],
-                        &x,
-                        &curves[to],
-                        (&to_range[0], &to_range[1]),
-                    );
+                    let t = transfer(&curves[from], &x, &curves[to], (&to_range[0], &to_range[1]));
                     changed |= insert(&mut params[to], t);
                 }
             }

@@ -11,8 +11,8 @@
 //! coordinate is constant has no piece that changes it.
 
 use crate::intersect::algebraic::{exact_f64, value_at, AlgebraicReal};
-use crate::intersect::zeros::roots_with_multiplicity;
 use crate::intersect::upoly;
+use crate::intersect::zeros::roots_with_multiplicity;
 use crate::num::ring::{rational_to_f64, Rational};
 use crate::shape::array::Bezier;
 use crate::shape::basis::bernstein_to_power;
@@ -88,7 +88,12 @@ impl Curve {
         let rows: Vec<Vec<Rational>> = points.iter().map(|p| p.to_vec()).collect();
         let c = bernstein_to_power(&rows);
         let power = [0, 1].map(|a| c.iter().map(|p| p[a].clone()).collect::<Vec<_>>());
-        let mut bbox = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+        let mut bbox = [
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        ];
         for p in &points {
             for a in 0..2 {
                 bbox[a] = bbox[a].min(f64_down(&p[a]));

@@ -62,12 +62,12 @@
 //! intersections of the curve pairs whose boxes meet; [`boolean_work`] estimates it before
 //! any is computed.
 
+mod angle;
 mod area;
 mod arrangement;
 mod boolean;
 mod chain;
 mod classify;
-mod angle;
 mod curve;
 mod pipeline;
 mod prune;
@@ -77,6 +77,10 @@ mod winding;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_curved;
+#[cfg(test)]
+mod tests_grid;
 
 pub use boolean::{
     boolean, boolean_work, triangle_intersection, BooleanOp, Edge, RegionResult, ResultLoop,

@@ -66,21 +66,10 @@ fn box_area(regions: &[&Region; 2]) -> Rational {
 
 /// The boolean `op` of the two regions.
 pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Result<RegionResult> {
-    let clock = std::time::Instant::now();
-    let timing = std::env::var_os("BLOSSOM_REGION_TIMING").is_some();
     let (curves, ids, next) = collect(regions);
     let arr = Arrangement::build(curves, ids, &next)?;
-    if timing {
-        eprintln!("arrangement {:?} pieces {} groups {}", clock.elapsed(), arr.pieces.len(), arr.groups.len());
-    }
     let verdicts = boundary_groups(&arr, [regions[0].fill(), regions[1].fill()], op);
-    if timing {
-        eprintln!("classify {:?}", clock.elapsed());
-    }
     let loops = chain(&arr, &verdicts);
-    if timing {
-        eprintln!("chain {:?}", clock.elapsed());
-    }
     if loops.is_empty() {
         return Ok(RegionResult {
             loops: Vec::new(),

@@ -87,7 +87,9 @@ pub(crate) fn consecutive_meet_only_at_join(p: &[[Rational; 2]], q: &[[Rational;
         ],
     ];
     candidates.into_iter().any(|n| {
-        let Some(n_exact) = exact(n) else { return false };
+        let Some(n_exact) = exact(n) else {
+            return false;
+        };
         p.iter()
             .filter(|x| *x != v)
             .all(|x| side(&n, &n_exact, x, v) == Ordering::Less)
@@ -107,9 +109,14 @@ pub(crate) fn one_to_one(p: &[[Rational; 2]]) -> bool {
             sum[a] += rational_to_f64(&w[1][a]) - rational_to_f64(&w[0][a]);
         }
     }
-    let candidates = [[rational_to_f64(&chord[0]), rational_to_f64(&chord[1])], sum];
+    let candidates = [
+        [rational_to_f64(&chord[0]), rational_to_f64(&chord[1])],
+        sum,
+    ];
     candidates.iter().any(|d| {
-        let Some(d_exact) = exact(*d) else { return false };
+        let Some(d_exact) = exact(*d) else {
+            return false;
+        };
         p.windows(2)
             .all(|w| side(d, &d_exact, &w[1], &w[0]) == Ordering::Greater)
     })
@@ -121,19 +128,28 @@ mod tests {
     use crate::num::ring::Rational;
 
     fn p(x: i64, y: i64) -> [Rational; 2] {
-        [Rational::from_integer(x.into()), Rational::from_integer(y.into())]
+        [
+            Rational::from_integer(x.into()),
+            Rational::from_integer(y.into()),
+        ]
     }
 
     #[test]
     fn joins_and_injectivity() {
         // A corner and a smooth join: proved.
-        assert!(consecutive_meet_only_at_join(&[p(0, 0), p(1, 0)], &[p(1, 0), p(1, 1)]));
+        assert!(consecutive_meet_only_at_join(
+            &[p(0, 0), p(1, 0)],
+            &[p(1, 0), p(1, 1)]
+        ));
         assert!(consecutive_meet_only_at_join(
             &[p(0, 0), p(1, 1), p(2, 1)],
             &[p(2, 1), p(3, 1), p(4, 0)]
         ));
         // Q doubles back over P: not proved (they share a stretch).
-        assert!(!consecutive_meet_only_at_join(&[p(0, 0), p(2, 0)], &[p(2, 0), p(1, 0)]));
+        assert!(!consecutive_meet_only_at_join(
+            &[p(0, 0), p(2, 0)],
+            &[p(2, 0), p(1, 0)]
+        ));
         // Q crosses P again: not proved.
         assert!(!consecutive_meet_only_at_join(
             &[p(0, 0), p(4, 0)],

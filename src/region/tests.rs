@@ -2,7 +2,9 @@
 //! construction, identities of areas on curved cases, membership of sample points against
 //! the exact winding numbers of the inputs, and bad input.
 
-use super::{boolean, triangle_intersection, BooleanOp, FillRule, Position, Region, RegionResult, Winding};
+use super::{
+    boolean, triangle_intersection, BooleanOp, FillRule, Position, Region, RegionResult, Winding,
+};
 use crate::error::ErrorKind;
 use crate::num::ring::Rational;
 use crate::shape::array::Bezier;
@@ -31,7 +33,12 @@ pub(super) fn region(loops: Vec<Vec<Bezier<Rational, 2>>>) -> Region {
 }
 
 pub(super) fn square(x: i64, y: i64, s: i64) -> Region {
-    region(vec![polygon(&[(x, y), (x + s, y), (x + s, y + s), (x, y + s)])])
+    region(vec![polygon(&[
+        (x, y),
+        (x + s, y),
+        (x + s, y + s),
+        (x, y + s),
+    ])])
 }
 
 /// The exact area `num / den` lies in the enclosure, which is tight.
@@ -74,7 +81,9 @@ pub(super) fn assert_well_formed(regions: &[&Region], r: &RegionResult) {
             assert!(!e.from.equals(&e.to));
             let same_curve = (e.region, e.loop_index, e.curve) == (f.region, f.loop_index, f.curve);
             assert!(
-                !(same_curve && e.to.equals(&f.from) && (e.from.compare(&e.to) == f.from.compare(&f.to))),
+                !(same_curve
+                    && e.to.equals(&f.from)
+                    && (e.from.compare(&e.to) == f.from.compare(&f.to))),
                 "edges {i} and {} continue one curve",
                 (i + 1) % n
             );
@@ -87,7 +96,11 @@ pub(super) fn assert_well_formed(regions: &[&Region], r: &RegionResult) {
                 signed += p0[0] * p1[1] - p1[0] * p0[1];
             }
         }
-        assert_eq!(lp.hole, signed < 0.0, "hole flag against the loop's orientation");
+        assert_eq!(
+            lp.hole,
+            signed < 0.0,
+            "hole flag against the loop's orientation"
+        );
     }
 }
 
@@ -139,7 +152,10 @@ fn identical_reversed_and_elevated_copies() {
             let r = run(&a, b, op);
             assert_eq!(r.loops.len(), 1, "{op:?}");
             assert_eq!(r.loops[0].edges.len(), 4);
-            assert!(r.loops[0].edges.iter().all(|e| e.region == 0), "reported from A");
+            assert!(
+                r.loops[0].edges.iter().all(|e| e.region == 0),
+                "reported from A"
+            );
             assert_area(&r, 4, 1);
         }
         for op in [BooleanOp::Difference, BooleanOp::Xor] {
@@ -156,7 +172,10 @@ fn identical_reversed_and_elevated_copies() {
 #[test]
 fn shared_partial_edge_and_touching_regions() {
     // [0,2]^2 and [2,4]x[0,1] share the piece x = 2, 0 <= y <= 1.
-    let (a, b) = (square(0, 0, 2), region(vec![polygon(&[(2, 0), (4, 0), (4, 1), (2, 1)])]));
+    let (a, b) = (
+        square(0, 0, 2),
+        region(vec![polygon(&[(2, 0), (4, 0), (4, 1), (2, 1)])]),
+    );
     let r = run(&a, &b, BooleanOp::Union);
     assert_eq!(r.loops.len(), 1);
     assert_area(&r, 6, 1);
@@ -166,7 +185,11 @@ fn shared_partial_edge_and_touching_regions() {
     assert!(r.loops.is_empty());
     let r = run(&a, &b, BooleanOp::Difference);
     assert_area(&r, 4, 1);
-    assert_eq!(r.loops[0].edges.len(), 4, "the shared piece and the rest of A's side merge");
+    assert_eq!(
+        r.loops[0].edges.len(),
+        4,
+        "the shared piece and the rest of A's side merge"
+    );
     // Squares touching at a corner: the union splits there.
     let (a, b) = (square(0, 0, 1), square(1, 1, 1));
     let r = run(&a, &b, BooleanOp::Union);
@@ -238,12 +261,19 @@ fn self_intersecting_loops_under_both_fill_rules() {
     for fill in [FillRule::NonZero, FillRule::EvenOdd] {
         let a = Region::new(vec![polygon(&star)], fill).unwrap();
         let w = a.winding(&pt(0, 0));
-        assert!(matches!(w, Winding::Number(2) | Winding::Number(-2)), "{w:?}");
+        assert!(
+            matches!(w, Winding::Number(2) | Winding::Number(-2)),
+            "{w:?}"
+        );
         let r = run(&a, &empty, BooleanOp::Union);
         match fill {
             FillRule::NonZero => assert_eq!((r.loops.len(), r.loops[0].edges.len()), (1, 10)),
             FillRule::EvenOdd => {
-                assert_eq!((r.loops.len(), holes(&r)), (5, 0), "five tips touching at corners")
+                assert_eq!(
+                    (r.loops.len(), holes(&r)),
+                    (5, 0),
+                    "five tips touching at corners"
+                )
             }
         }
     }
@@ -255,15 +285,22 @@ fn q2(a: i64, b: i64, c: i64, d: i64) -> [Rational; 2] {
 
 /// The cup {y >= x^2 / s, y <= w^2 / s} for |x| <= w, as a quadratic and a line (s > 0),
 /// mirrored in y = 0 when `down`.
-fn cup(w: i64, s: i64, down: bool) -> Region {
+pub(super) fn cup(w: i64, s: i64, down: bool) -> Region {
     let sign = if down { -1 } else { 1 };
     let top = q(sign * w * w, s);
     let ctrl = q(-sign * w * w, s);
-    let quad = Bezier::new(vec![[q(-w, 1), top.clone()], [q(0, 1), ctrl], [q(w, 1), top.clone()]]).unwrap();
+    let quad = Bezier::new(vec![
+        [q(-w, 1), top.clone()],
+        [q(0, 1), ctrl],
+        [q(w, 1), top.clone()],
+    ])
+    .unwrap();
     let line = Bezier::new(vec![[q(w, 1), top.clone()], [q(-w, 1), top]]).unwrap();
     let lp = if down {
         // Keep it counter-clockwise: reverse both.
-        let rev = |b: &Bezier<Rational, 2>| Bezier::new(b.points().iter().rev().cloned().collect()).unwrap();
+        let rev = |b: &Bezier<Rational, 2>| {
+            Bezier::new(b.points().iter().rev().cloned().collect()).unwrap()
+        };
         vec![rev(&line), rev(&quad)]
     } else {
         vec![quad, line]
@@ -278,7 +315,11 @@ fn tangent_contacts_from_outside_and_inside() {
     assert_eq!(a.contains(&q2(0, 1, 1, 2)), Position::Inside);
     assert_eq!(b.contains(&q2(0, 1, -1, 2)), Position::Inside);
     let r = run(&a, &b, BooleanOp::Union);
-    assert_eq!((r.loops.len(), holes(&r)), (2, 0), "split at the tangent point");
+    assert_eq!(
+        (r.loops.len(), holes(&r)),
+        (2, 0),
+        "split at the tangent point"
+    );
     assert_area(&r, 8, 3);
     assert!(run(&a, &b, BooleanOp::Intersection).loops.is_empty());
     // y >= 2 x^2 (|x| <= 1/2) inside y >= x^2 (|x| <= 1), touching at the origin.
@@ -288,7 +329,11 @@ fn tangent_contacts_from_outside_and_inside() {
         region(vec![vec![quad, line]])
     };
     let r = run(&a, &small, BooleanOp::Difference);
-    assert_eq!((r.loops.len(), holes(&r)), (2, 1), "the hole touching the outer loop is split off");
+    assert_eq!(
+        (r.loops.len(), holes(&r)),
+        (2, 1),
+        "the hole touching the outer loop is split off"
+    );
     assert_area(&r, 1, 1);
     let r = run(&a, &small, BooleanOp::Intersection);
     assert_eq!(r.loops.len(), 1);
@@ -325,24 +370,41 @@ fn triangles_sharing_only_an_edge_or_overlapping() {
 
 #[test]
 fn bad_input_names_the_field() {
-    let line = |a: (i64, i64), b: (i64, i64)| Bezier::new(vec![pt(a.0, a.1), pt(b.0, b.1)]).unwrap();
+    let line =
+        |a: (i64, i64), b: (i64, i64)| Bezier::new(vec![pt(a.0, a.1), pt(b.0, b.1)]).unwrap();
     let e = Region::new(
-        vec![vec![line((0, 0), (1, 0)), line((1, 0), (1, 1)), line((1, 1), (0, 0))]],
+        vec![vec![
+            line((0, 0), (1, 0)),
+            line((1, 0), (1, 1)),
+            line((1, 1), (0, 0)),
+        ]],
         FillRule::NonZero,
     );
     assert!(e.is_ok());
     let e = Region::new(
-        vec![vec![line((0, 0), (1, 0)), Bezier::new(vec![q2(1, 1, 1, 2), pt(0, 0)]).unwrap()]],
+        vec![vec![
+            line((0, 0), (1, 0)),
+            Bezier::new(vec![q2(1, 1, 1, 2), pt(0, 0)]).unwrap(),
+        ]],
         FillRule::NonZero,
     )
     .unwrap_err();
-    assert_eq!(e.to_string(), "loops[0][1]: starts at (1, 1/2), the previous curve ends at (1, 0)");
+    assert_eq!(
+        e.to_string(),
+        "loops[0][1]: starts at (1, 1/2), the previous curve ends at (1, 0)"
+    );
     let e = Region::new(
-        vec![polygon(&[(0, 0), (1, 0), (0, 1)]), vec![line((0, 0), (1, 0)), line((1, 0), (1, 1))]],
+        vec![
+            polygon(&[(0, 0), (1, 0), (0, 1)]),
+            vec![line((0, 0), (1, 0)), line((1, 0), (1, 1))],
+        ],
         FillRule::NonZero,
     )
     .unwrap_err();
-    assert_eq!(e.to_string(), "loops[1][0]: starts at (0, 0), the previous curve ends at (1, 1)");
+    assert_eq!(
+        e.to_string(),
+        "loops[1][0]: starts at (0, 0), the previous curve ends at (1, 1)"
+    );
     let e = Region::new(vec![Vec::new()], FillRule::NonZero).unwrap_err();
     assert_eq!((e.path(), e.kind()), ("loops[0]", ErrorKind::Empty));
     let high = Bezier::new(vec![pt(0, 0); 22]).unwrap();
@@ -357,7 +419,10 @@ fn bad_input_names_the_field() {
         FillRule::NonZero,
     )
     .unwrap_err();
-    assert_eq!((e.path(), e.kind()), ("loops[0][0][1]", ErrorKind::NotFinite));
+    assert_eq!(
+        (e.path(), e.kind()),
+        ("loops[0][0][1]", ErrorKind::NotFinite)
+    );
 }
 
 /// A star of `n` cubic edges around `centre`: vertices alternately at radius 1 and 0.6,
@@ -375,8 +440,14 @@ pub(super) fn star(n: usize, centre: (f64, f64), phase: f64) -> Region {
             let (p, r) = (vertex(k), vertex((k + 1) % n));
             let (dx, dy) = (r[0] - p[0], r[1] - p[1]);
             // Control points at thirds, pushed outward (to the right of the edge) by 1/10.
-            let c1 = [round(p[0] + dx / 3.0 + dy / 10.0), round(p[1] + dy / 3.0 - dx / 10.0)];
-            let c2 = [round(p[0] + 2.0 * dx / 3.0 + dy / 10.0), round(p[1] + 2.0 * dy / 3.0 - dx / 10.0)];
+            let c1 = [
+                round(p[0] + dx / 3.0 + dy / 10.0),
+                round(p[1] + dy / 3.0 - dx / 10.0),
+            ];
+            let c2 = [
+                round(p[0] + 2.0 * dx / 3.0 + dy / 10.0),
+                round(p[1] + 2.0 * dy / 3.0 - dx / 10.0),
+            ];
             Bezier::new(vec![p, c1, c2, r]).unwrap()
         })
         .collect();
@@ -404,8 +475,14 @@ pub(super) fn wavy(n: usize, centre: (f64, f64), phase: f64) -> Region {
             let (a0, a1) = (h * k as f64, h * (k + 1) as f64);
             let (d0, d1) = (derivative(a0), derivative(a1));
             let (p0, p3) = (vertex(k), vertex(k + 1));
-            let c1 = [round(p0[0] + h * d0[0] / 3.0), round(p0[1] + h * d0[1] / 3.0)];
-            let c2 = [round(p3[0] - h * d1[0] / 3.0), round(p3[1] - h * d1[1] / 3.0)];
+            let c1 = [
+                round(p0[0] + h * d0[0] / 3.0),
+                round(p0[1] + h * d0[1] / 3.0),
+            ];
+            let c2 = [
+                round(p3[0] - h * d1[0] / 3.0),
+                round(p3[1] - h * d1[1] / 3.0),
+            ];
             Bezier::new(vec![p0, c1, c2, p3]).unwrap()
         })
         .collect();

@@ -157,7 +157,10 @@ pub(crate) fn ray_count<'a>(
 
 /// Whether some curve passes exactly through `p` (boxes prune; the test is the gcd of
 /// x(t) - p_x and y(t) - p_y having a root in [0, 1]).
-pub(crate) fn on_curves<'a>(curves: impl IntoIterator<Item = &'a Curve>, p: &[Rational; 2]) -> bool {
+pub(crate) fn on_curves<'a>(
+    curves: impl IntoIterator<Item = &'a Curve>,
+    p: &[Rational; 2],
+) -> bool {
     let lo = [f64_down(&p[0]), f64_down(&p[1])];
     let hi = [f64_up(&p[0]), f64_up(&p[1])];
     curves.into_iter().any(|c| {

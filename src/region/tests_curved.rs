@@ -1,0 +1,291 @@
+//! Curved cases: identities between the areas of the four operations, and membership of
+//! sample points in the result (a fine polyline of the result's loops, in doubles, away from
+//! the boundary) against the exact positions of the points in the inputs.
+
+use super::tests::{assert_well_formed, cup, q, wavy};
+use super::{boolean, BooleanOp, FillRule, Position, Region, RegionResult};
+use crate::num::ring::{rational_to_f64, Rational};
+use crate::shape::array::Bezier;
+
+fn p(x: Rational, y: Rational) -> [Rational; 2] {
+    [x, y]
+}
+
+/// Four cubics close to the circle of centre (cx, cy) and radius r (all over d), rational.
+fn circle(cx: i64, cy: i64, r: i64, d: i64) -> Region {
+    let k = |v: i64| q(v, d);
+    let m = r * 55 / 100; // the usual 0.55 r handle, truncated: still a smooth closed loop
+    let pts = [
+        [
+            (cx + r, cy),
+            (cx + r, cy + m),
+            (cx + m, cy + r),
+            (cx, cy + r),
+        ],
+        [
+            (cx, cy + r),
+            (cx - m, cy + r),
+            (cx - r, cy + m),
+            (cx - r, cy),
+        ],
+        [
+            (cx - r, cy),
+            (cx - r, cy - m),
+            (cx - m, cy - r),
+            (cx, cy - r),
+        ],
+        [
+            (cx, cy - r),
+            (cx + m, cy - r),
+            (cx + r, cy - m),
+            (cx + r, cy),
+        ],
+    ];
+    let curves = pts
+        .iter()
+        .map(|c| Bezier::new(c.iter().map(|&(x, y)| p(k(x), k(y))).collect()).unwrap())
+        .collect();
+    Region::new(vec![curves], FillRule::NonZero).unwrap()
+}
+
+/// A closed cubic (a teardrop): one curve whose end is its start.
+fn teardrop() -> Region {
+    let c = Bezier::new(vec![
+        p(q(0, 1), q(0, 1)),
+        p(q(4, 1), q(4, 1)),
+        p(q(-4, 1), q(4, 1)),
+        p(q(0, 1), q(0, 1)),
+    ])
+    .unwrap();
+    Region::new(vec![vec![c]], FillRule::NonZero).unwrap()
+}
+
+/// A cubic with a loop, closed by a line, under `fill`.
+fn looped(fill: FillRule) -> Region {
+    let c = Bezier::new(vec![
+        p(q(0, 1), q(0, 1)),
+        p(q(5, 1), q(4, 1)),
+        p(q(-3, 1), q(4, 1)),
+        p(q(2, 1), q(0, 1)),
+    ])
+    .unwrap();
+    let l = Bezier::new(vec![p(q(2, 1), q(0, 1)), p(q(0, 1), q(0, 1))]).unwrap();
+    Region::new(vec![vec![c, l]], fill).unwrap()
+}
+
+/// {y >= x^2, y <= 4, x >= 0}: shares the parabola's piece 0 <= x <= 1 with `cup(1, 1, false)`.
+fn half_cup() -> Region {
+    let quad = Bezier::new(vec![
+        p(q(0, 1), q(0, 1)),
+        p(q(1, 1), q(0, 1)),
+        p(q(2, 1), q(4, 1)),
+    ])
+    .unwrap();
+    let top = Bezier::new(vec![p(q(2, 1), q(4, 1)), p(q(0, 1), q(4, 1))]).unwrap();
+    let side = Bezier::new(vec![p(q(0, 1), q(4, 1)), p(q(0, 1), q(0, 1))]).unwrap();
+    Region::new(vec![vec![quad, top, side]], FillRule::NonZero).unwrap()
+}
+
+fn empty() -> Region {
+    Region::new(Vec::new(), FillRule::NonZero).unwrap()
+}
+
+/// The result's loops as closed polylines of doubles.
+fn polylines(regions: &[&Region], r: &RegionResult) -> Vec<Vec<[f64; 2]>> {
+    r.loops
+        .iter()
+        .map(|lp| {
+            let mut out = Vec::new();
+            for e in &lp.edges {
+                let c = &regions[e.region].loops()[e.loop_index][e.curve];
+                let f: Vec<[f64; 2]> = c
+                    .points()
+                    .iter()
+                    .map(|p| p.clone().map(|v| rational_to_f64(&v)))
+                    .collect();
+                let f = Bezier::new(f).unwrap();
+                let (a, b) = (e.from.to_f64(), e.to.to_f64());
+                for k in 0..512 {
+                    out.push(f.eval(&(a + (b - a) * k as f64 / 512.0)));
+                }
+            }
+            out
+        })
+        .collect()
+}
+
+/// Winding number of the polylines around x, or `None` within `near` of a segment.
+fn polyline_winding(lines: &[Vec<[f64; 2]>], x: [f64; 2], near: f64) -> Option<i64> {
+    let mut w = 0;
+    for l in lines {
+        for i in 0..l.len() {
+            let (a, b) = (l[i], l[(i + 1) % l.len()]);
+            let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+            let len2 = dx * dx + dy * dy;
+            let t = if len2 > 0.0 {
+                (((x[0] - a[0]) * dx + (x[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            if (a[0] + t * dx - x[0]).hypot(a[1] + t * dy - x[1]) < near {
+                return None;
+            }
+            if (a[1] <= x[1]) != (b[1] <= x[1]) {
+                let cx = a[0] + (x[1] - a[1]) / dy * dx;
+                if cx > x[0] {
+                    w += if b[1] > a[1] { 1 } else { -1 };
+                }
+            }
+        }
+    }
+    Some(w)
+}
+
+fn area(r: &RegionResult) -> (f64, f64) {
+    (r.area[0], r.area[1])
+}
+
+fn check_pair(a: &Region, b: &Region, name: &str) {
+    let ops = [
+        BooleanOp::Intersection,
+        BooleanOp::Union,
+        BooleanOp::Difference,
+        BooleanOp::Xor,
+    ];
+    let results: Vec<RegionResult> = ops
+        .iter()
+        .map(|&op| {
+            let r = boolean(a, b, op).unwrap();
+            assert_well_formed(&[a, b], &r);
+            r
+        })
+        .collect();
+    let ba = boolean(b, a, BooleanOp::Difference).unwrap();
+    let alone_a = boolean(a, &empty(), BooleanOp::Union).unwrap();
+    let alone_b = boolean(b, &empty(), BooleanOp::Union).unwrap();
+    let [i, u, d, x] = [0, 1, 2, 3].map(|k| area(&results[k]));
+    let e = area(&ba);
+    let (aa, bb) = (area(&alone_a), area(&alone_b));
+    let tol = 1e-9;
+    // U = (A - B) + (B - A) + (A ∩ B); X = (A - B) + (B - A); U + I = A + B.
+    assert!(
+        u.0 <= d.1 + e.1 + i.1 + tol && d.0 + e.0 + i.0 <= u.1 + tol,
+        "{name}: union {u:?} vs {d:?} {e:?} {i:?}"
+    );
+    assert!(
+        x.0 <= d.1 + e.1 + tol && d.0 + e.0 <= x.1 + tol,
+        "{name}: xor {x:?} vs {d:?} {e:?}"
+    );
+    assert!(
+        u.0 + i.0 <= aa.1 + bb.1 + tol && aa.0 + bb.0 <= u.1 + i.1 + tol,
+        "{name}: {u:?} + {i:?} vs {aa:?} + {bb:?}"
+    );
+    // Membership on a grid over the inputs' box.
+    let pts: Vec<[f64; 2]> = [a, b]
+        .iter()
+        .flat_map(|r| r.loops().iter().flatten())
+        .flat_map(|c| {
+            c.points()
+                .iter()
+                .map(|p| p.clone().map(|v| rational_to_f64(&v)))
+        })
+        .collect();
+    let (x0, x1) = pts
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(l, h), p| (l.min(p[0]), h.max(p[0])));
+    let (y0, y1) = pts
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(l, h), p| (l.min(p[1]), h.max(p[1])));
+    let lines: Vec<_> = results.iter().map(|r| polylines(&[a, b], r)).collect();
+    let mut tested = 0;
+    for gx in 0..23 {
+        for gy in 0..23 {
+            // Points at odd multiples of 1/46 of the box, exact rationals.
+            let fx = Rational::new((2 * gx + 1).into(), 46.into());
+            let fy = Rational::new((2 * gy + 1).into(), 46.into());
+            let span = |lo: f64, hi: f64, f: &Rational| {
+                Rational::from_float(lo).unwrap()
+                    + (Rational::from_float(hi).unwrap() - Rational::from_float(lo).unwrap()) * f
+            };
+            let point = [span(x0, x1, &fx), span(y0, y1, &fy)];
+            let (pa, pb) = (a.contains(&point), b.contains(&point));
+            if pa == Position::Boundary || pb == Position::Boundary {
+                continue;
+            }
+            let xf = point.clone().map(|v| rational_to_f64(&v));
+            for (k, op) in ops.iter().enumerate() {
+                let expected = op.keeps(pa == Position::Inside, pb == Position::Inside);
+                if let Some(w) = polyline_winding(&lines[k], xf, 1e-3) {
+                    assert_eq!(w, expected as i64, "{name} {op:?} at {xf:?}");
+                    tested += 1;
+                }
+            }
+        }
+    }
+    assert!(tested > 500, "{name}: only {tested} points tested");
+}
+
+#[test]
+fn circles_cups_and_waves() {
+    check_pair(
+        &circle(0, 0, 100, 100),
+        &circle(120, 50, 100, 100),
+        "two circles",
+    );
+    check_pair(
+        &circle(0, 0, 100, 100),
+        &circle(0, 0, 50, 100),
+        "nested circles",
+    );
+    check_pair(&cup(1, 1, false), &circle(0, 50, 60, 100), "cup and circle");
+    check_pair(&cup(1, 1, false), &cup(1, 1, true), "tangent cups");
+    check_pair(
+        &wavy(12, (0.0, 0.0), 0.0),
+        &wavy(12, (0.3, 0.1), 0.2),
+        "two waves",
+    );
+}
+
+#[test]
+fn self_intersecting_and_closed_single_curves() {
+    check_pair(
+        &teardrop(),
+        &circle(0, 200, 150, 100),
+        "teardrop and circle",
+    );
+    check_pair(
+        &looped(FillRule::NonZero),
+        &circle(100, 150, 100, 100),
+        "loop nonzero",
+    );
+    check_pair(
+        &looped(FillRule::EvenOdd),
+        &circle(100, 150, 100, 100),
+        "loop evenodd",
+    );
+    check_pair(
+        &looped(FillRule::EvenOdd),
+        &looped(FillRule::NonZero),
+        "loop with itself",
+    );
+}
+
+#[test]
+fn a_shared_piece_of_parabola_is_reported_once_from_the_first_region() {
+    let (a, b) = (cup(1, 1, false), half_cup());
+    check_pair(&a, &b, "cups sharing a parabola");
+    let r = boolean(&a, &b, BooleanOp::Intersection).unwrap();
+    assert_eq!(r.loops.len(), 1);
+    // {0 <= x <= 1, x^2 <= y <= 1}: area 2/3; edges: the parabola from A (x in [0, 1] is
+    // t in [1/2, 1] on A's quadratic), A's top from x = 1 to 0, B's side from y = 1 to 0.
+    assert!(r.area[0] <= 2.0 / 3.0 && 2.0 / 3.0 <= r.area[1]);
+    assert_eq!(r.loops[0].edges.len(), 3);
+    let parabola = r.loops[0].edges.iter().find(|e| e.curve == 0).unwrap();
+    assert_eq!(parabola.region, 0);
+    assert_eq!(
+        (parabola.from.exact(), parabola.to.exact()),
+        (Some(&q(1, 2)), Some(&q(1, 1)))
+    );
+    let r = boolean(&a, &b, BooleanOp::Union).unwrap();
+    assert!(r.area[0] <= 6.0 && 6.0 <= r.area[1]);
+}
