@@ -309,7 +309,7 @@ impl Arrangement {
         let mut group_of_root = vec![usize::MAX; pieces.len()];
         let mut out: Vec<Group> = Vec::new();
         let mut rep_parity = Vec::new();
-        for i in 0..pieces.len() {
+        for (i, piece) in pieces.iter_mut().enumerate() {
             let (root, parity) = groups.find(i);
             if group_of_root[root] == usize::MAX {
                 group_of_root[root] = out.len();
@@ -321,8 +321,8 @@ impl Arrangement {
             }
             let g = group_of_root[root];
             out[g].members.push(i);
-            pieces[i].group = g;
-            pieces[i].along = parity == rep_parity[g];
+            piece.group = g;
+            piece.along = parity == rep_parity[g];
         }
         Ok(Arrangement {
             curves,

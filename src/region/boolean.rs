@@ -1,6 +1,6 @@
 //! The public front of the booleans: the operations, the answer's types, the work estimate.
 
-use super::region::Region;
+use super::input::Region;
 use crate::error::Result;
 use crate::intersect::algebraic::AlgebraicReal;
 

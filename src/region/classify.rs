@@ -16,7 +16,7 @@ use super::angle::rational_between;
 use super::arrangement::Arrangement;
 use super::boolean::BooleanOp;
 use super::curve::Curve;
-use super::region::FillRule;
+use super::input::FillRule;
 use super::winding::{ray_count, AtStart};
 use crate::num::ring::Rational;
 use num_traits::Zero;

@@ -71,7 +71,7 @@ mod classify;
 mod curve;
 mod pipeline;
 mod prune;
-mod region;
+mod input;
 mod transfer;
 mod winding;
 
@@ -85,5 +85,5 @@ mod tests_grid;
 pub use boolean::{
     boolean, boolean_work, triangle_intersection, BooleanOp, Edge, RegionResult, ResultLoop,
 };
-pub use region::{FillRule, Region, MAX_REGION_DEGREE};
+pub use input::{FillRule, Region, MAX_REGION_DEGREE};
 pub use winding::{Position, Winding};

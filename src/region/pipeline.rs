@@ -7,7 +7,7 @@ use super::boolean::{BooleanOp, Edge, RegionResult, ResultLoop};
 use super::chain::chain;
 use super::classify::boundary_groups;
 use super::curve::{f64_down, f64_up, Curve};
-use super::region::{is_single_point, Region};
+use super::input::{is_single_point, Region};
 use crate::error::Result;
 use crate::intersect::curves::{curve_pair_work, self_intersection_work};
 use crate::num::ring::Rational;

@@ -432,7 +432,7 @@ pub(super) fn star(n: usize, centre: (f64, f64), phase: f64) -> Region {
     let round = |x: f64| (x * 1048576.0).round() / 1048576.0;
     let vertex = |k: usize| {
         let a = phase + std::f64::consts::TAU * k as f64 / n as f64;
-        let r = if k % 2 == 0 { 1.0 } else { 0.6 };
+        let r = if k.is_multiple_of(2) { 1.0 } else { 0.6 };
         [round(centre.0 + r * a.cos()), round(centre.1 + r * a.sin())]
     };
     let curves = (0..n)

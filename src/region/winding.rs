@@ -22,7 +22,7 @@
 //! whose orientation is reversed).
 
 use super::curve::{f64_down, f64_up, Curve};
-use super::region::{FillRule, Region};
+use super::input::{FillRule, Region};
 use crate::intersect::algebraic::{shifted_poly, AlgebraicReal};
 use crate::intersect::zeros::roots_with_multiplicity;
 use crate::num::ring::Rational;
@@ -188,7 +188,7 @@ pub(crate) fn prepared(region: &Region) -> Vec<Curve> {
         .loops()
         .iter()
         .flatten()
-        .filter(|c| !super::region::is_single_point(c))
+        .filter(|c| !super::input::is_single_point(c))
         .map(Curve::new)
         .collect()
 }
