@@ -57,7 +57,6 @@ impl Term<'_> {
 /// `done(lo, hi)`.
 pub(crate) fn enclose_loops(
     arr: &Arrangement,
-    primitives: &[Vec<Rational>],
     loops: &[&[Run]],
     done: impl Fn(&Rational, &Rational) -> bool,
 ) -> (Rational, Rational) {
@@ -70,7 +69,7 @@ pub(crate) fn enclose_loops(
                 }
                 let mut t = Term {
                     sign,
-                    f: &primitives[r.curve],
+                    f: arr.curves[r.curve].x_dy(),
                     at: arr.params[r.curve][k].clone(),
                     enclosure: (Rational::zero(), Rational::zero()),
                 };

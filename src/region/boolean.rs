@@ -134,7 +134,20 @@ pub fn triangle_intersection(t1: &Region, t2: &Region) -> Result<RegionResult> {
 /// pair of curves whose boxes meet ([`curve_pair_work`](crate::curve_pair_work), which runs
 /// the float filter), the self-intersections of every curve
 /// ([`self_intersection_work`](crate::self_intersection_work)), and the classification of the
-/// pieces (one ray per piece against the curves). It does not depend on `op`.
+/// pieces (one ray per piece against the curves). It does not depend on `op`. Curves that
+/// follow each other in a loop and are proved to meet only at their join, and curves proved
+/// one-to-one, count a few microseconds instead of the exact solver's estimate.
+///
+/// ```
+/// use blossom::region::{boolean_work, Region};
+/// use blossom::Rational;
+/// let q = |n: i64| Rational::from_integer(n.into());
+/// let t1 = Region::triangle(1, vec![[q(0), q(0)], [q(2), q(0)], [q(0), q(2)]])?;
+/// let t2 = Region::triangle(1, vec![[q(1), q(0)], [q(3), q(0)], [q(1), q(2)]])?;
+/// // Six lines: well under a millisecond.
+/// assert!(boolean_work(&t1, &t2) < 1_000_000_000);
+/// # Ok::<(), blossom::Error>(())
+/// ```
 pub fn boolean_work(a: &Region, b: &Region) -> u128 {
     super::pipeline::work(&[a, b])
 }

@@ -45,6 +45,7 @@ pub(crate) struct Curve {
     /// Outward-rounded box: `[xmin, ymin, xmax, ymax]`.
     pub bbox: [f64; 4],
     monotone: [OnceCell<Monotone>; 2],
+    x_dy: OnceCell<Vec<Rational>>,
 }
 
 /// The largest double not above `r`.
@@ -105,6 +106,7 @@ impl Curve {
             power,
             bbox,
             monotone: [OnceCell::new(), OnceCell::new()],
+            x_dy: OnceCell::new(),
         }
     }
 
@@ -129,6 +131,11 @@ impl Curve {
     /// The breaks into pieces monotone along `axis` (0: x, 1: y), computed once.
     pub fn monotone(&self, axis: usize) -> &Monotone {
         self.monotone[axis].get_or_init(|| monotone_breaks(&self.power[axis]))
+    }
+
+    /// The antiderivative of x(t) y'(t) vanishing at 0 (for areas), computed once.
+    pub fn x_dy(&self) -> &[Rational] {
+        self.x_dy.get_or_init(|| super::area::x_dy(&self.power))
     }
 
     /// The parameters in [0, 1] where the curve passes through the rational point `p`, in

@@ -69,9 +69,9 @@ mod boolean;
 mod chain;
 mod classify;
 mod curve;
+mod input;
 mod pipeline;
 mod prune;
-mod input;
 mod transfer;
 mod winding;
 

@@ -1,7 +1,7 @@
 //! The stages of a boolean run in order (see the module docs of [`crate::region`]), and the
 //! work estimate that goes with them.
 
-use super::area::{enclose_loops, x_dy};
+use super::area::enclose_loops;
 use super::arrangement::{candidate_pairs, one_to_one, proved_join, Arrangement, CurveId};
 use super::boolean::{BooleanOp, Edge, RegionResult, ResultLoop};
 use super::chain::chain;
@@ -76,13 +76,10 @@ pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Result<RegionResult>
             area: [0.0, 0.0],
         });
     }
-    let primitives: Vec<Vec<Rational>> = arr.curves.iter().map(|c| x_dy(&c.power)).collect();
     let zero = Rational::zero();
     let mut out = Vec::with_capacity(loops.len());
     for runs in &loops {
-        let (_, hi) = enclose_loops(&arr, &primitives, &[runs.as_slice()], |lo, hi| {
-            lo > &zero || hi < &zero
-        });
+        let (_, hi) = enclose_loops(&arr, &[runs.as_slice()], |lo, hi| lo > &zero || hi < &zero);
         let edges = runs
             .iter()
             .map(|r| {
@@ -105,7 +102,7 @@ pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Result<RegionResult>
     // number not above B in magnitude (the result lies in the box), 2^-52 B.
     let target = box_area(regions) / Rational::from_integer(BigInt::one() << 42);
     let all: Vec<&[_]> = loops.iter().map(Vec::as_slice).collect();
-    let (lo, hi) = enclose_loops(&arr, &primitives, &all, |lo, hi| hi - lo <= target);
+    let (lo, hi) = enclose_loops(&arr, &all, |lo, hi| hi - lo <= target);
     Ok(RegionResult {
         loops: out,
         area: [f64_down(&lo), f64_up(&hi)],

@@ -19,7 +19,6 @@
 //! Every sign is exact: a float filter with a rigorous error bound when the points are
 //! doubles, exact rational arithmetic otherwise or when the filter cannot tell.
 
-use crate::intersect::algebraic::exact_f64;
 use crate::num::ring::{rational_to_f64, Rational};
 use num_traits::Zero;
 use std::cmp::Ordering;
@@ -44,16 +43,23 @@ fn exact(v: [f64; 2]) -> Option<[Rational; 2]> {
     Some([Rational::from_float(v[0])?, Rational::from_float(v[1])?])
 }
 
+/// Whether the rational is exactly a normal double (or zero): a power-of-two denominator of at
+/// most 2^1000 and a numerator of at most 53 bits, so `rational_to_f64` is exact.
+fn is_double(r: &Rational) -> bool {
+    let d = r.denom();
+    let bits = d.bits();
+    r.numer().bits() <= 53 && bits <= 1000 && d.trailing_zeros() == Some(bits - 1)
+}
+
 /// The exact sign of n . (x - v) for a normal n of doubles: a float filter first (when x and
 /// v are doubles: fl(x - v) has relative error at most u = 2^-53 and each product and the sum
 /// add at most u more each, so an error below 4u (|n0 d0| + |n1 d1|) plus an underflow
 /// margin), exact rational arithmetic when the filter cannot tell.
 fn side(n: &[f64; 2], n_exact: &[Rational; 2], x: &[Rational; 2], v: &[Rational; 2]) -> Ordering {
-    let xf = [rational_to_f64(&x[0]), rational_to_f64(&x[1])];
-    let vf = [rational_to_f64(&v[0]), rational_to_f64(&v[1])];
-    let doubles = xf.iter().chain(&vf).all(|c| c.is_finite())
-        && (0..2).all(|a| exact_f64(xf[a]) == x[a] && exact_f64(vf[a]) == v[a]);
+    let doubles = x.iter().chain(v).all(is_double);
     if doubles {
+        let xf = [rational_to_f64(&x[0]), rational_to_f64(&x[1])];
+        let vf = [rational_to_f64(&v[0]), rational_to_f64(&v[1])];
         let d = [xf[0] - vf[0], xf[1] - vf[1]];
         let value = n[0] * d[0] + n[1] * d[1];
         let bound = 4.0 * f64::EPSILON * ((n[0] * d[0]).abs() + (n[1] * d[1]).abs()) + 1e-300;
@@ -132,6 +138,21 @@ mod tests {
             Rational::from_integer(x.into()),
             Rational::from_integer(y.into()),
         ]
+    }
+
+    #[test]
+    fn doubles_are_recognised_exactly() {
+        let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
+        assert!(
+            super::is_double(&q(3, 8)) && super::is_double(&q(0, 1)) && super::is_double(&q(-5, 1))
+        );
+        assert!(!super::is_double(&q(1, 3)) && !super::is_double(&q((1 << 54) + 1, 1)));
+        for r in [q(3, 8), q(-7, 1024), q(1 << 52, 1)] {
+            assert_eq!(
+                crate::intersect::algebraic::exact_f64(crate::rational_to_f64(&r)),
+                r
+            );
+        }
     }
 
     #[test]

@@ -369,6 +369,51 @@ fn triangles_sharing_only_an_edge_or_overlapping() {
 }
 
 #[test]
+fn winding_numbers_against_an_exact_polygon_count() {
+    // A self-overlapping polygon and a single-point curve at (7, 7) in a loop of its own.
+    let star = [(0, 10), (6, -8), (-10, 3), (10, 3), (-6, -8)];
+    let dot = Bezier::new(vec![pt(7, 7), pt(7, 7)]).unwrap();
+    let r = Region::new(vec![polygon(&star), vec![dot]], FillRule::EvenOdd).unwrap();
+    // Independent: the polygon's winding at (x + 1/4, y + 1/3) by the classic test on
+    // integers (the offsets keep the points off every edge and vertex of this star).
+    let independent = |x: i64, y: i64| {
+        let (px, py) = (q(4 * x + 1, 4), q(3 * y + 1, 3));
+        let mut w = 0i64;
+        for i in 0..5 {
+            let (a, b) = (star[i], star[(i + 1) % 5]);
+            let (ay, by) = (q(a.1, 1), q(b.1, 1));
+            if (ay <= py) != (by <= py) {
+                let t = (&py - &ay) / (&by - &ay);
+                let cx = q(a.0, 1) + t * q(b.0 - a.0, 1);
+                if cx > px {
+                    w += if by > ay { 1 } else { -1 };
+                }
+            }
+        }
+        w
+    };
+    for x in -11..11 {
+        for y in -9..11 {
+            let p = [q(4 * x + 1, 4), q(3 * y + 1, 3)];
+            assert_eq!(
+                r.winding(&p),
+                Winding::Number(independent(x, y)),
+                "({x}, {y})"
+            );
+        }
+    }
+    assert_eq!(r.winding(&pt(7, 7)), Winding::Boundary);
+    assert_eq!(r.contains(&pt(6, -8)), Position::Boundary);
+    assert_eq!(r.contains(&pt(0, 3)), Position::Boundary);
+    assert_eq!(
+        r.contains(&pt(0, 0)),
+        Position::Outside,
+        "winding 2 under even-odd"
+    );
+    assert!(r.winding_work(10) > 0);
+}
+
+#[test]
 fn bad_input_names_the_field() {
     let line =
         |a: (i64, i64), b: (i64, i64)| Bezier::new(vec![pt(a.0, a.1), pt(b.0, b.1)]).unwrap();
