@@ -16,7 +16,7 @@ use num_traits::{One, Zero};
 
 /// The curves of both regions that trace more than a point, in (region, loop, curve) order,
 /// with their ids and each one's successor in its loop.
-fn collect(regions: &[&Region; 2]) -> (Vec<Curve>, Vec<CurveId>, Vec<usize>) {
+pub(crate) fn collect(regions: &[&Region; 2]) -> (Vec<Curve>, Vec<CurveId>, Vec<usize>) {
     let (mut curves, mut ids, mut next) = (Vec::new(), Vec::new(), Vec::new());
     for (r, region) in regions.iter().enumerate() {
         for (l, lp) in region.loops().iter().enumerate() {

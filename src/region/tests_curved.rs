@@ -289,3 +289,109 @@ fn a_shared_piece_of_parabola_is_reported_once_from_the_first_region() {
     let r = boolean(&a, &b, BooleanOp::Union).unwrap();
     assert!(r.area[0] <= 6.0 && 6.0 <= r.area[1]);
 }
+
+/// A region bounded by the piece t in [0, 1/5] of the looped cubic and its chord. The
+/// cubic's own crossing (s ≈ 0.084, t ≈ 0.916, at x = 1) lies on that piece, so the cubic's
+/// other pass crosses the shared stretch there: the intersector does not list that crossing
+/// inside the overlap, and the arrangement must carry the irrational parameter across.
+fn sliver() -> Region {
+    let c = Bezier::new(vec![
+        p(q(0, 1), q(0, 1)),
+        p(q(5, 1), q(4, 1)),
+        p(q(-3, 1), q(4, 1)),
+        p(q(2, 1), q(0, 1)),
+    ])
+    .unwrap();
+    let piece = c.subsegment(q(0, 1)..q(1, 5));
+    let end = piece.points()[3].clone();
+    let chord = Bezier::new(vec![end, p(q(0, 1), q(0, 1))]).unwrap();
+    Region::new(vec![vec![piece, chord]], FillRule::NonZero).unwrap()
+}
+
+#[test]
+fn a_self_crossing_on_a_shared_stretch() {
+    check_pair(
+        &looped(FillRule::NonZero),
+        &sliver(),
+        "loop and sliver, nonzero",
+    );
+    check_pair(
+        &looped(FillRule::EvenOdd),
+        &sliver(),
+        "loop and sliver, even-odd",
+    );
+    check_pair(&sliver(), &looped(FillRule::EvenOdd), "sliver and loop");
+}
+
+#[test]
+fn degree_elevated_and_reversed_curved_copies() {
+    let a = cup(1, 1, false);
+    let elevate = |b: &Bezier<Rational, 2>| {
+        let c = b.points();
+        let mix = |u: &[Rational; 2], v: &[Rational; 2], wu: i64, wv: i64| {
+            [
+                (&u[0] * q(wu, 3)) + (&v[0] * q(wv, 3)),
+                (&u[1] * q(wu, 3)) + (&v[1] * q(wv, 3)),
+            ]
+        };
+        Bezier::new(vec![
+            c[0].clone(),
+            mix(&c[0], &c[1], 1, 2),
+            mix(&c[1], &c[2], 2, 1),
+            c[2].clone(),
+        ])
+        .unwrap()
+    };
+    let reverse =
+        |b: &Bezier<Rational, 2>| Bezier::new(b.points().iter().rev().cloned().collect()).unwrap();
+    let lp = &a.loops()[0];
+    let elevated = Region::new(
+        vec![vec![elevate(&lp[0]), lp[1].clone()]],
+        FillRule::NonZero,
+    )
+    .unwrap();
+    let reversed = Region::new(
+        vec![vec![reverse(&lp[1]), reverse(&lp[0])]],
+        FillRule::NonZero,
+    )
+    .unwrap();
+    for b in [&elevated, &reversed] {
+        for op in [BooleanOp::Union, BooleanOp::Intersection] {
+            let r = boolean(&a, b, op).unwrap();
+            assert_well_formed(&[&a, b], &r);
+            assert_eq!(r.loops.len(), 1);
+            assert_eq!(r.loops[0].edges.len(), 2);
+            assert!(r.loops[0].edges.iter().all(|e| e.region == 0));
+            assert!(r.area[0] <= 4.0 / 3.0 && 4.0 / 3.0 <= r.area[1]);
+        }
+        for op in [BooleanOp::Difference, BooleanOp::Xor] {
+            assert!(boolean(&a, b, op).unwrap().loops.is_empty());
+            assert!(boolean(b, &a, op).unwrap().loops.is_empty());
+        }
+    }
+}
+
+/// The sliver's curve is split where the loop's other pass crosses it, at u = 5 s for the
+/// loop's own crossing s ≈ 0.0838: a parameter only the carrying across the overlap gives.
+#[test]
+fn the_crossing_on_the_shared_stretch_splits_both_curves() {
+    let (a, b) = (looped(FillRule::NonZero), sliver());
+    let (curves, ids, next) = super::pipeline::collect(&[&a, &b]);
+    let arr = super::arrangement::Arrangement::build(curves, ids, &next).unwrap();
+    let sliver_curve = arr
+        .ids
+        .iter()
+        .position(|id| id.region == 1 && id.curve == 0)
+        .unwrap();
+    let inner: Vec<f64> = arr.params[sliver_curve]
+        .iter()
+        .map(|t| t.to_f64())
+        .collect();
+    assert!(
+        inner.iter().any(|&u| (u - 0.419).abs() < 0.01),
+        "the sliver's parameters {inner:?}"
+    );
+    // And the pieces on both sides of the overlap pair up into groups of two.
+    let shared = arr.groups.iter().filter(|g| g.members.len() == 2).count();
+    assert!(shared >= 2, "{shared} shared groups");
+}
