@@ -54,6 +54,28 @@ pub struct Edge {
     pub to: AlgebraicReal,
 }
 
+impl Edge {
+    /// The spec's edge number for [`triangle_intersection`]: 0, 1, 2 for the first
+    /// triangle's edges, 3, 4, 5 for the second's (`3 * region + curve`).
+    ///
+    /// ```
+    /// use blossom::region::{triangle_intersection, Region};
+    /// use blossom::Rational;
+    /// let q = |n: i64| Rational::from_integer(n.into());
+    /// let t1 = Region::triangle(1, vec![[q(0), q(0)], [q(4), q(0)], [q(0), q(4)]])?;
+    /// let t2 = Region::triangle(1, vec![[q(1), q(1)], [q(2), q(1)], [q(1), q(2)]])?;
+    /// // t2 lies inside t1: the answer is t2, edges 3, 4, 5.
+    /// let r = triangle_intersection(&t1, &t2)?;
+    /// let mut numbers: Vec<usize> = r.loops[0].edges.iter().map(|e| e.triangle_edge()).collect();
+    /// numbers.sort();
+    /// assert_eq!(numbers, vec![3, 4, 5]);
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
+    pub fn triangle_edge(&self) -> usize {
+        3 * self.region + self.curve
+    }
+}
+
 /// One simple oriented loop of a result: counter-clockwise around the result's interior for
 /// an outer loop, clockwise for a hole; the result lies to the left of every edge.
 #[derive(Clone, Debug)]

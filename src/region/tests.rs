@@ -542,6 +542,18 @@ fn scale_of_star_booleans() {
     let sizes: Vec<usize> = std::env::var("REGION_SCALE_SIZES")
         .map(|v| v.split(',').map(|x| x.parse().unwrap()).collect())
         .unwrap_or_else(|_| vec![64, 128, 256, 512, 1000]);
+    // Two 8-edge stars (the comparison with flo_curves): mean of 20 runs.
+    let (a, b) = (star(8, (0.0, 0.0), 0.0), star(8, (0.3, 0.2), 0.2));
+    for op in [BooleanOp::Intersection, BooleanOp::Union] {
+        let t = std::time::Instant::now();
+        for _ in 0..20 {
+            boolean(&a, &b, op).unwrap();
+        }
+        println!(
+            "8-edge stars {op:?}: {:.3} ms",
+            t.elapsed().as_secs_f64() * 1e3 / 20.0
+        );
+    }
     for n in sizes {
         let shape = std::env::var("REGION_SCALE_SHAPE").unwrap_or_default();
         let (a, b) = if shape == "star" {

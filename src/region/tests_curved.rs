@@ -395,3 +395,106 @@ fn the_crossing_on_the_shared_stretch_splits_both_curves() {
     let shared = arr.groups.iter().filter(|g| g.members.len() == 2).count();
     assert!(shared >= 2, "{shared} shared groups");
 }
+
+/// A triangle from doubles (exact dyadic nodes).
+fn triangle(degree: usize, nodes: &[[f64; 2]]) -> Region {
+    let exact = nodes
+        .iter()
+        .map(|n| {
+            [
+                Rational::from_float(n[0]).unwrap(),
+                Rational::from_float(n[1]).unwrap(),
+            ]
+        })
+        .collect();
+    Region::triangle(degree, exact).unwrap()
+}
+
+#[test]
+fn curved_triangles() {
+    // Quadratic triangles in the manner of Python bezier's examples.
+    let t1 = triangle(
+        2,
+        &[
+            [0.0, 0.0],
+            [0.5, -0.25],
+            [1.0, 0.0],
+            [0.125, 0.5],
+            [0.75, 0.75],
+            [0.25, 1.0],
+        ],
+    );
+    let t2 = triangle(
+        2,
+        &[
+            [-0.125, 0.25],
+            [0.5, -0.5],
+            [1.125, 0.25],
+            [0.0, 0.75],
+            [0.75, 0.625],
+            [0.375, 1.25],
+        ],
+    );
+    check_pair(&t1, &t2, "quadratic triangles");
+    // A cubic triangle and a linear one sharing a corner.
+    let t3 = triangle(
+        3,
+        &[
+            [0.0, 0.0],
+            [1.0, 0.25],
+            [2.0, -0.25],
+            [3.0, 0.0],
+            [0.25, 1.0],
+            [1.5, 1.25],
+            [2.75, 1.0],
+            [0.5, 2.0],
+            [2.0, 2.25],
+            [1.0, 3.0],
+        ],
+    );
+    let t4 = triangle(1, &[[3.0, 0.0], [0.5, 2.5], [0.0, 0.5]]);
+    check_pair(&t3, &t4, "cubic and linear triangles");
+    // A triangle with itself: the answer is the triangle, reported from the first.
+    let r = super::triangle_intersection(&t1, &t1).unwrap();
+    assert_eq!(r.loops.len(), 1);
+    assert!(r.loops[0].edges.iter().all(|e| e.triangle_edge() < 3));
+}
+
+#[test]
+fn zero_area_loops_and_non_dyadic_numbers() {
+    let line = |a: [Rational; 2], b: [Rational; 2]| Bezier::new(vec![a, b]).unwrap();
+    let (o, x, y) = (
+        p(q(0, 1), q(0, 1)),
+        p(q(1, 3), q(0, 1)),
+        p(q(1, 3), q(1, 7)),
+    );
+    // A spike (out and back) and a single point: no area at all.
+    let spike = Region::new(
+        vec![
+            vec![line(o.clone(), x.clone()), line(x.clone(), o.clone())],
+            vec![line(y.clone(), y.clone())],
+        ],
+        FillRule::NonZero,
+    )
+    .unwrap();
+    for op in [BooleanOp::Union, BooleanOp::Intersection, BooleanOp::Xor] {
+        let r = boolean(&spike, &spike, op).unwrap();
+        assert!(r.loops.is_empty() && r.area == [0.0, 0.0], "{op:?}");
+    }
+    // A triangle of thirds and sevenths with the spike along its side: the spike vanishes.
+    let tri = Region::new(
+        vec![vec![
+            line(o.clone(), x.clone()),
+            line(x, y.clone()),
+            line(y, o),
+        ]],
+        FillRule::NonZero,
+    )
+    .unwrap();
+    let r = boolean(&tri, &spike, BooleanOp::Union).unwrap();
+    assert_well_formed(&[&tri, &spike], &r);
+    assert_eq!((r.loops.len(), r.loops[0].edges.len()), (1, 3));
+    let exact = 1.0 / 42.0;
+    assert!(r.area[0] <= exact && exact <= r.area[1]);
+    check_pair(&tri, &circle(20, 5, 10, 100), "thirds and a circle");
+}
