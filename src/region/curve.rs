@@ -7,15 +7,19 @@
 //!
 //! **Monotone pieces.** Along an axis a, the coordinate c_a(t) is strictly monotone between
 //! consecutive roots in (0, 1) of its derivative (exact roots, [`AlgebraicReal`]s); the breaks
-//! are 0, those roots and 1, with the coordinate's exact values there. A curve whose
-//! coordinate is constant has no piece that changes it.
+//! are 0, those roots and 1. Whether the coordinate rises along a piece is the sign of the
+//! derivative at a rational point inside it; the coordinate's value at a break is compared
+//! with a rational exactly as the sign of c(t) - r at the break, and enclosed in doubles
+//! (interval Horner over the break's isolating interval, rounded outward) for the filter. A
+//! curve whose coordinate is constant has no piece that changes it.
 
-use crate::intersect::algebraic::{exact_f64, value_at, AlgebraicReal};
+use crate::intersect::algebraic::{enclose, exact_f64, shifted_poly, AlgebraicReal};
 use crate::intersect::upoly;
 use crate::intersect::zeros::roots_with_multiplicity;
 use crate::num::ring::{rational_to_f64, Rational};
 use crate::shape::array::Bezier;
 use crate::shape::basis::bernstein_to_power;
+use num_bigint::BigInt;
 use num_traits::{One, Zero};
 use std::cell::OnceCell;
 use std::cmp::Ordering;
@@ -25,14 +29,25 @@ use std::cmp::Ordering;
 pub(crate) struct Monotone {
     /// 0, the roots of the derivative in (0, 1) in increasing order, 1.
     pub params: Vec<AlgebraicReal>,
-    /// The coordinate at each parameter.
-    pub values: Vec<AlgebraicReal>,
+    /// The coordinate polynomial (ascending).
+    pub coordinate: Vec<Rational>,
     /// Whether the coordinate is constant (then no piece changes it).
     pub constant: bool,
     /// For each piece: whether the coordinate increases along it.
     pub rising: Vec<bool>,
-    /// Outward-rounded doubles around each value: `(down, up)`.
+    /// Outward-rounded doubles around the coordinate's value at each break: `(down, up)`.
     pub bounds: Vec<(f64, f64)>,
+}
+
+impl Monotone {
+    /// The exact comparison of the coordinate at break `k` with `r`.
+    pub fn cmp_value(&self, k: usize, r: &Rational) -> Ordering {
+        let t = &self.params[k];
+        match t.exact() {
+            Some(t0) => eval(&self.coordinate, t0).cmp(r),
+            None => t.clone().sign_of(&shifted_poly(&self.coordinate, r)),
+        }
+    }
 }
 
 /// An input curve with its exact power form and cached derived data.
@@ -188,18 +203,33 @@ fn monotone_breaks(c: &[Rational]) -> Monotone {
         }
     }
     params.push(one());
-    let values: Vec<AlgebraicReal> = params.iter().map(|t| value_at(c, t)).collect();
-    let rising = values
+    let dc = derivative(c);
+    // Strictly monotone between consecutive breaks: the derivative's sign at any rational
+    // point inside tells the direction (it is not zero there, the breaks being its roots).
+    let rising = params
         .windows(2)
-        .map(|v| v[0].compare(&v[1]) == Ordering::Less)
+        .map(|w| eval(&dc, &super::angle::rational_between(&w[0], &w[1])) > Rational::zero())
         .collect();
-    let bounds = values
+    let fine = Rational::new(1.into(), BigInt::one() << 64);
+    let bounds = params
         .iter()
-        .map(|v| (v.to_f64_down(), v.to_f64_up()))
+        .map(|t| match t.exact() {
+            Some(t0) => {
+                let v = eval(c, t0);
+                (f64_down(&v), f64_up(&v))
+            }
+            None => {
+                let mut t = t.clone();
+                t.refine_to(&fine);
+                let (lo, hi) = t.interval();
+                let (vl, vh) = enclose(c, lo, hi);
+                (f64_down(&vl), f64_up(&vh))
+            }
+        })
         .collect();
     Monotone {
         params,
-        values,
+        coordinate: c.to_vec(),
         constant,
         rising,
         bounds,
