@@ -13,11 +13,14 @@
 //! (interval Horner over the break's isolating interval, rounded outward) for the filter. A
 //! curve whose coordinate is constant has no piece that changes it.
 
-use crate::intersect::algebraic::{enclose, exact_f64, shifted_poly, AlgebraicReal};
+use crate::intersect::algebraic::{
+    enclose, exact_f64, over_common_denominator, shifted_poly, AlgebraicReal,
+};
 use crate::intersect::upoly;
 use crate::intersect::zeros::roots_with_multiplicity;
 use crate::num::ring::{rational_to_f64, Rational};
 use crate::shape::array::Bezier;
+#[cfg(test)]
 use crate::shape::basis::bernstein_to_power;
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
@@ -63,8 +66,19 @@ pub(crate) struct Curve {
     x_dy: OnceCell<Vec<Rational>>,
 }
 
+/// Whether the rational is exactly a normal double (or zero): a power-of-two denominator of at
+/// most 2^1000 and a numerator of at most 53 bits, so `rational_to_f64` is exact.
+pub(crate) fn is_double(r: &Rational) -> bool {
+    let d = r.denom();
+    let bits = d.bits();
+    r.numer().bits() <= 53 && bits <= 1000 && d.trailing_zeros() == Some(bits - 1)
+}
+
 /// The largest double not above `r`.
 pub(crate) fn f64_down(r: &Rational) -> f64 {
+    if is_double(r) {
+        return rational_to_f64(r);
+    }
     let x = rational_to_f64(r);
     if x.is_finite() && &exact_f64(x) > r {
         x.next_down()
@@ -75,6 +89,9 @@ pub(crate) fn f64_down(r: &Rational) -> f64 {
 
 /// The smallest double not below `r`.
 pub(crate) fn f64_up(r: &Rational) -> f64 {
+    if is_double(r) {
+        return rational_to_f64(r);
+    }
     let x = rational_to_f64(r);
     if x.is_finite() && &exact_f64(x) < r {
         x.next_up()
@@ -101,9 +118,7 @@ impl Curve {
     /// Prepares `curve`.
     pub fn new(curve: &Bezier<Rational, 2>) -> Curve {
         let points = curve.points().to_vec();
-        let rows: Vec<Vec<Rational>> = points.iter().map(|p| p.to_vec()).collect();
-        let c = bernstein_to_power(&rows);
-        let power = [0, 1].map(|a| c.iter().map(|p| p[a].clone()).collect::<Vec<_>>());
+        let power = [0, 1].map(|a| power_form(&points, a));
         let mut bbox = [
             f64::INFINITY,
             f64::INFINITY,
@@ -178,6 +193,28 @@ impl Curve {
     }
 }
 
+/// The power-form coefficients of coordinate `a` of a Bézier curve, a_k = C(n, k) times the
+/// k-th forward difference of the control points, computed on integers: the coordinates
+/// over their common denominator D, the differences and binomials exact in integers, one
+/// division by D per coefficient at the end.
+fn power_form(points: &[[Rational; 2]], a: usize) -> Vec<Rational> {
+    let column: Vec<Rational> = points.iter().map(|p| p[a].clone()).collect();
+    let (mut diff, d) = over_common_denominator(&column);
+    let n = diff.len() - 1;
+    let mut out = Vec::with_capacity(n + 1);
+    let mut binomial = BigInt::one();
+    for k in 0..=n {
+        out.push(Rational::new(&diff[0] * &binomial, d.clone()));
+        // The next forward differences, and C(n, k + 1) = C(n, k) (n - k) / (k + 1).
+        for i in 0..diff.len() - 1 {
+            diff[i] = &diff[i + 1] - &diff[i];
+        }
+        diff.pop();
+        binomial = binomial * BigInt::from(n - k) / BigInt::from(k + 1);
+    }
+    out
+}
+
 /// The algebraic number 0.
 pub(crate) fn zero() -> AlgebraicReal {
     AlgebraicReal::from_rational(Rational::zero())
@@ -233,5 +270,39 @@ fn monotone_breaks(c: &[Rational]) -> Monotone {
         constant,
         rising,
         bounds,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{bernstein_to_power, power_form, Rational};
+
+    /// The integer power form against the library's change of basis, on curves of degree 1
+    /// to 7 with mixed denominators.
+    #[test]
+    fn power_form_matches_the_change_of_basis() {
+        let mut state = 0x1234_5678_9abc_def1u64;
+        let mut next = |m: u64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state % m) as i64
+        };
+        for n in 1..8 {
+            let points: Vec<[Rational; 2]> = (0..=n)
+                .map(|_| {
+                    [
+                        Rational::new((next(41) - 20).into(), (next(9) + 1).into()),
+                        Rational::new((next(41) - 20).into(), (next(9) + 1).into()),
+                    ]
+                })
+                .collect();
+            let rows: Vec<Vec<Rational>> = points.iter().map(|p| p.to_vec()).collect();
+            let expected = bernstein_to_power(&rows);
+            for a in 0..2 {
+                let column: Vec<Rational> = expected.iter().map(|p| p[a].clone()).collect();
+                assert_eq!(power_form(&points, a), column, "degree {n}");
+            }
+        }
     }
 }
