@@ -1,7 +1,7 @@
 //! The stages of a boolean run in order (see the module docs of [`crate::region`]), and the
 //! work estimate that goes with them.
 
-use super::area::enclose_loops;
+use super::area::{loop_terms, refine_sum};
 use super::arrangement::{candidate_pairs, one_to_one, proved_join, Arrangement, CurveId};
 use super::boolean::{BooleanOp, Edge, RegionResult, ResultLoop};
 use super::chain::chain;
@@ -78,8 +78,12 @@ pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Result<RegionResult>
     }
     let zero = Rational::zero();
     let mut out = Vec::with_capacity(loops.len());
+    let mut all_terms = Vec::new();
     for runs in &loops {
-        let (_, hi) = enclose_loops(&arr, &[runs.as_slice()], |lo, hi| lo > &zero || hi < &zero);
+        // A simple loop bounds a positive area: refinement decides its sign.
+        let mut terms = loop_terms(&arr, runs);
+        let (_, hi) = refine_sum(&mut terms, |lo, hi| lo > &zero || hi < &zero);
+        all_terms.extend(terms);
         let edges = runs
             .iter()
             .map(|r| {
@@ -101,8 +105,7 @@ pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Result<RegionResult>
     // hi - lo <= B / 2^42 before rounding; each outward rounding adds at most an ulp of a
     // number not above B in magnitude (the result lies in the box), 2^-52 B.
     let target = box_area(regions) / Rational::from_integer(BigInt::one() << 42);
-    let all: Vec<&[_]> = loops.iter().map(Vec::as_slice).collect();
-    let (lo, hi) = enclose_loops(&arr, &all, |lo, hi| hi - lo <= target);
+    let (lo, hi) = refine_sum(&mut all_terms, |lo, hi| hi - lo <= target);
     Ok(RegionResult {
         loops: out,
         area: [f64_down(&lo), f64_up(&hi)],
