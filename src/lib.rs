@@ -54,8 +54,8 @@
 //!
 //! # Features
 //!
-//! None is on by default; each but `meter` adds an optional dependency (without its default
-//! features where it has any), and none changes anything else.
+//! None is on by default; each but `meter` and `unrolled-high` adds an optional dependency
+//! (without its default features where it has any), and none changes anything else.
 //!
 //! * `rayon`: `Batch::par_restrict_into`, the blocks of a batch spread over threads.
 //! * `mint` (mint 0.5): mint's `Point2`, `Point3`, `Vector2`, `Vector3` convert to and from the
@@ -65,13 +65,22 @@
 //!   `Vec::<mint::Point2<T>>::try_from(&curve)` ([`ErrorKind::Dimension`] on
 //!   `control_points[i]` when the curve is not 2-D). The fixed-dimension shapes ([`Bezier`],
 //!   ...) store `[T; D]`, which mint converts itself.
-//! * `kurbo` (kurbo 0.11, with its `std` feature): kurbo's `Point` and `Vec2` as
+//! * `kurbo` (kurbo 0.13, with its `std` feature): kurbo's `Point` and `Vec2` as
 //!   `ForeignPoint`s; `Line`, `QuadBez`, `CubicBez` and `PathSeg` into
 //!   [`BezierCurve<f64>`](BezierCurve) and [`Bezier<f64, 2>`](Bezier) by `From` (the same
 //!   control points in the same order: the same curve over [0, 1]), and back by `TryFrom`,
 //!   which fails with [`ErrorKind::Degree`] on `control_points` (`points`) when the degree is
 //!   not the segment's and with [`ErrorKind::Dimension`] on `control_points[i]` when a point is
 //!   not 2-D.
+//! * `lyon` (lyon_geom 1, without default features): lyon's `Point<f64>` and `Vector<f64>` as
+//!   `ForeignPoint`s; `LineSegment<f64>`, `QuadraticBezierSegment<f64>` and
+//!   `CubicBezierSegment<f64>` into and out of [`BezierCurve<f64>`](BezierCurve) and
+//!   [`Bezier<f64, 2>`](Bezier) with the same conventions and errors as kurbo's.
+//! * `unrolled-high` (no dependency): the unrolled restriction evaluators of degrees 9..=24
+//!   (`f64`, `f32`, dimensions 1..=4) besides the default 1..=8: most of the library's compile
+//!   time and memory (a dependent crate's first release build 146 s and 4.6 GB with them, 21 s
+//!   and 0.56 GB without, on 2 cores); without them those degrees restrict by two de Casteljau
+//!   subdivisions, which take fewer steps.
 //! * `serde` (serde 1, with `alloc` and `derive` only): `Serialize` and `Deserialize` for the
 //!   geometry types, generic over the number type. A type with private fields is written as the
 //!   arguments of its checked constructor under their names (`{"control_points": [...]}`,
@@ -90,9 +99,9 @@
 //!   pass it (the `blossom` binary's work budget). Without the feature the charges compile to
 //!   nothing; with it and no meter started, a charge is one read of a thread-local cell.
 //!
-//! `cargo test -p blossom --features mint,kurbo,serde` runs the tests of these features alone
+//! `cargo test -p blossom --features mint,kurbo,lyon,serde` runs the tests of these features alone
 //! (`tests/suite/applications/interop.rs`); `cargo test --workspace` runs them too, because the
-//! application crate's dev-dependency on this crate turns the three features on and Cargo
+//! application crate's dev-dependency on this crate turns the four features on and Cargo
 //! builds one `blossom` for the whole workspace.
 //!
 //! # References
