@@ -199,12 +199,3 @@ pub(crate) fn rationals_of(field: &str, values: &[f64]) -> Result<Vec<Rational>>
         })
         .collect()
 }
-
-/// A coarse work estimate for [`bezier_zeros`] of degree `n` with coefficients of at most
-/// `bits` bits after clearing denominators: Yun's gcds and the Descartes bisection cost about
-/// n^3 operations on numbers of about n + bits bits (same arbitrary unit as
-/// [`intersection_work`](crate::intersection_work)).
-pub fn zeros_work(n: usize, bits: usize) -> u128 {
-    let d = n as u128 + 1;
-    d * d * d * ((n as u128 + bits as u128) / 64 + 1)
-}
