@@ -55,7 +55,7 @@ fn as_points(x: &[CertifiedCrossing]) -> Vec<RoundedPoint> {
 /// denominator divisible by 3 for every double x), so the pair goes straight to the solver.
 /// The common points are those of the curves as given: each coordinate of P(s) rounded
 /// correctly at the exact s.
-fn exact_solver_alone(p: &[[f64; 2]], q: &[[f64; 2]]) -> crate::Result<RoundedIntersections> {
+fn exact_solver_alone(p: &[[f64; 2]], q: &[[f64; 2]]) -> crate::error::Result<RoundedIntersections> {
     let third = Rational::new(1.into(), 3.into());
     let shifted = |c: &[[f64; 2]]| -> Vec<[Rational; 2]> {
         c.iter()

@@ -610,7 +610,7 @@ fn high_degree_truth() -> Vec<TruthCase> {
     let parameter = |p: &serde_json::Value| TruthParameter {
         lo: truth_number(&p["lo"]),
         hi: truth_number(&p["hi"]),
-        value: p["value"].as_f64(),
+        value: p["value"].as_str().map(|v| v.parse().unwrap()),
     };
     cases
         .as_array()

@@ -326,7 +326,7 @@ fn truth_case(name: &str) -> (Value, Vec<[(BigRational, BigRational, Option<f64>
         (
             q(p["lo"].as_str().unwrap()),
             q(p["hi"].as_str().unwrap()),
-            p["value"].as_f64(),
+            p["value"].as_str().map(|v| v.parse::<f64>().unwrap()),
         )
     };
     let points = case["points"]

@@ -278,7 +278,9 @@ def parameter(x):
     lo = Fraction(lo.numerator * GRID // lo.denominator, GRID)
     hi = Fraction(-((-hi.numerator * GRID) // hi.denominator), GRID)
     a, b = float(lo), float(hi)  # Fraction -> float rounds correctly (ties to even)
-    return {"lo": fraction_text(lo), "hi": fraction_text(hi), "value": a if a == b else None}
+    # The double as its shortest round-trip text: a JSON number would be read back by some
+    # parsers (serde_json without `float_roundtrip`) one ulp off.
+    return {"lo": fraction_text(lo), "hi": fraction_text(hi), "value": repr(a) if a == b else None}
 
 
 def number_json(q):
