@@ -426,19 +426,32 @@ fn run_guarded(job: &Value, guard: std::time::Duration) -> super::binary::Run {
         .unwrap()
         .write_all(job.to_string().as_bytes())
         .unwrap();
+    // Both outputs are read as they come (an answer longer than the pipe would otherwise
+    // block the child), while this thread watches the clock.
+    let reader = |mut pipe: Box<dyn std::io::Read + Send>| {
+        std::thread::spawn(move || {
+            let mut text = String::new();
+            pipe.read_to_string(&mut text).unwrap();
+            text
+        })
+    };
+    let stdout = reader(Box::new(child.stdout.take().unwrap()));
+    let stderr = reader(Box::new(child.stderr.take().unwrap()));
     let start = std::time::Instant::now();
-    while child.try_wait().unwrap().is_none() {
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
         if start.elapsed() > guard {
             child.kill().unwrap();
             panic!("over {guard:?}: {job}");
         }
         std::thread::sleep(std::time::Duration::from_millis(10));
-    }
-    let out = child.wait_with_output().unwrap();
+    };
     super::binary::Run {
-        code: out.status.code().expect("an exit code"),
-        stdout: String::from_utf8(out.stdout).unwrap(),
-        stderr: String::from_utf8(out.stderr).unwrap(),
+        code: status.code().expect("an exit code"),
+        stdout: stdout.join().unwrap(),
+        stderr: stderr.join().unwrap(),
     }
 }
 
