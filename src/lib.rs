@@ -187,9 +187,7 @@ pub use intersect::filter::{certified_crossings_f64, CertifiedCrossing};
 pub use intersect::rounded::{
     intersect_curves_f64_rounded, RoundedIntersections, RoundedOverlap, RoundedPoint,
 };
-pub use intersect::zeros::{
-    bezier_zeros, bezier_zeros_f64, BezierZeros, PolynomialZero,
-};
+pub use intersect::zeros::{bezier_zeros, bezier_zeros_f64, BezierZeros, PolynomialZero};
 
 // Applications.
 pub use applications::batch::{Batch, RestrictionMap, BATCH_LANES};

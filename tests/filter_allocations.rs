@@ -81,8 +81,20 @@ fn the_filter_allocates_nothing_after_the_first_call_but_its_answer() {
     for (p, q) in &pairs {
         let (count, answer) = counted(|| certified_crossings_f64(p, q));
         let crossings = answer.as_deref().unwrap_or(&[]);
-        let (rebuilt, _) = counted(|| crossings.iter().filter_map(|c| Some(*c)).collect::<Vec<_>>());
-        assert_eq!(count, rebuilt, "{} crossings of degrees {}, {}", crossings.len(), p.len() - 1, q.len() - 1);
+        let (rebuilt, _) = counted(|| {
+            crossings
+                .iter()
+                .filter_map(|c| Some(*c))
+                .collect::<Vec<_>>()
+        });
+        assert_eq!(
+            count,
+            rebuilt,
+            "{} crossings of degrees {}, {}",
+            crossings.len(),
+            p.len() - 1,
+            q.len() - 1
+        );
         if crossings.is_empty() {
             assert_eq!(count, 0);
             without += 1;
@@ -90,5 +102,8 @@ fn the_filter_allocates_nothing_after_the_first_call_but_its_answer() {
             with_crossings += 1;
         }
     }
-    assert!(with_crossings >= 3 && without >= 1, "{with_crossings} with crossings, {without} without");
+    assert!(
+        with_crossings >= 3 && without >= 1,
+        "{with_crossings} with crossings, {without} without"
+    );
 }

@@ -55,7 +55,10 @@ fn as_points(x: &[CertifiedCrossing]) -> Vec<RoundedPoint> {
 /// denominator divisible by 3 for every double x), so the pair goes straight to the solver.
 /// The common points are those of the curves as given: each coordinate of P(s) rounded
 /// correctly at the exact s.
-fn exact_solver_alone(p: &[[f64; 2]], q: &[[f64; 2]]) -> crate::error::Result<RoundedIntersections> {
+fn exact_solver_alone(
+    p: &[[f64; 2]],
+    q: &[[f64; 2]],
+) -> crate::error::Result<RoundedIntersections> {
     let third = Rational::new(1.into(), 3.into());
     let shifted = |c: &[[f64; 2]]| -> Vec<[Rational; 2]> {
         c.iter()
@@ -256,13 +259,20 @@ fn assert_common_point(p: &[[f64; 2]], q: &[[f64; 2]], s: f64, t: f64) {
     let exact = |v: f64| Rational::from_f64(v).unwrap();
     let ulp = |v: f64| {
         let up = f64::from_bits(v.to_bits() + 1) - v;
-        let down = if v > 0.0 { v - f64::from_bits(v.to_bits() - 1) } else { up };
+        let down = if v > 0.0 {
+            v - f64::from_bits(v.to_bits() - 1)
+        } else {
+            up
+        };
         exact(up.max(down))
     };
     for k in 0..2 {
         let at = |c: &[[f64; 2]], x: f64| -> (Rational, Rational) {
             let b: Vec<Vec<Rational>> = c.iter().map(|xy| vec![exact(xy[k])]).collect();
-            let power: Vec<Rational> = bernstein_to_power(&b).into_iter().map(|v| v[0].clone()).collect();
+            let power: Vec<Rational> = bernstein_to_power(&b)
+                .into_iter()
+                .map(|v| v[0].clone())
+                .collect();
             let n = Rational::from_integer((c.len() - 1).into());
             let lipschitz = c
                 .windows(2)
@@ -274,7 +284,10 @@ fn assert_common_point(p: &[[f64; 2]], q: &[[f64; 2]], s: f64, t: f64) {
         let ((ps, lp), (qt, lq)) = (at(p, s), at(q, t));
         let half = Rational::new(1.into(), 2.into());
         let bound = (lp * ulp(s) + lq * ulp(t)) * half;
-        assert!((ps - qt).abs() <= bound, "({s}, {t}) is not a common point of {p:?} {q:?}");
+        assert!(
+            (ps - qt).abs() <= bound,
+            "({s}, {t}) is not a common point of {p:?} {q:?}"
+        );
     }
 }
 

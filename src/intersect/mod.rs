@@ -21,8 +21,8 @@
 //!   ([`intersect_curves_f64_rounded`]).
 
 pub(crate) mod algebraic;
-pub mod budget;
 pub(crate) mod bivariate;
+pub mod budget;
 pub(crate) mod components;
 pub(crate) mod curves;
 pub(crate) mod extension;

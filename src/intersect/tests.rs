@@ -648,7 +648,12 @@ fn check_against_truth(case: &TruthCase, answer: &Intersections) {
     };
     for (k, truth) in case.points.iter().enumerate() {
         let hits: Vec<_> = answer.points.iter().filter(|f| matches(truth, f)).collect();
-        assert_eq!(hits.len(), 1, "{name}: truth point {k} matched {} times", hits.len());
+        assert_eq!(
+            hits.len(),
+            1,
+            "{name}: truth point {k} matched {} times",
+            hits.len()
+        );
         assert!(!hits[0].tangent, "{name}: point {k} tangent");
         for (param, x) in truth.iter().zip([&hits[0].s, &hits[0].t]) {
             if let Some(v) = param.value {
@@ -658,8 +663,13 @@ fn check_against_truth(case: &TruthCase, answer: &Intersections) {
     }
     for (k, found) in answer.points.iter().enumerate() {
         let hits = case.points.iter().filter(|t| matches(t, found)).count();
-        assert_eq!(hits, 1, "{name}: answer point {k} ({}, {}) is in {hits} truth boxes",
-            found.s.to_f64(), found.t.to_f64());
+        assert_eq!(
+            hits,
+            1,
+            "{name}: answer point {k} ({}, {}) is in {hits} truth boxes",
+            found.s.to_f64(),
+            found.t.to_f64()
+        );
     }
 }
 
@@ -668,9 +678,14 @@ fn check_against_truth(case: &TruthCase, answer: &Intersections) {
 fn check_rounded_against_truth(case: &TruthCase, answer: &super::rounded::RoundedIntersections) {
     let name = &case.name;
     assert!(answer.overlaps.is_empty(), "{name}: overlaps");
-    assert_eq!(answer.points.len(), case.points.len(), "{name}: number of points");
+    assert_eq!(
+        answer.points.len(),
+        case.points.len(),
+        "{name}: number of points"
+    );
     let rounded = |p: &TruthParameter| -> [f64; 2] {
-        p.value.map_or([rational_to_f64(&p.lo), rational_to_f64(&p.hi)], |v| [v, v])
+        p.value
+            .map_or([rational_to_f64(&p.lo), rational_to_f64(&p.hi)], |v| [v, v])
     };
     for (k, truth) in case.points.iter().enumerate() {
         let (s, t) = (rounded(&truth[0]), rounded(&truth[1]));
@@ -679,7 +694,10 @@ fn check_rounded_against_truth(case: &TruthCase, answer: &super::rounded::Rounde
             .iter()
             .filter(|f| s.contains(&f.s) && t.contains(&f.t) && !f.tangent)
             .count();
-        assert_eq!(hits, 1, "{name}: truth point {k} ({s:?}, {t:?}) matched {hits} times");
+        assert_eq!(
+            hits, 1,
+            "{name}: truth point {k} ({s:?}, {t:?}) matched {hits} times"
+        );
     }
 }
 

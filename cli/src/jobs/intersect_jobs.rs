@@ -92,7 +92,11 @@ fn number(value: &Value, path: &str, arithmetic: Arithmetic) -> Result<Rational,
 }
 
 /// `"roots"`: the zeros of a 1-D Bézier function.
-fn roots(job: &Map<String, Value>, arithmetic: Arithmetic, limits: &Limits) -> Result<Value, Error> {
+fn roots(
+    job: &Map<String, Value>,
+    arithmetic: Arithmetic,
+    limits: &Limits,
+) -> Result<Value, Error> {
     let items = array(
         field(job, "control_points")?,
         "control_points",
@@ -172,7 +176,11 @@ fn self_job(
     limits: &Limits,
 ) -> Result<Value, Error> {
     let p = curve(field(job, "curve")?, "curve", arithmetic)?;
-    within_budget("curve", blossom::budget::self_intersection_work(&p), limits.max_work)?;
+    within_budget(
+        "curve",
+        blossom::budget::self_intersection_work(&p),
+        limits.max_work,
+    )?;
     let found = metered(limits, "curve", || {
         blossom::self_intersections(&p).map_err(|e| at("curve", e))
     })?;

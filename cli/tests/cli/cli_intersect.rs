@@ -358,7 +358,10 @@ fn check_truth(name: &str, answer: &Value, truth: &[[(BigRational, BigRational, 
             .iter()
             .filter(|p| meets(&p["s"], &t[0]) && meets(&p["t"], &t[1]))
             .count();
-        assert_eq!(hits, 1, "{name}: truth point {k} matched {hits} times: {answer}");
+        assert_eq!(
+            hits, 1,
+            "{name}: truth point {k} matched {hits} times: {answer}"
+        );
     }
     for p in points {
         check_param(&p["s"], p["s"]["value"].as_f64().unwrap());
@@ -465,7 +468,11 @@ fn answered_or_refused(job: &Value, field: &str) -> Option<Value> {
             Some(serde_json::from_str(&r.stdout).unwrap())
         }
         2 => {
-            assert!(r.stdout.is_empty() && r.stderr.lines().count() == 1, "{}", r.stderr);
+            assert!(
+                r.stdout.is_empty() && r.stderr.lines().count() == 1,
+                "{}",
+                r.stderr
+            );
             assert!(
                 r.stderr
                     .starts_with(&format!("error: {field}: the job's work ")),
@@ -534,7 +541,10 @@ fn wiggly_pair(state: &mut u64) -> Value {
         .map(|i| {
             let c = binomial(2 * n, 2 * i) / binomial(n, i);
             let sign = if (n - i) % 2 == 0 { 1.0 } else { -1.0 };
-            [px[i], (amplitude as f64 * sign * c).round() as i64 + small()]
+            [
+                px[i],
+                (amplitude as f64 * sign * c).round() as i64 + small(),
+            ]
         })
         .collect();
     let q: Vec<[i64; 2]> = (0..=m).map(|j| [qx[j], small()]).collect();
@@ -571,7 +581,10 @@ fn wiggly_graph_pairs_are_answered_or_refused() {
         assert!(bytes < 800, "{bytes} bytes");
         if let Some(a) = answered_or_refused(&job, "curves") {
             let crossings = a["points"].as_array().unwrap().len();
-            assert!((10..=25).contains(&crossings), "{crossings} crossings: {job}");
+            assert!(
+                (10..=25).contains(&crossings),
+                "{crossings} crossings: {job}"
+            );
         }
     }
 }
@@ -608,9 +621,8 @@ fn the_degree_limits_at_their_edges() {
     // Degree 40: a curve against a line is answered (resultant degree 40); a degree-40 loop is
     // refused by the budget (its estimate), not by the degree limit. Degree 41 is refused by
     // the limit whatever the budget.
-    let curve = |n: usize| -> Vec<[i64; 2]> {
-        (0..=n as i64).map(|i| [i, (i * i * 7) % 11 - 5]).collect()
-    };
+    let curve =
+        |n: usize| -> Vec<[i64; 2]> { (0..=n as i64).map(|i| [i, (i * i * 7) % 11 - 5]).collect() };
     let a = answer(
         &[],
         &json!({"kind": "curve-curve", "curves": [curve(40), [[0, -1], [40, 1]]]}),
@@ -628,7 +640,10 @@ fn the_degree_limits_at_their_edges() {
     let roots = |n: usize| -> Vec<i64> { (0..=n as i64).map(|i| (i * 5) % 7 - 3).collect() };
     let a = answer(&[], &json!({"kind": "roots", "control_points": roots(200)}));
     assert_eq!(a["identically_zero"], json!(false));
-    let e = error(&["--max-work", "1e15"], &json!({"kind": "roots", "control_points": roots(201)}).to_string());
+    let e = error(
+        &["--max-work", "1e15"],
+        &json!({"kind": "roots", "control_points": roots(201)}).to_string(),
+    );
     assert!(
         e.starts_with("error: control_points: degree 201 is over the limit of 200"),
         "{e}"
@@ -637,11 +652,19 @@ fn the_degree_limits_at_their_edges() {
 
 #[test]
 fn help_docs_and_code_state_the_same_limits() {
-    use blossom_cli::jobs::intersect_jobs::{MAX_CURVE_DEGREE, MAX_FUNCTION_DEGREE, UP_FRONT_FACTOR};
+    use blossom_cli::jobs::intersect_jobs::{
+        MAX_CURVE_DEGREE, MAX_FUNCTION_DEGREE, UP_FRONT_FACTOR,
+    };
     let help = run_binary(&["intersect", "--help"], b"").stdout;
     let help = help.split_whitespace().collect::<Vec<_>>().join(" ");
-    assert!(help.contains(&format!("1 <= n <= {MAX_CURVE_DEGREE};")), "{help}");
-    assert!(help.contains(&format!("degree 0 <= n <= {MAX_FUNCTION_DEGREE}.")), "{help}");
+    assert!(
+        help.contains(&format!("1 <= n <= {MAX_CURVE_DEGREE};")),
+        "{help}"
+    );
+    assert!(
+        help.contains(&format!("degree 0 <= n <= {MAX_FUNCTION_DEGREE}.")),
+        "{help}"
+    );
     assert_eq!(UP_FRONT_FACTOR, 2);
     assert!(help.contains("over twice --max-work"), "{help}");
     let docs = include_str!("../../../docs/cli.md");
