@@ -465,7 +465,15 @@ fn run_guarded(job: &Value, guard: std::time::Duration) -> super::binary::Run {
 /// The answer of `job` within the guard, or `None` when it was refused for its work (exit 2,
 /// one line `error: FIELD: the job's work ...` naming `field`).
 fn answered_or_refused(job: &Value, field: &str) -> Option<Value> {
+    let start = std::time::Instant::now();
     let r = run_guarded(job, std::time::Duration::from_secs(20));
+    // The figure the contract names (within 2 s), printed for `--nocapture`, not asserted.
+    println!(
+        "{:>5} bytes, exit {}, {:.2} s wall",
+        job.to_string().len(),
+        r.code,
+        start.elapsed().as_secs_f64()
+    );
     match r.code {
         0 => {
             assert!(r.stderr.is_empty() && r.stdout.lines().count() == 1);
@@ -615,8 +623,14 @@ fn small_quick_jobs_are_never_refused() {
         .map(|_| (xorshift(&mut state) % 21) as i64 - 10)
         .collect::<Vec<_>>()}));
     for job in jobs {
+        let start = std::time::Instant::now();
         let r = run_guarded(&job, std::time::Duration::from_secs(20));
         assert_eq!(r.code, 0, "{job}: {}", r.stderr);
+        println!(
+            "{:>5} bytes, answered, {:.2} s wall",
+            job.to_string().len(),
+            start.elapsed().as_secs_f64()
+        );
     }
 }
 
