@@ -1,6 +1,6 @@
 //! Work estimates of the certified zeros and intersections, for a caller that bounds its work
 //! (the `blossom` binary refuses a job whose estimate is over its budget before computing, and
-//! stops one whose metered work passes it: feature `meter`, [`crate::meter`]).
+//! stops one whose metered work passes it: `blossom::meter`, feature `meter`).
 //!
 //! Every estimate is in units of about a nanosecond of a 2-core x86-64 machine, the unit of
 //! the work meter, and is an estimate, not a bound: it is calibrated against measured times
