@@ -51,9 +51,10 @@ pub const MAX_CURVE_DEGREE: usize = 40;
 pub const MAX_FUNCTION_DEGREE: usize = 200;
 
 /// A job whose estimated work is over this many times `--max-work` is refused before
-/// computing. The estimates are within a factor of about two of the measured time where the
-/// limit lets jobs through (see [`blossom::budget`]), so no job of 0.5 s is refused by it
-/// under the default limit; the meter stops the ones it lets through that run longer.
+/// computing. The estimates are at most about twice the measured time where the limit lets
+/// jobs through (see [`blossom::budget`]; below it for wiggly graph pairs, whose exact path
+/// refines many crossings), so no job of 0.5 s is refused by it under the default limit; the
+/// meter stops the ones it lets through that run longer.
 pub const UP_FRONT_FACTOR: u128 = 2;
 
 /// Answers the `blossom intersect` job `document` as one JSON value, within `limits`.
