@@ -98,6 +98,8 @@
 //!   `meter::metered`, which runs a computation under a limit and stops it when the charges
 //!   pass it (the `blossom` binary's work budget). Without the feature the charges compile to
 //!   nothing; with it and no meter started, a charge is one read of a thread-local cell.
+//!   The work estimates of the certified zeros and intersections (`blossom::budget`) are
+//!   there in every build.
 //!
 //! `cargo test -p blossom --features mint,kurbo,lyon,serde` runs the tests of these features alone
 //! (`tests/suite/applications/interop.rs`); `cargo test --workspace` runs them too, because the
@@ -146,7 +148,10 @@ pub use num::parse::{parse_f64, parse_rational, MAX_DECIMAL_EXPONENT};
 pub use num::poly::Poly;
 pub use num::ring::{rational_to_f64, Rational, Ring};
 
-// Work metering (feature `meter`): one module, its items under one path each.
+// Work metering (feature `meter`): one module, its items under one path each; the work
+// estimates of the certified intersections beside it (every build: they estimate, they charge
+// nothing).
+pub use intersect::budget;
 #[cfg(feature = "meter")]
 pub use num::meter;
 
@@ -189,8 +194,7 @@ pub use restrict::polarisation::{
 // Certified zeros and intersections.
 pub use intersect::algebraic::AlgebraicReal;
 pub use intersect::curves::{
-    curve_pair_work, filtered_intersection_work, intersect_curves, intersect_curves_f64,
-    intersection_work, self_intersection_work, self_intersections, self_intersections_f64,
+    intersect_curves, intersect_curves_f64, self_intersections, self_intersections_f64,
     IntersectionPoint, Intersections, Overlap,
 };
 pub use intersect::extrema::{
@@ -201,9 +205,7 @@ pub use intersect::filter::{certified_crossings_f64, CertifiedCrossing};
 pub use intersect::rounded::{
     intersect_curves_f64_rounded, RoundedIntersections, RoundedOverlap, RoundedPoint,
 };
-pub use intersect::zeros::{
-    bezier_zeros, bezier_zeros_f64, zeros_work, BezierZeros, PolynomialZero,
-};
+pub use intersect::zeros::{bezier_zeros, bezier_zeros_f64, BezierZeros, PolynomialZero};
 
 // Applications.
 pub use applications::batch::{Batch, RestrictionMap, BATCH_LANES};

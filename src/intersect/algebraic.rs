@@ -753,6 +753,9 @@ pub(crate) fn enclose_scaled(
     let (mut l, mut h) = (BigInt::zero(), BigInt::zero());
     let mut dpow = BigInt::one();
     for i in (0..=n).rev() {
+        let ends = a.bits().max(b.bits());
+        crate::num::meter::charge_integer_products(2, l.bits().max(h.bits()), ends);
+        crate::num::meter::charge_integer_products(1, dpow.bits(), ends);
         (l, h) = interval_product(&l, &h, &a, &b);
         if let Some(c) = p.get(i) {
             if !c.is_zero() {

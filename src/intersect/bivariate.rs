@@ -134,7 +134,18 @@ fn subresultant(a: &BiPoly, b: &BiPoly, p: usize, q: usize, j: usize) -> Vec<ZPo
         .collect();
     // residues[i][k]: the coefficients of S_ji modulo the k-th prime.
     let mut residues: Vec<Vec<Vec<u64>>> = vec![Vec::with_capacity(fields.len()); j + 1];
+    // Per prime: the columns reduced, deg + 1 evaluations (Horner on every column, then a
+    // Euclid of about p q steps), and j + 1 interpolations of (deg + 1)^2 steps.
+    let entries = |x: &BiPoly| x.iter().map(Vec::len).sum::<usize>() as u64;
+    let (d1, j1) = (deg as u64 + 1, j as u64 + 1);
+    let per_prime = (entries(a) + entries(b)) * (d1 + 4)
+        + d1 * (p as u64 + 1) * (q as u64 + 1) * 2
+        + j1 * d1 * d1;
+    // Garner's reconstruction: about 2 k^2 steps for each of the (j + 1)(deg + 1) results.
+    let k = fields.len() as u64;
+    crate::num::meter::charge_word_operations(j1 * d1 * 2 * k * k);
     for &f in &fields {
+        crate::num::meter::charge_word_operations(per_prime);
         let (ca, cb) = (columns_mod(f, a, p), columns_mod(f, b, q));
         let mut values: Vec<Vec<u64>> = vec![Vec::with_capacity(deg + 1); j + 1];
         let mut dens = Vec::with_capacity(deg + 1);

@@ -294,7 +294,7 @@ fn filtered(
 }
 
 /// The points as doubles when every coordinate is exactly a double.
-fn as_doubles(points: &[[Rational; 2]]) -> Option<Vec<[f64; 2]>> {
+pub(crate) fn as_doubles(points: &[[Rational; 2]]) -> Option<Vec<[f64; 2]>> {
     points
         .iter()
         .map(|xy| {
@@ -549,75 +549,4 @@ pub(crate) fn self_intersections_named(p: &[[Rational; 2]], name: &str) -> Resul
 /// [`ErrorKind::NotFinite`] on `curve[i][j]`, else as [`self_intersections`].
 pub fn self_intersections_f64(p: &[[f64; 2]]) -> Result<Intersections> {
     self_intersections(&exact_points("curve", p)?)
-}
-
-/// A work estimate, in nanoseconds of a 2-core x86-64 machine, for [`intersect_curves`] on
-/// curves of degrees `n` and `m` whose power coefficients, after clearing denominators, have
-/// at most `bits` bits, when the exact solver answers (the float filter did not decide): the
-/// resultant has degree n m and coefficients of about (n + m) (bits + n + m) bits, and with
-/// refinement by quadratic interval refinement the measured cost grows as (n m)^2 operations
-/// on numbers of that size (log-log slope 1.98 from n = m = 8 to 20). Measured in release
-/// (2026-12-06, 2-core machine), random pairs with coordinates k / q (|k| <= 20, q <= 7):
-/// n = m = 20 0.6-1.6 s, 24 3.1-5.2 s, 28 3.9-7.1 s; self-intersections (this estimate at
-/// degree n - 1) of degree 20 about 0.6 s, 24 0.9-2.4 s, 28 5-6 s. The constant puts the
-/// measured times within 0.5 to 2 times the estimate from degree 20 to 28.
-pub fn intersection_work(n: usize, m: usize, bits: usize) -> u128 {
-    let d = (n as u128) * (m as u128) + 1;
-    200 * d * d * coefficient_words(n, m, bits)
-}
-
-/// A work estimate, in nanoseconds as [`intersection_work`], for [`intersect_curves`] when
-/// the float filter decides with `crossings` crossings: two multi-modular resultants of
-/// degree n m, and for each crossing the Bernstein coefficients of their square-free parts
-/// over its enclosure (Descartes' test), each about (n m)^2 operations on numbers of the
-/// resultant's size. Measured in release (2026-12-06, 2-core machine): random pairs with
-/// six-decimal coordinates, n = m = 20 0.55-1.5 s, 24 3.7-4.3 s, 28 7.9-13 s, n = m = 3
-/// about 1 ms; within 0.9 to 1.3 times the estimate from degree 20 to 28.
-pub fn filtered_intersection_work(n: usize, m: usize, bits: usize, crossings: usize) -> u128 {
-    let d = (n as u128) * (m as u128) + 1;
-    12 * (2 + crossings as u128) * d * d * coefficient_words(n, m, bits)
-}
-
-/// The estimated work of [`intersect_curves`] on `p` and `q`, in nanoseconds as
-/// [`intersection_work`]: when every coordinate is a double and the float filter decides
-/// (it runs here, in microseconds to milliseconds), [`filtered_intersection_work`] with its
-/// number of crossings, else [`intersection_work`]. `bits` is the longest coordinate's
-/// numerator and denominator together.
-pub fn curve_pair_work(p: &[[Rational; 2]], q: &[[Rational; 2]]) -> u128 {
-    let bits = longest_coordinate(p).max(longest_coordinate(q));
-    let (n, m) = (p.len().saturating_sub(1), q.len().saturating_sub(1));
-    let filtered = as_doubles(p)
-        .zip(as_doubles(q))
-        .and_then(|(pf, qf)| certified_crossings_f64(&pf, &qf));
-    match filtered {
-        Some(crossings) => filtered_intersection_work(n, m, bits, crossings.len()),
-        None => intersection_work(n, m, bits),
-    }
-}
-
-/// The estimated work of [`self_intersections`] on `p`, in nanoseconds as
-/// [`intersection_work`]: the divided difference (P(s) - P(t)) / (s - t) has degree n - 1 in
-/// each variable and always goes through the exact solver.
-pub fn self_intersection_work(p: &[[Rational; 2]]) -> u128 {
-    let d = p.len().saturating_sub(2).max(1);
-    intersection_work(d, d, longest_coordinate(p))
-}
-
-/// The bits of the longest coordinate once the curve's coordinates are written over their
-/// common denominator (the integers the exact solver works on), at least 1: doubles share a
-/// power of two, so their numerators have about 53 bits plus the spread of their exponents.
-fn longest_coordinate(p: &[[Rational; 2]]) -> usize {
-    let coordinates: Vec<Rational> = p.iter().flatten().cloned().collect();
-    let (numerators, _) = over_common_denominator(&coordinates);
-    numerators
-        .iter()
-        .map(|c| c.bits() as usize)
-        .max()
-        .unwrap_or(0)
-        .max(1)
-}
-
-/// The 64-bit words of a resultant coefficient (see [`intersection_work`]).
-fn coefficient_words(n: usize, m: usize, bits: usize) -> u128 {
-    ((n + m) as u128) * (bits as u128 + (n + m) as u128) / 64 + 1
 }

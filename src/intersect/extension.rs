@@ -461,7 +461,7 @@ pub(crate) fn bits_of(a: &BiPoly) -> usize {
         .unwrap_or(1)
 }
 
-/// A work estimate, in nanoseconds as [`intersection_work`](super::curves::intersection_work),
+/// A work estimate, in nanoseconds as [`intersection_work`](super::budget::intersection_work),
 /// of one fibre ([`Extension::fibre`]) and the tests of its partners, over an extension of
 /// degree `d`, for polynomials of degree `k` in t with coefficients of `bits` bits: about
 /// (k + 1)^2 products in Q(alpha), each 2 d^2 rational operations on numbers of about

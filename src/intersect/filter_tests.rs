@@ -1,17 +1,20 @@
-//! Tests of the float filter against independent exact answers: the resultant path
-//! ([`intersect_curves_f64`]) for cubic pairs, and for curves of degree 8 and 20 against a
-//! horizontal line, the exact zeros of the Bézier function P_y - c ([`bezier_zeros`], Descartes'
-//! rule) with t = P_x(s) rounded exactly ([`round_polynomial_at`]): no resultant involved.
+//! Tests of the float filter against independent exact answers: the exact solver alone
+//! ([`exact_solver_alone`]: resultants and subresultants, never the filter, which
+//! [`intersect_curves_f64`] runs first) for cubic pairs, and for curves of degree 8 and 20
+//! against a horizontal line, the exact zeros of the Bézier function P_y - c ([`bezier_zeros`],
+//! Descartes' rule) with t = P_x(s) rounded exactly ([`round_polynomial_at`]): no resultant
+//! involved. Degrees 9 to 40 are checked against the independent truth of
+//! `tests/intersect_corpus/high_degree/` (`tests.rs`).
 
-use super::algebraic::round_polynomial_at;
-use super::curves::intersect_curves_f64;
+use super::algebraic::{round_polynomial_at, upoly_eval_q};
+use super::curves::{intersect_curves, intersect_curves_f64, Intersections};
 use super::filter::{certified_crossings_f64, clip_cell, krawczyk_offsets, CertifiedCrossing};
 use super::rounded::{intersect_curves_f64_rounded, RoundedIntersections, RoundedPoint};
 use super::zeros::bezier_zeros_f64;
 use crate::num::bounded::BoundedF64;
 use crate::num::ring::Rational;
 use crate::shape::basis::bernstein_to_power;
-use num_traits::FromPrimitive;
+use num_traits::{FromPrimitive, Signed};
 
 /// Samples drawn from the shared test generator ([`crate::test_rng::XorShift`]).
 struct Random(crate::test_rng::XorShift);
@@ -46,9 +49,46 @@ fn as_points(x: &[CertifiedCrossing]) -> Vec<RoundedPoint> {
         .collect()
 }
 
-/// Checks one pair against the exact path; returns whether the filter decided.
+/// The exact solver's answer alone, without the float filter that [`intersect_curves`] runs
+/// first when every coordinate is a double: both curves are translated by (1/3, 0), which
+/// keeps every parameter and tangency and leaves no coordinate a double (x + 1/3 has a
+/// denominator divisible by 3 for every double x), so the pair goes straight to the solver.
+/// The common points are those of the curves as given: each coordinate of P(s) rounded
+/// correctly at the exact s.
+fn exact_solver_alone(
+    p: &[[f64; 2]],
+    q: &[[f64; 2]],
+) -> crate::error::Result<RoundedIntersections> {
+    let third = Rational::new(1.into(), 3.into());
+    let shifted = |c: &[[f64; 2]]| -> Vec<[Rational; 2]> {
+        c.iter()
+            .map(|xy| {
+                let [x, y] = xy.map(|v| Rational::from_f64(v).unwrap());
+                [x + &third, y]
+            })
+            .collect()
+    };
+    let x: Intersections = intersect_curves(&shifted(p), &shifted(q))?;
+    let power: Vec<Vec<Rational>> = bernstein_to_power(
+        &p.iter()
+            .map(|xy| xy.map(|v| Rational::from_f64(v).unwrap()).to_vec())
+            .collect::<Vec<_>>(),
+    );
+    let coordinate = |k: usize| -> Vec<Rational> { power.iter().map(|c| c[k].clone()).collect() };
+    let (px, py) = (coordinate(0), coordinate(1));
+    let mut rounded = RoundedIntersections::from(&x);
+    for (r, exact) in rounded.points.iter_mut().zip(&x.points) {
+        r.point = [
+            round_polynomial_at(&px, &exact.s),
+            round_polynomial_at(&py, &exact.s),
+        ];
+    }
+    Ok(rounded)
+}
+
+/// Checks one pair against the exact solver alone; returns whether the filter decided.
 fn check_against_exact(p: &[[f64; 2]], q: &[[f64; 2]]) -> bool {
-    let exact = RoundedIntersections::from(&intersect_curves_f64(p, q).unwrap());
+    let exact = exact_solver_alone(p, q).unwrap();
     let Some(filter) = certified_crossings_f64(p, q) else {
         return false;
     };
@@ -105,7 +145,7 @@ fn lines_and_quadratics_agree_with_the_exact_path() {
             continue;
         }
         // Collinear pairs may be overlaps, refused or decided by the exact path: skip errors.
-        if intersect_curves_f64(&p, &q).is_err() {
+        if exact_solver_alone(&p, &q).is_err() {
             assert!(certified_crossings_f64(&p, &q).is_none());
             continue;
         }
@@ -184,8 +224,12 @@ fn degree_8_and_20_against_a_line_agree_with_exact_zeros() {
 
 #[test]
 fn random_degree_20_pairs_are_decided_consistently() {
-    // No exact answer at this degree: the filter must decide most pairs, agree with itself
-    // with the curves swapped, and its points must be common points (within their ulps).
+    // The filter must decide most pairs and agree with itself with the curves swapped, and
+    // every crossing (s, t) must be a common point: |P(s) - Q(t)|, computed exactly at the
+    // doubles s and t, is at most what moving each half an ulp to the exact parameter can
+    // change it by (the curves' Lipschitz bounds n max |b_(i+1) - b_i|, exactly). The
+    // answers themselves at degrees 9 to 40 are checked against an independent truth in
+    // `tests.rs`.
     let mut r = Random(crate::test_rng::XorShift(0x5851_f42d_4c95_7f2d));
     let (mut decided, cases) = (0, 20);
     for _ in 0..cases {
@@ -201,8 +245,50 @@ fn random_degree_20_pairs_are_decided_consistently() {
         swapped.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
         let direct: Vec<(f64, f64, [f64; 2])> = x.iter().map(|c| (c.s, c.t, c.point)).collect();
         assert_eq!(direct, swapped);
+        for c in &x {
+            assert_common_point(&p, &q, c.s, c.t);
+        }
     }
     assert!(decided * 10 >= cases * 9, "decided {decided} of {cases}");
+}
+
+/// |P(s) - Q(t)| <= (L_P ulp(s) + L_Q ulp(t)) / 2 in each coordinate, exactly: s and t are
+/// the doubles nearest to a common point's parameters, L the largest |n (b_(i+1) - b_i)|
+/// (a bound on |P'| over [0, 1]) and ulp the larger gap next to the double.
+fn assert_common_point(p: &[[f64; 2]], q: &[[f64; 2]], s: f64, t: f64) {
+    let exact = |v: f64| Rational::from_f64(v).unwrap();
+    let ulp = |v: f64| {
+        let up = f64::from_bits(v.to_bits() + 1) - v;
+        let down = if v > 0.0 {
+            v - f64::from_bits(v.to_bits() - 1)
+        } else {
+            up
+        };
+        exact(up.max(down))
+    };
+    for k in 0..2 {
+        let at = |c: &[[f64; 2]], x: f64| -> (Rational, Rational) {
+            let b: Vec<Vec<Rational>> = c.iter().map(|xy| vec![exact(xy[k])]).collect();
+            let power: Vec<Rational> = bernstein_to_power(&b)
+                .into_iter()
+                .map(|v| v[0].clone())
+                .collect();
+            let n = Rational::from_integer((c.len() - 1).into());
+            let lipschitz = c
+                .windows(2)
+                .map(|w| (exact(w[1][k]) - exact(w[0][k])).abs() * &n)
+                .max()
+                .unwrap();
+            (upoly_eval_q(&power, &exact(x)), lipschitz)
+        };
+        let ((ps, lp), (qt, lq)) = (at(p, s), at(q, t));
+        let half = Rational::new(1.into(), 2.into());
+        let bound = (lp * ulp(s) + lq * ulp(t)) * half;
+        assert!(
+            (ps - qt).abs() <= bound,
+            "({s}, {t}) is not a common point of {p:?} {q:?}"
+        );
+    }
 }
 
 #[test]
@@ -246,7 +332,7 @@ fn near_tangency_is_decided_right_or_left_to_the_exact_path() {
     for k in 1..40 {
         let y = 1.0 - 2f64.powi(-k);
         let line = [[0.0, y], [2.0, y]];
-        let exact = RoundedIntersections::from(&intersect_curves_f64(&parabola, &line).unwrap());
+        let exact = exact_solver_alone(&parabola, &line).unwrap();
         assert_eq!(exact.points.len(), 2);
         if let Some(x) = certified_crossings_f64(&parabola, &line) {
             assert_eq!(as_points(&x), exact.points, "k = {k}");
@@ -264,12 +350,11 @@ fn rounded_answer_is_the_exact_answer_rounded() {
     for _ in 0..40 {
         let p: Vec<[f64; 2]> = (0..4).map(|_| [r.int(5), r.int(5)]).collect();
         let q: Vec<[f64; 2]> = (0..3).map(|_| [r.int(5), r.int(5)]).collect();
-        let Ok(exact) = intersect_curves_f64(&p, &q) else {
+        let Ok(mut want) = exact_solver_alone(&p, &q) else {
             continue;
         };
         let got = intersect_curves_f64_rounded(&p, &q).unwrap();
         by_filter += usize::from(got.by_filter);
-        let mut want = RoundedIntersections::from(&exact);
         want.by_filter = got.by_filter;
         assert_eq!(got, want);
     }

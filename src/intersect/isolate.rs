@@ -23,6 +23,7 @@
 //! point (the left half's last coefficient is f there) or at a or b is reported exactly.
 
 use super::upoly::{degree, sign_at};
+use crate::num::meter::{charge_integer_products, charge_integer_sums};
 use crate::num::ring::Rational;
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -119,6 +120,14 @@ fn taylor_shift_integer(p: &mut [BigInt], a: &BigInt) {
     let n = p.len().saturating_sub(1);
     let one = a.is_one();
     let minus_one = (-a).is_one();
+    // Each pass adds at most the bits of a (and one) to the longest coefficient.
+    let longest = p.iter().map(BigInt::bits).max().unwrap_or(0) + n as u64 * (a.bits() + 1);
+    let steps = (n * (n + 1) / 2) as u64;
+    if one || minus_one {
+        charge_integer_sums(steps, longest);
+    } else {
+        charge_integer_products(steps, longest, a.bits());
+    }
     for k in 0..n {
         for i in (k..n).rev() {
             let (lo, hi) = p.split_at_mut(i + 1);
@@ -138,6 +147,9 @@ fn taylor_shift_integer(p: &mut [BigInt], a: &BigInt) {
 /// a positive factor; the left half's last entry is (a positive multiple of) f at the middle.
 pub fn halve(b: &[BigInt]) -> (Vec<BigInt>, Vec<BigInt>) {
     let n = b.len() - 1;
+    // n (n + 1) / 2 sums and 2 (n + 1) shifts of numbers of at most n more bits.
+    let longest = b.iter().map(BigInt::bits).max().unwrap_or(0) + n as u64;
+    charge_integer_sums((n * (n + 1) / 2 + 2 * (n + 1)) as u64, longest);
     let mut level: Vec<BigInt> = b.to_vec();
     let mut left = Vec::with_capacity(n + 1);
     let mut right = vec![BigInt::zero(); n + 1];

@@ -15,11 +15,14 @@
 //! * `interval`: rigorous intervals, double-doubles and correct rounding for the filter;
 //! * `pyramid`: the filter's point evaluations, unrolled for degrees 1 to 3;
 //! * `filter`: the float filter of curve-curve intersection ([`certified_crossings_f64`]);
+//! * `budget`: work estimates for callers that bound their work ([`budget`], public as
+//!   `blossom::budget`);
 //! * `rounded`: the `f64` answer for every input, filter first, exact path otherwise
 //!   ([`intersect_curves_f64_rounded`]).
 
 pub(crate) mod algebraic;
 pub(crate) mod bivariate;
+pub mod budget;
 pub(crate) mod components;
 pub(crate) mod curves;
 mod display;

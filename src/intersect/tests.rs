@@ -565,3 +565,231 @@ fn integer_bernstein_coefficients_are_the_rational_ones_scaled() {
         }
     }
 }
+
+// High degrees against an independent truth: `tests/intersect_corpus/high_degree/cases.json`,
+// computed by `truth.py` beside it with interval Krawczyk tests on Taylor enclosures of the
+// power form in mpmath (no Bernstein form, no Descartes, no resultant), with a certified count:
+// every crossing of every case, each parameter in an enclosure of width about 2^-100.
+
+/// One parameter of the truth: an enclosure [lo, hi] and, when both ends round to the same
+/// double, that double.
+struct TruthParameter {
+    lo: Rational,
+    hi: Rational,
+    value: Option<f64>,
+}
+
+/// One case of the truth: one curve (`self`) or two, and every intersection (s, t).
+struct TruthCase {
+    name: String,
+    curves: Vec<Vec<[Rational; 2]>>,
+    points: Vec<[TruthParameter; 2]>,
+}
+
+fn truth_number(v: &serde_json::Value) -> Rational {
+    let text = match v {
+        serde_json::Value::String(s) => s.clone(),
+        other => other.to_string(),
+    };
+    match text.split_once('/') {
+        Some((n, d)) => Rational::new(n.parse().unwrap(), d.parse().unwrap()),
+        None => Rational::from_integer(text.parse().unwrap()),
+    }
+}
+
+fn high_degree_truth() -> Vec<TruthCase> {
+    let text = include_str!("../../tests/intersect_corpus/high_degree/cases.json");
+    let cases: serde_json::Value = serde_json::from_str(text).unwrap();
+    let curve = |c: &serde_json::Value| -> Vec<[Rational; 2]> {
+        c.as_array()
+            .unwrap()
+            .iter()
+            .map(|xy| [truth_number(&xy[0]), truth_number(&xy[1])])
+            .collect()
+    };
+    let parameter = |p: &serde_json::Value| TruthParameter {
+        lo: truth_number(&p["lo"]),
+        hi: truth_number(&p["hi"]),
+        value: p["value"].as_str().map(|v| v.parse().unwrap()),
+    };
+    cases
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| TruthCase {
+            name: c["name"].as_str().unwrap().to_string(),
+            curves: match c["kind"].as_str().unwrap() {
+                "self" => vec![curve(&c["curve"])],
+                _ => c["curves"].as_array().unwrap().iter().map(curve).collect(),
+            },
+            points: c["points"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|pt| [parameter(&pt["s"]), parameter(&pt["t"])])
+                .collect(),
+        })
+        .collect()
+}
+
+/// Whether the exact parameter lies in the truth's enclosure (decided exactly).
+fn encloses(truth: &TruthParameter, x: &AlgebraicReal) -> bool {
+    x.cmp_rational(&truth.lo) != Ordering::Less && x.cmp_rational(&truth.hi) != Ordering::Greater
+}
+
+/// Every truth point is matched by exactly one point of the answer and every answer point by
+/// exactly one truth point (so none is missed and none is extra), with no overlap, no
+/// tangency, and each parameter's double the truth's to the bit when the truth knows it.
+fn check_against_truth(case: &TruthCase, answer: &Intersections) {
+    let name = &case.name;
+    assert!(answer.overlaps.is_empty(), "{name}: overlaps");
+    let matches = |truth: &[TruthParameter; 2], found: &super::curves::IntersectionPoint| {
+        encloses(&truth[0], &found.s) && encloses(&truth[1], &found.t)
+    };
+    for (k, truth) in case.points.iter().enumerate() {
+        let hits: Vec<_> = answer.points.iter().filter(|f| matches(truth, f)).collect();
+        assert_eq!(
+            hits.len(),
+            1,
+            "{name}: truth point {k} matched {} times",
+            hits.len()
+        );
+        assert!(!hits[0].tangent, "{name}: point {k} tangent");
+        for (param, x) in truth.iter().zip([&hits[0].s, &hits[0].t]) {
+            if let Some(v) = param.value {
+                assert_eq!(x.to_f64().to_bits(), v.to_bits(), "{name}: point {k}");
+            }
+        }
+    }
+    for (k, found) in answer.points.iter().enumerate() {
+        let hits = case.points.iter().filter(|t| matches(t, found)).count();
+        assert_eq!(
+            hits,
+            1,
+            "{name}: answer point {k} ({}, {}) is in {hits} truth boxes",
+            found.s.to_f64(),
+            found.t.to_f64()
+        );
+    }
+}
+
+/// The rounded answer (float filter first) against the truth: the same number of points, each
+/// truth point's doubles present.
+fn check_rounded_against_truth(case: &TruthCase, answer: &super::rounded::RoundedIntersections) {
+    let name = &case.name;
+    assert!(answer.overlaps.is_empty(), "{name}: overlaps");
+    assert_eq!(
+        answer.points.len(),
+        case.points.len(),
+        "{name}: number of points"
+    );
+    let rounded = |p: &TruthParameter| -> [f64; 2] {
+        p.value
+            .map_or([rational_to_f64(&p.lo), rational_to_f64(&p.hi)], |v| [v, v])
+    };
+    for (k, truth) in case.points.iter().enumerate() {
+        let (s, t) = (rounded(&truth[0]), rounded(&truth[1]));
+        let hits = answer
+            .points
+            .iter()
+            .filter(|f| s.contains(&f.s) && t.contains(&f.t) && !f.tangent)
+            .count();
+        assert_eq!(
+            hits, 1,
+            "{name}: truth point {k} ({s:?}, {t:?}) matched {hits} times"
+        );
+    }
+}
+
+/// The curves of a truth case as doubles, when every coordinate is one.
+fn truth_doubles(curve: &[[Rational; 2]]) -> Option<Vec<[f64; 2]>> {
+    curve
+        .iter()
+        .map(|xy| {
+            let d = [rational_to_f64(&xy[0]), rational_to_f64(&xy[1])];
+            (Rational::from_float(d[0]).as_ref() == Some(&xy[0])
+                && Rational::from_float(d[1]).as_ref() == Some(&xy[1]))
+            .then_some(d)
+        })
+        .collect()
+}
+
+/// The product of the degrees of a pair (the degree of its resultant), or the squared degree
+/// of the divided difference of one curve.
+fn resultant_degree(case: &TruthCase) -> usize {
+    match &case.curves[..] {
+        [p] => (p.len() - 2) * (p.len() - 2),
+        [p, q] => (p.len() - 1) * (q.len() - 1),
+        _ => unreachable!(),
+    }
+}
+
+#[test]
+fn high_degree_pairs_match_the_independent_truth() {
+    // Every pair of degrees 9 to 40 through the rounded answer (the float filter, the exact
+    // path where it does not decide), and the exact answer (filter and resultants, or the
+    // exact solver for coordinates that are not doubles) up to resultant degree 400; the
+    // rest of the exact answers in `high_degree_exact_answers_match_the_truth` (ignored).
+    let cases = high_degree_truth();
+    let mut checked = 0;
+    for case in cases.iter().filter(|c| c.curves.len() == 2) {
+        let (p, q) = (&case.curves[0], &case.curves[1]);
+        if let (Some(pf), Some(qf)) = (truth_doubles(p), truth_doubles(q)) {
+            let rounded = super::rounded::intersect_curves_f64_rounded(&pf, &qf).unwrap();
+            check_rounded_against_truth(case, &rounded);
+            checked += 1;
+        }
+        if resultant_degree(case) <= 400 {
+            check_against_truth(case, &intersect_curves(p, q).unwrap());
+            checked += 1;
+        }
+    }
+    assert!(checked >= 25, "checked {checked}");
+}
+
+#[test]
+fn high_degree_self_intersections_match_the_independent_truth() {
+    // Self-intersections always go through the exact solver: degrees 8 to 20 here, the rest
+    // in `high_degree_exact_answers_match_the_truth` (ignored).
+    let cases = high_degree_truth();
+    let mut checked = 0;
+    for case in cases.iter().filter(|c| c.curves.len() == 1) {
+        if case.curves[0].len() <= 21 {
+            check_against_truth(case, &self_intersections(&case.curves[0]).unwrap());
+            checked += 1;
+        }
+    }
+    assert!(checked >= 7, "checked {checked}");
+}
+
+/// The exact answers of the cases the two tests above leave (resultant degree over 400, self
+/// over degree 20), with the time of each: over half an hour in all (pair-36-36 alone 5.5
+/// min on a loaded 2-core machine). Run on request, all or the cases named in
+/// `BLOSSOM_TRUTH_CASES` (say "self-24 self-28"):
+/// `cargo test -p blossom --release --lib intersect::tests::high_degree_exact -- --ignored --nocapture`.
+#[test]
+#[ignore = "minutes: the exact solver at degrees 24 to 40"]
+fn high_degree_exact_answers_match_the_truth() {
+    let only = std::env::var("BLOSSOM_TRUTH_CASES").ok();
+    for case in high_degree_truth() {
+        if only
+            .as_deref()
+            .is_some_and(|names| !names.split_whitespace().any(|n| n == case.name))
+        {
+            continue;
+        }
+        let start = std::time::Instant::now();
+        let answer = match &case.curves[..] {
+            [p] if p.len() > 21 => self_intersections(p).unwrap(),
+            [p, q] if resultant_degree(&case) > 400 => intersect_curves(p, q).unwrap(),
+            _ => continue,
+        };
+        check_against_truth(&case, &answer);
+        println!(
+            "{}: {} points, {:.1} s",
+            case.name,
+            answer.points.len(),
+            start.elapsed().as_secs_f64()
+        );
+    }
+}

@@ -10,6 +10,7 @@
 //!   multiplicity exactly i;
 //! * exact sign evaluation at a rational p/q by homogeneous Horner (q^d f(p/q), an integer).
 
+use crate::num::meter::charge_integer_products;
 use crate::num::ring::Rational;
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
@@ -117,10 +118,12 @@ pub fn mul(a: &[BigInt], b: &[BigInt]) -> ZPoly {
         return Vec::new();
     }
     let mut out = vec![BigInt::zero(); a.len() + b.len() - 1];
+    let b_bits = b.iter().map(BigInt::bits).max().unwrap_or(0);
     for (i, x) in a.iter().enumerate() {
         if x.is_zero() {
             continue;
         }
+        charge_integer_products(b.len() as u64, x.bits(), b_bits);
         for (j, y) in b.iter().enumerate() {
             out[i + j] += x * y;
         }
@@ -154,6 +157,8 @@ fn pseudo_remainder(a: &[BigInt], b: &[BigInt]) -> ZPoly {
         }
         let lr = r[dr].clone();
         let shift = dr - db;
+        let longest = r.iter().map(BigInt::bits).max().unwrap_or(0);
+        charge_integer_products(2 * (dr as u64 + 1), longest, lb.bits().max(lr.bits()));
         for c in r.iter_mut() {
             *c *= lb;
         }
@@ -189,6 +194,7 @@ pub fn exact_div(a: &[BigInt], b: &[BigInt]) -> Option<ZPoly> {
         if !rem.is_zero() {
             return None;
         }
+        charge_integer_products(db as u64 + 2, c.bits(), qk.bits().max(lb.bits()));
         for (j, bj) in b.iter().enumerate().take(db + 1) {
             r[j + k] -= &qk * bj;
         }
@@ -362,6 +368,8 @@ pub fn scaled_value_at(p: &[BigInt], x: &Rational) -> BigInt {
     let mut acc = p[deg].clone();
     let mut dpow = BigInt::one();
     for c in p[..deg].iter().rev() {
+        charge_integer_products(1, acc.bits(), n.bits());
+        charge_integer_products(2, c.bits(), dpow.bits().max(d.bits()));
         dpow *= d;
         acc = acc * n + c * &dpow;
     }

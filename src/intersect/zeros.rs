@@ -220,12 +220,3 @@ pub(crate) fn power_coefficients(coefficients: &[Rational]) -> Vec<Rational> {
 pub fn bezier_zeros_f64(coefficients: &[f64]) -> Result<BezierZeros> {
     bezier_zeros(&exact_values("coefficients", coefficients)?)
 }
-
-/// A coarse work estimate for [`bezier_zeros`] of degree `n` with coefficients of at most
-/// `bits` bits after clearing denominators: Yun's gcds and the Descartes bisection cost about
-/// n^3 operations on numbers of about n + bits bits (same arbitrary unit as
-/// [`intersection_work`](crate::intersection_work)).
-pub fn zeros_work(n: usize, bits: usize) -> u128 {
-    let d = n as u128 + 1;
-    d * d * d * ((n as u128 + bits as u128) / 64 + 1)
-}

@@ -326,10 +326,12 @@ Reads one job (JSON) and prints its exact answer as one line of JSON; exit code 
       overlap (common stretch), of two 2-D Bezier curves over [0, 1]
   {\"kind\": \"self\", \"curve\": P}
       every pair s < t with P(s) = P(t), and the stretches a curve retraces
-A curve is its control points [[x0, y0], ..., [xn, yn]], 1 <= n <= 8; a Bezier function
-has degree at most 200. Every parameter is written as {\"value\": the correctly rounded
-double, \"exact\": \"p/q\" or null, \"interval\": an isolating interval [lo, hi],
-\"polynomial\": a square-free integer polynomial it is a root of} (see docs/cli.md).
+A curve is its control points [[x0, y0], ..., [xn, yn]], 1 <= n <= 40; a Bezier function
+has degree 0 <= n <= 200. Within those limits the work budget decides: a job is refused
+when its estimated work is over twice --max-work, or stopped when its metered work passes
+it. Every parameter is written as {\"value\": the correctly rounded double, \"exact\":
+\"p/q\" or null, \"interval\": an isolating interval [lo, hi], \"polynomial\": a
+square-free integer polynomial it is a root of} (see docs/cli.md).
 
 Options:
   --input FILE         read the job from FILE (default, or `-`: standard input)

@@ -12,14 +12,23 @@
 //! # Limits
 //!
 //! Exact intersection costs grow with the product of the degrees (the resultant of two curves
-//! of degrees n and m has degree n m) and with the bit length of the input numbers, so a job
-//! is refused up front when a curve's degree is over [`MAX_CURVE_DEGREE`] or a Bézier
-//! function's over [`MAX_FUNCTION_DEGREE`] (naming the field), and a curve job whose estimated
-//! work ([`blossom::curve_pair_work`]: the float filter runs first, and when it decides only
-//! the two resultants and one Descartes test per crossing remain) is over twice `--max-work`
-//! is refused before computing, naming `curves` or `curve`.
+//! of degrees n and m has degree n m) and with the bit length of the integers the exact
+//! methods compute with (the input numbers over their common denominator), so a job is
+//! refused up front when a curve's degree is over [`MAX_CURVE_DEGREE`] or a Bézier function's
+//! over [`MAX_FUNCTION_DEGREE`] (naming the field); then, as for `restrict`
+//! ([`super::budget`]), twice:
+//! 1. before computing, when its estimated work ([`blossom::budget::bezier_zeros_work`],
+//!    [`blossom::budget::curve_pair_work`]: the float filter runs first, and when it decides
+//!    only the two resultants and one Descartes test per crossing remain;
+//!    [`blossom::budget::self_intersection_work`]) is over [`UP_FRONT_FACTOR`] times
+//!    `--max-work`, naming `control_points`, `curves` or `curve`;
+//! 2. while computing: the job runs under the work meter ([`super::budget::metered`]), which
+//!    the exact methods charge as they go (the rational arithmetic through `Ring`, the big
+//!    integer loops of root isolation, sign evaluation and refinement, the modular
+//!    resultants), and is stopped when its work passes `--max-work`.
 
 use super::args::Arithmetic;
+use super::budget::{metered, Limits};
 use super::job::{array, expect_fields, field, object_and_kind};
 use crate::number::{f64_from_json, f64_to_json, format_rational, rational_from_json};
 use blossom::{AlgebraicReal, Error, Intersections, Rational};
@@ -34,15 +43,22 @@ pub const INTERSECT_FIELDS: [(&str, &[&str]); 3] = [
 
 /// The largest degree of a curve of a `curve-curve` or `self` job. Below it the work budget
 /// decides: under the default `--max-work`, degree-20 pairs and loops are answered (the
-/// spec's minimum), degrees 21-24 when their estimate allows (1-3 s), and degree 28 and up
-/// are refused unless the limit is raised (they take 4-15 s on a 2-core machine).
+/// spec's minimum), higher degrees when their estimate and their metered work allow (see
+/// `docs/cli.md`), and a curve of degree 41 or more is refused whatever the budget.
 pub const MAX_CURVE_DEGREE: usize = 40;
 
-/// The largest degree of the Bézier function of a `roots` job.
+/// The largest degree of the Bézier function of a `roots` job (then the work budget decides).
 pub const MAX_FUNCTION_DEGREE: usize = 200;
 
-/// Answers the `blossom intersect` job `document` as one JSON value.
-pub fn answer(document: &Value, arithmetic: Arithmetic, max_work: u64) -> Result<Value, Error> {
+/// A job whose estimated work is over this many times `--max-work` is refused before
+/// computing. The estimates are at most about twice the measured time where the limit lets
+/// jobs through (see [`blossom::budget`]; below it for wiggly graph pairs, whose exact path
+/// refines many crossings), so no job of 0.5 s is refused by it under the default limit; the
+/// meter stops the ones it lets through that run longer.
+pub const UP_FRONT_FACTOR: u128 = 2;
+
+/// Answers the `blossom intersect` job `document` as one JSON value, within `limits`.
+pub fn answer(document: &Value, arithmetic: Arithmetic, limits: &Limits) -> Result<Value, Error> {
     let (job, kind) = object_and_kind(document)?;
     let Some((kind, accepted)) = INTERSECT_FIELDS.iter().find(|(k, _)| *k == kind) else {
         let kinds: Vec<&str> = INTERSECT_FIELDS.iter().map(|(k, _)| *k).collect();
@@ -58,9 +74,9 @@ pub fn answer(document: &Value, arithmetic: Arithmetic, max_work: u64) -> Result
     };
     expect_fields(job, "", accepted)?;
     match *kind {
-        "roots" => roots(job, arithmetic),
-        "curve-curve" => curve_curve(job, arithmetic, max_work),
-        _ => self_job(job, arithmetic, max_work),
+        "roots" => roots(job, arithmetic, limits),
+        "curve-curve" => curve_curve(job, arithmetic, limits),
+        _ => self_job(job, arithmetic, limits),
     }
 }
 
@@ -77,7 +93,11 @@ fn number(value: &Value, path: &str, arithmetic: Arithmetic) -> Result<Rational,
 }
 
 /// `"roots"`: the zeros of a 1-D Bézier function.
-fn roots(job: &Map<String, Value>, arithmetic: Arithmetic) -> Result<Value, Error> {
+fn roots(
+    job: &Map<String, Value>,
+    arithmetic: Arithmetic,
+    limits: &Limits,
+) -> Result<Value, Error> {
     let items = array(
         field(job, "control_points")?,
         "control_points",
@@ -103,7 +123,11 @@ fn roots(job: &Map<String, Value>, arithmetic: Arithmetic) -> Result<Value, Erro
         .enumerate()
         .map(|(i, v)| number(v, &format!("control_points[{i}]"), arithmetic))
         .collect::<Result<Vec<_>, _>>()?;
-    let zeros = blossom::bezier_zeros(&coefficients).map_err(|e| at("control_points", e))?;
+    let work = blossom::budget::bezier_zeros_work(&coefficients);
+    within_budget("control_points", work, limits.max_work)?;
+    let zeros = metered(limits, "control_points", || {
+        blossom::bezier_zeros(&coefficients).map_err(|e| at("control_points", e))
+    })?;
     let roots = zeros
         .zeros
         .iter()
@@ -120,7 +144,7 @@ fn roots(job: &Map<String, Value>, arithmetic: Arithmetic) -> Result<Value, Erro
 fn curve_curve(
     job: &Map<String, Value>,
     arithmetic: Arithmetic,
-    max_work: u64,
+    limits: &Limits,
 ) -> Result<Value, Error> {
     let items = array(field(job, "curves")?, "curves", "an array of two curves")?;
     if items.len() != 2 {
@@ -131,14 +155,17 @@ fn curve_curve(
     }
     let p = curve(&items[0], "curves[0]", arithmetic)?;
     let q = curve(&items[1], "curves[1]", arithmetic)?;
-    within_budget("curves", blossom::curve_pair_work(&p, &q), max_work)?;
-    let found = blossom::intersect_curves(&p, &q).map_err(|e| {
-        let path = match e.path() {
-            "p" => "curves[0]",
-            "q" => "curves[1]",
-            _ => "curves",
-        };
-        at(path, e)
+    let work = blossom::budget::curve_pair_work(&p, &q);
+    within_budget("curves", work, limits.max_work)?;
+    let found = metered(limits, "curves", || {
+        blossom::intersect_curves(&p, &q).map_err(|e| {
+            let path = match e.path() {
+                "p" => "curves[0]",
+                "q" => "curves[1]",
+                _ => "curves",
+            };
+            at(path, e)
+        })
     })?;
     intersections("curve-curve", &found)
 }
@@ -147,20 +174,24 @@ fn curve_curve(
 fn self_job(
     job: &Map<String, Value>,
     arithmetic: Arithmetic,
-    max_work: u64,
+    limits: &Limits,
 ) -> Result<Value, Error> {
     let p = curve(field(job, "curve")?, "curve", arithmetic)?;
-    within_budget("curve", blossom::self_intersection_work(&p), max_work)?;
-    let found = blossom::self_intersections(&p).map_err(|e| at("curve", e))?;
+    within_budget(
+        "curve",
+        blossom::budget::self_intersection_work(&p),
+        limits.max_work,
+    )?;
+    let found = metered(limits, "curve", || {
+        blossom::self_intersections(&p).map_err(|e| at("curve", e))
+    })?;
     intersections("self", &found)
 }
 
-/// Refuses a job whose estimated work (nanoseconds of a 2-core machine, see
-/// [`blossom::curve_pair_work`]) is over twice the limit: the estimates are within a factor
-/// of about two of the measured time at the degrees the limit lets through, and the exact
-/// solver is not metered as it runs, so the check is made up front only.
+/// Refuses a job whose estimated work (units of about a nanosecond of a 2-core machine, see
+/// [`blossom::budget`]) is over [`UP_FRONT_FACTOR`] times the limit.
 fn within_budget(path: &str, work: u128, max_work: u64) -> Result<(), Error> {
-    if work <= 2 * u128::from(max_work) {
+    if work <= UP_FRONT_FACTOR * u128::from(max_work) {
         return Ok(());
     }
     Err(Error::new(

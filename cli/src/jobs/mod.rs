@@ -113,7 +113,7 @@ pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
             match read_input(options.input.as_deref(), &options.limits, stdin)
                 .and_then(|bytes| parse_json(&bytes))
                 .and_then(|document| {
-                    intersect_jobs::answer(&document, options.arithmetic, options.limits.max_work)
+                    intersect_jobs::answer(&document, options.arithmetic, &options.limits)
                 })
                 .and_then(|answer| {
                     serde_json::to_string(&answer).map_err(|e| {
