@@ -7,10 +7,11 @@ use crate::records::{
     extremes_record, intersection_records, nearest_record, Extremes, IntersectionRecords,
     NearestPoint,
 };
+use blossom::budget::{curve_pair_work, self_intersection_work};
 use blossom::{
-    curve_pair_work, intersect_curves, intersect_curves_f64_rounded, nearest_point,
-    nearest_point_f64, self_intersection_work, self_intersections, tight_bounding_box,
-    tight_bounding_box_f64, BezierCurve, Intersections, Rational, Reduction, RoundedIntersections,
+    intersect_curves, intersect_curves_f64_rounded, nearest_point, nearest_point_f64,
+    self_intersections, tight_bounding_box, tight_bounding_box_f64, BezierCurve, Intersections,
+    Rational, Reduction, RoundedIntersections,
 };
 use num_rational::Ratio;
 use pyo3::prelude::*;

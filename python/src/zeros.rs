@@ -4,7 +4,8 @@ use crate::curve::check_work;
 use crate::errors::{call_detached, Rename};
 use crate::numbers::{read_array, Coords, Num};
 use crate::records::{zeros_record, Zeros};
-use blossom::{bezier_zeros, bezier_zeros_f64, zeros_work, Rational};
+use blossom::budget::bezier_zeros_work;
+use blossom::{bezier_zeros, bezier_zeros_f64, Rational};
 use pyo3::prelude::*;
 
 /// The zeros in [0, 1] of the polynomial sum_i b_i B_i^n(t) (`coefficients` the b_i; floats
@@ -32,25 +33,16 @@ pub fn bezier_zeros_py(
         Coords::F64(c) => {
             if c.len() > 17 {
                 let exact = Rational::of_coords(Coords::F64(c.clone()), "coefficients")?;
-                check_work(zeros_work(c.len() - 1, bits(&exact)), max_work)?;
+                check_work(bezier_zeros_work(&exact), max_work)?;
             }
             call_detached(py, &renames, || bezier_zeros_f64(&c))?
         }
         Coords::Exact(c) => {
             if c.len() > 17 {
-                check_work(zeros_work(c.len() - 1, bits(&c)), max_work)?;
+                check_work(bezier_zeros_work(&c), max_work)?;
             }
             call_detached(py, &renames, || bezier_zeros(&c))?
         }
     };
     zeros_record(py, &z)
-}
-
-/// The bits of the coefficients for the work estimate: the longest numerator plus the longest
-/// denominator (exactly the common-denominator size for doubles, whose denominators are powers
-/// of two).
-fn bits(c: &[Rational]) -> usize {
-    let numer = c.iter().map(|r| r.numer().bits()).max().unwrap_or(0);
-    let denom = c.iter().map(|r| r.denom().bits()).max().unwrap_or(0);
-    (numer + denom) as usize
 }

@@ -152,10 +152,10 @@ pub fn triangle_intersection(t1: &Region, t2: &Region) -> Result<RegionResult> {
 }
 
 /// The estimated work of [`boolean`] on `a` and `b`, in nanoseconds of a 2-core x86-64
-/// machine as [`intersection_work`](crate::intersection_work): the intersections of every
-/// pair of curves whose boxes meet ([`curve_pair_work`](crate::curve_pair_work), which runs
+/// machine as [`intersection_work`](crate::budget::intersection_work): the intersections of every
+/// pair of curves whose boxes meet ([`curve_pair_work`](crate::budget::curve_pair_work), which runs
 /// the float filter), the self-intersections of every curve
-/// ([`self_intersection_work`](crate::self_intersection_work)), and the classification of the
+/// ([`self_intersection_work`](crate::budget::self_intersection_work)), and the classification of the
 /// pieces (one ray per piece against the curves). It does not depend on `op`. Curves that
 /// follow each other in a loop and are proved to meet only at their join, and curves proved
 /// one-to-one, count a few microseconds instead of the exact solver's estimate.

@@ -6,7 +6,7 @@ use crate::shape::array::Bezier;
 
 /// The highest curve degree a region accepts: the exact intersection of two curves of degree
 /// n costs about n^4 operations on growing numbers (see
-/// [`intersection_work`](crate::intersection_work)), 0.6-1.6 s at degree 20.
+/// [`intersection_work`](crate::budget::intersection_work)), 0.6-1.6 s at degree 20.
 pub const MAX_REGION_DEGREE: usize = 20;
 
 /// Which points the loops of a region enclose (SVG's fill rules).

@@ -9,7 +9,7 @@
 //!
 //! API notes (for callers that followed the first sketch): the work estimates
 //! [`boolean_work`] and [`Region::winding_work`] return `u128` nanoseconds, like
-//! [`intersection_work`](crate::intersection_work) and the other estimates of the crate, not
+//! [`intersection_work`](crate::budget::intersection_work) and the other estimates of the crate, not
 //! `f64`; a Bézier triangle is a [`Region`] built by [`Region::triangle`] (no separate type),
 //! and an [`Edge`] of [`triangle_intersection`] names the triangle as `region` and its edge as
 //! `curve` (the spec's edge number is `3 * region + curve`); [`Region::windings`] answers many

@@ -9,7 +9,7 @@ use super::classify::boundary_groups;
 use super::curve::{f64_down, f64_up, is_double, Curve};
 use super::input::{is_single_point, Region};
 use crate::error::Result;
-use crate::intersect::curves::{curve_pair_work, self_intersection_work};
+use crate::intersect::budget::{curve_pair_work, self_intersection_work};
 use crate::intersect::filter::certified_crossings_f64;
 use crate::num::ring::{rational_to_f64, Rational};
 use num_bigint::BigInt;
@@ -139,7 +139,7 @@ fn expected_points(p: &Curve, q: &Curve) -> u128 {
 const PER_POINT: u128 = 1_000_000;
 
 /// The work estimate of [`run`], in nanoseconds as
-/// [`intersection_work`](crate::intersection_work): the pairs (proved joins a few
+/// [`intersection_work`](crate::budget::intersection_work): the pairs (proved joins a few
 /// microseconds, others [`curve_pair_work`] plus [`PER_POINT`] per expected point), the
 /// self-intersections, and the classification of about one group per curve and two per
 /// point, each a ray tested against every curve's box (~20 ns) with a few exact tests, and

@@ -224,7 +224,7 @@ impl Region {
     }
 
     /// The estimated work of [`Region::windings`] on `points` points, in nanoseconds as
-    /// [`intersection_work`](crate::intersection_work): each curve's breaks into monotone
+    /// [`intersection_work`](crate::budget::intersection_work): each curve's breaks into monotone
     /// pieces once (exact roots of a derivative and values there, about 50 µs for a cubic of
     /// small coordinates), and for each point a box test against every curve (about 100 ns)
     /// and the exact tests (a gcd, a root isolation, a sign at an algebraic number, about
