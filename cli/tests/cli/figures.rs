@@ -172,6 +172,23 @@ fn intersection_marks() -> Vec<(Rgb, Vec<Point3>)> {
     ]
 }
 
+/// The control points of the two regions of the region picture, in its input panel: the
+/// figure's input itself, so only their page positions are tested.
+fn region_control_points() -> Vec<(Rgb, Vec<Point3>)> {
+    use figures::regions::{A, B, OFFSETS};
+    let points = |curves: figures::regions::Loop| {
+        let mut out: Vec<Point3> = Vec::new();
+        for p in curves.iter().flat_map(|c| c.iter()) {
+            let p = [(p[0] + OFFSETS[0][0]) as f64, (p[1] + OFFSETS[0][1]) as f64, 0.0];
+            if !out.contains(&p) {
+                out.push(p);
+            }
+        }
+        out
+    };
+    vec![(palette::DOTS, points(A)), (palette::DOTS_2, points(B))]
+}
+
 /// The expected dots of each figure, by file name: (dot colour, points).
 fn expected(file: &str) -> Vec<(Rgb, Vec<Point3>)> {
     let (first, second, marks) = (palette::DOTS, palette::DOTS_2, palette::DOTS_3);
@@ -194,6 +211,7 @@ fn expected(file: &str) -> Vec<(Rgb, Vec<Point3>)> {
         "ln_cubic.svg" => vec![(first, ln_polygon())],
         "ln_cubic_error.svg" => vec![],
         "intersections.svg" => intersection_marks(),
+        "regions.svg" => region_control_points(),
         other => panic!("a figure this test does not know: {other}"),
     }
 }
@@ -247,7 +265,7 @@ fn file_names(dir: &std::path::Path) -> Vec<String> {
 #[test]
 fn every_figure_is_a_picture_with_its_control_points_in_place() {
     let all = figures::figures().expect("the figures compute");
-    assert_eq!(all.len(), 12);
+    assert_eq!(all.len(), 13);
     for figure in &all {
         let pixmap = render(figure);
         let background = palette::BACKGROUND;
@@ -504,4 +522,44 @@ fn the_intersection_marks_and_the_overlap_are_where_the_exact_answers_say() {
     }
     // Five discs of radius 6 (about 113 pixels each, less where one covers a curve).
     assert!(marked > 5 * 80, "only {marked} mark pixels");
+}
+
+#[test]
+fn the_region_results_are_filled_where_the_operations_put_them() {
+    use figures::regions::OFFSETS;
+    let figure = &figure_named("regions.svg");
+    let pixmap = render(figure);
+    // Points of the panel's own coordinates, each at least 0.3 from every boundary, with their
+    // membership in A (the dome under 12 s (1 - s) over x = 4 (1 - s)^2 (1 + 2 s)) and B
+    // (right of the line x = 2 - y / 3, under y = 3, left of the cubic side) worked out by
+    // hand: at y = 0.5 the dome spans x in [0.02, 3.98], at y = 2 [0.46, 3.54], at y = 2.5
+    // [0.84, 3.16]; B's left side is at x = 1.83, 1.33, 1.17 there.
+    let points: [([f64; 2], bool, bool); 6] = [
+        ([1.0, 0.5], true, false),
+        ([3.0, 0.5], true, true),
+        ([5.0, 0.5], false, true),
+        ([5.0, 3.5], false, false),
+        ([3.5, 2.5], false, true),
+        ([2.0, 2.0], true, true),
+    ];
+    let ops: [fn(bool, bool) -> bool; 3] = [|a, b| a || b, |a, b| a && b, |a, b| a && !b];
+    for (panel, keeps) in ops.iter().enumerate() {
+        let offset = OFFSETS[panel + 1];
+        for (p, in_a, in_b) in points {
+            let at = [p[0] + offset[0] as f64, p[1] + offset[1] as f64, 0.0];
+            let pixel = figures::pixels(figure, &[at]).expect("a page position")[0];
+            let seen = colour_at(&pixmap, pixel).expect("on the page");
+            let want = if keeps(in_a, in_b) {
+                palette::FILL_2
+            } else {
+                palette::BACKGROUND
+            };
+            // The light grid under the page (245, 245, 245) passes for the background.
+            assert!(
+                within(seen, want, 12),
+                "panel {}: {p:?} (in A: {in_a}, in B: {in_b}) is {seen:?}, not {want:?}",
+                panel + 1
+            );
+        }
+    }
 }
