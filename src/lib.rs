@@ -114,6 +114,8 @@ mod applications;
 mod error;
 mod intersect;
 mod num;
+/// Regions bounded by Bézier curves: winding numbers, certified booleans, Bézier triangles.
+pub mod region;
 mod restrict;
 mod shape;
 #[cfg(test)]

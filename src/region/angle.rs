@@ -1,0 +1,187 @@
+//! The angular order of the curve branches that leave one vertex, decided exactly.
+//!
+//! A branch leaves the vertex v = P(τ) along a piece of curve P, toward increasing parameters
+//! (σ = +1) or decreasing ones (σ = -1). Its *leading direction* is u = σ^k P^(k)(τ) for the
+//! first k with P^(k)(τ) ≠ 0 (P(τ + σh) - v = u h^k / k! + O(h^(k+1))), and the branch's
+//! angle at v is the angle of u. The exact signs of u_x and u_y put u in one of eight
+//! classes: the four open quadrants and the four axis directions, ordered counter-clockwise
+//! from +x.
+//!
+//! Two branches of one class leave v on the same side of an axis-parallel line through v:
+//! say x > v_x (u_x > 0). On each, x(t) is strictly monotone from τ up to the first root ρ of
+//! x'(t) past τ on the piece (or the piece's other end). Pieces meet only at their ends, so
+//! for every rational X strictly between v_x and the nearer of the two values x(ρ), the arcs
+//! cross the line x = X once each, at different heights, and the arc that is higher there
+//! is higher all the way down to v: the higher one is the more counter-clockwise. The
+//! crossings are roots of x(t) - X between τ and ρ, their heights algebraic numbers compared
+//! exactly. Branches going left (u_x < 0) are ordered the other way; branches along ±y use
+//! lines y = Y.
+
+use super::curve::{derivative, Curve};
+use crate::intersect::algebraic::{shifted_poly, simplest_between, value_at, AlgebraicReal};
+use crate::intersect::upoly;
+use crate::intersect::zeros::roots_with_multiplicity;
+use crate::num::ring::Rational;
+use num_traits::{One, Zero};
+use std::cmp::Ordering;
+
+/// A branch leaving a vertex: curve `curve` from parameter `at` toward parameter `toward`
+/// (the other end of its piece).
+#[derive(Clone, Debug)]
+pub(crate) struct Branch {
+    pub curve: usize,
+    pub at: AlgebraicReal,
+    pub toward: AlgebraicReal,
+}
+
+impl Branch {
+    fn forward(&self) -> bool {
+        self.toward.compare(&self.at) == Ordering::Greater
+    }
+}
+
+/// The exact sign of a rational polynomial at an algebraic number.
+fn sign_at(p: &[Rational], t: &AlgebraicReal) -> Ordering {
+    let z = upoly::positive_multiple(p);
+    if upoly::is_zero(&z) {
+        return Ordering::Equal;
+    }
+    t.clone().sign_of(&z)
+}
+
+/// The class (0..8, counter-clockwise from +x) of the branch's leading direction.
+fn class(curves: &[Curve], b: &Branch) -> (u8, [Ordering; 2]) {
+    let c = &curves[b.curve];
+    let sigma_negative = !b.forward();
+    let mut dx = c.power[0].clone();
+    let mut dy = c.power[1].clone();
+    for k in 1.. {
+        dx = derivative(&dx);
+        dy = derivative(&dy);
+        let (sx, sy) = (sign_at(&dx, &b.at), sign_at(&dy, &b.at));
+        if sx == Ordering::Equal && sy == Ordering::Equal {
+            assert!(!dx.is_empty() || !dy.is_empty(), "a curve that traces more than a point");
+            continue;
+        }
+        let flip = sigma_negative && k % 2 == 1;
+        let (sx, sy) = if flip { (sx.reverse(), sy.reverse()) } else { (sx, sy) };
+        use Ordering::{Equal as Z, Greater as P, Less as N};
+        let class = match (sx, sy) {
+            (P, Z) => 0,
+            (P, P) => 1,
+            (Z, P) => 2,
+            (N, P) => 3,
+            (N, Z) => 4,
+            (N, N) => 5,
+            (Z, N) => 6,
+            (P, N) => 7,
+            (Z, Z) => unreachable!("handled above"),
+        };
+        return (class, [sx, sy]);
+    }
+    unreachable!("the loop returns")
+}
+
+/// A rational strictly between the distinct algebraic numbers `a` and `b`.
+pub(crate) fn rational_between(a: &AlgebraicReal, b: &AlgebraicReal) -> Rational {
+    let (mut lo, mut hi) = if a.compare(b) == Ordering::Less {
+        (a.clone(), b.clone())
+    } else {
+        (b.clone(), a.clone())
+    };
+    loop {
+        let (l, h) = (lo.interval().1.clone(), hi.interval().0.clone());
+        if l < h {
+            let four = Rational::from_integer(4.into());
+            let three = Rational::from_integer(3.into());
+            let x = (&three * &l + &h) / &four;
+            let y = (&l + &three * &h) / &four;
+            return simplest_between(&x, &y);
+        }
+        lo.refine();
+        hi.refine();
+    }
+}
+
+/// The parameter strictly between `from` and `to` closest to `from` where the polynomial
+/// `g` (rational, ascending) vanishes, or `to` when there is none.
+fn first_root(g: &[Rational], from: &AlgebraicReal, to: &AlgebraicReal) -> AlgebraicReal {
+    let z = upoly::from_rationals(g);
+    if upoly::is_zero(&z) || upoly::degree(&z).unwrap_or(0) == 0 {
+        return to.clone();
+    }
+    let forward = to.compare(from) == Ordering::Greater;
+    let roots = roots_with_multiplicity(&z, &Rational::zero(), &Rational::one());
+    let between = roots.into_iter().map(|r| r.value).filter(|t| {
+        if forward {
+            t.compare(from) == Ordering::Greater && t.compare(to) == Ordering::Less
+        } else {
+            t.compare(from) == Ordering::Less && t.compare(to) == Ordering::Greater
+        }
+    });
+    let best = if forward {
+        between.min_by(|a, b| a.compare(b))
+    } else {
+        between.max_by(|a, b| a.compare(b))
+    };
+    best.unwrap_or_else(|| to.clone())
+}
+
+/// The height (coordinate `1 - axis`) where the branch crosses the line coordinate `axis`
+/// = `level`, on its monotone stretch from its vertex to `limit`.
+fn height_at(curves: &[Curve], b: &Branch, axis: usize, level: &Rational, limit: &AlgebraicReal) -> AlgebraicReal {
+    let c = &curves[b.curve];
+    let f = shifted_poly(&c.power[axis], level);
+    let forward = b.forward();
+    let t = roots_with_multiplicity(&f, &Rational::zero(), &Rational::one())
+        .into_iter()
+        .map(|r| r.value)
+        .find(|t| {
+            if forward {
+                t.compare(&b.at) == Ordering::Greater && t.compare(limit) == Ordering::Less
+            } else {
+                t.compare(&b.at) == Ordering::Less && t.compare(limit) == Ordering::Greater
+            }
+        })
+        .expect("a monotone arc reaching past the line crosses it");
+    value_at(&c.power[1 - axis], &t)
+}
+
+/// The counter-clockwise order of the leading directions of two branches that leave the
+/// same vertex (angles measured from +x in [0, 2π), branches tangent to +x ordered from the
+/// lowest up): `Less` when `a` comes first. Distinct pieces never compare equal.
+pub(crate) fn compare(curves: &[Curve], a: &Branch, b: &Branch) -> Ordering {
+    let (ca, sa) = class(curves, a);
+    let (cb, _) = class(curves, b);
+    if ca != cb {
+        return ca.cmp(&cb);
+    }
+    // The axis the branches move along, and the direction.
+    let (axis, direction) = if sa[0] != Ordering::Equal {
+        (0, sa[0])
+    } else {
+        (1, sa[1])
+    };
+    let ca_ = &curves[a.curve];
+    let g = derivative(&ca_.power[axis]);
+    let rho_a = first_root(&g, &a.at, &a.toward);
+    let gb = derivative(&curves[b.curve].power[axis]);
+    let rho_b = first_root(&gb, &b.at, &b.toward);
+    let v = value_at(&ca_.power[axis], &a.at);
+    let ea = value_at(&ca_.power[axis], &rho_a);
+    let eb = value_at(&curves[b.curve].power[axis], &rho_b);
+    let nearer = match (ea.compare(&eb), direction) {
+        (Ordering::Less, Ordering::Greater) | (Ordering::Greater, Ordering::Less) => ea,
+        _ => eb,
+    };
+    let level = rational_between(&v, &nearer);
+    let ha = height_at(curves, a, axis, &level, &rho_a);
+    let hb = height_at(curves, b, axis, &level, &rho_b);
+    let order = ha.compare(&hb);
+    // Moving +x: higher is more counter-clockwise. Moving -x: lower is. Moving +y: the one
+    // further left (smaller x) is. Moving -y: the one further right is.
+    match (axis, direction) {
+        (0, Ordering::Greater) | (1, Ordering::Less) => order,
+        _ => order.reverse(),
+    }
+}

@@ -1,0 +1,102 @@
+//! The area of a result, enclosed rigorously.
+//!
+//! By Green's theorem the area enclosed by a loop traversed counter-clockwise is the sum over
+//! its edges of the integral of x dy; on an edge that is curve P = (x, y) from parameter a to
+//! b, that integral is F(b) - F(a) with F the antiderivative of x(t) y'(t), a polynomial with
+//! rational coefficients. At a rational parameter F is exact; at an algebraic one it is
+//! enclosed by interval Horner over the isolating interval ([`enclose`]), which shrinks as
+//! the interval is refined. The sum of the enclosures is refined, widest term first, until
+//! its width meets the caller's bound. A loop's sign (counter-clockwise or clockwise) is
+//! decided the same way: a simple loop bounds a positive area, so refinement until the
+//! enclosure excludes zero terminates.
+
+use super::chain::Run;
+use super::curve::derivative;
+use super::arrangement::Arrangement;
+use crate::intersect::algebraic::{enclose, AlgebraicReal};
+use crate::num::ring::Rational;
+use num_traits::Zero;
+
+/// The antiderivative of x(t) y'(t), vanishing at 0, for the curve's power form.
+pub(crate) fn x_dy(power: &[Vec<Rational>; 2]) -> Vec<Rational> {
+    let dy = derivative(&power[1]);
+    let mut product = vec![Rational::zero(); power[0].len() + dy.len()];
+    for (i, a) in power[0].iter().enumerate() {
+        for (j, b) in dy.iter().enumerate() {
+            product[i + j] += a * b;
+        }
+    }
+    let mut out = vec![Rational::zero()];
+    for (i, c) in product.into_iter().enumerate() {
+        out.push(c / Rational::from_integer(((i + 1) as i64).into()));
+    }
+    out
+}
+
+/// One term ± F(τ) of a sum.
+struct Term<'a> {
+    sign: bool,
+    f: &'a [Rational],
+    at: AlgebraicReal,
+    enclosure: (Rational, Rational),
+}
+
+impl Term<'_> {
+    fn enclose(&mut self) {
+        let (lo, hi) = match self.at.exact() {
+            Some(r) => {
+                let v = super::curve::eval(self.f, r);
+                (v.clone(), v)
+            }
+            None => {
+                let (l, h) = self.at.interval();
+                enclose(self.f, l, h)
+            }
+        };
+        self.enclosure = if self.sign { (lo, hi) } else { (-hi, -lo) };
+    }
+
+    fn width(&self) -> Rational {
+        &self.enclosure.1 - &self.enclosure.0
+    }
+}
+
+/// An enclosure of the sum of the integrals of x dy over the runs, refined until
+/// `done(lo, hi)`.
+pub(crate) fn enclose_loops(
+    arr: &Arrangement,
+    primitives: &[Vec<Rational>],
+    loops: &[&[Run]],
+    done: impl Fn(&Rational, &Rational) -> bool,
+) -> (Rational, Rational) {
+    let mut terms: Vec<Term> = Vec::new();
+    for runs in loops {
+        for r in runs.iter() {
+            for (sign, k) in [(true, r.to), (false, r.from)] {
+                let mut t = Term {
+                    sign,
+                    f: &primitives[r.curve],
+                    at: arr.params[r.curve][k].clone(),
+                    enclosure: (Rational::zero(), Rational::zero()),
+                };
+                t.enclose();
+                terms.push(t);
+            }
+        }
+    }
+    loop {
+        let lo: Rational = terms.iter().map(|t| &t.enclosure.0).sum();
+        let hi: Rational = terms.iter().map(|t| &t.enclosure.1).sum();
+        if done(&lo, &hi) {
+            return (lo, hi);
+        }
+        let width = &hi - &lo;
+        let share = width / Rational::from_integer(((2 * terms.len()) as i64).into());
+        for t in terms.iter_mut() {
+            if t.at.exact().is_none() && t.width() >= share {
+                t.at.refine();
+                t.enclose();
+            }
+        }
+    }
+}

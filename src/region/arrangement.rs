@@ -1,0 +1,359 @@
+//! The arrangement of all input curves: every curve split at its certified intersections
+//! with every curve (itself included), the split points joined into vertices, and the
+//! pieces that coincide merged into groups.
+//!
+//! * **Pairs.** Curves are sorted by the left side of their outward-rounded boxes; a sweep
+//!   pairs each curve with the later ones whose left side is not beyond its right side and
+//!   whose boxes meet. Only those pairs are intersected ([`intersect_curves`]); a pair whose
+//!   boxes are disjoint provably does not meet. Each curve is also intersected with itself
+//!   ([`self_intersections`]).
+//! * **Parameters.** Each curve's parameters (0, 1, every intersection and every overlap end)
+//!   are sorted and made distinct by exact comparison; consecutive ones bound its pieces.
+//! * **Vertices.** A (curve, parameter) node is joined (union-find) with every node that is
+//!   the same point: both sides of an intersection, the end of a curve and the start of the
+//!   next one in its loop, a self-intersection's two parameters, the matching parameters of
+//!   an overlap.
+//! * **Groups.** An overlap pairs the pieces of both curves inside it, in order (after
+//!   [`transfer`] has carried every parameter of one side inside the overlap to the other
+//!   side, so both sides are split alike); the pairs are joined (union-find with the parity
+//!   of their directions) into groups of coincident pieces. A group's representative is its
+//!   piece of the lowest curve index, which is the order (region, loop, curve), and of the
+//!   lower parameters on that curve.
+
+use super::curve::{one, zero, Curve};
+use super::transfer::transfer;
+use crate::error::Result;
+use crate::intersect::algebraic::AlgebraicReal;
+use crate::intersect::curves::{intersect_curves, self_intersections, Overlap};
+use std::cmp::Ordering;
+
+/// Which input curve: region, loop, curve (the order of these is the priority of the spec).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) struct CurveId {
+    pub region: usize,
+    pub loop_index: usize,
+    pub curve: usize,
+}
+
+/// A piece of a curve between two consecutive parameters.
+#[derive(Clone, Debug)]
+pub(crate) struct Piece {
+    /// Index into the arrangement's curves.
+    pub curve: usize,
+    /// The piece runs from `params[curve][k]` to `params[curve][k + 1]`.
+    pub k: usize,
+    /// The group of coincident pieces it belongs to.
+    pub group: usize,
+    /// Whether it runs the same way as its group's representative.
+    pub along: bool,
+}
+
+/// A group of coincident pieces.
+#[derive(Clone, Debug)]
+pub(crate) struct Group {
+    /// The representative piece.
+    pub rep: usize,
+    /// Every piece of the group (the representative included).
+    pub members: Vec<usize>,
+}
+
+/// The split curves, vertices and groups.
+pub(crate) struct Arrangement {
+    /// The curves that trace more than a point, in (region, loop, curve) order.
+    pub curves: Vec<Curve>,
+    /// Which input curve each is.
+    pub ids: Vec<CurveId>,
+    /// Each curve's parameters, increasing, distinct, 0 and 1 included.
+    pub params: Vec<Vec<AlgebraicReal>>,
+    /// The vertex of each (curve, parameter index).
+    pub vertex: Vec<Vec<usize>>,
+    /// Every piece.
+    pub pieces: Vec<Piece>,
+    /// The groups of coincident pieces.
+    pub groups: Vec<Group>,
+}
+
+/// Union-find with the parity of each element relative to its root.
+struct Joins {
+    parent: Vec<usize>,
+    parity: Vec<bool>,
+}
+
+impl Joins {
+    fn new(n: usize) -> Self {
+        Joins {
+            parent: (0..n).collect(),
+            parity: vec![false; n],
+        }
+    }
+
+    fn find(&mut self, x: usize) -> (usize, bool) {
+        let p = self.parent[x];
+        if p == x {
+            return (x, false);
+        }
+        let (root, up) = self.find(p);
+        self.parent[x] = root;
+        self.parity[x] ^= up;
+        (root, self.parity[x])
+    }
+
+    /// Joins x and y with `flip` their relative parity.
+    fn join(&mut self, x: usize, y: usize, flip: bool) {
+        let (rx, px) = self.find(x);
+        let (ry, py) = self.find(y);
+        if rx != ry {
+            self.parent[rx] = ry;
+            self.parity[rx] = px ^ py ^ flip;
+        }
+    }
+}
+
+/// A pending identification of two (curve, parameter) nodes.
+struct Same {
+    a: (usize, AlgebraicReal),
+    b: (usize, AlgebraicReal),
+}
+
+/// An overlap between curves `p` and `q` (possibly one curve retracing itself).
+struct Shared {
+    p: usize,
+    q: usize,
+    overlap: Overlap,
+}
+
+/// The index of `x` among the sorted distinct `params` (present by construction).
+fn index_of(params: &[AlgebraicReal], x: &AlgebraicReal) -> usize {
+    params
+        .binary_search_by(|p| p.compare(x))
+        .expect("every split parameter was recorded")
+}
+
+/// The pairs of curves whose boxes meet, by a sweep over the boxes' left sides.
+pub(crate) fn candidate_pairs(curves: &[Curve]) -> Vec<(usize, usize)> {
+    let mut order: Vec<usize> = (0..curves.len()).collect();
+    order.sort_by(|&i, &j| curves[i].bbox[0].total_cmp(&curves[j].bbox[0]));
+    let mut pairs = Vec::new();
+    for (n, &i) in order.iter().enumerate() {
+        for &j in &order[n + 1..] {
+            if curves[j].bbox[0] > curves[i].bbox[2] {
+                break;
+            }
+            if curves[i].boxes_meet(&curves[j]) {
+                pairs.push((i.min(j), i.max(j)));
+            }
+        }
+    }
+    pairs.sort_unstable();
+    pairs
+}
+
+impl Arrangement {
+    /// The arrangement of `curves` (in (region, loop, curve) order, single points removed)
+    /// with the loops' successions `next` (`next[c]` is the curve whose start is the end of
+    /// curve c).
+    pub fn build(curves: Vec<Curve>, ids: Vec<CurveId>, next: &[usize]) -> Result<Arrangement> {
+        let n = curves.len();
+        let mut params: Vec<Vec<AlgebraicReal>> = vec![vec![zero(), one()]; n];
+        let mut same = Vec::new();
+        let mut shared = Vec::new();
+        let mut record = |p: usize, q: usize, found: crate::intersect::curves::Intersections| {
+            for point in found.points {
+                params[p].push(point.s.clone());
+                params[q].push(point.t.clone());
+                same.push(Same {
+                    a: (p, point.s),
+                    b: (q, point.t),
+                });
+            }
+            for overlap in found.overlaps {
+                let ends = [&overlap.s[0], &overlap.s[1], &overlap.t[0], &overlap.t[1]];
+                if ends[0].equals(ends[1]) || ends[2].equals(ends[3]) {
+                    continue;
+                }
+                params[p].extend([overlap.s[0].clone(), overlap.s[1].clone()]);
+                params[q].extend([overlap.t[0].clone(), overlap.t[1].clone()]);
+                shared.push(Shared { p, q, overlap });
+            }
+        };
+        for (i, j) in candidate_pairs(&curves) {
+            let found = intersect_curves(&curves[i].points, &curves[j].points)?;
+            record(i, j, found);
+        }
+        for (i, curve) in curves.iter().enumerate() {
+            let found = self_intersections(&curve.points)?;
+            record(i, i, found);
+        }
+        for (c, &d) in next.iter().enumerate() {
+            same.push(Same {
+                a: (c, one()),
+                b: (d, zero()),
+            });
+        }
+        for p in params.iter_mut() {
+            sort_distinct(p);
+        }
+        carry_across_overlaps(&curves, &shared, &mut params);
+
+        // Vertices.
+        let mut offset = Vec::with_capacity(n + 1);
+        let mut total = 0;
+        for p in &params {
+            offset.push(total);
+            total += p.len();
+        }
+        let mut nodes = Joins::new(total);
+        let node = |c: usize, x: &AlgebraicReal, params: &[Vec<AlgebraicReal>]| {
+            offset[c] + index_of(&params[c], x)
+        };
+        for s in &same {
+            let a = node(s.a.0, &s.a.1, &params);
+            let b = node(s.b.0, &s.b.1, &params);
+            nodes.join(a, b, false);
+        }
+        // Pieces, and the pairs of pieces that overlaps make coincident.
+        let mut first = Vec::with_capacity(n);
+        let mut pieces = Vec::new();
+        for (c, p) in params.iter().enumerate() {
+            first.push(pieces.len());
+            for k in 0..p.len() - 1 {
+                pieces.push(Piece {
+                    curve: c,
+                    k,
+                    group: 0,
+                    along: true,
+                });
+            }
+        }
+        let mut groups = Joins::new(pieces.len());
+        for sh in &shared {
+            let o = &sh.overlap;
+            let (i0, i1) = (index_of(&params[sh.p], &o.s[0]), index_of(&params[sh.p], &o.s[1]));
+            let (j0, j1) = (index_of(&params[sh.q], &o.t[0]), index_of(&params[sh.q], &o.t[1]));
+            let forward = j0 < j1;
+            debug_assert_eq!(i1 - i0, j0.abs_diff(j1), "both sides of an overlap split alike");
+            for k in 0..=(i1 - i0) {
+                let j = if forward { j0 + k } else { j0 - k };
+                nodes.join(offset[sh.p] + i0 + k, offset[sh.q] + j, false);
+                if k < i1 - i0 {
+                    let piece_q = if forward { j } else { j - 1 };
+                    groups.join(first[sh.p] + i0 + k, first[sh.q] + piece_q, !forward);
+                }
+            }
+        }
+        // Number the vertices.
+        let mut vertex_of_root = vec![usize::MAX; total];
+        let mut vertices = 0usize;
+        let mut vertex = Vec::with_capacity(n);
+        for (c, p) in params.iter().enumerate() {
+            let mut row = Vec::with_capacity(p.len());
+            for k in 0..p.len() {
+                let (root, _) = nodes.find(offset[c] + k);
+                if vertex_of_root[root] == usize::MAX {
+                    vertex_of_root[root] = vertices;
+                    vertices += 1;
+                }
+                row.push(vertex_of_root[root]);
+            }
+            vertex.push(row);
+        }
+        // Groups: pieces are numbered by curve then parameter, so the first piece met of a
+        // group is its representative (lowest curve, then lowest parameters).
+        let mut group_of_root = vec![usize::MAX; pieces.len()];
+        let mut out: Vec<Group> = Vec::new();
+        let mut rep_parity = Vec::new();
+        for i in 0..pieces.len() {
+            let (root, parity) = groups.find(i);
+            if group_of_root[root] == usize::MAX {
+                group_of_root[root] = out.len();
+                out.push(Group {
+                    rep: i,
+                    members: Vec::new(),
+                });
+                rep_parity.push(parity);
+            }
+            let g = group_of_root[root];
+            out[g].members.push(i);
+            pieces[i].group = g;
+            pieces[i].along = parity == rep_parity[g];
+        }
+        Ok(Arrangement {
+            curves,
+            ids,
+            params,
+            vertex,
+            pieces,
+            groups: out,
+        })
+    }
+
+    /// The parameters of piece `i`: (from, to), increasing.
+    pub fn ends(&self, i: usize) -> (&AlgebraicReal, &AlgebraicReal) {
+        let p = &self.pieces[i];
+        (&self.params[p.curve][p.k], &self.params[p.curve][p.k + 1])
+    }
+
+    /// The vertices of piece `i` at its lower and upper parameter.
+    pub fn end_vertices(&self, i: usize) -> (usize, usize) {
+        let p = &self.pieces[i];
+        (self.vertex[p.curve][p.k], self.vertex[p.curve][p.k + 1])
+    }
+}
+
+/// Sorts exactly and removes duplicates.
+fn sort_distinct(p: &mut Vec<AlgebraicReal>) {
+    p.sort_by(|a, b| a.compare(b));
+    p.dedup_by(|a, b| a.compare(b) == Ordering::Equal);
+}
+
+/// Inserts `x` into the sorted distinct `p` unless present; whether it was new.
+fn insert(p: &mut Vec<AlgebraicReal>, x: AlgebraicReal) -> bool {
+    match p.binary_search_by(|y| y.compare(&x)) {
+        Ok(_) => false,
+        Err(at) => {
+            p.insert(at, x);
+            true
+        }
+    }
+}
+
+/// Makes both sides of every overlap split alike: each parameter strictly inside one side's
+/// range is carried to the other side ([`transfer`]) until nothing new appears (a carried
+/// parameter may lie inside a further overlap). Most are there already (a third curve that
+/// crosses the stretch is reported on both sides); the ones that are not are the crossings
+/// of a curve's other pass with the stretch, which [`intersect_curves`] does not list inside
+/// an overlap's range.
+fn carry_across_overlaps(curves: &[Curve], shared: &[Shared], params: &mut [Vec<AlgebraicReal>]) {
+    let strictly_inside = |x: &AlgebraicReal, a: &AlgebraicReal, b: &AlgebraicReal| {
+        let (lo, hi) = if a.compare(b) == Ordering::Greater { (b, a) } else { (a, b) };
+        x.compare(lo) == Ordering::Greater && x.compare(hi) == Ordering::Less
+    };
+    loop {
+        let mut changed = false;
+        for sh in shared {
+            let o = &sh.overlap;
+            for (from, to, from_range, to_range) in [
+                (sh.p, sh.q, &o.s, &o.t),
+                (sh.q, sh.p, &o.t, &o.s),
+            ] {
+                let inner: Vec<AlgebraicReal> = params[from]
+                    .iter()
+                    .filter(|x| strictly_inside(x, &from_range[0], &from_range[1]))
+                    .cloned()
+                    .collect();
+                for x in inner {
+                    let t = transfer(
+                        &curves[from],
+                        &x,
+                        &curves[to],
+                        (&to_range[0], &to_range[1]),
+                    );
+                    changed |= insert(&mut params[to], t);
+                }
+            }
+        }
+        if !changed {
+            return;
+        }
+    }
+}

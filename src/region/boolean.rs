@@ -1,0 +1,140 @@
+//! The public front of the booleans: the operations, the answer's types, the work estimate.
+
+use super::region::Region;
+use crate::error::Result;
+use crate::intersect::algebraic::AlgebraicReal;
+
+/// A boolean operation on two regions A and B.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum BooleanOp {
+    /// A ∩ B.
+    Intersection,
+    /// A ∪ B.
+    Union,
+    /// A - B.
+    Difference,
+    /// (A - B) ∪ (B - A).
+    Xor,
+}
+
+impl BooleanOp {
+    /// Whether a point inside A (`in_a`) and inside B (`in_b`) is inside the result.
+    ///
+    /// ```
+    /// use blossom::region::BooleanOp;
+    /// assert!(BooleanOp::Difference.keeps(true, false));
+    /// assert!(!BooleanOp::Xor.keeps(true, true));
+    /// ```
+    pub fn keeps(self, in_a: bool, in_b: bool) -> bool {
+        match self {
+            BooleanOp::Intersection => in_a && in_b,
+            BooleanOp::Union => in_a || in_b,
+            BooleanOp::Difference => in_a && !in_b,
+            BooleanOp::Xor => in_a != in_b,
+        }
+    }
+}
+
+/// One edge of a result loop: the input curve `curve` of loop `loop_index` of region `region`
+/// (0 for A, 1 for B) between the parameters `from` and `to`, traversed from `from` to `to`
+/// (`from > to` when it runs against the curve's direction). For
+/// [`triangle_intersection`] the regions are the two triangles, `loop_index` is 0 and
+/// `curve` the edge number 0, 1, 2 of that triangle (the spec's edge `3 * region + curve`).
+#[derive(Clone, Debug)]
+pub struct Edge {
+    /// 0 for the first region, 1 for the second.
+    pub region: usize,
+    /// The loop of that region.
+    pub loop_index: usize,
+    /// The curve of that loop.
+    pub curve: usize,
+    /// The parameter where the edge starts, exactly.
+    pub from: AlgebraicReal,
+    /// The parameter where the edge ends, exactly.
+    pub to: AlgebraicReal,
+}
+
+/// One simple oriented loop of a result: counter-clockwise around the result's interior for
+/// an outer loop, clockwise for a hole; the result lies to the left of every edge.
+#[derive(Clone, Debug)]
+pub struct ResultLoop {
+    /// Whether the loop bounds a hole (runs clockwise).
+    pub hole: bool,
+    /// The edges in order, each ending exactly where the next begins and the last where the
+    /// first begins.
+    pub edges: Vec<Edge>,
+}
+
+/// The regularized result of a boolean as oriented simple loops, with an enclosure of its
+/// area.
+#[derive(Clone, Debug)]
+pub struct RegionResult {
+    /// The loops, in no particular order; none for an empty result.
+    pub loops: Vec<ResultLoop>,
+    /// `[lo, hi]`, lo <= exact area <= hi, with hi - lo <= 2^-40 B, B the area of the
+    /// smallest axis-parallel box holding every input control point (`[0, 0]` for an empty
+    /// result).
+    pub area: [f64; 2],
+}
+
+/// The boolean `op` of the regions `a` and `b`, certified: every decision in it (which pieces
+/// coincide, which are on the boundary, how loops continue at a vertex) is exact for the
+/// input numbers. See the module docs of [`crate::region`] for the algorithm and the form of
+/// the answer.
+///
+/// ```
+/// use blossom::region::{boolean, BooleanOp, FillRule, Region};
+/// use blossom::{Bezier, Rational};
+/// let p = |x: i64, y: i64| [Rational::from_integer(x.into()), Rational::from_integer(y.into())];
+/// let square = |x: i64, y: i64, s: i64| -> Result<Region, blossom::Error> {
+///     let c = [p(x, y), p(x + s, y), p(x + s, y + s), p(x, y + s)];
+///     let sides = (0..4).map(|i| Bezier::new(vec![c[i].clone(), c[(i + 1) % 4].clone()]));
+///     Region::new(vec![sides.collect::<Result<_, _>>()?], FillRule::NonZero)
+/// };
+/// // Two 2 x 2 squares overlapping in a 1 x 1 square.
+/// let (a, b) = (square(0, 0, 2)?, square(1, 1, 2)?);
+/// let both = boolean(&a, &b, BooleanOp::Intersection)?;
+/// assert_eq!(both.loops.len(), 1);
+/// assert!(both.area[0] <= 1.0 && 1.0 <= both.area[1]);
+/// let union = boolean(&a, &b, BooleanOp::Union)?;
+/// assert!(union.area[0] <= 7.0 && 7.0 <= union.area[1]);
+/// # Ok::<(), blossom::Error>(())
+/// ```
+///
+/// # Errors
+/// None for valid regions today; the `Result` leaves room for limits.
+pub fn boolean(a: &Region, b: &Region, op: BooleanOp) -> Result<RegionResult> {
+    super::pipeline::run(&[a, b], op)
+}
+
+/// The intersection of the regions of two planar Bézier triangles (build them with
+/// [`Region::triangle`]): [`boolean`] with [`BooleanOp::Intersection`]; an [`Edge`] names the
+/// triangle as `region` and its edge (0, 1, 2) as `curve`.
+///
+/// ```
+/// use blossom::region::{triangle_intersection, Region};
+/// use blossom::Rational;
+/// let q = |n: i64| Rational::from_integer(n.into());
+/// let t1 = Region::triangle(1, vec![[q(0), q(0)], [q(2), q(0)], [q(0), q(2)]])?;
+/// let t2 = Region::triangle(1, vec![[q(2), q(2)], [q(0), q(2)], [q(2), q(0)]])?;
+/// // They share the diagonal only: the regularized intersection is empty.
+/// let r = triangle_intersection(&t1, &t2)?;
+/// assert!(r.loops.is_empty() && r.area == [0.0, 0.0]);
+/// # Ok::<(), blossom::Error>(())
+/// ```
+///
+/// # Errors
+/// As [`boolean`].
+pub fn triangle_intersection(t1: &Region, t2: &Region) -> Result<RegionResult> {
+    boolean(t1, t2, BooleanOp::Intersection)
+}
+
+/// The estimated work of [`boolean`] on `a` and `b`, in nanoseconds of a 2-core x86-64
+/// machine as [`intersection_work`](crate::intersection_work): the intersections of every
+/// pair of curves whose boxes meet ([`curve_pair_work`](crate::curve_pair_work), which runs
+/// the float filter), the self-intersections of every curve
+/// ([`self_intersection_work`](crate::self_intersection_work)), and the classification of the
+/// pieces (one ray per piece against the curves). It does not depend on `op`.
+pub fn boolean_work(a: &Region, b: &Region) -> u128 {
+    super::pipeline::work(&[a, b])
+}

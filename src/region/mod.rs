@@ -1,0 +1,84 @@
+//! Regions bounded by Bézier curves: exact winding numbers, certified booleans, the region
+//! of a planar Bézier triangle and the intersection of two of them.
+//!
+//! A [`Region`] is loops of 2-D polynomial Bézier curves with exact rational control points
+//! and a [`FillRule`]. [`Region::winding`] gives the exact winding number of a point,
+//! [`boolean`] the regularized result of [`BooleanOp`] on two regions as oriented simple
+//! loops of [`Edge`]s (pieces of input curves between exact parameters) with an enclosure of
+//! its area, [`triangle_intersection`] the same for two [`Region::triangle`]s.
+//!
+//! # Certified
+//!
+//! Every decision is exact for the input numbers: whether a point is on a curve, inside or
+//! outside; where curves meet, touch or run together (the certified intersections of
+//! [`intersect_curves`](crate::intersect_curves) and
+//! [`self_intersections`](crate::self_intersections)); which pieces coincide; which pieces
+//! bound the result; how the boundary continues at a vertex. Floating point only prunes
+//! (outward-rounded bounding boxes that separate prove the separation). Parameters are
+//! [`AlgebraicReal`](crate::AlgebraicReal)s, so their `to_f64` is correctly rounded.
+//!
+//! # The algorithm, stage by stage (one file each)
+//!
+//! 1. `curve`: each input curve in power form with an outward-rounded box and, on demand,
+//!    its breaks into pieces monotone in x or y.
+//! 2. `arrangement`: every pair of curves of both regions whose boxes meet (found by a sweep
+//!    over the boxes sorted by their left side, so curves far apart cost nothing) is
+//!    intersected exactly, and every curve with itself. The parameters found split each
+//!    curve into pieces. Parameters that are the same point of the plane (an intersection
+//!    (s, t), a curve's end and the next curve's start, a self-intersection, the ends of an
+//!    overlap) are joined by union-find into vertices. Where two curves overlap, the pieces
+//!    of both inside the overlap are paired in order and merged into one *group* of
+//!    coincident pieces (a parameter that splits one side only, a self-crossing of a curve on
+//!    a stretch another curve overlaps, is carried over to the other side exactly by
+//!    `transfer`). Each group's *representative* is the piece of the lowest
+//!    (region, loop, curve), and of its pass with the lower parameters.
+//! 3. `classify`: each group gets the exact winding numbers of A and of B on both its sides.
+//!    At a rational parameter m strictly inside the representative (where P'(m) ≠ 0), the
+//!    point X = P(m) lies on the group's curves and on no other. A ray from X along +x (or +y
+//!    when the tangent there is horizontal) counts the crossings of all curves except the
+//!    passes through X itself (`winding`): that is the winding number just off X on one side;
+//!    the other side differs by the signed number of the group's pieces of that region
+//!    (+1 for a piece running the representative's way). The fill rules and the op then say
+//!    whether the result lies on each side; a group is an edge of the result exactly when the
+//!    answers differ, oriented so that the result lies on its left. Parts of zero area (a
+//!    shared edge that both sides exclude, a touching point) are thereby dropped: the answer
+//!    is regularized.
+//! 4. `chain`: the edges are chained at vertices. At a vertex with one edge out it continues
+//!    there; where several leave, the edges are ordered by angle (`angle`: the class of the
+//!    leading direction, then the order of the two branches along an axis-parallel line
+//!    close enough to the vertex, decided exactly) and the walk turns into the first edge
+//!    clockwise from the one it came in by, which keeps the result's sector on its left.
+//!    Each closed walk is split at every vertex it passes twice, so loops are simple, and
+//!    consecutive edges continuing the same input curve are merged (maximal edges). A loop
+//!    whose exact signed area is negative is a hole.
+//! 5. `area`: the area of the result is the sum over its edges of the exact integral of
+//!    x dy over each piece, F(to) - F(from) for the antiderivative F of x(t) y'(t); at
+//!    algebraic parameters each value is enclosed by interval Horner over the parameter's
+//!    isolating interval, refined until the enclosure meets the width the answer promises.
+//!
+//! # Limits
+//!
+//! Curve degrees 1 to [`MAX_REGION_DEGREE`]. The cost is dominated by the exact
+//! intersections of the curve pairs whose boxes meet; [`boolean_work`] estimates it before
+//! any is computed.
+
+mod area;
+mod arrangement;
+mod boolean;
+mod chain;
+mod classify;
+mod angle;
+mod curve;
+mod pipeline;
+mod region;
+mod transfer;
+mod winding;
+
+#[cfg(test)]
+mod tests;
+
+pub use boolean::{
+    boolean, boolean_work, triangle_intersection, BooleanOp, Edge, RegionResult, ResultLoop,
+};
+pub use region::{FillRule, Region, MAX_REGION_DEGREE};
+pub use winding::{Position, Winding};

@@ -1,0 +1,226 @@
+//! The region type: loops of exact 2-D Bézier curves and a fill rule, checked on entry.
+
+use crate::error::{Error, ErrorKind, Result};
+use crate::num::ring::Rational;
+use crate::shape::array::Bezier;
+
+/// The highest curve degree a region accepts: the exact intersection of two curves of degree
+/// n costs about n^4 operations on growing numbers (see
+/// [`intersection_work`](crate::intersection_work)), 0.6-1.6 s at degree 20.
+pub const MAX_REGION_DEGREE: usize = 20;
+
+/// Which points the loops of a region enclose (SVG's fill rules).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum FillRule {
+    /// Points whose winding number around all loops together is not zero.
+    #[default]
+    NonZero,
+    /// Points whose winding number around all loops together is odd.
+    EvenOdd,
+}
+
+impl FillRule {
+    /// Whether a point of winding number `w` (off the loops) is inside.
+    ///
+    /// ```
+    /// use blossom::region::FillRule;
+    /// assert!(FillRule::NonZero.inside(-2) && !FillRule::EvenOdd.inside(-2));
+    /// ```
+    pub fn inside(self, w: i64) -> bool {
+        match self {
+            FillRule::NonZero => w != 0,
+            FillRule::EvenOdd => w % 2 != 0,
+        }
+    }
+}
+
+/// A region of the plane: closed loops of 2-D polynomial Bézier curves (any degree from 1 to
+/// [`MAX_REGION_DEGREE`], exact rational control points) and a [`FillRule`]. The region is the
+/// set of points off the loops that the fill rule puts inside, given the exact winding number
+/// of the point around all loops together ([`Region::winding`]).
+///
+/// Loops may cross themselves and each other, touch, share pieces and run either way. A curve
+/// whose control points are all one point is accepted and traces nothing.
+///
+/// ```
+/// use blossom::region::{FillRule, Position, Region};
+/// use blossom::{Bezier, Rational};
+/// let p = |x: i64, y: i64| [Rational::from_integer(x.into()), Rational::from_integer(y.into())];
+/// // The unit square, counter-clockwise, its top side a quadratic bulging upwards.
+/// let square = Region::new(
+///     vec![vec![
+///         Bezier::new(vec![p(0, 0), p(1, 0)])?,
+///         Bezier::new(vec![p(1, 0), p(1, 1)])?,
+///         Bezier::new(vec![p(1, 1), p(1, 2), p(0, 1)])?,
+///         Bezier::new(vec![p(0, 1), p(0, 0)])?,
+///     ]],
+///     FillRule::NonZero,
+/// )?;
+/// assert_eq!(square.contains(&p(1, 1)), Position::Boundary);
+/// let inside = [Rational::new(1.into(), 2.into()), Rational::new(5.into(), 4.into())];
+/// assert_eq!(square.contains(&inside), Position::Inside);
+/// # Ok::<(), blossom::Error>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Region {
+    loops: Vec<Vec<Bezier<Rational, 2>>>,
+    fill: FillRule,
+}
+
+/// A point written as the spec writes it: `(1, 1/2)`.
+pub(crate) fn show(p: &[Rational; 2]) -> String {
+    format!("({}, {})", p[0], p[1])
+}
+
+impl Region {
+    /// The region of `loops` (`loops[l][c]` is curve c of loop l) under `fill`.
+    ///
+    /// # Errors
+    /// Each names the field relative to the region:
+    /// * [`ErrorKind::Empty`] on `loops[l]` for a loop without curves;
+    /// * [`ErrorKind::Degree`] on `loops[l][c]` for a curve of degree 0 or over
+    ///   [`MAX_REGION_DEGREE`];
+    /// * [`ErrorKind::Shape`] on `loops[l][c]` when curve c does not start exactly where curve
+    ///   c - 1 ends (`starts at (1, 0), the previous curve ends at (1, 1/2)`); a last curve
+    ///   that does not end where the first starts names curve 0.
+    pub fn new(loops: Vec<Vec<Bezier<Rational, 2>>>, fill: FillRule) -> Result<Region> {
+        for (l, curves) in loops.iter().enumerate() {
+            if curves.is_empty() {
+                return Err(Error::of(
+                    ErrorKind::Empty,
+                    format!("loops[{l}]"),
+                    "a loop needs at least one curve",
+                ));
+            }
+            for (c, curve) in curves.iter().enumerate() {
+                let n = curve.degree();
+                if n == 0 || n > MAX_REGION_DEGREE {
+                    return Err(Error::of(
+                        ErrorKind::Degree,
+                        format!("loops[{l}][{c}]"),
+                        format!(
+                            "degree {n} is outside the accepted 1..={MAX_REGION_DEGREE} \
+                             (a curve needs at least 2 control points)"
+                        ),
+                    ));
+                }
+            }
+            for c in 0..curves.len() {
+                let previous = &curves[(c + curves.len() - 1) % curves.len()];
+                let end = previous.points().last().expect("degree >= 1");
+                let start = &curves[c].points()[0];
+                if end != start {
+                    return Err(Error::of(
+                        ErrorKind::Shape,
+                        format!("loops[{l}][{c}]"),
+                        format!(
+                            "starts at {}, the previous curve ends at {}",
+                            show(start),
+                            show(end)
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(Region { loops, fill })
+    }
+
+    /// [`Region::new`] of control points given as doubles, each read exactly.
+    ///
+    /// # Errors
+    /// [`ErrorKind::NotFinite`] on `loops[l][c][i]` for a NaN or an infinity, else as
+    /// [`Region::new`].
+    pub fn from_f64(loops: Vec<Vec<Bezier<f64, 2>>>, fill: FillRule) -> Result<Region> {
+        let mut exact = Vec::with_capacity(loops.len());
+        for (l, curves) in loops.iter().enumerate() {
+            let mut out = Vec::with_capacity(curves.len());
+            for (c, curve) in curves.iter().enumerate() {
+                let mut points = Vec::with_capacity(curve.points().len());
+                for (i, xy) in curve.points().iter().enumerate() {
+                    let read = |x: f64| {
+                        Rational::from_float(x).ok_or_else(|| {
+                            Error::of(
+                                ErrorKind::NotFinite,
+                                format!("loops[{l}][{c}][{i}]"),
+                                format!("expected a finite number, found {x}"),
+                            )
+                        })
+                    };
+                    points.push([read(xy[0])?, read(xy[1])?]);
+                }
+                out.push(Bezier::new(points)?);
+            }
+            exact.push(out);
+        }
+        Region::new(exact, fill)
+    }
+
+    /// The region of the planar Bézier triangle of degree `degree` with `nodes` in the spec's
+    /// order (p_n00, p_(n-1)10, ..., p_0n0, p_(n-1)01, ..., p_00n: by increasing k, within it
+    /// increasing j): one loop of its three edges, edge 0 = B(s, 0), edge 1 = B(1 - t, t),
+    /// edge 2 = B(0, 1 - u), each of degree `degree` (curves 0, 1, 2 of loop 0), fill nonzero.
+    ///
+    /// ```
+    /// use blossom::region::{Position, Region};
+    /// use blossom::Rational;
+    /// let q = |n: i64| Rational::from_integer(n.into());
+    /// let t = Region::triangle(1, vec![[q(0), q(0)], [q(1), q(0)], [q(0), q(1)]])?;
+    /// let centre = [Rational::new(1.into(), 4.into()), Rational::new(1.into(), 4.into())];
+    /// assert_eq!(t.contains(&centre), Position::Inside);
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`ErrorKind::Degree`] on `degree` for 0 or over [`MAX_REGION_DEGREE`];
+    /// [`ErrorKind::Shape`] on `nodes` when there are not (n + 1)(n + 2)/2 of them.
+    pub fn triangle(degree: usize, nodes: Vec<[Rational; 2]>) -> Result<Region> {
+        if degree == 0 || degree > MAX_REGION_DEGREE {
+            return Err(Error::of(
+                ErrorKind::Degree,
+                "degree",
+                format!("degree {degree} is outside the accepted 1..={MAX_REGION_DEGREE}"),
+            ));
+        }
+        let n = degree;
+        let expected = (n + 1) * (n + 2) / 2;
+        if nodes.len() != expected {
+            return Err(Error::of(
+                ErrorKind::Shape,
+                "nodes",
+                format!(
+                    "a triangle of degree {n} has {expected} nodes, found {}",
+                    nodes.len()
+                ),
+            ));
+        }
+        // p_ijk with i = n - j - k sits at offset(k) + j, offset(k) = sum_(k' < k) (n + 1 - k').
+        let at = |j: usize, k: usize| {
+            let offset: usize = (0..k).map(|kk| n + 1 - kk).sum();
+            nodes[offset + j].clone()
+        };
+        let edge0: Vec<_> = (0..=n).map(|j| at(j, 0)).collect();
+        let edge1: Vec<_> = (0..=n).map(|k| at(n - k, k)).collect();
+        let edge2: Vec<_> = (0..=n).map(|i| at(0, n - i)).collect();
+        let curves = [edge0, edge1, edge2]
+            .into_iter()
+            .map(Bezier::new)
+            .collect::<Result<Vec<_>>>()?;
+        Region::new(vec![curves], FillRule::NonZero)
+    }
+
+    /// The loops: `loops()[l][c]` is curve c of loop l.
+    pub fn loops(&self) -> &[Vec<Bezier<Rational, 2>>] {
+        &self.loops
+    }
+
+    /// The fill rule.
+    pub fn fill(&self) -> FillRule {
+        self.fill
+    }
+}
+
+/// Whether every control point of the curve is the same point (the curve traces one point).
+pub(crate) fn is_single_point(curve: &Bezier<Rational, 2>) -> bool {
+    let p = curve.points();
+    p.iter().all(|q| q == &p[0])
+}
