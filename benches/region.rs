@@ -107,14 +107,20 @@ fn main() {
         let mut group = c.benchmark_group("region_stars");
         group.sample_size(20);
         group.measurement_time(Duration::from_secs(3));
-        for (name, op) in [("intersection", BooleanOp::Intersection), ("union", BooleanOp::Union)] {
+        for (name, op) in [
+            ("intersection", BooleanOp::Intersection),
+            ("union", BooleanOp::Union),
+        ] {
             group.bench_function(name, |bench| {
                 bench.iter(|| boolean(black_box(&ra), black_box(&rb), op).expect("answered"))
             });
         }
         group.finish();
     }
-    for (name, op) in [("intersection", BooleanOp::Intersection), ("union", BooleanOp::Union)] {
+    for (name, op) in [
+        ("intersection", BooleanOp::Intersection),
+        ("union", BooleanOp::Union),
+    ] {
         let t = median_time(21, || {
             black_box(boolean(&ra, &rb, op).expect("answered"));
         });
@@ -144,7 +150,9 @@ fn main() {
         group.bench_function(format!("quadratic/{count}"), |bench| {
             bench.iter(|| {
                 for (t1, t2) in &regions {
-                    black_box(triangle_intersection(black_box(t1), black_box(t2)).expect("answered"));
+                    black_box(
+                        triangle_intersection(black_box(t1), black_box(t2)).expect("answered"),
+                    );
                 }
             })
         });
@@ -208,12 +216,17 @@ fn main() {
             }
             group.measurement_time(once.mul_f64(12.0).max(Duration::from_secs(2)));
             group.bench_function(format!("union/{n}"), |bench| {
-                bench.iter(|| boolean(black_box(&ra), black_box(&rb), BooleanOp::Union).expect("answered"))
+                bench.iter(|| {
+                    boolean(black_box(&ra), black_box(&rb), BooleanOp::Union).expect("answered")
+                })
             });
             let runs = if once.as_secs_f64() > 2.0 { 3 } else { 7 };
-            measured.push((n, median_time(runs, || {
-                black_box(boolean(&ra, &rb, BooleanOp::Union).expect("answered"));
-            })));
+            measured.push((
+                n,
+                median_time(runs, || {
+                    black_box(boolean(&ra, &rb, BooleanOp::Union).expect("answered"));
+                }),
+            ));
         }
         group.finish();
     }

@@ -61,8 +61,12 @@ fn flo_area(paths: &[SimpleBezierPath]) -> f64 {
             let (x, y) = ([p0.0, c1.0, c2.0, p3.0], [p0.1, c1.1, c2.1, p3.1]);
             for (t, w) in nodes {
                 let s = 1.0 - t;
-                let xt = s * s * s * x[0] + 3.0 * s * s * t * x[1] + 3.0 * s * t * t * x[2] + t * t * t * x[3];
-                let dy = 3.0 * (s * s * (y[1] - y[0]) + 2.0 * s * t * (y[2] - y[1]) + t * t * (y[3] - y[2]));
+                let xt = s * s * s * x[0]
+                    + 3.0 * s * s * t * x[1]
+                    + 3.0 * s * t * t * x[2]
+                    + t * t * t * x[3];
+                let dy = 3.0
+                    * (s * s * (y[1] - y[0]) + 2.0 * s * t * (y[2] - y[1]) + t * t * (y[3] - y[2]));
                 total += w * xt * dy;
             }
             p0 = *p3;
@@ -93,7 +97,10 @@ fn median_time(runs: usize, mut f: impl FnMut()) -> f64 {
 
 /// A square of straight cubics (handles at thirds), counter-clockwise.
 fn square(x: f64, y: f64, side: f64) -> Vec<Cubic> {
-    shapes::cubic_loop(&[[x, y], [x + side, y], [x + side, y + side], [x, y + side]], 0.0)
+    shapes::cubic_loop(
+        &[[x, y], [x + side, y], [x + side, y + side], [x, y + side]],
+        0.0,
+    )
 }
 
 fn moved(curves: &[Cubic], d: [f64; 2]) -> Vec<Cubic> {
@@ -152,7 +159,10 @@ fn main() {
         let mut group = c.benchmark_group("region_peers/stars");
         group.sample_size(20);
         group.measurement_time(Duration::from_secs(3));
-        for (name, op) in [("intersection", BooleanOp::Intersection), ("union", BooleanOp::Union)] {
+        for (name, op) in [
+            ("intersection", BooleanOp::Intersection),
+            ("union", BooleanOp::Union),
+        ] {
             group.bench_function(format!("blossom/{name}"), |bench| {
                 bench.iter(|| boolean(black_box(&ra), black_box(&rb), op).expect("answered"))
             });
@@ -162,7 +172,10 @@ fn main() {
         }
         group.finish();
     }
-    for (name, op) in [("intersection", BooleanOp::Intersection), ("union", BooleanOp::Union)] {
+    for (name, op) in [
+        ("intersection", BooleanOp::Intersection),
+        ("union", BooleanOp::Union),
+    ] {
         let ours = median_time(21, || {
             black_box(boolean(&ra, &rb, op).expect("answered"));
         });
@@ -194,7 +207,10 @@ fn main() {
             }
         }
         let big_b = (hi[0] - lo[0]) * (hi[1] - lo[1]);
-        for (op_name, op) in [("intersection", BooleanOp::Intersection), ("union", BooleanOp::Union)] {
+        for (op_name, op) in [
+            ("intersection", BooleanOp::Intersection),
+            ("union", BooleanOp::Union),
+        ] {
             total += 1;
             let certified = boolean(&ra, &rb, op).expect("answered").area;
             let (pa, pb) = (path_of(a), path_of(b));

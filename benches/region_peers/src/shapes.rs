@@ -49,7 +49,10 @@ pub fn star(centre: [f64; 2], points: usize, outer: f64, inner: f64, phase: f64)
         .map(|i| {
             let angle = phase + PI * i as f64 / points as f64;
             let r = if i % 2 == 0 { outer } else { inner };
-            [snap(centre[0] + r * angle.cos()), snap(centre[1] + r * angle.sin())]
+            [
+                snap(centre[0] + r * angle.cos()),
+                snap(centre[1] + r * angle.sin()),
+            ]
         })
         .collect();
     cubic_loop(&vertices, 0.08)
@@ -72,7 +75,10 @@ pub fn gear(rng: &mut Rng, centre: [f64; 2], edges: usize) -> Vec<Cubic> {
         .map(|i| {
             let angle = 2.0 * PI * i as f64 / edges as f64;
             let r = 0.95 + 0.1 * rng.unit();
-            [snap(centre[0] + r * angle.cos()), snap(centre[1] + r * angle.sin())]
+            [
+                snap(centre[0] + r * angle.cos()),
+                snap(centre[1] + r * angle.sin()),
+            ]
         })
         .collect();
     cubic_loop(&vertices, 0.05)
@@ -135,7 +141,12 @@ pub fn triangle_pairs(count: usize) -> Vec<[Triangle; 2]> {
         .map(|_| {
             let t1 = random_triangle(&mut rng, [0.0, 0.0], [1.0, 0.0], [0.0, 1.0]);
             let (dx, dy) = (0.5 * rng.unit(), 0.5 * rng.unit());
-            let t2 = random_triangle(&mut rng, [1.0 + dx, 1.0 + dy], [dx, 1.0 + dy], [1.0 + dx, dy]);
+            let t2 = random_triangle(
+                &mut rng,
+                [1.0 + dx, 1.0 + dy],
+                [dx, 1.0 + dy],
+                [1.0 + dx, dy],
+            );
             [t1, t2]
         })
         .collect()

@@ -201,9 +201,9 @@ where
         } => {
             let style = colour(*c).filled();
             chart.draw_series(
-                polygons
-                    .iter()
-                    .map(|polygon| Polygon::new(polygon.iter().map(&at).collect::<Vec<C>>(), style)),
+                polygons.iter().map(|polygon| {
+                    Polygon::new(polygon.iter().map(&at).collect::<Vec<C>>(), style)
+                }),
             )?;
         }
         Layer::Labels {

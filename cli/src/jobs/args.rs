@@ -421,12 +421,7 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
         "restrict" => parse_restrict(rest),
         "check" => parse_check(rest),
         "intersect" => parse_certified(rest, "intersect", INTERSECT_HELP, Command::Intersect),
-        "region" => parse_certified(
-            rest,
-            "region",
-            super::region::REGION_HELP,
-            Command::Region,
-        ),
+        "region" => parse_certified(rest, "region", super::region::REGION_HELP, Command::Region),
         "figures" => parse_figures(rest),
         "expand" => parse_expand(rest),
         "help" => Ok(Command::Help(HELP)),

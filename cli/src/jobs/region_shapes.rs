@@ -11,9 +11,9 @@
 //! (`regions[1].loops[0][2]: starts at (1, 0), the previous curve ends at (1, 1/2)`).
 
 use super::args::Arithmetic;
+use super::intersect_jobs::number;
 use super::job::{array, expect_fields};
 use super::names::{did_you_mean, listed, quoted};
-use super::intersect_jobs::number;
 use crate::number::json_type;
 use blossom::region::{FillRule, Region, MAX_REGION_DEGREE};
 use blossom::{Bezier, Error, Rational};
@@ -23,7 +23,11 @@ use serde_json::{Map, Value};
 pub const FILL_NAMES: [&str; 2] = ["nonzero", "evenodd"];
 
 /// The field `name` of the object at `path`, or `error: PATH.NAME: missing field`.
-pub fn member<'a>(object: &'a Map<String, Value>, path: &str, name: &str) -> Result<&'a Value, Error> {
+pub fn member<'a>(
+    object: &'a Map<String, Value>,
+    path: &str,
+    name: &str,
+) -> Result<&'a Value, Error> {
     object
         .get(name)
         .ok_or_else(|| Error::new(joined(path, name), "missing field"))
@@ -39,7 +43,11 @@ pub fn joined(path: &str, name: &str) -> String {
 }
 
 /// The object at `path`, or an error saying what was expected.
-pub fn object<'a>(value: &'a Value, path: &str, expected: &str) -> Result<&'a Map<String, Value>, Error> {
+pub fn object<'a>(
+    value: &'a Value,
+    path: &str,
+    expected: &str,
+) -> Result<&'a Map<String, Value>, Error> {
     match value {
         Value::Object(map) => Ok(map),
         other => Err(Error::new(
@@ -111,7 +119,11 @@ pub fn region(value: &Value, path: &str, arithmetic: Arithmetic) -> Result<Regio
     let map = object(value, path, "a region {\"loops\": [...], \"fill\": ...}")?;
     expect_fields(map, path, &["loops", "fill"])?;
     let loops_path = joined(path, "loops");
-    let items = array(member(map, path, "loops")?, &loops_path, "an array of loops")?;
+    let items = array(
+        member(map, path, "loops")?,
+        &loops_path,
+        "an array of loops",
+    )?;
     if items.is_empty() {
         return Err(Error::new(
             &loops_path,
@@ -185,16 +197,24 @@ pub fn triangle(value: &Value, path: &str, arithmetic: Arithmetic) -> Result<Reg
         return Err(over_degree(&degree_path, degree as usize));
     }
     let nodes_path = joined(path, "nodes");
-    let nodes = array(member(map, path, "nodes")?, &nodes_path, "an array of 2-D nodes")?
-        .iter()
-        .enumerate()
-        .map(|(i, p)| point(p, &format!("{nodes_path}[{i}]"), arithmetic))
-        .collect::<Result<Vec<_>, Error>>()?;
+    let nodes = array(
+        member(map, path, "nodes")?,
+        &nodes_path,
+        "an array of 2-D nodes",
+    )?
+    .iter()
+    .enumerate()
+    .map(|(i, p)| point(p, &format!("{nodes_path}[{i}]"), arithmetic))
+    .collect::<Result<Vec<_>, Error>>()?;
     Region::triangle(degree as usize, nodes).map_err(|e| under(path, e))
 }
 
 /// A list of 2-D points at `path` (the points of a `winding` job).
-pub fn points(value: &Value, path: &str, arithmetic: Arithmetic) -> Result<Vec<[Rational; 2]>, Error> {
+pub fn points(
+    value: &Value,
+    path: &str,
+    arithmetic: Arithmetic,
+) -> Result<Vec<[Rational; 2]>, Error> {
     array(value, path, "an array of 2-D points")?
         .iter()
         .enumerate()
@@ -230,6 +250,10 @@ mod tests {
         assert!(e.to_string().starts_with("triangles[1].nodes: "), "{e}");
         let t = json!({"degree": 1, "nodes": [[0, 0], [1, 0], [0, 1]], "node": 1});
         let e = triangle(&t, "triangles[0]", Arithmetic::Exact).unwrap_err();
-        assert!(e.to_string().starts_with("triangles[0].node: unknown field"), "{e}");
+        assert!(
+            e.to_string()
+                .starts_with("triangles[0].node: unknown field"),
+            "{e}"
+        );
     }
 }
