@@ -97,7 +97,7 @@ pub fn gear_pair(edges: usize) -> [Vec<Cubic>; 2] {
 /// A random star pair of the peers' corpus: 3 to 8 spikes each, random radii, centres and
 /// turns, some edges straighter or rounder.
 pub fn random_star_pair(rng: &mut Rng) -> [Vec<Cubic>; 2] {
-    let mut one = |rng: &mut Rng| {
+    let one = |rng: &mut Rng| {
         let points = 3 + (rng.unit() * 6.0) as usize;
         let centre = [snap(rng.unit() * 0.6 - 0.3), snap(rng.unit() * 0.6 - 0.3)];
         let outer = 0.6 + 0.5 * rng.unit();

@@ -1010,6 +1010,28 @@ fn work_over_the_budget_is_refused_naming_the_field() {
 }
 
 #[test]
+fn winding_jobs_are_estimated_before_they_run() {
+    // A loop of two degree-16 curves and 200 points: milliseconds, answered by default.
+    let upper: Vec<Value> = (0..=16)
+        .map(|i| json!([i, if i == 0 || i == 16 { 0 } else { 2 + (i % 5) as i64 }]))
+        .collect();
+    let lower: Vec<Value> = (0..=16)
+        .map(|i| json!([16 - i, if i == 0 || i == 16 { 0 } else { -1 - (i % 3) as i64 }]))
+        .collect();
+    let points: Vec<Value> = (0..200)
+        .map(|i| json!([format!("{}/7", i % 20 * 6), format!("{}/5", i / 20 - 4)]))
+        .collect();
+    let job = json!({"kind": "winding", "region": {"loops": [[upper, lower]]}, "points": points});
+    let out = answer(&[], &job);
+    assert_eq!(out["points"].as_array().unwrap().len(), 200);
+    let e = error(&["--max-work", "1000"], &job.to_string());
+    assert!(
+        e.starts_with("error: points: the job's work is estimated at ") && e.contains("--max-work"),
+        "{e}"
+    );
+}
+
+#[test]
 fn inputs_up_to_10_kb_are_answered_or_refused_within_two_seconds() {
     // Two stars of cubic edges, as many as fit in 10 KB.
     let star = |cx: i64, k: usize| {
