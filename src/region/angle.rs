@@ -60,11 +60,18 @@ fn class(curves: &[Curve], b: &Branch) -> (u8, [Ordering; 2]) {
         dy = derivative(&dy);
         let (sx, sy) = (sign_at(&dx, &b.at), sign_at(&dy, &b.at));
         if sx == Ordering::Equal && sy == Ordering::Equal {
-            assert!(!dx.is_empty() || !dy.is_empty(), "a curve that traces more than a point");
+            assert!(
+                !dx.is_empty() || !dy.is_empty(),
+                "a curve that traces more than a point"
+            );
             continue;
         }
         let flip = sigma_negative && k % 2 == 1;
-        let (sx, sy) = if flip { (sx.reverse(), sy.reverse()) } else { (sx, sy) };
+        let (sx, sy) = if flip {
+            (sx.reverse(), sy.reverse())
+        } else {
+            (sx, sy)
+        };
         use Ordering::{Equal as Z, Greater as P, Less as N};
         let class = match (sx, sy) {
             (P, Z) => 0,
@@ -129,7 +136,13 @@ fn first_root(g: &[Rational], from: &AlgebraicReal, to: &AlgebraicReal) -> Algeb
 
 /// The height (coordinate `1 - axis`) where the branch crosses the line coordinate `axis`
 /// = `level`, on its monotone stretch from its vertex to `limit`.
-fn height_at(curves: &[Curve], b: &Branch, axis: usize, level: &Rational, limit: &AlgebraicReal) -> AlgebraicReal {
+fn height_at(
+    curves: &[Curve],
+    b: &Branch,
+    axis: usize,
+    level: &Rational,
+    limit: &AlgebraicReal,
+) -> AlgebraicReal {
     let c = &curves[b.curve];
     let f = shifted_poly(&c.power[axis], level);
     let forward = b.forward();
@@ -183,5 +196,78 @@ pub(crate) fn compare(curves: &[Curve], a: &Branch, b: &Branch) -> Ordering {
     match (axis, direction) {
         (0, Ordering::Greater) | (1, Ordering::Less) => order,
         _ => order.reverse(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{compare, Branch};
+    use crate::num::ring::Rational;
+    use crate::region::curve::{one, zero, Curve};
+    use crate::shape::array::Bezier;
+    use std::cmp::Ordering;
+
+    fn q(n: i64, d: i64) -> Rational {
+        Rational::new(n.into(), d.into())
+    }
+
+    fn curve(points: &[(i64, i64, i64)]) -> Curve {
+        let pts = points.iter().map(|&(x, y, d)| [q(x, d), q(y, d)]).collect();
+        Curve::new(&Bezier::new(pts).unwrap())
+    }
+
+    fn from_start(c: usize) -> Branch {
+        Branch {
+            curve: c,
+            at: zero(),
+            toward: one(),
+        }
+    }
+
+    fn from_end(c: usize) -> Branch {
+        Branch {
+            curve: c,
+            at: one(),
+            toward: zero(),
+        }
+    }
+
+    #[test]
+    fn tangent_branches_and_a_cusp_are_ordered_exactly() {
+        let curves = vec![
+            // 0: y = x^2 from the origin (quadratic (0,0), (1/2,0), (1,1)).
+            curve(&[(0, 0, 1), (1, 0, 2), (1, 1, 1)]),
+            // 1: y = x^3 from the origin, as a cubic: (0,0), (1/3,0), (2/3,0), (1,1).
+            curve(&[(0, 0, 1), (1, 0, 3), (2, 0, 3), (1, 1, 1)]),
+            // 2: the x axis from the origin.
+            curve(&[(0, 0, 1), (1, 0, 1)]),
+            // 3: a cusp (t^2, t^3) at the origin: control points (0,0), (0,0), (1/3,0), (1,1).
+            curve(&[(0, 0, 1), (0, 0, 1), (1, 0, 3), (1, 1, 1)]),
+            // 4: y = -x^2, leaving the origin along +x below the axis.
+            curve(&[(0, 0, 1), (1, 0, 2), (1, -1, 1)]),
+            // 5: the y axis, arriving at the origin from (0, 1) (its end is the vertex).
+            curve(&[(0, 1, 1), (0, 0, 1)]),
+        ];
+        let b = [
+            from_start(0),
+            from_start(1),
+            from_start(2),
+            from_start(3),
+            from_start(4),
+            from_end(5),
+        ];
+        // Counter-clockwise from just below +x: y = -x^2, the axis, y = x^3, y = x^2, the
+        // cusp y = x^(3/2) (above x^2 near 0), then +y.
+        let ccw = |i: usize, j: usize| compare(&curves, &b[i], &b[j]);
+        assert_eq!(ccw(4, 2), Ordering::Less);
+        assert_eq!(ccw(2, 1), Ordering::Less);
+        assert_eq!(ccw(1, 0), Ordering::Less);
+        assert_eq!(ccw(1, 3), Ordering::Less, "x^3 below the cusp's x^(3/2)");
+        assert_eq!(ccw(0, 3), Ordering::Less, "x^(3/2) above x^2 near 0");
+        assert_eq!(ccw(0, 5), Ordering::Less);
+        assert_eq!(ccw(5, 4), Ordering::Greater);
+        let mut order: Vec<usize> = (0..6).collect();
+        order.sort_by(|&i, &j| ccw(i, j));
+        assert_eq!(order, vec![4, 2, 1, 0, 3, 5]);
     }
 }

@@ -10,9 +10,9 @@
 //! decided the same way: a simple loop bounds a positive area, so refinement until the
 //! enclosure excludes zero terminates.
 
+use super::arrangement::Arrangement;
 use super::chain::Run;
 use super::curve::derivative;
-use super::arrangement::Arrangement;
 use crate::intersect::algebraic::{enclose, AlgebraicReal};
 use crate::num::ring::Rational;
 use num_traits::Zero;
@@ -43,16 +43,8 @@ struct Term<'a> {
 
 impl Term<'_> {
     fn enclose(&mut self) {
-        let (lo, hi) = match self.at.exact() {
-            Some(r) => {
-                let v = super::curve::eval(self.f, r);
-                (v.clone(), v)
-            }
-            None => {
-                let (l, h) = self.at.interval();
-                enclose(self.f, l, h)
-            }
-        };
+        let (l, h) = self.at.interval();
+        let (lo, hi) = enclose(self.f, l, h);
         self.enclosure = if self.sign { (lo, hi) } else { (-hi, -lo) };
     }
 
@@ -65,7 +57,6 @@ impl Term<'_> {
 /// `done(lo, hi)`.
 pub(crate) fn enclose_loops(
     arr: &Arrangement,
-    primitives: &[Vec<Rational>],
     loops: &[&[Run]],
     done: impl Fn(&Rational, &Rational) -> bool,
 ) -> (Rational, Rational) {
@@ -73,9 +64,12 @@ pub(crate) fn enclose_loops(
     for runs in loops {
         for r in runs.iter() {
             for (sign, k) in [(true, r.to), (false, r.from)] {
+                if arr.params[r.curve][k].exact().is_some_and(Zero::is_zero) {
+                    continue; // F(0) = 0.
+                }
                 let mut t = Term {
                     sign,
-                    f: &primitives[r.curve],
+                    f: arr.curves[r.curve].x_dy(),
                     at: arr.params[r.curve][k].clone(),
                     enclosure: (Rational::zero(), Rational::zero()),
                 };

@@ -21,6 +21,8 @@
 //!   lower parameters on that curve.
 
 use super::curve::{one, zero, Curve};
+use super::prune::consecutive_meet_only_at_join;
+pub(crate) use super::prune::one_to_one;
 use super::transfer::transfer;
 use crate::error::Result;
 use crate::intersect::algebraic::AlgebraicReal;
@@ -122,6 +124,26 @@ struct Shared {
     overlap: Overlap,
 }
 
+/// For curves i < j that follow each other in a loop and are proved to meet only at their
+/// join ([`consecutive_meet_only_at_join`]): `Some(true)` when curve i ends at the join
+/// (their one intersection is (1, 0)), `Some(false)` when curve j does ((0, 1)); `None`
+/// when the exact intersector must answer.
+pub(crate) fn proved_join(curves: &[Curve], next: &[usize], i: usize, j: usize) -> Option<bool> {
+    if next[i] == j
+        && next[j] != i
+        && consecutive_meet_only_at_join(&curves[i].points, &curves[j].points)
+    {
+        Some(true)
+    } else if next[j] == i
+        && next[i] != j
+        && consecutive_meet_only_at_join(&curves[j].points, &curves[i].points)
+    {
+        Some(false)
+    } else {
+        None
+    }
+}
+
 /// The index of `x` among the sorted distinct `params` (present by construction).
 fn index_of(params: &[AlgebraicReal], x: &AlgebraicReal) -> usize {
     params
@@ -157,16 +179,19 @@ impl Arrangement {
         let mut params: Vec<Vec<AlgebraicReal>> = vec![vec![zero(), one()]; n];
         let mut same = Vec::new();
         let mut shared = Vec::new();
-        let mut record = |p: usize, q: usize, found: crate::intersect::curves::Intersections| {
-            for point in found.points {
-                params[p].push(point.s.clone());
-                params[q].push(point.t.clone());
+        let mut record = |p: usize,
+                          q: usize,
+                          points: Vec<(AlgebraicReal, AlgebraicReal)>,
+                          overlaps: Vec<Overlap>| {
+            for (s, t) in points {
+                params[p].push(s.clone());
+                params[q].push(t.clone());
                 same.push(Same {
-                    a: (p, point.s),
-                    b: (q, point.t),
+                    a: (p, s),
+                    b: (q, t),
                 });
             }
-            for overlap in found.overlaps {
+            for overlap in overlaps {
                 let ends = [&overlap.s[0], &overlap.s[1], &overlap.t[0], &overlap.t[1]];
                 if ends[0].equals(ends[1]) || ends[2].equals(ends[3]) {
                     continue;
@@ -176,13 +201,25 @@ impl Arrangement {
                 shared.push(Shared { p, q, overlap });
             }
         };
-        for (i, j) in candidate_pairs(&curves) {
-            let found = intersect_curves(&curves[i].points, &curves[j].points)?;
-            record(i, j, found);
+        let pairs = candidate_pairs(&curves);
+        for &(i, j) in &pairs {
+            match proved_join(&curves, next, i, j) {
+                Some(true) => record(i, j, vec![(one(), zero())], Vec::new()),
+                Some(false) => record(i, j, vec![(zero(), one())], Vec::new()),
+                None => {
+                    let found = intersect_curves(&curves[i].points, &curves[j].points)?;
+                    let points = found.points.into_iter().map(|x| (x.s, x.t)).collect();
+                    record(i, j, points, found.overlaps);
+                }
+            }
         }
         for (i, curve) in curves.iter().enumerate() {
+            if one_to_one(&curve.points) {
+                continue;
+            }
             let found = self_intersections(&curve.points)?;
-            record(i, i, found);
+            let points = found.points.into_iter().map(|x| (x.s, x.t)).collect();
+            record(i, i, points, found.overlaps);
         }
         for (c, &d) in next.iter().enumerate() {
             same.push(Same {
@@ -228,10 +265,20 @@ impl Arrangement {
         let mut groups = Joins::new(pieces.len());
         for sh in &shared {
             let o = &sh.overlap;
-            let (i0, i1) = (index_of(&params[sh.p], &o.s[0]), index_of(&params[sh.p], &o.s[1]));
-            let (j0, j1) = (index_of(&params[sh.q], &o.t[0]), index_of(&params[sh.q], &o.t[1]));
+            let (i0, i1) = (
+                index_of(&params[sh.p], &o.s[0]),
+                index_of(&params[sh.p], &o.s[1]),
+            );
+            let (j0, j1) = (
+                index_of(&params[sh.q], &o.t[0]),
+                index_of(&params[sh.q], &o.t[1]),
+            );
             let forward = j0 < j1;
-            debug_assert_eq!(i1 - i0, j0.abs_diff(j1), "both sides of an overlap split alike");
+            debug_assert_eq!(
+                i1 - i0,
+                j0.abs_diff(j1),
+                "both sides of an overlap split alike"
+            );
             for k in 0..=(i1 - i0) {
                 let j = if forward { j0 + k } else { j0 - k };
                 nodes.join(offset[sh.p] + i0 + k, offset[sh.q] + j, false);
@@ -262,7 +309,7 @@ impl Arrangement {
         let mut group_of_root = vec![usize::MAX; pieces.len()];
         let mut out: Vec<Group> = Vec::new();
         let mut rep_parity = Vec::new();
-        for i in 0..pieces.len() {
+        for (i, piece) in pieces.iter_mut().enumerate() {
             let (root, parity) = groups.find(i);
             if group_of_root[root] == usize::MAX {
                 group_of_root[root] = out.len();
@@ -274,8 +321,8 @@ impl Arrangement {
             }
             let g = group_of_root[root];
             out[g].members.push(i);
-            pieces[i].group = g;
-            pieces[i].along = parity == rep_parity[g];
+            piece.group = g;
+            piece.along = parity == rep_parity[g];
         }
         Ok(Arrangement {
             curves,
@@ -325,29 +372,27 @@ fn insert(p: &mut Vec<AlgebraicReal>, x: AlgebraicReal) -> bool {
 /// an overlap's range.
 fn carry_across_overlaps(curves: &[Curve], shared: &[Shared], params: &mut [Vec<AlgebraicReal>]) {
     let strictly_inside = |x: &AlgebraicReal, a: &AlgebraicReal, b: &AlgebraicReal| {
-        let (lo, hi) = if a.compare(b) == Ordering::Greater { (b, a) } else { (a, b) };
+        let (lo, hi) = if a.compare(b) == Ordering::Greater {
+            (b, a)
+        } else {
+            (a, b)
+        };
         x.compare(lo) == Ordering::Greater && x.compare(hi) == Ordering::Less
     };
     loop {
         let mut changed = false;
         for sh in shared {
             let o = &sh.overlap;
-            for (from, to, from_range, to_range) in [
-                (sh.p, sh.q, &o.s, &o.t),
-                (sh.q, sh.p, &o.t, &o.s),
-            ] {
+            for (from, to, from_range, to_range) in
+                [(sh.p, sh.q, &o.s, &o.t), (sh.q, sh.p, &o.t, &o.s)]
+            {
                 let inner: Vec<AlgebraicReal> = params[from]
                     .iter()
                     .filter(|x| strictly_inside(x, &from_range[0], &from_range[1]))
                     .cloned()
                     .collect();
                 for x in inner {
-                    let t = transfer(
-                        &curves[from],
-                        &x,
-                        &curves[to],
-                        (&to_range[0], &to_range[1]),
-                    );
+                    let t = transfer(&curves[from], &x, &curves[to], (&to_range[0], &to_range[1]));
                     changed |= insert(&mut params[to], t);
                 }
             }

@@ -1,6 +1,6 @@
 //! The public front of the booleans: the operations, the answer's types, the work estimate.
 
-use super::region::Region;
+use super::input::Region;
 use crate::error::Result;
 use crate::intersect::algebraic::AlgebraicReal;
 
@@ -52,6 +52,28 @@ pub struct Edge {
     pub from: AlgebraicReal,
     /// The parameter where the edge ends, exactly.
     pub to: AlgebraicReal,
+}
+
+impl Edge {
+    /// The spec's edge number for [`triangle_intersection`]: 0, 1, 2 for the first
+    /// triangle's edges, 3, 4, 5 for the second's (`3 * region + curve`).
+    ///
+    /// ```
+    /// use blossom::region::{triangle_intersection, Region};
+    /// use blossom::Rational;
+    /// let q = |n: i64| Rational::from_integer(n.into());
+    /// let t1 = Region::triangle(1, vec![[q(0), q(0)], [q(4), q(0)], [q(0), q(4)]])?;
+    /// let t2 = Region::triangle(1, vec![[q(1), q(1)], [q(2), q(1)], [q(1), q(2)]])?;
+    /// // t2 lies inside t1: the answer is t2, edges 3, 4, 5.
+    /// let r = triangle_intersection(&t1, &t2)?;
+    /// let mut numbers: Vec<usize> = r.loops[0].edges.iter().map(|e| e.triangle_edge()).collect();
+    /// numbers.sort();
+    /// assert_eq!(numbers, vec![3, 4, 5]);
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
+    pub fn triangle_edge(&self) -> usize {
+        3 * self.region + self.curve
+    }
 }
 
 /// One simple oriented loop of a result: counter-clockwise around the result's interior for
@@ -134,7 +156,20 @@ pub fn triangle_intersection(t1: &Region, t2: &Region) -> Result<RegionResult> {
 /// pair of curves whose boxes meet ([`curve_pair_work`](crate::curve_pair_work), which runs
 /// the float filter), the self-intersections of every curve
 /// ([`self_intersection_work`](crate::self_intersection_work)), and the classification of the
-/// pieces (one ray per piece against the curves). It does not depend on `op`.
+/// pieces (one ray per piece against the curves). It does not depend on `op`. Curves that
+/// follow each other in a loop and are proved to meet only at their join, and curves proved
+/// one-to-one, count a few microseconds instead of the exact solver's estimate.
+///
+/// ```
+/// use blossom::region::{boolean_work, Region};
+/// use blossom::Rational;
+/// let q = |n: i64| Rational::from_integer(n.into());
+/// let t1 = Region::triangle(1, vec![[q(0), q(0)], [q(2), q(0)], [q(0), q(2)]])?;
+/// let t2 = Region::triangle(1, vec![[q(1), q(0)], [q(3), q(0)], [q(1), q(2)]])?;
+/// // Six lines: well under a millisecond.
+/// assert!(boolean_work(&t1, &t2) < 1_000_000_000);
+/// # Ok::<(), blossom::Error>(())
+/// ```
 pub fn boolean_work(a: &Region, b: &Region) -> u128 {
     super::pipeline::work(&[a, b])
 }

@@ -128,7 +128,11 @@ pub(crate) fn chain(arr: &Arrangement, verdicts: &[Option<bool>]) -> Vec<Vec<Run
 }
 
 /// For each edge, the edge the walk continues by after it.
-fn successors(arr: &Arrangement, edges: &[Directed], leaving: &HashMap<usize, Vec<usize>>) -> Vec<usize> {
+fn successors(
+    arr: &Arrangement,
+    edges: &[Directed],
+    leaving: &HashMap<usize, Vec<usize>>,
+) -> Vec<usize> {
     let mut next = vec![usize::MAX; edges.len()];
     let mut arriving: HashMap<usize, Vec<usize>> = HashMap::new();
     for (i, e) in edges.iter().enumerate() {

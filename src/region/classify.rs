@@ -16,7 +16,7 @@ use super::angle::rational_between;
 use super::arrangement::Arrangement;
 use super::boolean::BooleanOp;
 use super::curve::Curve;
-use super::region::FillRule;
+use super::input::FillRule;
 use super::winding::{ray_count, AtStart};
 use crate::num::ring::Rational;
 use num_traits::Zero;
@@ -65,7 +65,7 @@ pub(crate) fn boundary_groups(
                     .zip(&arr.ids)
                     .filter(|(_, id)| id.region == r)
                     .map(|(c, _)| c);
-                let count = ray_count(curves, &x, axis, AtStart::Skip);
+                let count = ray_count(curves, &x, axis, AtStart::Skip, Some((curve, &m)));
                 let mult: i64 = g
                     .members
                     .iter()

@@ -11,8 +11,8 @@
 //! coordinate is constant has no piece that changes it.
 
 use crate::intersect::algebraic::{exact_f64, value_at, AlgebraicReal};
-use crate::intersect::zeros::roots_with_multiplicity;
 use crate::intersect::upoly;
+use crate::intersect::zeros::roots_with_multiplicity;
 use crate::num::ring::{rational_to_f64, Rational};
 use crate::shape::array::Bezier;
 use crate::shape::basis::bernstein_to_power;
@@ -29,6 +29,10 @@ pub(crate) struct Monotone {
     pub values: Vec<AlgebraicReal>,
     /// Whether the coordinate is constant (then no piece changes it).
     pub constant: bool,
+    /// For each piece: whether the coordinate increases along it.
+    pub rising: Vec<bool>,
+    /// Outward-rounded doubles around each value: `(down, up)`.
+    pub bounds: Vec<(f64, f64)>,
 }
 
 /// An input curve with its exact power form and cached derived data.
@@ -41,6 +45,7 @@ pub(crate) struct Curve {
     /// Outward-rounded box: `[xmin, ymin, xmax, ymax]`.
     pub bbox: [f64; 4],
     monotone: [OnceCell<Monotone>; 2],
+    x_dy: OnceCell<Vec<Rational>>,
 }
 
 /// The largest double not above `r`.
@@ -84,7 +89,12 @@ impl Curve {
         let rows: Vec<Vec<Rational>> = points.iter().map(|p| p.to_vec()).collect();
         let c = bernstein_to_power(&rows);
         let power = [0, 1].map(|a| c.iter().map(|p| p[a].clone()).collect::<Vec<_>>());
-        let mut bbox = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+        let mut bbox = [
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        ];
         for p in &points {
             for a in 0..2 {
                 bbox[a] = bbox[a].min(f64_down(&p[a]));
@@ -96,6 +106,7 @@ impl Curve {
             power,
             bbox,
             monotone: [OnceCell::new(), OnceCell::new()],
+            x_dy: OnceCell::new(),
         }
     }
 
@@ -120,6 +131,11 @@ impl Curve {
     /// The breaks into pieces monotone along `axis` (0: x, 1: y), computed once.
     pub fn monotone(&self, axis: usize) -> &Monotone {
         self.monotone[axis].get_or_init(|| monotone_breaks(&self.power[axis]))
+    }
+
+    /// The antiderivative of x(t) y'(t) vanishing at 0 (for areas), computed once.
+    pub fn x_dy(&self) -> &[Rational] {
+        self.x_dy.get_or_init(|| super::area::x_dy(&self.power))
     }
 
     /// The parameters in [0, 1] where the curve passes through the rational point `p`, in
@@ -172,10 +188,20 @@ fn monotone_breaks(c: &[Rational]) -> Monotone {
         }
     }
     params.push(one());
-    let values = params.iter().map(|t| value_at(c, t)).collect();
+    let values: Vec<AlgebraicReal> = params.iter().map(|t| value_at(c, t)).collect();
+    let rising = values
+        .windows(2)
+        .map(|v| v[0].compare(&v[1]) == Ordering::Less)
+        .collect();
+    let bounds = values
+        .iter()
+        .map(|v| (v.to_f64_down(), v.to_f64_up()))
+        .collect();
     Monotone {
         params,
         values,
         constant,
+        rising,
+        bounds,
     }
 }

@@ -7,6 +7,14 @@
 //! loops of [`Edge`]s (pieces of input curves between exact parameters) with an enclosure of
 //! its area, [`triangle_intersection`] the same for two [`Region::triangle`]s.
 //!
+//! API notes (for callers that followed the first sketch): the work estimates
+//! [`boolean_work`] and [`Region::winding_work`] return `u128` nanoseconds, like
+//! [`intersection_work`](crate::intersection_work) and the other estimates of the crate, not
+//! `f64`; a Bézier triangle is a [`Region`] built by [`Region::triangle`] (no separate type),
+//! and an [`Edge`] of [`triangle_intersection`] names the triangle as `region` and its edge as
+//! `curve` (the spec's edge number is `3 * region + curve`); [`Region::windings`] answers many
+//! points with the curves prepared once.
+//!
 //! # Certified
 //!
 //! Every decision is exact for the input numbers: whether a point is on a curve, inside or
@@ -19,11 +27,14 @@
 //!
 //! # The algorithm, stage by stage (one file each)
 //!
-//! 1. `curve`: each input curve in power form with an outward-rounded box and, on demand,
-//!    its breaks into pieces monotone in x or y.
+//! 1. `input` checks the loops; `curve` puts each input curve in power form with an
+//!    outward-rounded box and, on demand, its breaks into pieces monotone in x or y.
 //! 2. `arrangement`: every pair of curves of both regions whose boxes meet (found by a sweep
 //!    over the boxes sorted by their left side, so curves far apart cost nothing) is
-//!    intersected exactly, and every curve with itself. The parameters found split each
+//!    intersected exactly, and every curve with itself, except where `prune` proves the
+//!    answer at once: consecutive curves of a loop that a line through their join separates
+//!    meet only there, and a curve moving strictly forward along one direction does not
+//!    cross itself (both proofs exact). The parameters found split each
 //!    curve into pieces. Parameters that are the same point of the plane (an intersection
 //!    (s, t), a curve's end and the next curve's start, a self-intersection, the ends of an
 //!    overlap) are joined by union-find into vertices. Where two curves overlap, the pieces
@@ -36,7 +47,8 @@
 //!    At a rational parameter m strictly inside the representative (where P'(m) ≠ 0), the
 //!    point X = P(m) lies on the group's curves and on no other. A ray from X along +x (or +y
 //!    when the tangent there is horizontal) counts the crossings of all curves except the
-//!    passes through X itself (`winding`): that is the winding number just off X on one side;
+//!    passes through X itself (`winding`, whose half-open counting of heights makes curve ends
+//!    and turning points count once): that is the winding number just off X on one side;
 //!    the other side differs by the signed number of the group's pieces of that region
 //!    (+1 for a piece running the representative's way). The fill rules and the op then say
 //!    whether the result lies on each side; a group is an edge of the result exactly when the
@@ -62,23 +74,28 @@
 //! intersections of the curve pairs whose boxes meet; [`boolean_work`] estimates it before
 //! any is computed.
 
+mod angle;
 mod area;
 mod arrangement;
 mod boolean;
 mod chain;
 mod classify;
-mod angle;
 mod curve;
+mod input;
 mod pipeline;
-mod region;
+mod prune;
 mod transfer;
 mod winding;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_curved;
+#[cfg(test)]
+mod tests_grid;
 
 pub use boolean::{
     boolean, boolean_work, triangle_intersection, BooleanOp, Edge, RegionResult, ResultLoop,
 };
-pub use region::{FillRule, Region, MAX_REGION_DEGREE};
+pub use input::{FillRule, Region, MAX_REGION_DEGREE};
 pub use winding::{Position, Winding};

@@ -32,9 +32,8 @@ pub(crate) fn transfer(
     } else {
         range
     };
-    let inside = |t: &AlgebraicReal| {
-        t.compare(lo) == Ordering::Greater && t.compare(hi) == Ordering::Less
-    };
+    let inside =
+        |t: &AlgebraicReal| t.compare(lo) == Ordering::Greater && t.compare(hi) == Ordering::Less;
     if let Some(s0) = s.exact() {
         let x = p.at(s0);
         return q
@@ -61,18 +60,16 @@ pub(crate) fn transfer(
         .into_iter()
         .map(|r| r.value)
         .filter(inside)
-        .find(|t| {
-            value_at(&q.power[0], t).equals(&x[0]) && value_at(&q.power[1], t).equals(&x[1])
-        })
+        .find(|t| value_at(&q.power[0], t).equals(&x[0]) && value_at(&q.power[1], t).equals(&x[1]))
         .expect("the overlapping curve passes through the point once on the overlap")
 }
 
 #[cfg(test)]
 mod tests {
     use super::transfer;
-    use crate::region::curve::Curve;
     use crate::intersect::algebraic::AlgebraicReal;
     use crate::num::ring::Rational;
+    use crate::region::curve::Curve;
     use crate::shape::array::Bezier;
 
     fn q(n: i64, d: i64) -> Rational {
@@ -83,22 +80,60 @@ mod tests {
     /// irrational s = 1/sqrt(2) (root of 2 s^2 - 1 in [1/2, 1]), Q passes at t = 1 - s.
     #[test]
     fn an_irrational_parameter_crosses_a_reversed_parabola() {
-        let p = Curve::new(&Bezier::new(vec![[q(0, 1), q(0, 1)], [q(1, 2), q(0, 1)], [q(1, 1), q(1, 1)]]).unwrap());
-        let r = Curve::new(&Bezier::new(vec![[q(1, 1), q(1, 1)], [q(1, 2), q(0, 1)], [q(0, 1), q(0, 1)]]).unwrap());
+        let p = Curve::new(
+            &Bezier::new(vec![
+                [q(0, 1), q(0, 1)],
+                [q(1, 2), q(0, 1)],
+                [q(1, 1), q(1, 1)],
+            ])
+            .unwrap(),
+        );
+        let r = Curve::new(
+            &Bezier::new(vec![
+                [q(1, 1), q(1, 1)],
+                [q(1, 2), q(0, 1)],
+                [q(0, 1), q(0, 1)],
+            ])
+            .unwrap(),
+        );
         let roots = crate::intersect::zeros::roots_with_multiplicity(
             &[(-1).into(), 0.into(), 2.into()],
             &q(1, 2),
             &q(1, 1),
         );
         let s = roots[0].value.clone();
-        let t = transfer(&p, &s, &r, (&AlgebraicReal::from_rational(q(0, 1)), &AlgebraicReal::from_rational(q(1, 1))));
+        let t = transfer(
+            &p,
+            &s,
+            &r,
+            (
+                &AlgebraicReal::from_rational(q(0, 1)),
+                &AlgebraicReal::from_rational(q(1, 1)),
+            ),
+        );
         // t = 1 - 1/sqrt(2) = 0.29289...: 1 - t is a root of 2 x^2 - 1.
         assert!((t.to_f64() - (1.0 - std::f64::consts::FRAC_1_SQRT_2)).abs() < 1e-15);
-        let back = transfer(&r, &t, &p, (&AlgebraicReal::from_rational(q(0, 1)), &AlgebraicReal::from_rational(q(1, 1))));
+        let back = transfer(
+            &r,
+            &t,
+            &p,
+            (
+                &AlgebraicReal::from_rational(q(0, 1)),
+                &AlgebraicReal::from_rational(q(1, 1)),
+            ),
+        );
         assert!(back.equals(&s));
         // A rational parameter: s = 1/4, t = 3/4.
         let quarter = AlgebraicReal::from_rational(q(1, 4));
-        let t = transfer(&p, &quarter, &r, (&AlgebraicReal::from_rational(q(0, 1)), &AlgebraicReal::from_rational(q(1, 1))));
+        let t = transfer(
+            &p,
+            &quarter,
+            &r,
+            (
+                &AlgebraicReal::from_rational(q(0, 1)),
+                &AlgebraicReal::from_rational(q(1, 1)),
+            ),
+        );
         assert_eq!(t.exact(), Some(&q(3, 4)));
     }
 }

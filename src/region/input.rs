@@ -1,4 +1,4 @@
-//! The region type: loops of exact 2-D Bézier curves and a fill rule, checked on entry.
+//! The input: a region as loops of exact 2-D Bézier curves and a fill rule, checked on entry.
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::num::ring::Rational;
