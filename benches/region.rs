@@ -7,7 +7,8 @@
 //!   ([`shapes::triangle_pairs`], 200 pairs near the unit triangle and its half turn), per pair.
 //! * `region_scale`: the union of two gears of N cubic edges each ([`shapes::gear_pair`]) for
 //!   N = 100, 300, 1000, 3000, and the log-log slope of the time between consecutive sizes
-//!   (1 for linear growth, 2 for quadratic). A size whose single timed run takes longer than
+//!   (1 for linear growth, 2 for quadratic). A size whose first run takes longer than
+//!   [`CRITERION_LIMIT`] is timed by the median of 3 runs outside criterion; one longer than
 //!   [`SCALE_LIMIT`] stops the series with a printed note.
 //!
 //! Written beside criterion's output, in `$CARGO_TARGET_DIR/region/` (else `target/region/`):
@@ -35,7 +36,10 @@ use shapes::{Cubic, Triangle};
 /// The sizes of the scale series (edges per region).
 const SIZES: [usize; 4] = [100, 300, 1000, 3000];
 /// A size whose one timed run takes longer than this ends the series.
-const SCALE_LIMIT: Duration = Duration::from_secs(30);
+const SCALE_LIMIT: Duration = Duration::from_secs(60);
+/// A size whose one timed run takes longer than this is timed outside criterion (the median
+/// of 3 runs).
+const CRITERION_LIMIT: Duration = Duration::from_secs(2);
 /// The number of triangle pairs.
 const TRIANGLE_PAIRS: usize = 200;
 
@@ -214,13 +218,18 @@ fn main() {
                 measured.push((n, once.as_secs_f64()));
                 break;
             }
-            group.measurement_time(once.mul_f64(12.0).max(Duration::from_secs(2)));
-            group.bench_function(format!("union/{n}"), |bench| {
-                bench.iter(|| {
-                    boolean(black_box(&ra), black_box(&rb), BooleanOp::Union).expect("answered")
-                })
-            });
-            let runs = if once.as_secs_f64() > 2.0 { 3 } else { 7 };
+            // Criterion for the sizes that take a few seconds at most; the larger ones are
+            // timed by the median of 3 runs only.
+            if once <= CRITERION_LIMIT {
+                group.measurement_time(once.mul_f64(12.0).max(Duration::from_secs(2)));
+                group.bench_function(format!("union/{n}"), |bench| {
+                    bench.iter(|| {
+                        boolean(black_box(&ra), black_box(&rb), BooleanOp::Union)
+                            .expect("answered")
+                    })
+                });
+            }
+            let runs = if once > CRITERION_LIMIT { 3 } else { 7 };
             measured.push((
                 n,
                 median_time(runs, || {

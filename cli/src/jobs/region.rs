@@ -17,8 +17,9 @@
 //!   of a 2-core machine. A job whose estimate is over twice `--max-work` is refused
 //!   up front ([`within_budget`]) naming `regions` (or `triangles`), as `intersect` refuses its
 //!   curves: the exact solvers run on big integers that the meter of `restrict` does not see.
-//! * The work of a `winding` job is [`winding_work`]: one ray per point against every curve,
-//!   refused over twice `--max-work` naming `points`.
+//! * The work of a `winding` job is [`blossom::region::Region::winding_work`] (each curve's monotone breaks
+//!   once, then per point a box test against every curve and exact tests on the curves its
+//!   ray meets), refused over twice `--max-work` naming `points`.
 
 use super::args::Arithmetic;
 use super::intersect_jobs::within_budget;
@@ -27,8 +28,8 @@ use super::names::{did_you_mean, listed, quoted};
 use super::region_answer::{region_result, windings};
 use super::region_shapes::{points, region, triangle};
 use crate::number::json_type;
-use blossom::region::{boolean, boolean_work, triangle_intersection, BooleanOp, Region};
-use blossom::{Error, Rational};
+use blossom::region::{boolean, boolean_work, triangle_intersection, BooleanOp};
+use blossom::Error;
 use serde_json::{Map, Value};
 
 pub use blossom::region::MAX_REGION_DEGREE;
@@ -192,35 +193,8 @@ fn winding_job(
 ) -> Result<Value, Error> {
     let r = region(field(job, "region")?, "region", arithmetic)?;
     let points = points(field(job, "points")?, "points", arithmetic)?;
-    within_budget("points", winding_work(&r, &points), max_work)?;
+    within_budget("points", r.winding_work(points.len()), max_work)?;
     windings(&r, &points)
-}
-
-/// The estimated work of the winding numbers of `points` around `region`, in the units of
-/// [`boolean_work`] (about a nanosecond of a 2-core machine): per point and curve of degree n,
-/// `250 (n + 1)^1.5` units times a length factor `1 + (b / 64)^2 / 2` for the longest input
-/// number of b bits (numerator and denominator; exact products and gcds are quadratic in it).
-///
-/// Calibrated with the binary on stars of 32 curves of degrees 3, 8 and 16 and 30 to 6000
-/// points, on the curves (exact decisions) and on a grid (measured 1.0-1.4, 1.5-2.9 and
-/// 2.7-11 microseconds per point and curve; the formula gives 2.0, 6.8 and 17.5).
-pub fn winding_work(region: &Region, points: &[[Rational; 2]]) -> u128 {
-    let bits = |q: &Rational| q.numer().bits() + q.denom().bits();
-    let longest = points
-        .iter()
-        .flatten()
-        .chain(region.loops().iter().flatten().flat_map(|c| c.points().iter().flatten()))
-        .map(bits)
-        .max()
-        .unwrap_or(0) as f64;
-    let length = 1.0 + (longest / 64.0).powi(2) / 2.0;
-    let per_point: f64 = region
-        .loops()
-        .iter()
-        .flatten()
-        .map(|curve| 250.0 * (curve.degree() as f64 + 1.0).powf(1.5))
-        .sum();
-    (per_point * length * points.len() as f64).min(u128::MAX as f64) as u128
 }
 
 /// `error` re-addressed to `path` (the library names its own arguments).

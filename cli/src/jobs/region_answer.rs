@@ -40,7 +40,7 @@ pub fn region_result(
 fn edge(e: &Edge, triangle_edges: bool) -> Result<Value, Error> {
     let (from, to) = (param(&e.from)?, param(&e.to)?);
     Ok(if triangle_edges {
-        json!({"curve": 3 * e.region + e.curve, "from": from, "to": to})
+        json!({"curve": e.triangle_edge(), "from": from, "to": to})
     } else {
         json!({
             "region": e.region,

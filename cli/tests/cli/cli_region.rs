@@ -1013,10 +1013,28 @@ fn work_over_the_budget_is_refused_naming_the_field() {
 fn winding_jobs_are_estimated_before_they_run() {
     // A loop of two degree-16 curves and 200 points: milliseconds, answered by default.
     let upper: Vec<Value> = (0..=16)
-        .map(|i| json!([i, if i == 0 || i == 16 { 0 } else { 2 + (i % 5) as i64 }]))
+        .map(|i| {
+            json!([
+                i,
+                if i == 0 || i == 16 {
+                    0
+                } else {
+                    2 + (i % 5) as i64
+                }
+            ])
+        })
         .collect();
     let lower: Vec<Value> = (0..=16)
-        .map(|i| json!([16 - i, if i == 0 || i == 16 { 0 } else { -1 - (i % 3) as i64 }]))
+        .map(|i| {
+            json!([
+                16 - i,
+                if i == 0 || i == 16 {
+                    0
+                } else {
+                    -1 - (i % 3) as i64
+                }
+            ])
+        })
         .collect();
     let points: Vec<Value> = (0..200)
         .map(|i| json!([format!("{}/7", i % 20 * 6), format!("{}/5", i / 20 - 4)]))

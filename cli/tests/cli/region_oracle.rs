@@ -31,6 +31,9 @@ use num_traits::{Signed, Zero};
 use serde_json::{json, Value};
 use std::cmp::Ordering;
 
+/// The vertices of a polygon on the grid.
+type Vertices = Vec<[i64; 2]>;
+
 /// A directed segment of region `region` (0 for A, 1 for B).
 #[derive(Clone, Debug)]
 struct Seg {
@@ -374,7 +377,7 @@ fn random_loop(rng: &mut Rng, grid: i64, region: usize, segs: &mut Vec<Seg>) -> 
         });
         let degree = [1, 1, 1, 2, 3][(rng.next() % 5) as usize];
         let mid = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
-        let splits = rng.next() % 4 == 0
+        let splits = rng.next().is_multiple_of(4)
             && (a[0] + b[0]) % 2 == 0
             && (a[1] + b[1]) % 2 == 0
             && mid != a
@@ -415,11 +418,11 @@ fn random_grid_polygons_match_the_slab_oracle() {
         let mut regions = Vec::new();
         let mut evenodd = [false; 2];
         for (r, flag) in evenodd.iter_mut().enumerate() {
-            let loops_count = 1 + (rng.next() % 3 == 0) as usize;
+            let loops_count = 1 + rng.next().is_multiple_of(3) as usize;
             let loops: Vec<Value> = (0..loops_count)
                 .map(|_| random_loop(&mut rng, grid, r, &mut segs))
                 .collect();
-            *flag = rng.next() % 2 == 0;
+            *flag = rng.next().is_multiple_of(2);
             regions
                 .push(json!({"loops": loops, "fill": if *flag { "evenodd" } else { "nonzero" }}));
         }
@@ -439,7 +442,7 @@ fn random_grid_polygons_match_the_slab_oracle() {
 #[test]
 fn shared_edges_reversed_copies_and_vertices_on_edges_match_the_oracle() {
     let square = |x: i64, y: i64, s: i64| vec![[x, y], [x + s, y], [x + s, y + s], [x, y + s]];
-    let cases: Vec<(Vec<[i64; 2]>, Vec<[i64; 2]>)> = vec![
+    let cases: Vec<(Vertices, Vertices)> = vec![
         // The same square; its reversed copy; a half sharing two edges; a T-junction.
         (square(0, 0, 4), square(0, 0, 4)),
         (square(0, 0, 4), square(0, 0, 4).into_iter().rev().collect()),
@@ -546,7 +549,7 @@ fn the_winding_job_matches_the_exact_ray_count() {
         let loops: Vec<Value> = (0..2)
             .map(|_| random_loop(&mut rng, 4, 0, &mut segs))
             .collect();
-        let evenodd = rng.next() % 2 == 0;
+        let evenodd = rng.next().is_multiple_of(2);
         let samples: Vec<[Q; 2]> = (0..=8)
             .flat_map(|i| {
                 (0..=8).map(move |j| [Q::new(i.into(), 2.into()), Q::new(j.into(), 2.into())])
