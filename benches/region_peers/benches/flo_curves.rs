@@ -10,10 +10,10 @@
 //!   share an edge, two that touch at a corner, nested stars, a star and its copy moved along
 //!   one of its straight edges), intersection and union each. flo_curves' answer is wrong
 //!   when the area of its loops (each cubic's exact integral of x dy, summed with signs as
-//!   its loops run) is farther than `1e-6 B` from blossom's certified enclosure (B the area of
-//!   the input's box), grossly wrong when farther than `1e-2 B`; a panic counts as wrong.
-//!   flo_curves treats every loop as even-odd without orientation; the stars here run
-//!   counter-clockwise and do not cross themselves, where the two rules agree.
+//!   its loops nest, see [`flo_area`]) is farther than `1e-6 B` from blossom's certified
+//!   enclosure (B the area of the input's box), grossly wrong when farther than `1e-2 B`; a
+//!   panic counts as wrong. flo_curves treats every loop as even-odd without orientation; the
+//!   stars here run counter-clockwise and do not cross themselves, where the two rules agree.
 //!
 //! Run: `cd benches/region_peers && CARGO_TARGET_DIR=... cargo bench`. The summary is printed
 //! at the end and written to `$CARGO_TARGET_DIR/region/peers_summary.txt`.
@@ -46,33 +46,91 @@ fn path_of(curves: &[Cubic]) -> SimpleBezierPath {
     )
 }
 
-/// The signed area of closed cubic paths: the sum over their cubics of the integral of
-/// x dy, exact for the polynomial x(t) y'(t) of degree 5 by 3-point Gauss-Legendre.
-fn flo_area(paths: &[SimpleBezierPath]) -> f64 {
+/// The signed area of one closed cubic path: the sum over its cubics of the integral of x dy,
+/// exact for the polynomial x(t) y'(t) of degree 5 by 3-point Gauss-Legendre.
+fn path_area((start, curves): &SimpleBezierPath) -> f64 {
     let nodes = [
         (0.5 - 0.5 * (0.6f64).sqrt(), 5.0 / 18.0),
         (0.5, 8.0 / 18.0),
         (0.5 + 0.5 * (0.6f64).sqrt(), 5.0 / 18.0),
     ];
     let mut total = 0.0;
-    for (start, curves) in paths {
-        let mut p0 = *start;
-        for (c1, c2, p3) in curves {
-            let (x, y) = ([p0.0, c1.0, c2.0, p3.0], [p0.1, c1.1, c2.1, p3.1]);
-            for (t, w) in nodes {
-                let s = 1.0 - t;
-                let xt = s * s * s * x[0]
-                    + 3.0 * s * s * t * x[1]
-                    + 3.0 * s * t * t * x[2]
-                    + t * t * t * x[3];
-                let dy = 3.0
-                    * (s * s * (y[1] - y[0]) + 2.0 * s * t * (y[2] - y[1]) + t * t * (y[3] - y[2]));
-                total += w * xt * dy;
-            }
-            p0 = *p3;
+    let mut p0 = *start;
+    for (c1, c2, p3) in curves {
+        let (x, y) = ([p0.0, c1.0, c2.0, p3.0], [p0.1, c1.1, c2.1, p3.1]);
+        for (t, w) in nodes {
+            let s = 1.0 - t;
+            let xt = s * s * s * x[0]
+                + 3.0 * s * s * t * x[1]
+                + 3.0 * s * t * t * x[2]
+                + t * t * t * x[3];
+            let dy =
+                3.0 * (s * s * (y[1] - y[0]) + 2.0 * s * t * (y[2] - y[1]) + t * t * (y[3] - y[2]));
+            total += w * xt * dy;
         }
+        p0 = *p3;
     }
     total
+}
+
+/// A closed path sampled (32 points a cubic).
+fn sampled((start, curves): &SimpleBezierPath) -> Vec<[f64; 2]> {
+    let mut out = Vec::new();
+    let mut p0 = *start;
+    for (c1, c2, p3) in curves {
+        for k in 0..32 {
+            let t = k as f64 / 32.0;
+            let s = 1.0 - t;
+            let b = [s * s * s, 3.0 * s * s * t, 3.0 * s * t * t, t * t * t];
+            out.push([
+                b[0] * p0.0 + b[1] * c1.0 + b[2] * c2.0 + b[3] * p3.0,
+                b[0] * p0.1 + b[1] * c1.1 + b[2] * c2.1 + b[3] * p3.1,
+            ]);
+        }
+        p0 = *p3;
+    }
+    out
+}
+
+/// Whether `p` is inside the polygon by the even-odd rule.
+fn inside(polygon: &[[f64; 2]], p: [f64; 2]) -> bool {
+    let n = polygon.len();
+    let mut odd = false;
+    for i in 0..n {
+        let (a, b) = (polygon[i], polygon[(i + 1) % n]);
+        if (a[1] > p[1]) != (b[1] > p[1])
+            && p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+        {
+            odd = !odd;
+        }
+    }
+    odd
+}
+
+/// The area of flo_curves' answer. Its loops carry no orientation (it treats every edge as an
+/// exterior edge, like even-odd), so each loop counts with its absolute area, added at even
+/// nesting depth and subtracted at odd depth (the depth of a loop: how many other loops hold
+/// a point of it, the middle of its first cubic).
+fn flo_area(paths: &[SimpleBezierPath]) -> f64 {
+    let polygons: Vec<Vec<[f64; 2]>> = paths.iter().map(sampled).collect();
+    paths
+        .iter()
+        .enumerate()
+        .map(|(i, path)| {
+            let probe = polygons[i][polygons[i].len().min(16) - 1];
+            let depth = polygons
+                .iter()
+                .enumerate()
+                .filter(|(j, other)| *j != i && inside(other, probe))
+                .count();
+            let area = path_area(path).abs();
+            if depth % 2 == 0 {
+                area
+            } else {
+                -area
+            }
+        })
+        .sum()
 }
 
 fn flo(a: &SimpleBezierPath, b: &SimpleBezierPath, op: BooleanOp) -> Vec<SimpleBezierPath> {
