@@ -7,8 +7,8 @@
 //!   the same doubles; then the median of 21 timed runs of each, and their ratios.
 //! * The wrong answers of flo_curves on a corpus: 200 random star pairs
 //!   ([`shapes::random_star_pair`]) and degenerate pairs (a star and its copy, two squares that
-//!   share an edge, two that touch at a corner, nested stars, a star and its copy moved along
-//!   one of its straight edges), intersection and union each. flo_curves' answer is wrong
+//!   share an edge or half of one, two that touch at a corner, nested stars, a square and its
+//!   copy moved along its bottom edge), intersection and union each. flo_curves' answer is wrong
 //!   when the area of its loops (each cubic's exact integral of x dy, summed with signs as
 //!   its loops nest, see [`flo_area`]) is farther than `1e-6 B` from blossom's certified
 //!   enclosure (B the area of the input's box), grossly wrong when farther than `1e-2 B`; a
