@@ -224,8 +224,7 @@ fn main() {
                 group.measurement_time(once.mul_f64(12.0).max(Duration::from_secs(2)));
                 group.bench_function(format!("union/{n}"), |bench| {
                     bench.iter(|| {
-                        boolean(black_box(&ra), black_box(&rb), BooleanOp::Union)
-                            .expect("answered")
+                        boolean(black_box(&ra), black_box(&rb), BooleanOp::Union).expect("answered")
                     })
                 });
             }
