@@ -34,7 +34,7 @@ pub(crate) fn x_dy(power: &[Vec<Rational>; 2]) -> Vec<Rational> {
 }
 
 /// One term ± F(τ) of a sum.
-struct Term<'a> {
+pub(crate) struct Term<'a> {
     sign: bool,
     f: &'a [Rational],
     at: AlgebraicReal,
@@ -53,31 +53,32 @@ impl Term<'_> {
     }
 }
 
-/// An enclosure of the sum of the integrals of x dy over the runs, refined until
-/// `done(lo, hi)`.
-pub(crate) fn enclose_loops(
-    arr: &Arrangement,
-    loops: &[&[Run]],
-    done: impl Fn(&Rational, &Rational) -> bool,
-) -> (Rational, Rational) {
-    let mut terms: Vec<Term> = Vec::new();
-    for runs in loops {
-        for r in runs.iter() {
-            for (sign, k) in [(true, r.to), (false, r.from)] {
-                if arr.params[r.curve][k].exact().is_some_and(Zero::is_zero) {
-                    continue; // F(0) = 0.
-                }
-                let mut t = Term {
-                    sign,
-                    f: arr.curves[r.curve].x_dy(),
-                    at: arr.params[r.curve][k].clone(),
-                    enclosure: (Rational::zero(), Rational::zero()),
-                };
-                t.enclose();
-                terms.push(t);
+/// The terms ± F(τ) of the integrals of x dy over the runs of one loop.
+pub(crate) fn loop_terms<'a>(arr: &'a Arrangement, runs: &[Run]) -> Vec<Term<'a>> {
+    let mut terms = Vec::new();
+    for r in runs {
+        for (sign, k) in [(true, r.to), (false, r.from)] {
+            if arr.params[r.curve][k].exact().is_some_and(Zero::is_zero) {
+                continue; // F(0) = 0.
             }
+            let mut t = Term {
+                sign,
+                f: arr.curves[r.curve].x_dy(),
+                at: arr.params[r.curve][k].clone(),
+                enclosure: (Rational::zero(), Rational::zero()),
+            };
+            t.enclose();
+            terms.push(t);
         }
     }
+    terms
+}
+
+/// Refines the terms, widest first, until `done(lo, hi)` holds for their sum; returns it.
+pub(crate) fn refine_sum(
+    terms: &mut [Term],
+    done: impl Fn(&Rational, &Rational) -> bool,
+) -> (Rational, Rational) {
     loop {
         let lo: Rational = terms.iter().map(|t| &t.enclosure.0).sum();
         let hi: Rational = terms.iter().map(|t| &t.enclosure.1).sum();

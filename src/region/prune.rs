@@ -19,6 +19,7 @@
 //! Every sign is exact: a float filter with a rigorous error bound when the points are
 //! doubles, exact rational arithmetic otherwise or when the filter cannot tell.
 
+use super::curve::is_double;
 use crate::num::ring::{rational_to_f64, Rational};
 use num_traits::Zero;
 use std::cmp::Ordering;
@@ -41,14 +42,6 @@ fn unit(v: &[Rational; 2]) -> Option<[f64; 2]> {
 
 fn exact(v: [f64; 2]) -> Option<[Rational; 2]> {
     Some([Rational::from_float(v[0])?, Rational::from_float(v[1])?])
-}
-
-/// Whether the rational is exactly a normal double (or zero): a power-of-two denominator of at
-/// most 2^1000 and a numerator of at most 53 bits, so `rational_to_f64` is exact.
-fn is_double(r: &Rational) -> bool {
-    let d = r.denom();
-    let bits = d.bits();
-    r.numer().bits() <= 53 && bits <= 1000 && d.trailing_zeros() == Some(bits - 1)
 }
 
 /// The exact sign of n . (x - v) for a normal n of doubles: a float filter first (when x and
@@ -144,9 +137,14 @@ mod tests {
     fn doubles_are_recognised_exactly() {
         let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
         assert!(
-            super::is_double(&q(3, 8)) && super::is_double(&q(0, 1)) && super::is_double(&q(-5, 1))
+            crate::region::curve::is_double(&q(3, 8))
+                && crate::region::curve::is_double(&q(0, 1))
+                && crate::region::curve::is_double(&q(-5, 1))
         );
-        assert!(!super::is_double(&q(1, 3)) && !super::is_double(&q((1 << 54) + 1, 1)));
+        assert!(
+            !crate::region::curve::is_double(&q(1, 3))
+                && !crate::region::curve::is_double(&q((1 << 54) + 1, 1))
+        );
         for r in [q(3, 8), q(-7, 1024), q(1 << 52, 1)] {
             assert_eq!(
                 crate::intersect::algebraic::exact_f64(crate::rational_to_f64(&r)),

@@ -97,12 +97,12 @@ pub(crate) fn ray_count<'a>(
                 continue;
             }
             let surely_between = lo_b.1 < pb_lo && pb_hi < hi_b.0;
-            let (lo, hi, lo_param) = (&mono.values[lo_k], &mono.values[hi_k], &mono.params[lo_k]);
+            let lo_param = &mono.params[lo_k];
             let at_lo = if surely_between {
                 false
             } else {
-                let c = lo.cmp_rational(&p[b]);
-                if c == Ordering::Greater || hi.cmp_rational(&p[b]) != Ordering::Greater {
+                let c = mono.cmp_value(lo_k, &p[b]);
+                if c == Ordering::Greater || mono.cmp_value(hi_k, &p[b]) != Ordering::Greater {
                     continue;
                 }
                 c == Ordering::Equal
