@@ -9,8 +9,8 @@
 //! out), `curve` (`Curve`), `triangle` (`Triangle`, `CurvedPolygon`), `tensor` (`TensorPatch`),
 //! `records` (the certified answers), `power` (the power-form restrictions), `batch`
 //! (`restrict_curves`), `zeros` (`bezier_zeros`), `area` (exact signed areas), `length` (arc
-//! length by quadrature), `multi_eval` (evaluation at many parameters), `validity` (the exact
-//! sign of a triangle's Jacobian).
+//! length by quadrature), `validity` (the exact sign of a triangle's Jacobian), `region`
+//! (`CurvedRegion`, `Triangle.intersect`: the library's region booleans).
 
 // The pyclasses' methods are called from Python only.
 #![allow(clippy::new_ret_no_self)]
@@ -20,7 +20,6 @@ mod batch;
 mod curve;
 mod errors;
 mod length;
-mod multi_eval;
 mod numbers;
 mod power;
 mod records;
