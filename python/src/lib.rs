@@ -23,6 +23,7 @@ mod length;
 mod numbers;
 mod power;
 mod records;
+mod region;
 mod tensor;
 mod triangle;
 mod validity;
@@ -47,6 +48,8 @@ fn blossom(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<curve::Curve>()?;
     m.add_class::<triangle::Triangle>()?;
     m.add_class::<triangle::CurvedPolygon>()?;
+    m.add_class::<region::CurvedRegion>()?;
+    m.add_class::<region::BooleanResult>()?;
     m.add_class::<tensor::TensorPatchPy>()?;
     m.add_class::<records::Algebraic>()?;
     m.add_class::<records::IntersectionPoint>()?;
