@@ -8,7 +8,8 @@ use crate::records::{
     NearestPoint,
 };
 use blossom::{
-    curve_pair_work, self_intersection_work, BezierCurve, Intersections, Rational, Reduction, RoundedIntersections,
+    curve_pair_work, self_intersection_work, BezierCurve, Intersections, Rational, Reduction,
+    RoundedIntersections,
 };
 use num_rational::Ratio;
 use pyo3::prelude::*;

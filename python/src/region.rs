@@ -14,8 +14,8 @@ use crate::numbers::{read_array, rounded, Num};
 use crate::records::Algebraic;
 use crate::triangle::{to_bezier_order, CurvedPolygon, Triangle};
 use blossom::region::{
-    boolean, boolean_work, triangle_intersection, BooleanOp, Edge, FillRule, Region,
-    RegionResult, Winding,
+    boolean, boolean_work, triangle_intersection, BooleanOp, Edge, FillRule, Region, RegionResult,
+    Winding,
 };
 use blossom::{AlgebraicReal, Bezier, BezierCurve, Rational};
 use num_traits::{One, Zero};
@@ -38,7 +38,10 @@ fn planar_bezier(c: &Curve, path: &str) -> PyResult<Bezier<Rational, 2>> {
         return Err(bad(
             path,
             "Dimension",
-            format!("regions are planar (dimension 2), found dimension {}", c.dim()),
+            format!(
+                "regions are planar (dimension 2), found dimension {}",
+                c.dim()
+            ),
         ));
     }
     let points = c

@@ -593,7 +593,9 @@ impl Triangle {
     ) -> PyResult<Py<PyList>> {
         let _ = (strategy, verify);
         let other = other.cast::<Triangle>().map_err(|_| {
-            pyo3::exceptions::PyTypeError::new_err("other: can only intersect with another Triangle")
+            pyo3::exceptions::PyTypeError::new_err(
+                "other: can only intersect with another Triangle",
+            )
         })?;
         crate::region::triangle_intersect(py, self, other.get(), max_work)
     }

@@ -101,7 +101,8 @@ mod tests {
                 c = c * Rational::from_integer(((n - k) as i64).into())
                     / Rational::from_integer(((k + 1) as i64).into());
             }
-            let basis = c * num_traits::Pow::pow(t, j as u32)
+            let basis = c
+                * num_traits::Pow::pow(t, j as u32)
                 * num_traits::Pow::pow(&(one.clone() - t), (n - j) as u32);
             for (o, x) in out.iter_mut().zip(w) {
                 *o = o.clone() + basis.clone() * x;
@@ -114,7 +115,13 @@ mod tests {
     fn f64_is_bitwise_eval_into_and_rational_is_exact() {
         // Degree 5 in 3-D, 19 parameters: two full blocks and a short one.
         let pts: Vec<Vec<f64>> = (0..6)
-            .map(|j| vec![j as f64 * 0.3 - 1.0, (j * j) as f64 / 7.0, 1.0 / (j as f64 + 1.5)])
+            .map(|j| {
+                vec![
+                    j as f64 * 0.3 - 1.0,
+                    (j * j) as f64 / 7.0,
+                    1.0 / (j as f64 + 1.5),
+                ]
+            })
             .collect();
         let c = BezierCurve::new(pts.clone()).unwrap();
         let ts: Vec<f64> = (0..19).map(|m| m as f64 / 17.0 - 0.05).collect();
@@ -125,12 +132,20 @@ mod tests {
         for (m, t) in ts.iter().enumerate() {
             c.eval_into(t, &mut one, &mut level);
             for x in 0..3 {
-                assert_eq!(out[m * 3 + x].to_bits(), one[x].to_bits(), "t = {t}, x = {x}");
+                assert_eq!(
+                    out[m * 3 + x].to_bits(),
+                    one[x].to_bits(),
+                    "t = {t}, x = {x}"
+                );
             }
         }
         let exact: Vec<Vec<Rational>> = pts
             .iter()
-            .map(|p| p.iter().map(|&x| Rational::from_float(x).unwrap()).collect())
+            .map(|p| {
+                p.iter()
+                    .map(|&x| Rational::from_float(x).unwrap())
+                    .collect()
+            })
             .collect();
         let ce = BezierCurve::new(exact.clone()).unwrap();
         let tq: Vec<Rational> = (0..11)
