@@ -265,7 +265,7 @@ impl CurvedRegion {
     }
 
     /// `self ∩ other`, certified (see `BooleanResult`).
-    #[pyo3(signature = (other, max_work = None))]
+    #[pyo3(signature = (other, *, max_work = None))]
     fn intersection(
         &self,
         py: Python<'_>,
@@ -276,7 +276,7 @@ impl CurvedRegion {
     }
 
     /// `self ∪ other`, certified.
-    #[pyo3(signature = (other, max_work = None))]
+    #[pyo3(signature = (other, *, max_work = None))]
     fn union(
         &self,
         py: Python<'_>,
@@ -287,7 +287,7 @@ impl CurvedRegion {
     }
 
     /// `self - other`, certified.
-    #[pyo3(signature = (other, max_work = None))]
+    #[pyo3(signature = (other, *, max_work = None))]
     fn difference(
         &self,
         py: Python<'_>,
@@ -298,7 +298,7 @@ impl CurvedRegion {
     }
 
     /// `(self - other) ∪ (other - self)`, certified.
-    #[pyo3(signature = (other, max_work = None))]
+    #[pyo3(signature = (other, *, max_work = None))]
     fn xor(
         &self,
         py: Python<'_>,
@@ -310,7 +310,7 @@ impl CurvedRegion {
 
     /// The exact winding number of each column of the `2 x M` array `points` (floats read
     /// exactly, or Fractions): an int, or None for a point on a loop.
-    #[pyo3(signature = (points, max_work = None))]
+    #[pyo3(signature = (points, *, max_work = None))]
     fn winding<'py>(
         &self,
         py: Python<'py>,

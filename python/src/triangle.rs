@@ -582,7 +582,7 @@ impl Triangle {
     /// `CurvedPolygon` per component of the intersection (counter-clockwise), its edges the
     /// pieces of the triangles' edges. `strategy` and `verify` are accepted for bezier's
     /// signature and ignored (there is one, exact, method). Refused over `max_work`.
-    #[pyo3(signature = (other, strategy = None, verify = true, max_work = None))]
+    #[pyo3(signature = (other, strategy = None, verify = true, *, max_work = None))]
     fn intersect(
         &self,
         py: Python<'_>,
