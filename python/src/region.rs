@@ -209,7 +209,7 @@ impl CurvedRegion {
             pyo3::exceptions::PyTypeError::new_err("other: expected a CurvedRegion")
         })?;
         let other = other.get();
-        check_work(boolean_work(&self.region, &other.region), max_work)?;
+        check_boolean_work(&self.region, &other.region, max_work)?;
         let (a, b) = (&self.region, &other.region);
         let r = call_detached(py, &[], || boolean(a, b, op))?;
         result_of(py, &r, [&self.curves, &other.curves])
@@ -347,6 +347,25 @@ impl CurvedRegion {
     }
 }
 
+/// Curves (both regions together) up to which a boolean is never estimated, when every
+/// degree is at most [`SMALL_DEGREE`]: two triangles of degree <= 4 answer in milliseconds,
+/// and `boolean_work` itself (the float filter on every close pair) would cost a large part
+/// of that.
+const SMALL_CURVES: usize = 8;
+const SMALL_DEGREE: usize = 4;
+
+/// Refuses a boolean whose estimated work (`boolean_work`) is over `max_work`; small inputs
+/// (bounded by [`SMALL_CURVES`] and [`SMALL_DEGREE`]) are not estimated.
+fn check_boolean_work(a: &Region, b: &Region, max_work: Option<f64>) -> PyResult<()> {
+    let curves = || a.loops().iter().chain(b.loops()).flatten();
+    let small =
+        curves().count() <= SMALL_CURVES && curves().all(|c| c.points().len() <= SMALL_DEGREE + 1);
+    if small && max_work.is_none() {
+        return Ok(());
+    }
+    check_work(boolean_work(a, b), max_work)
+}
+
 fn fill_rule_arg(name: &str) -> PyResult<FillRule> {
     fill_rule(name)
 }
@@ -395,7 +414,7 @@ pub fn triangle_intersect(
     let max_work = max_work_arg(max_work)?;
     let a = triangle_region(t1, "self")?;
     let b = triangle_region(t2, "other")?;
-    check_work(boolean_work(&a.region, &b.region), max_work)?;
+    check_boolean_work(&a.region, &b.region, max_work)?;
     let (ra, rb) = (&a.region, &b.region);
     let r = call_detached(py, &[], || triangle_intersection(ra, rb))?;
     let out = PyList::empty(py);
