@@ -8,11 +8,7 @@ use crate::records::{
     NearestPoint,
 };
 use blossom::budget::{curve_pair_work, self_intersection_work};
-use blossom::{
-    intersect_curves, intersect_curves_f64_rounded, nearest_point, nearest_point_f64,
-    self_intersections, tight_bounding_box, tight_bounding_box_f64, BezierCurve, Intersections,
-    Rational, Reduction, RoundedIntersections,
-};
+use blossom::{BezierCurve, Intersections, Rational, Reduction, RoundedIntersections};
 use num_rational::Ratio;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
@@ -174,7 +170,8 @@ impl Curve {
         let p = self.planar_exact("self")?;
         let q = other.planar_exact("other")?;
         self.check_pair_work(other, &p, &q, max_work)?;
-        call_detached(py, &PAIR, || intersect_curves(&p, &q))
+        let (a, b) = (self.exact_curve(), other.exact_curve());
+        call_detached(py, &PAIR, || a.intersect(&b))
     }
 
     /// Every self-intersection, exactly.
@@ -187,25 +184,26 @@ impl Curve {
         if self.degree() * self.degree() > ALWAYS_CHEAP {
             check_work(self_intersection_work(&p), max_work)?;
         }
-        call_detached(py, &SELF, || self_intersections(&p))
+        let a = self.exact_curve();
+        call_detached(py, &SELF, || a.self_intersections())
     }
 }
 
-/// The Rust names of `intersect_curves`' arguments as Python's.
+/// The Rust names of `BezierCurve::intersect`'s arguments as Python's.
 const PAIR: [Rename; 2] = [
     Rename {
-        rust: "p",
+        rust: "control_points",
         python: "self.nodes",
         points: true,
     },
     Rename {
-        rust: "q",
+        rust: "other.control_points",
         python: "other.nodes",
         points: true,
     },
 ];
 const SELF: [Rename; 1] = [Rename {
-    rust: "curve",
+    rust: "control_points",
     python: "self.nodes",
     points: true,
 }];
@@ -315,7 +313,7 @@ impl Curve {
                 points: true,
             },
             Rename {
-                rust: "q",
+                rust: "point",
                 python: "point",
                 points: false,
             },
@@ -327,13 +325,13 @@ impl Curve {
                     .iter()
                     .chain(&qf)
                     .fold(1.0f64, |m, x| m.max(x.abs()));
-                let near = call_detached(py, &renames, || nearest_point_f64(c, &qf))?;
+                let near = call_detached(py, &renames, || c.nearest_point(&qf))?;
                 Ok((near, Some(scale)))
             }
             (_, q) => {
                 let ce = self.exact_curve();
                 let qe = Rational::of_coords(q, "point")?;
-                let near = call_detached(py, &renames, || nearest_point(&ce, &qe))?;
+                let near = call_detached(py, &renames, || ce.nearest_point(&qe))?;
                 Ok((near, None))
             }
         }
@@ -495,10 +493,7 @@ impl Curve {
             CurveShape::F64(c) => {
                 let s = f64::values(s_vals, "s_vals")?;
                 let mut out = vec![0.0; c.dim() * s.len()];
-                call(&[], || {
-                    crate::multi_eval::eval_many(c.coordinates(), c.dim(), &s, &mut out);
-                    Ok(())
-                })?;
+                call(&[], || c.eval_many(&s, &mut out))?;
                 f64::columns(py, c.dim(), s.len(), out)
             }
             CurveShape::Exact(c) => evaluate_multi(py, c, s_vals),
@@ -606,13 +601,13 @@ impl Curve {
         })?;
         let other = other.get();
         if let Some((a, b)) = self.both_f64(other) {
-            let p = Self::planar(a, "self")?;
-            let q = Self::planar(b, "other")?;
+            Self::planar(a, "self")?;
+            Self::planar(b, "other")?;
             if self.degree() * other.degree() > ALWAYS_CHEAP {
                 let (pe, qe) = (self.planar_exact("self")?, other.planar_exact("other")?);
                 self.check_pair_work(other, &pe, &qe, max_work)?;
             }
-            let x = call_detached(py, &PAIR, || intersect_curves_f64_rounded(&p, &q))?;
+            let x = call_detached(py, &PAIR, || a.intersect_rounded(b))?;
             return pairs_array(py, rounded_pairs(&x));
         }
         let x = self.exact_intersections(py, other, max_work)?;
@@ -711,8 +706,8 @@ impl Curve {
             points: true,
         }];
         match &self.shape {
-            CurveShape::F64(c) => call_detached(py, &renames, || tight_bounding_box_f64(c)),
-            CurveShape::Exact(c) => call_detached(py, &renames, || Ok(tight_bounding_box(c))),
+            CurveShape::F64(c) => call_detached(py, &renames, || c.bounding_box()),
+            CurveShape::Exact(c) => call_detached(py, &renames, || c.bounding_box()),
         }
     }
 }

@@ -9,8 +9,8 @@
 //! out), `curve` (`Curve`), `triangle` (`Triangle`, `CurvedPolygon`), `tensor` (`TensorPatch`),
 //! `records` (the certified answers), `power` (the power-form restrictions), `batch`
 //! (`restrict_curves`), `zeros` (`bezier_zeros`), `area` (exact signed areas), `length` (arc
-//! length by quadrature), `multi_eval` (evaluation at many parameters), `validity` (the exact
-//! sign of a triangle's Jacobian).
+//! length by quadrature), `validity` (the exact sign of a triangle's Jacobian), `region`
+//! (`CurvedRegion`, `Triangle.intersect`: the library's region booleans).
 
 // The pyclasses' methods are called from Python only.
 #![allow(clippy::new_ret_no_self)]
@@ -20,10 +20,10 @@ mod batch;
 mod curve;
 mod errors;
 mod length;
-mod multi_eval;
 mod numbers;
 mod power;
 mod records;
+mod region;
 mod tensor;
 mod triangle;
 mod validity;
@@ -48,6 +48,8 @@ fn blossom(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<curve::Curve>()?;
     m.add_class::<triangle::Triangle>()?;
     m.add_class::<triangle::CurvedPolygon>()?;
+    m.add_class::<region::CurvedRegion>()?;
+    m.add_class::<region::BooleanResult>()?;
     m.add_class::<tensor::TensorPatchPy>()?;
     m.add_class::<records::Algebraic>()?;
     m.add_class::<records::IntersectionPoint>()?;

@@ -11,9 +11,8 @@ use crate::curve::{curves_tuple, Curve, CurveShape, WrapCurve};
 use crate::errors::{bad, call, Rename};
 use crate::numbers::{read_array, rounded, Coords, Num};
 use blossom::{elevate_triangle, BezierCurve, Rational, TriangularPatch};
-use pyo3::exceptions::PyNotImplementedError;
 use pyo3::prelude::*;
-use pyo3::types::PyTuple;
+use pyo3::types::{PyList, PyTuple};
 
 /// A triangle's points in one of the two number types (library order).
 #[derive(Clone)]
@@ -160,15 +159,22 @@ impl Triangle {
         Ok(Triangle { shape })
     }
 
-    fn degree(&self) -> usize {
+    pub fn degree(&self) -> usize {
         on_triangle!(&self.shape, p => p.degree())
     }
 
-    fn dim(&self) -> usize {
+    pub fn dim(&self) -> usize {
         on_triangle!(&self.shape, p => p.dim())
     }
 
-    fn exact_patch(&self) -> TriangularPatch<Rational> {
+    /// The three edges as Curves, in bezier's order.
+    pub fn edge_curves(&self) -> Vec<Curve> {
+        on_triangle!(&self.shape, p => {
+            edges_of(p).into_iter().map(|c| Curve { shape: WrapCurve::wrap(c) }).collect()
+        })
+    }
+
+    pub fn exact_patch(&self) -> TriangularPatch<Rational> {
         match &self.shape {
             TriangleShape::Exact(p) => p.clone(),
             TriangleShape::F64(p) => {
@@ -569,20 +575,29 @@ impl Triangle {
         })
     }
 
-    /// Intersection of two triangles: needs the library's region layer (`blossom::region`),
-    /// which this build does not have yet.
-    #[pyo3(signature = (other, strategy = None, verify = true))]
+    /// The intersection with the planar triangle `other`, certified (the library's region
+    /// booleans, exact for the nodes), as Python bezier returns it: a list, `[]` when the
+    /// triangles do not overlap (also when they only touch along an edge or at a point, where
+    /// bezier may raise), `[self]` or `[other]` when one lies inside the other, else one
+    /// `CurvedPolygon` per component of the intersection (counter-clockwise), its edges the
+    /// pieces of the triangles' edges. `strategy` and `verify` are accepted for bezier's
+    /// signature and ignored (there is one, exact, method). Refused over `max_work`.
+    #[pyo3(signature = (other, strategy = None, verify = true, *, max_work = None))]
     fn intersect(
         &self,
+        py: Python<'_>,
         other: &Bound<'_, PyAny>,
         strategy: Option<&Bound<'_, PyAny>>,
         verify: bool,
-    ) -> PyResult<Py<PyAny>> {
-        let _ = (other, strategy, verify);
-        Err(PyNotImplementedError::new_err(
-            "Triangle.intersect needs the library's region layer (blossom::region: region \
-             booleans, issue 'regions'), which is not in this build of blossom yet",
-        ))
+        max_work: Option<f64>,
+    ) -> PyResult<Py<PyList>> {
+        let _ = (strategy, verify);
+        let other = other.cast::<Triangle>().map_err(|_| {
+            pyo3::exceptions::PyTypeError::new_err(
+                "other: can only intersect with another Triangle",
+            )
+        })?;
+        crate::region::triangle_intersect(py, self, other.get(), max_work)
     }
 }
 
@@ -610,6 +625,16 @@ fn end_points(c: &Curve) -> (Vec<f64>, Vec<f64>) {
     };
     let d = c.dim();
     (coords[..d].to_vec(), coords[coords.len() - d..].to_vec())
+}
+
+impl CurvedPolygon {
+    /// A polygon of the pieces of a region result (closed exactly by construction).
+    pub fn of_pieces(edges: Vec<Curve>) -> CurvedPolygon {
+        CurvedPolygon {
+            edges,
+            metadata: None,
+        }
+    }
 }
 
 #[pymethods]

@@ -162,10 +162,12 @@ def test_is_valid_decides_the_jacobian_sign():
     assert blossom.Triangle(QUADRATIC, 2).elevate().elevate().is_valid
 
 
-def test_triangle_intersect_names_the_missing_layer():
+def test_triangle_intersect_with_itself_is_itself():
+    # bezier raises on coincident triangles; the regularized intersection is the triangle.
     t = blossom.Triangle(QUADRATIC, 2)
-    with pytest.raises(NotImplementedError, match="region"):
-        t.intersect(t)
+    (got,) = t.intersect(t)
+    assert isinstance(got, blossom.Triangle)
+    assert np.array_equal(got.nodes, t.nodes)
 
 
 def test_curved_polygon_area_and_sides():

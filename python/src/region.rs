@@ -1,0 +1,448 @@
+//! The library's region layer (`blossom::region`) for Python: `CurvedRegion` (loops of planar
+//! Curves with a fill rule) with the certified booleans and exact winding numbers,
+//! `BooleanResult` (the result's loops as `CurvedPolygon`s, their exact edge records and the
+//! area enclosure), and `Triangle.intersect` (bezier's return convention).
+//!
+//! Every decision is the library's, exact for the input numbers (float64 nodes are read
+//! exactly). The result's edges are pieces of the input curves between exact parameters; a
+//! piece is an exact Curve when the input curve is exact and both parameters are rational,
+//! else a float64 Curve over the correctly rounded parameters.
+
+use crate::curve::{check_work, max_work_arg, Curve, CurveShape};
+use crate::errors::{bad, call_detached};
+use crate::numbers::{read_array, rounded, Num};
+use crate::records::Algebraic;
+use crate::triangle::{to_bezier_order, CurvedPolygon, Triangle};
+use blossom::region::{
+    boolean, boolean_work, triangle_intersection, BooleanOp, Edge, FillRule, Region, RegionResult,
+    Winding,
+};
+use blossom::{AlgebraicReal, Bezier, BezierCurve, Rational};
+use num_traits::{One, Zero};
+use pyo3::prelude::*;
+use pyo3::types::PyList;
+
+/// A planar region bounded by closed loops of Curves (each curve starting exactly where the
+/// previous one ends), filled by the rule `fill_rule`: `"nonzero"` (default) or `"evenodd"`,
+/// as SVG's. Loops may cross themselves and each other and run either way.
+#[pyclass(module = "blossom", frozen)]
+pub struct CurvedRegion {
+    region: Region,
+    /// The input curves as given (`loops[l][c]`), for the pieces of a result.
+    curves: Vec<Vec<Curve>>,
+}
+
+/// The exact planar control points of `c`, the argument at `path`.
+fn planar_bezier(c: &Curve, path: &str) -> PyResult<Bezier<Rational, 2>> {
+    if c.dim() != 2 {
+        return Err(bad(
+            path,
+            "Dimension",
+            format!(
+                "regions are planar (dimension 2), found dimension {}",
+                c.dim()
+            ),
+        ));
+    }
+    let points = c
+        .exact_curve()
+        .coordinates()
+        .chunks_exact(2)
+        .map(|p| [p[0].clone(), p[1].clone()])
+        .collect();
+    Bezier::new(points).map_err(|e| bad(path, &format!("{:?}", e.kind()), &e.message))
+}
+
+fn fill_rule(name: &str) -> PyResult<FillRule> {
+    match name {
+        "nonzero" => Ok(FillRule::NonZero),
+        "evenodd" => Ok(FillRule::EvenOdd),
+        other => Err(bad(
+            "fill_rule",
+            "Invalid",
+            format!("expected \"nonzero\" or \"evenodd\", found {other:?}"),
+        )),
+    }
+}
+
+/// A Curve argument, or a `2 x N` nodes array, at `path`.
+fn curve_arg(obj: &Bound<'_, PyAny>, path: &str) -> PyResult<Curve> {
+    match obj.cast::<Curve>() {
+        Ok(c) => Ok(c.get().clone()),
+        Err(_) => Curve::read(obj, path),
+    }
+}
+
+/// The piece of `c` from `e.from` to `e.to`, traversed that way.
+fn piece(c: &Curve, e: &Edge) -> Curve {
+    let (zero, one) = (Rational::zero(), Rational::one());
+    let whole = |x: Option<&Rational>, v: &Rational| x == Some(v);
+    let reversed = |coords: &[f64], dim: usize| -> Vec<f64> {
+        coords.chunks_exact(dim).rev().flatten().copied().collect()
+    };
+    if whole(e.from.exact(), &zero) && whole(e.to.exact(), &one) {
+        return c.clone();
+    }
+    if whole(e.from.exact(), &one) && whole(e.to.exact(), &zero) {
+        let shape = match &c.shape {
+            CurveShape::F64(x) => CurveShape::F64(
+                BezierCurve::from_coordinates(x.dim(), reversed(x.coordinates(), x.dim()))
+                    .expect("the shape of a curve"),
+            ),
+            CurveShape::Exact(x) => {
+                let coords = x
+                    .coordinates()
+                    .chunks_exact(x.dim())
+                    .rev()
+                    .flatten()
+                    .cloned()
+                    .collect();
+                CurveShape::Exact(
+                    BezierCurve::from_coordinates(x.dim(), coords).expect("the shape of a curve"),
+                )
+            }
+        };
+        return Curve { shape };
+    }
+    let shape = match (&c.shape, e.from.exact(), e.to.exact()) {
+        (CurveShape::Exact(x), Some(a), Some(b)) => {
+            CurveShape::Exact(x.subsegment(a.clone()..b.clone()))
+        }
+        (CurveShape::F64(x), _, _) => CurveShape::F64(x.subsegment(e.from.to_f64()..e.to.to_f64())),
+        (CurveShape::Exact(x), _, _) => {
+            let rounded_curve = BezierCurve::from_coordinates(x.dim(), rounded(x.coordinates()))
+                .expect("the shape of a curve");
+            CurveShape::F64(rounded_curve.subsegment(e.from.to_f64()..e.to.to_f64()))
+        }
+    };
+    Curve { shape }
+}
+
+/// The result of a boolean: `polygons[k]` is loop k as a `CurvedPolygon` of pieces of the
+/// input curves (the result lies to its left: outer loops counter-clockwise), `holes[k]`
+/// whether it bounds a hole, `edges[k]` its exact edge records
+/// `(region, loop_index, curve, from, to)` (region 0 for `self`, 1 for `other`; `from`, `to`
+/// `Algebraic` parameters on that input curve), and `area` = `(lo, hi)`, a certified
+/// enclosure of the exact area (lo <= area <= hi, hi - lo <= 2^-40 times the area of the box
+/// of every input node; `(0.0, 0.0)` for an empty result).
+#[pyclass(module = "blossom", frozen)]
+pub struct BooleanResult {
+    #[pyo3(get)]
+    polygons: Py<PyList>,
+    #[pyo3(get)]
+    holes: Vec<bool>,
+    #[pyo3(get)]
+    edges: Py<PyList>,
+    #[pyo3(get)]
+    area: (f64, f64),
+}
+
+#[pymethods]
+impl BooleanResult {
+    fn __repr__(&self) -> String {
+        format!(
+            "<BooleanResult (loops={}, area in [{:e}, {:e}])>",
+            self.holes.len(),
+            self.area.0,
+            self.area.1
+        )
+    }
+}
+
+fn algebraic(py: Python<'_>, a: &AlgebraicReal) -> PyResult<Py<Algebraic>> {
+    Py::new(py, Algebraic { inner: a.clone() })
+}
+
+/// The pieces of one result loop, with the input curves of the two operands.
+fn loop_polygon(
+    py: Python<'_>,
+    edges: &[Edge],
+    sources: [&[Vec<Curve>]; 2],
+) -> PyResult<Py<CurvedPolygon>> {
+    let pieces = edges
+        .iter()
+        .map(|e| piece(&sources[e.region][e.loop_index][e.curve], e))
+        .collect();
+    Py::new(py, CurvedPolygon::of_pieces(pieces))
+}
+
+fn result_of(
+    py: Python<'_>,
+    r: &RegionResult,
+    sources: [&[Vec<Curve>]; 2],
+) -> PyResult<BooleanResult> {
+    let polygons = PyList::empty(py);
+    let edges = PyList::empty(py);
+    for l in &r.loops {
+        polygons.append(loop_polygon(py, &l.edges, sources)?)?;
+        let records = PyList::empty(py);
+        for e in &l.edges {
+            let record = (
+                e.region,
+                e.loop_index,
+                e.curve,
+                algebraic(py, &e.from)?,
+                algebraic(py, &e.to)?,
+            );
+            records.append(record)?;
+        }
+        edges.append(records)?;
+    }
+    Ok(BooleanResult {
+        polygons: polygons.unbind(),
+        holes: r.loops.iter().map(|l| l.hole).collect(),
+        edges: edges.unbind(),
+        area: (r.area[0], r.area[1]),
+    })
+}
+
+impl CurvedRegion {
+    fn run(
+        &self,
+        py: Python<'_>,
+        other: &Bound<'_, PyAny>,
+        op: BooleanOp,
+        max_work: Option<f64>,
+    ) -> PyResult<BooleanResult> {
+        let max_work = max_work_arg(max_work)?;
+        let other = other.cast::<CurvedRegion>().map_err(|_| {
+            pyo3::exceptions::PyTypeError::new_err("other: expected a CurvedRegion")
+        })?;
+        let other = other.get();
+        check_boolean_work(&self.region, &other.region, max_work)?;
+        let (a, b) = (&self.region, &other.region);
+        let r = call_detached(py, &[], || boolean(a, b, op))?;
+        result_of(py, &r, [&self.curves, &other.curves])
+    }
+}
+
+#[pymethods]
+impl CurvedRegion {
+    #[new]
+    #[pyo3(signature = (loops, fill_rule = "nonzero"))]
+    fn new(loops: &Bound<'_, PyAny>, fill_rule: &str) -> PyResult<Self> {
+        let fill = fill_rule_arg(fill_rule)?;
+        let mut curves = Vec::new();
+        let mut exact = Vec::new();
+        for (l, lp) in loops.try_iter()?.enumerate() {
+            let lp = lp?;
+            let mut row = Vec::new();
+            let mut row_exact = Vec::new();
+            for (c, obj) in lp.try_iter()?.enumerate() {
+                let path = format!("loops[{l}][{c}]");
+                let curve = curve_arg(&obj?, &path)?;
+                row_exact.push(planar_bezier(&curve, &path)?);
+                row.push(curve);
+            }
+            curves.push(row);
+            exact.push(row_exact);
+        }
+        // The library's paths are relative to the region: `loops[l][c]`, as Python's.
+        let region = crate::errors::call(&[], || Region::new(exact, fill))?;
+        Ok(CurvedRegion { region, curves })
+    }
+
+    /// The region of a planar `Triangle` (the loop of its three edges, fill nonzero).
+    #[staticmethod]
+    fn from_triangle(triangle: &Triangle) -> PyResult<Self> {
+        triangle_region(triangle, "triangle")
+    }
+
+    /// The number of loops.
+    #[getter]
+    fn num_loops(&self) -> usize {
+        self.curves.len()
+    }
+
+    /// The loops as tuples of Curves.
+    #[getter]
+    fn loops<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        let out = PyList::empty(py);
+        for row in &self.curves {
+            out.append(crate::curve::curves_tuple(py, row.clone())?)?;
+        }
+        Ok(out)
+    }
+
+    /// `self ∩ other`, certified (see `BooleanResult`).
+    #[pyo3(signature = (other, *, max_work = None))]
+    fn intersection(
+        &self,
+        py: Python<'_>,
+        other: &Bound<'_, PyAny>,
+        max_work: Option<f64>,
+    ) -> PyResult<BooleanResult> {
+        self.run(py, other, BooleanOp::Intersection, max_work)
+    }
+
+    /// `self ∪ other`, certified.
+    #[pyo3(signature = (other, *, max_work = None))]
+    fn union(
+        &self,
+        py: Python<'_>,
+        other: &Bound<'_, PyAny>,
+        max_work: Option<f64>,
+    ) -> PyResult<BooleanResult> {
+        self.run(py, other, BooleanOp::Union, max_work)
+    }
+
+    /// `self - other`, certified.
+    #[pyo3(signature = (other, *, max_work = None))]
+    fn difference(
+        &self,
+        py: Python<'_>,
+        other: &Bound<'_, PyAny>,
+        max_work: Option<f64>,
+    ) -> PyResult<BooleanResult> {
+        self.run(py, other, BooleanOp::Difference, max_work)
+    }
+
+    /// `(self - other) ∪ (other - self)`, certified.
+    #[pyo3(signature = (other, *, max_work = None))]
+    fn xor(
+        &self,
+        py: Python<'_>,
+        other: &Bound<'_, PyAny>,
+        max_work: Option<f64>,
+    ) -> PyResult<BooleanResult> {
+        self.run(py, other, BooleanOp::Xor, max_work)
+    }
+
+    /// The exact winding number of each column of the `2 x M` array `points` (floats read
+    /// exactly, or Fractions): an int, or None for a point on a loop.
+    #[pyo3(signature = (points, *, max_work = None))]
+    fn winding<'py>(
+        &self,
+        py: Python<'py>,
+        points: &Bound<'py, PyAny>,
+        max_work: Option<f64>,
+    ) -> PyResult<Bound<'py, PyList>> {
+        let max_work = max_work_arg(max_work)?;
+        let read = read_array(points, "points", 2, "2 x M, one column per point")?;
+        if read.shape[0] != 2 {
+            return Err(bad(
+                "points",
+                "Dimension",
+                format!("expected 2 rows (x, y), found {}", read.shape[0]),
+            ));
+        }
+        let m = read.shape[1];
+        let c = Rational::of_coords(read.coords, "points")?;
+        let pts: Vec<[Rational; 2]> = (0..m).map(|k| [c[k].clone(), c[m + k].clone()]).collect();
+        check_work(self.region.winding_work(m), max_work)?;
+        let region = &self.region;
+        let w = call_detached(py, &[], || Ok(region.windings(&pts)))?;
+        let out = PyList::empty(py);
+        for x in w {
+            match x {
+                Winding::Boundary => out.append(py.None())?,
+                Winding::Number(n) => out.append(n)?,
+            }
+        }
+        Ok(out)
+    }
+
+    fn __repr__(&self) -> String {
+        format!("<CurvedRegion (num_loops={})>", self.curves.len())
+    }
+}
+
+/// Curves (both regions together) up to which a boolean is never estimated, when every
+/// degree is at most [`SMALL_DEGREE`]: two triangles of degree <= 4 answer in milliseconds,
+/// and `boolean_work` itself (the float filter on every close pair) would cost a large part
+/// of that.
+const SMALL_CURVES: usize = 8;
+const SMALL_DEGREE: usize = 4;
+
+/// Refuses a boolean whose estimated work (`boolean_work`) is over `max_work`; small inputs
+/// (bounded by [`SMALL_CURVES`] and [`SMALL_DEGREE`]) are not estimated.
+fn check_boolean_work(a: &Region, b: &Region, max_work: Option<f64>) -> PyResult<()> {
+    let curves = || a.loops().iter().chain(b.loops()).flatten();
+    let small =
+        curves().count() <= SMALL_CURVES && curves().all(|c| c.points().len() <= SMALL_DEGREE + 1);
+    if small && max_work.is_none() {
+        return Ok(());
+    }
+    check_work(boolean_work(a, b), max_work)
+}
+
+fn fill_rule_arg(name: &str) -> PyResult<FillRule> {
+    fill_rule(name)
+}
+
+/// The region of a planar triangle, the argument `arg`.
+fn triangle_region(t: &Triangle, arg: &str) -> PyResult<CurvedRegion> {
+    let (n, d) = (t.degree(), t.dim());
+    if d != 2 {
+        return Err(bad(
+            format!("{arg}.nodes"),
+            "Dimension",
+            format!("triangle intersection is defined for planar triangles (dimension 2), found dimension {d}"),
+        ));
+    }
+    let coords: Vec<Rational> = to_bezier_order(&t.exact_patch());
+    let nodes = coords
+        .chunks_exact(2)
+        .map(|p| [p[0].clone(), p[1].clone()])
+        .collect();
+    let region = Region::triangle(n, nodes).map_err(|e| {
+        let path = match e.path() {
+            "" => format!("{arg}.nodes"),
+            "degree" => format!("{arg}.degree"),
+            "nodes" => format!("{arg}.nodes"),
+            p => format!("{arg}.{p}"),
+        };
+        bad(path, &format!("{:?}", e.kind()), &e.message)
+    })?;
+    let edges = t.edge_curves();
+    Ok(CurvedRegion {
+        region,
+        curves: vec![edges],
+    })
+}
+
+/// `Triangle.intersect`: bezier's convention. `[]` when the (regularized) intersection is
+/// empty, also when the triangles only touch; `[self]` or `[other]` (the `Triangle`) when one
+/// lies inside the other (its three whole edges are the answer); otherwise one
+/// `CurvedPolygon` per component, its edges the pieces of the triangles' edges.
+pub fn triangle_intersect(
+    py: Python<'_>,
+    t1: &Triangle,
+    t2: &Triangle,
+    max_work: Option<f64>,
+) -> PyResult<Py<PyList>> {
+    let max_work = max_work_arg(max_work)?;
+    let a = triangle_region(t1, "self")?;
+    let b = triangle_region(t2, "other")?;
+    check_boolean_work(&a.region, &b.region, max_work)?;
+    let (ra, rb) = (&a.region, &b.region);
+    let r = call_detached(py, &[], || triangle_intersection(ra, rb))?;
+    let out = PyList::empty(py);
+    if let Some(which) = whole_triangle(&r) {
+        let t = if which == 0 { t1 } else { t2 };
+        out.append(Py::new(py, t.clone())?)?;
+        return Ok(out.unbind());
+    }
+    for l in &r.loops {
+        out.append(loop_polygon(py, &l.edges, [&a.curves, &b.curves])?)?;
+    }
+    Ok(out.unbind())
+}
+
+/// The triangle (0 or 1) whose three whole edges are the one loop of `r`, if so.
+fn whole_triangle(r: &RegionResult) -> Option<usize> {
+    let [l] = r.loops.as_slice() else {
+        return None;
+    };
+    let (zero, one) = (Rational::zero(), Rational::one());
+    let whole = |e: &Edge| e.from.exact() == Some(&zero) && e.to.exact() == Some(&one);
+    let region = l.edges.first()?.region;
+    let mut seen = [false; 3];
+    for e in &l.edges {
+        if e.region != region || !whole(e) {
+            return None;
+        }
+        seen[e.curve] = true;
+    }
+    (l.edges.len() == 3 && seen == [true; 3] && !l.hole).then_some(region)
+}

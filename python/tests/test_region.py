@@ -1,0 +1,277 @@
+"""The region layer through Python: Triangle.intersect and CurvedRegion's booleans and winding
+numbers, against computations written here in Fractions (convex clipping and the shoelace
+formula for straight-edged polygons, an exact crossing-number point-in-polygon test), bezier as
+a peer where installed, and bad input."""
+
+from fractions import Fraction as F
+import random
+
+import numpy as np
+import pytest
+
+import blossom
+
+
+def shoelace(poly):
+    """The signed area of a polygon given as a list of (x, y) Fractions (shoelace)."""
+    n = len(poly)
+    return sum(poly[k][0] * poly[(k + 1) % n][1] - poly[(k + 1) % n][0] * poly[k][1]
+               for k in range(n)) / 2
+
+
+def clip_convex(subject, clip):
+    """Sutherland-Hodgman: the convex polygon `subject` clipped by the counter-clockwise
+    convex polygon `clip`, exactly in Fractions."""
+    def side(a, b, p):
+        return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+
+    out = list(subject)
+    for k in range(len(clip)):
+        a, b = clip[k], clip[(k + 1) % len(clip)]
+        inp, out = out, []
+        for j in range(len(inp)):
+            p, q = inp[j], inp[(j + 1) % len(inp)]
+            sp, sq = side(a, b, p), side(a, b, q)
+            if sp >= 0:
+                out.append(p)
+            if (sp > 0 > sq) or (sp < 0 < sq):
+                t = sp / (sp - sq)
+                out.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
+        if not out:
+            return []
+    return out
+
+
+def winding_exact(poly, p):
+    """The winding number of the closed polygon `poly` around p (off the polygon), by the
+    signed crossings of the ray from p along +x, exactly."""
+    w = 0
+    n = len(poly)
+    for k in range(n):
+        a, b = poly[k], poly[(k + 1) % n]
+        if a[1] <= p[1] < b[1] or b[1] <= p[1] < a[1]:
+            x = a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+            if x > p[0]:
+                w += 1 if b[1] > a[1] else -1
+    return w
+
+
+def on_polygon(poly, p):
+    n = len(poly)
+    for k in range(n):
+        a, b = poly[k], poly[(k + 1) % n]
+        cross = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+        if cross == 0 and min(a[0], b[0]) <= p[0] <= max(a[0], b[0]) \
+                and min(a[1], b[1]) <= p[1] <= max(a[1], b[1]):
+            return True
+    return False
+
+
+def linear_triangle(a, b, c, exact=False):
+    """bezier's degree-1 triangle with corners a, b, c (nodes columns a, b, c)."""
+    nodes = np.array([[a[0], b[0], c[0]], [a[1], b[1], c[1]]], dtype=object if exact else float)
+    return blossom.Triangle(nodes, degree=1)
+
+
+def polygon_region(poly, exact=True):
+    """A CurvedRegion of one straight loop through the points of `poly`."""
+    dtype = object if exact else float
+    edges = [np.array([[poly[k][0], poly[(k + 1) % len(poly)][0]],
+                       [poly[k][1], poly[(k + 1) % len(poly)][1]]], dtype=dtype)
+             for k in range(len(poly))]
+    return blossom.CurvedRegion([edges])
+
+
+def random_ccw_triangle(rng):
+    while True:
+        pts = [(F(rng.randint(0, 40), 8), F(rng.randint(0, 40), 8)) for _ in range(3)]
+        a = shoelace(pts)
+        if a > 0:
+            return pts
+        if a < 0:
+            return [pts[0], pts[2], pts[1]]
+
+
+def polygon_area_of(result_list):
+    return sum(p.area for p in result_list)
+
+
+def test_triangle_intersect_matches_exact_clipping():
+    rng = random.Random(41)
+    nonempty = 0
+    for _ in range(40):
+        t1, t2 = random_ccw_triangle(rng), random_ccw_triangle(rng)
+        exact = clip_convex(t1, t2)
+        area = shoelace(exact) if len(exact) >= 3 else F(0)
+        got = linear_triangle(*t1, exact=True).intersect(linear_triangle(*t2, exact=True))
+        assert abs(F(polygon_area_of(got)) - area) <= F(1, 2**40) * max(area, 1)
+        if area > 0:
+            nonempty += 1
+            assert len(got) == 1
+        else:
+            assert got == []
+    assert nonempty >= 10
+
+
+def test_triangle_intersect_pieces_are_exact_for_fractions():
+    t1 = linear_triangle((0, 0), (4, 0), (0, 4), exact=True)
+    t2 = linear_triangle((1, 1), (5, 1), (1, 5), exact=True)
+    (poly,) = t1.intersect(t2)
+    assert isinstance(poly, blossom.CurvedPolygon)
+    corners = {tuple(F(x) for x in e.exact_nodes[:, 0]) for e in poly.edges}
+    # The square-cut triangle: (1, 1), (3, 1), (1, 3).
+    assert corners == {(F(1), F(1)), (F(3), F(1)), (F(1), F(3))}
+    assert poly.area == 2.0
+
+
+def test_contained_triangle_comes_back_as_itself():
+    big = linear_triangle((0, 0), (8, 0), (0, 8))
+    small = linear_triangle((1, 1), (2, 1), (1, 2))
+    (got,) = big.intersect(small)
+    assert isinstance(got, blossom.Triangle)
+    assert np.array_equal(got.nodes, small.nodes)
+    (got,) = small.intersect(big)
+    assert np.array_equal(got.nodes, small.nodes)
+
+
+def test_touching_triangles_answer_empty_where_bezier_raises():
+    # A shared edge (diagonal), and a shared corner only.
+    t1 = linear_triangle((0, 0), (2, 0), (0, 2))
+    t2 = linear_triangle((2, 2), (0, 2), (2, 0))
+    t3 = linear_triangle((2, 0), (3, 0), (2, 1))
+    assert t1.intersect(t2) == []
+    assert t1.intersect(t3) == []
+    # The same triangle: the intersection is itself.
+    (same,) = t1.intersect(t1)
+    assert np.array_equal(same.nodes, t1.nodes)
+
+
+def test_curved_triangles_area_within_enclosure_of_pieces():
+    # Quadratic triangles bulging outwards; the pieces' exact Green areas (CurvedPolygon.area)
+    # must agree with the result's certified enclosure.
+    n1 = np.array([[0.0, 1.0, 2.0, 0.1, 1.1, 0.0], [0.0, -0.2, 0.0, 1.0, 1.1, 2.0]])
+    n2 = np.array([[0.5, 1.5, 2.5, 0.6, 1.6, 0.5], [0.3, 0.1, 0.3, 1.3, 1.4, 2.3]])
+    t1, t2 = blossom.Triangle(n1, 2), blossom.Triangle(n2, 2)
+    r1 = blossom.CurvedRegion.from_triangle(t1)
+    r2 = blossom.CurvedRegion.from_triangle(t2)
+    res = r1.intersection(r2)
+    lo, hi = res.area
+    assert 0 < lo <= hi
+    pieces = t1.intersect(t2)
+    assert len(pieces) == len(res.polygons) == 1
+    assert abs(pieces[0].area - (lo + hi) / 2) < 1e-12
+    # Inclusion-exclusion on the exact enclosures.
+    u = r1.union(r2).area
+    assert abs((u[0] + lo) - (t1.area + t2.area)) < 1e-12
+
+
+def test_booleans_of_squares_against_clipping():
+    a = [(F(0), F(0)), (F(3), F(0)), (F(3), F(3)), (F(0), F(3))]
+    b = [(F(1), F(1)), (F(5), F(1)), (F(5), F(2)), (F(1), F(2))]
+    ra, rb = polygon_region(a), polygon_region(b)
+    inter = shoelace(clip_convex(a, b))
+    want = {
+        "intersection": inter,
+        "union": shoelace(a) + shoelace(b) - inter,
+        "difference": shoelace(a) - inter,
+        "xor": shoelace(a) + shoelace(b) - 2 * inter,
+    }
+    for op, area in want.items():
+        res = getattr(ra, op)(rb)
+        lo, hi = res.area
+        assert F(lo) <= area <= F(hi), op
+        total = sum(p.area for p in res.polygons)
+        assert abs(F(total) - area) <= F(1, 2**40), op
+        for rec in res.edges:
+            for region, loop_index, curve, s0, s1 in rec:
+                assert region in (0, 1) and loop_index == 0 and 0 <= curve < 4
+                assert s0.exact is not None and s1.exact is not None
+
+
+def test_difference_with_a_hole():
+    outer = [(F(0), F(0)), (F(6), F(0)), (F(6), F(6)), (F(0), F(6))]
+    inner = [(F(2), F(2)), (F(4), F(2)), (F(4), F(4)), (F(2), F(4))]
+    res = polygon_region(outer).difference(polygon_region(inner))
+    assert sorted(res.holes) == [False, True]
+    assert F(res.area[0]) <= 32 <= F(res.area[1])
+
+
+def test_winding_against_exact_point_in_polygon():
+    rng = random.Random(7)
+    # A self-crossing pentagram: winding 2 in the middle, 1 in the tips.
+    star = [(F(0), F(10)), (F(-6), F(-8)), (F(9), F(3)), (F(-9), F(3)), (F(6), F(-8))]
+    region = polygon_region(star)
+    pts = [(F(rng.randint(-100, 100), 10), F(rng.randint(-100, 100), 10)) for _ in range(200)]
+    pts += [star[0], (F(0), F(3))]
+    arr = np.array([[p[0] for p in pts], [p[1] for p in pts]], dtype=object)
+    got = region.winding(arr)
+    seen = set()
+    for p, w in zip(pts, got):
+        if on_polygon(star, p):
+            assert w is None
+        else:
+            assert w == winding_exact(star, p)
+            seen.add(w)
+    assert {0, 1, 2} <= seen
+    # Even-odd: the centre is outside, still winding 2.
+    even = blossom.CurvedRegion(region.loops, fill_rule="evenodd")
+    assert even.winding(np.array([[0.0], [0.0]])) == [2]
+    res = even.intersection(polygon_region([(F(-20), F(-20)), (F(20), F(-20)), (F(20), F(20)),
+                                            (F(-20), F(20))]))
+    full = region.intersection(polygon_region([(F(-20), F(-20)), (F(20), F(-20)),
+                                               (F(20), F(20)), (F(-20), F(20))]))
+    assert res.area[1] < full.area[0]
+
+
+def test_bad_input():
+    c = np.array([[0.0, 1.0], [0.0, 0.0]])
+    d = np.array([[1.0, 0.0], [1.0, 0.0]])  # starts at (1, 1), not at (1, 0)
+    with pytest.raises(blossom.Error) as e:
+        blossom.CurvedRegion([[c, d]])
+    assert e.value.path.startswith("loops[0][1]")
+    with pytest.raises(blossom.Error) as e:
+        blossom.CurvedRegion([[np.zeros((3, 2))]])
+    assert e.value.path == "loops[0][0]"
+    with pytest.raises(blossom.Error) as e:
+        blossom.CurvedRegion([[c, np.array([[1.0, 0.0], [0.0, 0.0]])]], fill_rule="odd")
+    assert e.value.path == "fill_rule"
+    sq = polygon_region([(F(0), F(0)), (F(1), F(0)), (F(1), F(1)), (F(0), F(1))])
+    with pytest.raises(blossom.Error) as e:
+        sq.winding(np.zeros((3, 2)))
+    assert e.value.path == "points"
+    with pytest.raises(blossom.Error) as e:
+        sq.winding(np.array([[np.nan], [0.0]]))
+    assert e.value.path.startswith("points")
+    with pytest.raises(TypeError):
+        sq.union(3)
+    with pytest.raises(blossom.Error) as e:
+        sq.union(sq, max_work=1.0)
+    assert e.value.path == "max_work"
+    t2 = linear_triangle((0, 0), (1, 0), (0, 1))
+    t3 = blossom.Triangle(np.zeros((3, 3)), 1)
+    with pytest.raises(blossom.Error) as e:
+        t2.intersect(t3)
+    assert e.value.path == "other.nodes"
+    with pytest.raises(TypeError):
+        t2.intersect(sq)
+
+
+def test_bezier_peer_triangle_areas():
+    bezier = pytest.importorskip("bezier")
+    rng = np.random.default_rng(3)
+    compared = 0
+    for _ in range(30):
+        base1 = np.array([[0.0, 1.0, 2.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0, 1.0, 2.0]])
+        n1 = base1 + rng.uniform(-0.15, 0.15, (2, 6))
+        n2 = base1 + rng.uniform(-0.15, 0.15, (2, 6)) + rng.uniform(0.2, 0.8, (2, 1))
+        ours = blossom.CurvedRegion.from_triangle(blossom.Triangle(n1, 2)).intersection(
+            blossom.CurvedRegion.from_triangle(blossom.Triangle(n2, 2)))
+        try:
+            theirs = bezier.Triangle(n1, 2).intersect(bezier.Triangle(n2, 2))
+        except Exception:
+            continue
+        area = sum(p.area for p in theirs)
+        lo, hi = ours.area
+        assert lo - 1e-9 <= area <= hi + 1e-9
+        compared += 1
+    assert compared >= 10
