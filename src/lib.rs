@@ -130,7 +130,6 @@ mod applications;
 mod error;
 mod intersect;
 mod num;
-/// Regions bounded by Bézier curves: winding numbers, certified booleans, Bézier triangles.
 pub mod region;
 mod restrict;
 mod shape;

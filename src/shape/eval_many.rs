@@ -11,7 +11,7 @@ pub(crate) const EVAL_LANES: usize = 8;
 
 impl<T: Ring> BezierCurve<T> {
     /// The curve B(t) = sum_j C(n, j) (1 - t)^(n - j) t^j w_j at every parameter of `ts`,
-    /// written point after point to `out` (`ts.len() * dim` numbers: B(ts[m]) is
+    /// written point after point to `out` (`ts.len() * dim` numbers: B(`ts[m]`) is
     /// `out[m * dim..(m + 1) * dim]`).
     ///
     /// The method is de Casteljau's: n levels of the affine step x + t (y - x), the step of

@@ -15,7 +15,7 @@
 //!   and the exact intersections of every pair of curves whose boxes meet, the
 //!   self-intersections of every curve and the classification of the pieces, in nanoseconds
 //!   of a 2-core machine. A job whose estimate is over twice `--max-work` is refused
-//!   up front ([`within_budget`]) naming `regions` (or `triangles`), as `intersect` refuses its
+//!   up front (`within_budget`) naming `regions` (or `triangles`), as `intersect` refuses its
 //!   curves; what the estimate lets through then runs under the work meter
 //!   ([`super::budget::metered`], charged by the exact arithmetic and the intersection
 //!   loops), which stops it at `--max-work` naming the same field.

@@ -2,7 +2,7 @@
 //! `{"kind", "loops": [{"hole", "edges": [EDGE, ...]}, ...], "area": [lo, hi]}` with every
 //! parameter a PARAM (the correctly rounded double, the exact rational when there is one, an
 //! isolating interval and the square-free integer polynomial:
-//! [`super::intersect_jobs::param`]), and the winding numbers of points.
+//! `intersect_jobs::param`), and the winding numbers of points.
 
 use super::intersect_jobs::{double, param};
 use blossom::region::{Edge, Position, Region, RegionResult, Winding};
