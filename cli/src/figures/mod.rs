@@ -9,7 +9,9 @@
 //! * [`circle`]: the circle arc of seed 004 as a rational quadratic and quartic with weights;
 //! * [`logarithm`]: the ln t cubic of seed 004 against ln t, and its error;
 //! * [`intersections`]: certified intersections (issue 26): crossings, a tangency, an overlap
-//!   and a loop, every mark from the library's exact answer.
+//!   and a loop, every mark from the library's exact answer;
+//! * [`regions`]: certified booleans (issue 40): two regions with a shared edge, a tangency
+//!   and crossings, and their union, intersection and difference filled from the exact answer.
 //!
 //! A picture is first a [`Figure`] ([`scene`]: plain f64 layers in drawing order), then an SVG
 //! ([`render`], plotters' SVG backend). [`pixels`] puts any point on the page through the same
@@ -22,6 +24,7 @@ pub mod logarithm;
 pub mod mesh;
 pub mod palette;
 pub mod patches;
+pub mod regions;
 pub mod render;
 pub mod scene;
 pub mod spline;
@@ -41,5 +44,6 @@ pub fn figures() -> Result<Vec<Figure>, Error> {
     all.push(logarithm::figure()?);
     all.push(logarithm::error_figure()?);
     all.push(intersections::figure()?);
+    all.push(regions::figure()?);
     Ok(all)
 }

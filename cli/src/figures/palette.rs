@@ -24,6 +24,11 @@ pub const REFERENCE: Rgb = Rgb(120, 170, 120);
 /// A stretch drawn over curves to single it out (the overlap of two curves).
 pub const HIGHLIGHT: Rgb = Rgb(0, 190, 190);
 
+/// The fill of a first region (light), and of a second.
+pub const FILL: Rgb = Rgb(170, 200, 235);
+/// The fill of a second region, or of a result.
+pub const FILL_2: Rgb = Rgb(240, 205, 160);
+
 /// The control points of the first net of a picture.
 pub const DOTS: Rgb = Rgb(230, 0, 40);
 /// The control points of the second net of a picture.
@@ -44,7 +49,7 @@ mod tests {
     #[test]
     fn dot_colours_are_used_by_nothing_else() {
         let others = [
-            BACKGROUND, TEXT, MESH, MESH_2, NET, NET_2, CURVE, REFERENCE, HIGHLIGHT,
+            BACKGROUND, TEXT, MESH, MESH_2, NET, NET_2, CURVE, REFERENCE, HIGHLIGHT, FILL, FILL_2,
         ];
         for d in DOT_COLOURS {
             assert!(!others.contains(&d));

@@ -195,6 +195,17 @@ where
                     .map(|p| Circle::new(at(p), *radius as i32, style)),
             )?;
         }
+        Layer::Fill {
+            polygons,
+            colour: c,
+        } => {
+            let style = colour(*c).filled();
+            chart.draw_series(
+                polygons.iter().map(|polygon| {
+                    Polygon::new(polygon.iter().map(&at).collect::<Vec<C>>(), style)
+                }),
+            )?;
+        }
         Layer::Labels {
             items,
             colour: c,

@@ -31,6 +31,14 @@ pub enum Layer {
         /// The radius in pixels.
         radius: u32,
     },
+    /// Filled polygons (a sampled region's loops), drawn one after the other without
+    /// outline: a hole is drawn as a polygon of the background colour after the loop around it.
+    Fill {
+        /// The polygons, each a closed list of points.
+        polygons: Vec<Vec<Point3>>,
+        /// The fill colour.
+        colour: Rgb,
+    },
     /// Text beside points (the weights of a rational curve, the knots of a spline).
     Labels {
         /// Each point with its text.
@@ -163,6 +171,7 @@ fn bounds(layers: &[Layer]) -> [(f64, f64); 3] {
         match layer {
             Layer::Lines { lines, .. } => lines.iter().flatten().for_each(&mut visit),
             Layer::Dots { points, .. } => points.iter().for_each(&mut visit),
+            Layer::Fill { polygons, .. } => polygons.iter().flatten().for_each(&mut visit),
             Layer::Labels { items, .. } => items.iter().for_each(|(p, _)| visit(p)),
         }
     }

@@ -8,6 +8,8 @@
 //! blossom verify [--json] [--verbose]
 //! blossom restrict [--input FILE] [--arithmetic exact|f64] [--method METHOD]
 //!                  [--max-work UNITS] [--max-input BYTES]
+//! blossom intersect [--input FILE] [--arithmetic exact|f64] [--max-work UNITS] [--max-input BYTES]
+//! blossom region [--input FILE] [--arithmetic exact|f64] [--max-work UNITS] [--max-input BYTES]
 //! blossom check [--input FILE] [--per-point] [--max-work UNITS] [--max-input BYTES]
 //! blossom figures [--out DIR]
 //! blossom expand curve N | tensor N M | triangle N M | triangle-total N | bezier-curve N
@@ -114,10 +116,11 @@ pub struct CheckOptions {
 }
 
 /// The subcommands, in the order the help lists them.
-pub const SUBCOMMANDS: [&str; 7] = [
+pub const SUBCOMMANDS: [&str; 8] = [
     "verify",
     "restrict",
     "intersect",
+    "region",
     "check",
     "figures",
     "expand",
@@ -139,6 +142,9 @@ pub enum Command {
     Restrict(RestrictOptions),
     /// `blossom intersect ...`: certified zeros and intersections.
     Intersect(IntersectOptions),
+    /// `blossom region ...`: certified booleans, triangle intersections and winding numbers
+    /// (the same options as `intersect`).
+    Region(IntersectOptions),
     /// `blossom check ...`: the exact error of another program's f64 answer.
     Check(CheckOptions),
     /// `blossom figures [--out DIR]`: the pictures, written as SVG files into the directory.
@@ -167,6 +173,9 @@ Usage:
   blossom restrict [OPTIONS]   restrict a curve or surface given as JSON (see `restrict --help`)
   blossom intersect [OPTIONS]  certified zeros of a Bezier function, intersections of two
                                curves and self-intersections (see `intersect --help`)
+  blossom region [OPTIONS]     certified booleans of regions bounded by Bezier curves, the
+                               intersection of two Bezier triangles and exact winding
+                               numbers (see `region --help`)
   blossom check [OPTIONS]      the exact error of another program's f64 answer to a restrict
                                job (see `check --help`)
   blossom figures [--out DIR]  draw the papers' figures and examples as SVG files
@@ -411,7 +420,8 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
         "verify" => parse_verify(rest),
         "restrict" => parse_restrict(rest),
         "check" => parse_check(rest),
-        "intersect" => parse_intersect(rest),
+        "intersect" => parse_certified(rest, "intersect", INTERSECT_HELP, Command::Intersect),
+        "region" => parse_certified(rest, "region", super::region::REGION_HELP, Command::Region),
         "figures" => parse_figures(rest),
         "expand" => parse_expand(rest),
         "help" => Ok(Command::Help(HELP)),
@@ -668,17 +678,23 @@ fn arithmetic_value(value: &OsStr) -> Result<Arithmetic, Error> {
     }
 }
 
-/// The flags of `intersect`, for messages and suggestions.
+/// The flags of `intersect` and `region`, for messages and suggestions.
 const INTERSECT_FLAGS: [&str; 4] = ["--input", "--arithmetic", "--max-work", "--max-input"];
 
-fn parse_intersect(args: &[OsString]) -> Result<Command, Error> {
+/// `intersect` and `region`: the same flags, a different help text and command.
+fn parse_certified(
+    args: &[OsString],
+    name: &str,
+    help: &'static str,
+    command: fn(IntersectOptions) -> Command,
+) -> Result<Command, Error> {
     let mut common = Common::default();
     let mut arithmetic: Option<Arithmetic> = None;
     let mut rest = args.iter();
     while let Some(arg) = rest.next() {
         let (flag, inline) = split_flag(arg);
         match flag.as_str() {
-            f if is_help(f) && inline.is_none() => return Ok(Command::Help(INTERSECT_HELP)),
+            f if is_help(f) && inline.is_none() => return Ok(Command::Help(help)),
             "--arithmetic" => {
                 once(arithmetic.is_some(), "--arithmetic")?;
                 let value = take_value("--arithmetic", inline, &mut rest)?;
@@ -689,16 +705,16 @@ fn parse_intersect(args: &[OsString]) -> Result<Command, Error> {
                     continue;
                 }
                 if f.starts_with('-') && f.len() > 1 {
-                    return Err(unknown_option(f, "intersect", &INTERSECT_FLAGS));
+                    return Err(unknown_option(f, name, &INTERSECT_FLAGS));
                 }
                 return Err(Error::new(
                     f,
-                    "unexpected argument for intersect (give the job file as --input FILE)",
+                    format!("unexpected argument for {name} (give the job file as --input FILE)"),
                 ));
             }
         }
     }
-    Ok(Command::Intersect(IntersectOptions {
+    Ok(command(IntersectOptions {
         input: common.input.clone().unwrap_or(None),
         arithmetic: arithmetic.unwrap_or(Arithmetic::Exact),
         limits: common.limits(),

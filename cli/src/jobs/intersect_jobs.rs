@@ -65,7 +65,7 @@ pub fn answer(document: &Value, arithmetic: Arithmetic, max_work: u64) -> Result
 }
 
 /// One number of the job, exactly as the arithmetic reads it.
-fn number(value: &Value, path: &str, arithmetic: Arithmetic) -> Result<Rational, Error> {
+pub(super) fn number(value: &Value, path: &str, arithmetic: Arithmetic) -> Result<Rational, Error> {
     match arithmetic {
         Arithmetic::Exact => rational_from_json(value).map_err(|m| Error::new(path, m)),
         Arithmetic::F64 => {
@@ -159,7 +159,7 @@ fn self_job(
 /// [`blossom::curve_pair_work`]) is over twice the limit: the estimates are within a factor
 /// of about two of the measured time at the degrees the limit lets through, and the exact
 /// solver is not metered as it runs, so the check is made up front only.
-fn within_budget(path: &str, work: u128, max_work: u64) -> Result<(), Error> {
+pub(super) fn within_budget(path: &str, work: u128, max_work: u64) -> Result<(), Error> {
     if work <= 2 * u128::from(max_work) {
         return Ok(());
     }
@@ -246,7 +246,7 @@ fn intersections(kind: &str, found: &Intersections) -> Result<Value, Error> {
 
 /// A PARAM object: the correctly rounded double, the exact value when rational, an isolating
 /// interval and the square-free integer polynomial.
-fn param(x: &AlgebraicReal) -> Result<Value, Error> {
+pub(super) fn param(x: &AlgebraicReal) -> Result<Value, Error> {
     let (lo, hi) = x.interval();
     let exact = match x.exact() {
         Some(r) => Value::String(text(r)?),
@@ -264,7 +264,7 @@ fn text(r: &Rational) -> Result<String, Error> {
     format_rational(r).map_err(|m| Error::new("internal", m))
 }
 
-fn double(x: f64) -> Result<Value, Error> {
+pub(super) fn double(x: f64) -> Result<Value, Error> {
     f64_to_json(x).map_err(|m| Error::new("internal", m))
 }
 

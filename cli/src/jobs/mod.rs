@@ -2,6 +2,9 @@
 //!
 //! * `blossom` and `blossom verify [--json] [--verbose]` print [`crate::verify::run_report`]
 //!   and exit 0 when it is all reproduced or explained, 1 otherwise;
+//! * `blossom intersect` and `blossom region [--input FILE] [--arithmetic exact|f64]
+//!   [--max-work UNITS] [--max-input BYTES]` read one job and print its certified answer
+//!   ([`intersect_jobs`], [`region`]), one line of JSON;
 //! * `blossom restrict [--input FILE] [--arithmetic exact|f64] [--method METHOD]` reads one job
 //!   ([`job`]; a field its kind does not read is refused, [`job::check_fields`]), computes it
 //!   ([`answer`]; by default with `bulk`, [`args::MethodChoice::default`]) and prints the answer
@@ -24,6 +27,9 @@ pub mod intersect_jobs;
 pub mod job;
 pub mod names;
 pub mod patch_jobs;
+pub mod region;
+pub mod region_answer;
+pub mod region_shapes;
 pub mod specialised;
 pub mod spline_jobs;
 
@@ -109,21 +115,8 @@ pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
             Ok(text) => Outcome::success(text),
             Err(error) => Outcome::failure(&error),
         },
-        Ok(Command::Intersect(options)) => {
-            match read_input(options.input.as_deref(), &options.limits, stdin)
-                .and_then(|bytes| parse_json(&bytes))
-                .and_then(|document| {
-                    intersect_jobs::answer(&document, options.arithmetic, options.limits.max_work)
-                })
-                .and_then(|answer| {
-                    serde_json::to_string(&answer).map_err(|e| {
-                        Error::new("internal", format!("cannot write the answer: {e}"))
-                    })
-                }) {
-                Ok(text) => Outcome::success(with_newline(text)),
-                Err(error) => Outcome::failure(&error),
-            }
-        }
+        Ok(Command::Intersect(options)) => certified(&options, stdin, intersect_jobs::answer),
+        Ok(Command::Region(options)) => certified(&options, stdin, region::answer),
         Ok(Command::Check(options)) => {
             match read_input(options.input.as_deref(), &options.limits, stdin)
                 .and_then(|bytes| parse_json(&bytes))
@@ -146,6 +139,25 @@ pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
             Ok(text) => Outcome::success(with_newline(text)),
             Err(error) => Outcome::failure(&error),
         },
+    }
+}
+
+/// The answer of a job of `blossom intersect` or `blossom region` (`answer` reads and
+/// computes one job), as one line of JSON, or the failure.
+fn certified(
+    options: &args::IntersectOptions,
+    stdin: &mut dyn Read,
+    answer: fn(&Value, Arithmetic, u64) -> Result<Value, Error>,
+) -> Outcome {
+    match read_input(options.input.as_deref(), &options.limits, stdin)
+        .and_then(|bytes| parse_json(&bytes))
+        .and_then(|document| answer(&document, options.arithmetic, options.limits.max_work))
+        .and_then(|answer| {
+            serde_json::to_string(&answer)
+                .map_err(|e| Error::new("internal", format!("cannot write the answer: {e}")))
+        }) {
+        Ok(text) => Outcome::success(with_newline(text)),
+        Err(error) => Outcome::failure(&error),
     }
 }
 

@@ -363,7 +363,7 @@ fn sweep_job(kind: &str, n: usize, long_numbers: bool) -> Value {
 
 /// The CPU time of this thread (Linux: `/proc/thread-self/schedstat`), not disturbed by the
 /// other processes of a loaded machine.
-fn thread_cpu() -> Duration {
+pub(crate) fn thread_cpu() -> Duration {
     let text = std::fs::read_to_string("/proc/thread-self/schedstat").unwrap_or_default();
     Duration::from_nanos(
         text.split_whitespace()

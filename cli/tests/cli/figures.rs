@@ -172,6 +172,27 @@ fn intersection_marks() -> Vec<(Rgb, Vec<Point3>)> {
     ]
 }
 
+/// The control points of the two regions of the region picture, in its input panel: the
+/// figure's input itself, so only their page positions are tested.
+fn region_control_points() -> Vec<(Rgb, Vec<Point3>)> {
+    use figures::regions::{A, B, OFFSETS};
+    let points = |curves: figures::regions::Loop| {
+        let mut out: Vec<Point3> = Vec::new();
+        for p in curves.iter().flat_map(|c| c.iter()) {
+            let p = [
+                (p[0] + OFFSETS[0][0]) as f64,
+                (p[1] + OFFSETS[0][1]) as f64,
+                0.0,
+            ];
+            if !out.contains(&p) {
+                out.push(p);
+            }
+        }
+        out
+    };
+    vec![(palette::DOTS, points(A)), (palette::DOTS_2, points(B))]
+}
+
 /// The expected dots of each figure, by file name: (dot colour, points).
 fn expected(file: &str) -> Vec<(Rgb, Vec<Point3>)> {
     let (first, second, marks) = (palette::DOTS, palette::DOTS_2, palette::DOTS_3);
@@ -194,6 +215,7 @@ fn expected(file: &str) -> Vec<(Rgb, Vec<Point3>)> {
         "ln_cubic.svg" => vec![(first, ln_polygon())],
         "ln_cubic_error.svg" => vec![],
         "intersections.svg" => intersection_marks(),
+        "regions.svg" => region_control_points(),
         other => panic!("a figure this test does not know: {other}"),
     }
 }
@@ -247,7 +269,7 @@ fn file_names(dir: &std::path::Path) -> Vec<String> {
 #[test]
 fn every_figure_is_a_picture_with_its_control_points_in_place() {
     let all = figures::figures().expect("the figures compute");
-    assert_eq!(all.len(), 12);
+    assert_eq!(all.len(), 13);
     for figure in &all {
         let pixmap = render(figure);
         let background = palette::BACKGROUND;
@@ -374,9 +396,9 @@ fn figures_writes_every_svg_and_refuses_a_file_as_directory() {
     let run = run_binary(&["figures", "--out", arg], b"");
     assert_eq!(run.code, 0, "{}", run.stderr);
     let files = file_names(&out);
-    assert_eq!(files.len(), 12, "{files:?}");
+    assert_eq!(files.len(), 13, "{files:?}");
     assert!(files.iter().all(|f| f.ends_with(".svg")));
-    assert_eq!(run.stdout.lines().count(), 12, "{}", run.stdout);
+    assert_eq!(run.stdout.lines().count(), 13, "{}", run.stdout);
 
     let file = dir.join("a_file");
     std::fs::write(&file, "not a directory").expect("a scratch file");
@@ -504,4 +526,46 @@ fn the_intersection_marks_and_the_overlap_are_where_the_exact_answers_say() {
     }
     // Five discs of radius 6 (about 113 pixels each, less where one covers a curve).
     assert!(marked > 5 * 80, "only {marked} mark pixels");
+}
+
+#[test]
+fn the_region_results_are_filled_where_the_operations_put_them() {
+    use figures::regions::OFFSETS;
+    let figure = &figure_named("regions.svg");
+    let pixmap = render(figure);
+    // Points of the panel's own coordinates, each at least 0.3 from every boundary, with their
+    // membership in A (the dome under 12 s (1 - s) over x = 4 (1 - s)^2 (1 + 2 s)) and B
+    // (right of the line x = 2 - y / 3, under y = 3, left of the cubic side) worked out by
+    // hand: at y = 0.53 the dome spans x in [0.02, 3.97], at y = 2.03 [0.47, 3.52], at
+    // y = 2.47 [0.82, 3.19]; B's left side is at x = 1.82, 1.32, 1.18 there.
+    let points: [([f64; 2], bool, bool); 6] = [
+        ([1.07, 0.53], true, false),
+        ([3.07, 0.53], true, true),
+        ([5.07, 0.53], false, true),
+        ([5.07, 3.57], false, false),
+        ([3.57, 2.47], false, true),
+        ([2.07, 2.03], true, true),
+    ];
+    let ops: [fn(bool, bool) -> bool; 3] = [|a, b| a || b, |a, b| a && b, |a, b| a && !b];
+    for (panel, keeps) in ops.iter().enumerate() {
+        let offset = OFFSETS[panel + 1];
+        for (p, in_a, in_b) in points {
+            let at = [p[0] + offset[0] as f64, p[1] + offset[1] as f64, 0.0];
+            let pixel = figures::pixels(figure, &[at]).expect("a page position")[0];
+            let seen = colour_at(&pixmap, pixel).expect("on the page");
+            // Filled: the result's colour, drawn over the grid. Not filled: the page, or the
+            // chart's grid under it (light neutral greys), never the fill's colour.
+            let filled = keeps(in_a, in_b);
+            let page = seen.0 == seen.1 && seen.1 == seen.2 && seen.0 >= 200;
+            assert!(
+                if filled {
+                    close(seen, palette::FILL_2)
+                } else {
+                    page
+                },
+                "panel {}: {p:?} (in A: {in_a}, in B: {in_b}) is {seen:?}, filled: {filled}",
+                panel + 1
+            );
+        }
+    }
 }

@@ -1,0 +1,101 @@
+"""Python `bezier` (dhermes/bezier) Triangle.intersect on the triangle pairs of benches/region.rs.
+
+Run the Rust bench first; it writes the pairs, the certified areas and its own time per pair:
+
+    cargo bench -p blossom --bench region
+    pip install bezier          # 2024.6.20, with numpy; its compiled speedups ship in the wheel
+    python3 benches/python/triangle_intersect.py
+
+The file is read from $CARGO_TARGET_DIR/region/triangles.json (else target/region/ of the
+workspace), or from the directory given as the first argument:
+{"degree": 2, "pairs": [{"triangles": [t1, t2], "area": [lo, hi], "loops": k, "seconds": s}, ...]},
+each triangle six [x, y] nodes in the order of `blossom region` (p200, p110, p020, p101, p011,
+p002), which is also bezier's order; "area" is the certified enclosure of the exact area of the
+intersection and "seconds" the library's time for the pair (median of 5 runs).
+
+For each pair, bezier.Triangle.intersect (default strategy, geometric) is timed alone
+(time.perf_counter around the call, the triangles built beforehand; the median of 5 calls).
+Its answer is a list of curved polygons (or one of the triangles when one holds the other);
+the sum of their areas is compared with the certified enclosure: wrong when it is outside by
+more than 1e-9 (the triangles' boxes have areas near 1) or when bezier raises (counted by
+exception type). Printed, and written to python_triangles.txt beside the input: the time per
+pair of each side, the ratio, and the wrong answers.
+"""
+
+import json
+import os
+import statistics
+import sys
+import time
+from collections import Counter
+from pathlib import Path
+
+import bezier
+import numpy as np
+
+
+def data_dir():
+    if len(sys.argv) > 1:
+        return Path(sys.argv[1])
+    target = os.environ.get("CARGO_TARGET_DIR")
+    if target:
+        return Path(target) / "region"
+    return Path(__file__).resolve().parents[2] / "target" / "region"
+
+
+def triangle(nodes, degree):
+    return bezier.Triangle(np.asfortranarray(np.array(nodes, dtype=float).T), degree=degree)
+
+
+def area_of(pieces):
+    return sum(piece.area for piece in pieces)
+
+
+def main():
+    directory = data_dir()
+    data = json.loads((directory / "triangles.json").read_text())
+    degree = data["degree"]
+    pairs = data["pairs"]
+    theirs, ours = [], []
+    exceptions = Counter()
+    wrong = []
+    for index, pair in enumerate(pairs):
+        t1, t2 = (triangle(t, degree) for t in pair["triangles"])
+        lo, hi = pair["area"]
+        times = []
+        result = None
+        try:
+            for _ in range(5):
+                start = time.perf_counter()
+                result = t1.intersect(t2)
+                times.append(time.perf_counter() - start)
+        except Exception as error:  # noqa: BLE001 - every failure is counted by type
+            exceptions[type(error).__name__] += 1
+            wrong.append(f"pair {index}: {type(error).__name__}: {error}")
+            continue
+        theirs.append(statistics.median(times))
+        ours.append(pair["seconds"])
+        area = area_of(result)
+        if area < lo - 1e-9 or area > hi + 1e-9:
+            wrong.append(
+                f"pair {index}: bezier area {area:.12f}, certified [{lo:.12f}, {hi:.12f}] "
+                f"({len(result)} piece(s), certified {pair['loops']} loop(s))"
+            )
+    mean = lambda xs: sum(xs) / len(xs) if xs else float("nan")
+    lines = [
+        f"pairs: {len(pairs)} quadratic triangle pairs (benches/region.rs)",
+        f"bezier {bezier.__version__} Triangle.intersect: {mean(theirs) * 1e6:.1f} us per pair "
+        f"(median of 5 calls each, averaged over {len(theirs)} pairs)",
+        f"blossom triangle_intersection: {mean(ours) * 1e6:.1f} us per pair (same pairs)",
+        f"ratio bezier / blossom: {mean(theirs) / mean(ours):.2f}",
+        f"bezier wrong: {len(wrong)} of {len(pairs)} pairs "
+        f"(area outside the certified enclosure by more than 1e-9, or an exception: "
+        f"{dict(exceptions) or 'none'})",
+    ] + ["  " + w for w in wrong]
+    text = "\n".join(lines) + "\n"
+    print(text, end="")
+    (directory / "python_triangles.txt").write_text(text)
+
+
+if __name__ == "__main__":
+    main()
