@@ -80,6 +80,7 @@ mod arrangement;
 mod boolean;
 mod chain;
 mod classify;
+mod crossing;
 mod curve;
 mod input;
 mod pipeline;
