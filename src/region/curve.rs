@@ -296,7 +296,9 @@ fn monotone_breaks(c: &[Rational]) -> Monotone {
         .windows(2)
         .map(|w| eval(&dc, &super::angle::rational_between(&w[0], &w[1])) > Rational::zero())
         .collect();
-    let fine = Rational::new(1.into(), BigInt::one() << 64);
+    // Near a break c' vanishes, so an interval of width w encloses c within about w^2 |c"|:
+    // 2^-32 is ample for a filter that only prunes.
+    let fine = Rational::new(1.into(), BigInt::one() << 32);
     let bounds = params
         .iter()
         .map(|t| match t.exact() {
