@@ -292,22 +292,22 @@ fn monotone_breaks(c: &[Rational]) -> Monotone {
     let dc = derivative(c);
     // Strictly monotone between consecutive breaks: the derivative's sign at any rational
     // point inside tells the direction (it is not zero there, the breaks being its roots).
-    let rising = params
+    let rising: Vec<bool> = params
         .windows(2)
         .map(|w| eval(&dc, &super::angle::rational_between(&w[0], &w[1])) > Rational::zero())
         .collect();
     // Near a break c' vanishes, so an interval of width w encloses c within about w^2 |c"|:
-    // 2^-32 is ample for a filter that only prunes.
+    // 2^-32 is ample for the filters, which only prune or prove a sign. The breaks keep the
+    // refined intervals (the same numbers, isolated more tightly).
     let fine = Rational::new(1.into(), BigInt::one() << 32);
     let bounds = params
-        .iter()
+        .iter_mut()
         .map(|t| match t.exact() {
             Some(t0) => {
                 let v = eval(c, t0);
                 (f64_down(&v), f64_up(&v))
             }
             None => {
-                let mut t = t.clone();
                 t.refine_to(&fine);
                 let (lo, hi) = t.interval();
                 let (vl, vh) = enclose(c, lo, hi);
