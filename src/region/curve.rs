@@ -11,13 +11,16 @@
 //! derivative at a rational point inside it; the coordinate's value at a break is compared
 //! with a rational exactly as the sign of c(t) - r at the break, and enclosed in doubles
 //! (interval Horner over the break's isolating interval, rounded outward) for the filter. A
-//! curve whose coordinate is constant has no piece that changes it.
+//! curve whose coordinate is constant has no piece that changes it. When the control
+//! coordinates already move one way (differences all >= 0 or all <= 0, not all 0) the
+//! derivative's Bernstein form proves it has no root inside, and no root is isolated.
 
 use crate::intersect::algebraic::{
     enclose, exact_f64, over_common_denominator, shifted_poly, AlgebraicReal,
 };
 use crate::intersect::upoly;
 use crate::intersect::zeros::roots_with_multiplicity;
+use crate::num::bounded::BoundedF64;
 use crate::num::ring::{rational_to_f64, Rational};
 use crate::shape::array::Bezier;
 #[cfg(test)]
@@ -64,6 +67,7 @@ pub(crate) struct Curve {
     pub bbox: [f64; 4],
     monotone: [OnceCell<Monotone>; 2],
     x_dy: OnceCell<Vec<Rational>>,
+    power_bounded: OnceCell<[Vec<BoundedF64>; 2]>,
 }
 
 /// Whether the rational is exactly a normal double (or zero): a power-of-two denominator of at
@@ -142,7 +146,15 @@ impl Curve {
             bbox,
             monotone: [OnceCell::new(), OnceCell::new()],
             x_dy: OnceCell::new(),
+            power_bounded: OnceCell::new(),
         }
+    }
+
+    /// The power-form coefficients of x(t) and y(t) enclosed in doubles
+    /// ([`BoundedF64::rounded`]), for the float filters (computed on first use).
+    pub fn power_bounded(&self) -> &[Vec<BoundedF64>; 2] {
+        self.power_bounded
+            .get_or_init(|| [0, 1].map(|a| self.power[a].iter().map(BoundedF64::rounded).collect()))
     }
 
     /// The point at the rational parameter t.
@@ -165,7 +177,22 @@ impl Curve {
 
     /// The breaks into pieces monotone along `axis` (0: x, 1: y), computed once.
     pub fn monotone(&self, axis: usize) -> &Monotone {
-        self.monotone[axis].get_or_init(|| monotone_breaks(&self.power[axis]))
+        self.monotone[axis].get_or_init(|| {
+            let column: Vec<&Rational> = self.points.iter().map(|p| &p[axis]).collect();
+            match one_direction(&column) {
+                Some(rising) => {
+                    let ends = [column[0], column[column.len() - 1]];
+                    Monotone {
+                        params: vec![zero(), one()],
+                        coordinate: self.power[axis].clone(),
+                        constant: false,
+                        rising: vec![rising],
+                        bounds: ends.iter().map(|v| (f64_down(v), f64_up(v))).collect(),
+                    }
+                }
+                None => monotone_breaks(&self.power[axis]),
+            }
+        })
     }
 
     /// The antiderivative of x(t) y'(t) vanishing at 0 (for areas), computed once.
@@ -230,6 +257,23 @@ pub(crate) fn one() -> AlgebraicReal {
     AlgebraicReal::from_rational(Rational::one())
 }
 
+/// `Some(rising)` when the control coordinates `column` prove the coordinate strictly
+/// monotone on [0, 1] without a break inside: the derivative's Bernstein coefficients
+/// n (c_{i+1} - c_i) are all >= 0 (or all <= 0) and not all 0, and a Bernstein polynomial
+/// with such coefficients is > 0 (< 0) on (0, 1), so it has no root there (exact
+/// comparisons). `None` when the differences change sign or all vanish.
+fn one_direction(column: &[&Rational]) -> Option<bool> {
+    let (mut up, mut down) = (false, false);
+    for w in column.windows(2) {
+        match w[1].cmp(w[0]) {
+            Ordering::Greater => up = true,
+            Ordering::Less => down = true,
+            Ordering::Equal => {}
+        }
+    }
+    (up != down).then_some(up)
+}
+
 /// The monotone breaks of the coordinate polynomial `c` (ascending).
 fn monotone_breaks(c: &[Rational]) -> Monotone {
     let d = upoly::from_rationals(&derivative(c));
@@ -248,20 +292,22 @@ fn monotone_breaks(c: &[Rational]) -> Monotone {
     let dc = derivative(c);
     // Strictly monotone between consecutive breaks: the derivative's sign at any rational
     // point inside tells the direction (it is not zero there, the breaks being its roots).
-    let rising = params
+    let rising: Vec<bool> = params
         .windows(2)
         .map(|w| eval(&dc, &super::angle::rational_between(&w[0], &w[1])) > Rational::zero())
         .collect();
-    let fine = Rational::new(1.into(), BigInt::one() << 64);
+    // Near a break c' vanishes, so an interval of width w encloses c within about w^2 |c"|:
+    // 2^-32 is ample for the filters, which only prune or prove a sign. The breaks keep the
+    // refined intervals (the same numbers, isolated more tightly).
+    let fine = Rational::new(1.into(), BigInt::one() << 32);
     let bounds = params
-        .iter()
+        .iter_mut()
         .map(|t| match t.exact() {
             Some(t0) => {
                 let v = eval(c, t0);
                 (f64_down(&v), f64_up(&v))
             }
             None => {
-                let mut t = t.clone();
                 t.refine_to(&fine);
                 let (lo, hi) = t.interval();
                 let (vl, vh) = enclose(c, lo, hi);

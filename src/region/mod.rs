@@ -22,7 +22,8 @@
 //! [`intersect_curves`](crate::intersect_curves) and
 //! [`self_intersections`](crate::self_intersections)); which pieces coincide; which pieces
 //! bound the result; how the boundary continues at a vertex. Floating point only prunes
-//! (outward-rounded bounding boxes that separate prove the separation). Parameters are
+//! (outward-rounded bounding boxes that separate prove the separation) or proves a sign by
+//! rigorous interval arithmetic (`crossing`), the exact path running whenever it does not. Parameters are
 //! [`AlgebraicReal`](crate::AlgebraicReal)s, so their `to_f64` is correctly rounded.
 //!
 //! # The algorithm, stage by stage (one file each)
@@ -80,6 +81,7 @@ mod arrangement;
 mod boolean;
 mod chain;
 mod classify;
+mod crossing;
 mod curve;
 mod input;
 mod pipeline;

@@ -14,13 +14,16 @@
 //! comparisons of their heights with p_y are signs of algebraic numbers, the crossing is the
 //! one root of y(t) - p_y on the piece, and the side is the exact sign of x(t) - p_x there.
 //! The outward-rounded boxes only skip curves whose box misses the line or lies wholly left
-//! of p (no crossing to count) and skip the side test for boxes wholly right of p.
+//! of p (no crossing to count) and skip the side test for boxes wholly right of p; the side
+//! test is first tried by the certified float filter of `crossing` (a proved sign only),
+//! and the crossing is isolated exactly only when the filter does not decide.
 //!
 //! The same count along +y (axis 1) uses the pieces monotone in x; a crossing there
 //! contributes -1 going right (+x) and +1 going left, so that both rays give the winding
 //! number (the count along +y is the count along +x of the mirror image in the line y = x,
 //! whose orientation is reversed).
 
+use super::crossing::crossing_side;
 use super::curve::{f64_down, f64_up, Curve};
 use super::input::{FillRule, Region};
 use crate::intersect::algebraic::{shifted_poly, AlgebraicReal};
@@ -122,6 +125,17 @@ pub(crate) fn ray_count<'a>(
             if wholly_beyond {
                 total += sign;
                 continue;
+            }
+            if !at_lo {
+                let piece = (&mono.params[k], &mono.params[k + 1]);
+                match crossing_side(curve, a, piece, p) {
+                    Some(Ordering::Greater) => {
+                        total += sign;
+                        continue;
+                    }
+                    Some(_) => continue,
+                    None => {}
+                }
             }
             let crossing = if at_lo {
                 lo_param.clone()
