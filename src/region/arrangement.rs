@@ -153,15 +153,25 @@ fn index_of(params: &[AlgebraicReal], x: &AlgebraicReal) -> usize {
 
 /// The pairs of curves whose boxes meet, by a sweep over the boxes' left sides.
 pub(crate) fn candidate_pairs(curves: &[Curve]) -> Vec<(usize, usize)> {
-    let mut order: Vec<usize> = (0..curves.len()).collect();
-    order.sort_by(|&i, &j| curves[i].bbox[0].total_cmp(&curves[j].bbox[0]));
+    let boxes: Vec<[f64; 4]> = curves.iter().map(|c| c.bbox).collect();
+    meeting_boxes(&boxes)
+}
+
+/// The pairs (i, j), i < j, of boxes `[x_lo, y_lo, x_hi, y_hi]` that meet (closed boxes),
+/// sorted: a sweep over the boxes ordered by their left side, each paired with the later
+/// ones whose left side is not beyond its right side.
+pub(crate) fn meeting_boxes(boxes: &[[f64; 4]]) -> Vec<(usize, usize)> {
+    let mut order: Vec<usize> = (0..boxes.len()).collect();
+    order.sort_by(|&i, &j| boxes[i][0].total_cmp(&boxes[j][0]));
     let mut pairs = Vec::new();
     for (n, &i) in order.iter().enumerate() {
-        for &j in &order[n + 1..] {
-            if curves[j].bbox[0] > curves[i].bbox[2] {
+        let (a, rest) = (&boxes[i], &order[n + 1..]);
+        for &j in rest {
+            let b = &boxes[j];
+            if b[0] > a[2] {
                 break;
             }
-            if curves[i].boxes_meet(&curves[j]) {
+            if a[1] <= b[3] && b[1] <= a[3] {
                 pairs.push((i.min(j), i.max(j)));
             }
         }

@@ -1,8 +1,8 @@
 //! The public front of the booleans: the operations, the answer's types, the work estimate.
 
 use super::input::Region;
+use super::parameter::Parameter;
 use crate::error::Result;
-use crate::intersect::algebraic::AlgebraicReal;
 
 /// A boolean operation on two regions A and B.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -48,10 +48,11 @@ pub struct Edge {
     pub loop_index: usize,
     /// The curve of that loop.
     pub curve: usize,
-    /// The parameter where the edge starts, exactly.
-    pub from: AlgebraicReal,
-    /// The parameter where the edge ends, exactly.
-    pub to: AlgebraicReal,
+    /// The parameter where the edge starts: its correctly rounded double at once, its exact
+    /// number on demand ([`Parameter::algebraic`]).
+    pub from: Parameter,
+    /// The parameter where the edge ends.
+    pub to: Parameter,
 }
 
 impl Edge {

@@ -105,9 +105,25 @@ pub(crate) fn chain(arr: &Arrangement, verdicts: &[Option<bool>]) -> Vec<Vec<Run
         leaving.entry(e.start(arr)).or_default().push(i);
     }
     let next = successors(arr, &edges, &leaving);
-    let mut used = vec![false; edges.len()];
+    let starts: Vec<usize> = edges.iter().map(|e| e.start(arr)).collect();
+    let ends: Vec<usize> = edges.iter().map(|e| e.end(arr)).collect();
+    let runs: Vec<Run> = edges.iter().map(|e| e.run(arr)).collect();
+    close_walks(&starts, &ends, &next, &runs)
+}
+
+/// The simple loops of maximal runs traced by directed edges (edge i runs from vertex
+/// `starts[i]` to `ends[i]` as `runs[i]`, and the walk continues after it by `next[i]`):
+/// each closed walk, cut at every vertex it passes twice, its consecutive runs that continue
+/// each other merged.
+pub(crate) fn close_walks(
+    starts: &[usize],
+    ends: &[usize],
+    next: &[usize],
+    runs: &[Run],
+) -> Vec<Vec<Run>> {
+    let mut used = vec![false; next.len()];
     let mut loops = Vec::new();
-    for start in 0..edges.len() {
+    for start in 0..next.len() {
         if used[start] {
             continue;
         }
@@ -119,9 +135,8 @@ pub(crate) fn chain(arr: &Arrangement, verdicts: &[Option<bool>]) -> Vec<Vec<Run
             e = next[e];
         }
         debug_assert_eq!(e, start, "a walk closes where it started");
-        for simple in split_at_repeats(arr, &edges, &walk) {
-            let runs: Vec<Run> = simple.iter().map(|&i| edges[i].run(arr)).collect();
-            loops.push(merge(runs));
+        for simple in split_at_repeats(starts, ends, &walk) {
+            loops.push(merge(simple.iter().map(|&i| runs[i]).collect()));
         }
     }
     loops
@@ -168,18 +183,17 @@ fn successors(
 }
 
 /// Cuts a closed walk at every vertex it passes twice.
-fn split_at_repeats(arr: &Arrangement, edges: &[Directed], walk: &[usize]) -> Vec<Vec<usize>> {
+fn split_at_repeats(starts: &[usize], ends: &[usize], walk: &[usize]) -> Vec<Vec<usize>> {
     let mut out = Vec::new();
     let mut stack: Vec<usize> = Vec::new();
     let mut at: HashMap<usize, usize> = HashMap::new();
     for &e in walk {
-        at.insert(edges[e].start(arr), stack.len());
+        at.insert(starts[e], stack.len());
         stack.push(e);
-        let end = edges[e].end(arr);
-        if let Some(&p) = at.get(&end) {
+        if let Some(&p) = at.get(&ends[e]) {
             let piece: Vec<usize> = stack.drain(p..).collect();
             for &f in &piece {
-                at.remove(&edges[f].start(arr));
+                at.remove(&starts[f]);
             }
             out.push(piece);
         }

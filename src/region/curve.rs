@@ -167,14 +167,6 @@ impl Curve {
         [0, 1].map(|a| eval(&derivative(&self.power[a]), t))
     }
 
-    /// Whether the boxes of the two curves share a point (false proves they are disjoint).
-    pub fn boxes_meet(&self, other: &Curve) -> bool {
-        self.bbox[0] <= other.bbox[2]
-            && other.bbox[0] <= self.bbox[2]
-            && self.bbox[1] <= other.bbox[3]
-            && other.bbox[1] <= self.bbox[3]
-    }
-
     /// The breaks into pieces monotone along `axis` (0: x, 1: y), computed once.
     pub fn monotone(&self, axis: usize) -> &Monotone {
         self.monotone[axis].get_or_init(|| {

@@ -1,7 +1,8 @@
 //! The input: a region as loops of exact 2-D Bézier curves and a fill rule, checked on entry.
 
+use super::curve::is_double;
 use crate::error::{Error, ErrorKind, Result};
-use crate::num::ring::Rational;
+use crate::num::ring::{rational_to_f64, Rational};
 use crate::shape::array::Bezier;
 
 /// The highest curve degree a region accepts: the exact intersection of two curves of degree
@@ -65,6 +66,30 @@ impl FillRule {
 pub struct Region {
     loops: Vec<Vec<Bezier<Rational, 2>>>,
     fill: FillRule,
+    /// The control points as doubles when every coordinate is one exactly (the float path
+    /// of the booleans reads these).
+    doubles: Option<Vec<Vec<Vec<[f64; 2]>>>>,
+}
+
+/// The control points of `loops` as doubles, when every coordinate is one exactly.
+fn as_doubles(loops: &[Vec<Bezier<Rational, 2>>]) -> Option<Vec<Vec<Vec<[f64; 2]>>>> {
+    loops
+        .iter()
+        .map(|curves| {
+            curves
+                .iter()
+                .map(|c| {
+                    c.points()
+                        .iter()
+                        .map(|p| {
+                            (is_double(&p[0]) && is_double(&p[1]))
+                                .then(|| [rational_to_f64(&p[0]), rational_to_f64(&p[1])])
+                        })
+                        .collect()
+                })
+                .collect()
+        })
+        .collect()
 }
 
 /// A point written as the spec writes it: `(1, 1/2)`.
@@ -122,7 +147,12 @@ impl Region {
                 }
             }
         }
-        Ok(Region { loops, fill })
+        let doubles = as_doubles(&loops);
+        Ok(Region {
+            loops,
+            fill,
+            doubles,
+        })
     }
 
     /// [`Region::new`] of control points given as doubles, each read exactly.
@@ -216,6 +246,12 @@ impl Region {
     /// The fill rule.
     pub fn fill(&self) -> FillRule {
         self.fill
+    }
+
+    /// The control points as doubles, loop by loop and curve by curve, when every input
+    /// coordinate is a double exactly.
+    pub(crate) fn doubles(&self) -> Option<&[Vec<Vec<[f64; 2]>>]> {
+        self.doubles.as_deref()
     }
 }
 

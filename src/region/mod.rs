@@ -83,7 +83,9 @@ mod chain;
 mod classify;
 mod crossing;
 mod curve;
+mod filtered;
 mod input;
+mod parameter;
 mod pipeline;
 mod prune;
 mod transfer;
@@ -100,4 +102,5 @@ pub use boolean::{
     boolean, boolean_work, triangle_intersection, BooleanOp, Edge, RegionResult, ResultLoop,
 };
 pub use input::{FillRule, Region, MAX_REGION_DEGREE};
+pub use parameter::Parameter;
 pub use winding::{Position, Winding};

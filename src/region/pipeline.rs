@@ -8,6 +8,7 @@ use super::chain::chain;
 use super::classify::boundary_groups;
 use super::curve::{f64_down, f64_up, is_double, Curve};
 use super::input::{is_single_point, Region};
+use super::parameter::Parameter;
 use crate::error::Result;
 use crate::intersect::budget::{curve_pair_work, self_intersection_work};
 use crate::intersect::filter::certified_crossings_f64;
@@ -65,8 +66,17 @@ fn box_area(regions: &[&Region; 2]) -> Rational {
     (&hi[0] - &lo[0]) * (&hi[1] - &lo[1])
 }
 
-/// The boolean `op` of the two regions.
+/// The boolean `op` of the two regions: the float path ([`super::filtered`]) when it
+/// proves the configuration generic, else the exact stages.
 pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Result<RegionResult> {
+    match super::filtered::run(regions, op) {
+        Some(answer) => Ok(answer),
+        None => run_exact(regions, op),
+    }
+}
+
+/// The boolean `op` of the two regions by the exact stages.
+pub(crate) fn run_exact(regions: &[&Region; 2], op: BooleanOp) -> Result<RegionResult> {
     let (curves, ids, next) = collect(regions);
     let arr = Arrangement::build(curves, ids, &next)?;
     let verdicts = boundary_groups(&arr, [regions[0].fill(), regions[1].fill()], op);
@@ -93,8 +103,8 @@ pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Result<RegionResult>
                     region: id.region,
                     loop_index: id.loop_index,
                     curve: id.curve,
-                    from: arr.params[r.curve][r.from].clone(),
-                    to: arr.params[r.curve][r.to].clone(),
+                    from: Parameter::known(arr.params[r.curve][r.from].clone()),
+                    to: Parameter::known(arr.params[r.curve][r.to].clone()),
                 }
             })
             .collect();

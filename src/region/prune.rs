@@ -16,55 +16,84 @@
 //!   tried as the chord P_n - P_0 and as the sum of the differences (both as doubles, made
 //!   exact).
 //!
+//! Both proofs take control points of exact rationals or of doubles ([`ProofPoint`]); the
+//! candidate directions are any doubles (the proofs hold for every direction), computed from
+//! the points rounded to doubles.
+//!
 //! Every sign is exact: a float filter with a rigorous error bound when the points are
 //! doubles, exact rational arithmetic otherwise or when the filter cannot tell.
 
 use super::curve::is_double;
+use crate::intersect::algebraic::exact_f64;
 use crate::num::ring::{rational_to_f64, Rational};
 use num_traits::Zero;
 use std::cmp::Ordering;
 
-fn sub(a: &[Rational; 2], b: &[Rational; 2]) -> [Rational; 2] {
-    [&a[0] - &b[0], &a[1] - &b[1]]
+/// A control point as the proofs see it: its coordinates as doubles (exact for `f64`
+/// points, rounded for rationals: they only choose candidate directions) and the exact sign
+/// of n . (x - v) for a normal n of doubles.
+pub(crate) trait ProofPoint: PartialEq {
+    /// The coordinates as doubles.
+    fn approx(&self) -> [f64; 2];
+    /// The exact sign of n . (self - v).
+    fn side(&self, n: &[f64; 2], v: &Self) -> Ordering;
 }
 
-fn dot(a: &[Rational; 2], b: &[Rational; 2]) -> Rational {
-    &a[0] * &b[0] + &a[1] * &b[1]
+/// The float filter of a sign n . (x - v) on doubles: fl(x - v) has relative error at most
+/// u = 2^-53 and each product and the sum add at most u more each, so the computed value is
+/// within 4u (|n0 d0| + |n1 d1|) plus an underflow margin of the exact one. `None` when that
+/// does not decide.
+fn side_filter(n: &[f64; 2], x: [f64; 2], v: [f64; 2]) -> Option<Ordering> {
+    let d = [x[0] - v[0], x[1] - v[1]];
+    let value = n[0] * d[0] + n[1] * d[1];
+    let bound = 4.0 * f64::EPSILON * ((n[0] * d[0]).abs() + (n[1] * d[1]).abs()) + 1e-300;
+    (value.is_finite() && value.abs() > bound).then(|| value.partial_cmp(&0.0).expect("finite"))
 }
 
-/// A double approximation of a unit vector along `v` (`None` for zero), as exact rationals.
-fn unit(v: &[Rational; 2]) -> Option<[f64; 2]> {
-    let x = rational_to_f64(&v[0]);
-    let y = rational_to_f64(&v[1]);
-    let n = x.hypot(y);
-    (n > 0.0 && n.is_finite()).then(|| [x / n, y / n])
+/// The exact sign of n . (x - v) in rationals.
+fn side_exact(n: &[f64; 2], x: &[Rational; 2], v: &[Rational; 2]) -> Ordering {
+    let n = [exact_f64(n[0]), exact_f64(n[1])];
+    (&n[0] * (&x[0] - &v[0]) + &n[1] * (&x[1] - &v[1])).cmp(&Rational::zero())
 }
 
-fn exact(v: [f64; 2]) -> Option<[Rational; 2]> {
-    Some([Rational::from_float(v[0])?, Rational::from_float(v[1])?])
-}
-
-/// The exact sign of n . (x - v) for a normal n of doubles: a float filter first (when x and
-/// v are doubles: fl(x - v) has relative error at most u = 2^-53 and each product and the sum
-/// add at most u more each, so an error below 4u (|n0 d0| + |n1 d1|) plus an underflow
-/// margin), exact rational arithmetic when the filter cannot tell.
-fn side(n: &[f64; 2], n_exact: &[Rational; 2], x: &[Rational; 2], v: &[Rational; 2]) -> Ordering {
-    let doubles = x.iter().chain(v).all(is_double);
-    if doubles {
-        let xf = [rational_to_f64(&x[0]), rational_to_f64(&x[1])];
-        let vf = [rational_to_f64(&v[0]), rational_to_f64(&v[1])];
-        let d = [xf[0] - vf[0], xf[1] - vf[1]];
-        let value = n[0] * d[0] + n[1] * d[1];
-        let bound = 4.0 * f64::EPSILON * ((n[0] * d[0]).abs() + (n[1] * d[1]).abs()) + 1e-300;
-        if value.is_finite() && value.abs() > bound {
-            return value.partial_cmp(&0.0).expect("finite");
-        }
+impl ProofPoint for [Rational; 2] {
+    fn approx(&self) -> [f64; 2] {
+        [rational_to_f64(&self[0]), rational_to_f64(&self[1])]
     }
-    dot(n_exact, &sub(x, v)).cmp(&Rational::zero())
+    fn side(&self, n: &[f64; 2], v: &Self) -> Ordering {
+        if self.iter().chain(v).all(is_double) {
+            if let Some(o) = side_filter(n, self.approx(), v.approx()) {
+                return o;
+            }
+        }
+        side_exact(n, self, v)
+    }
+}
+
+impl ProofPoint for [f64; 2] {
+    fn approx(&self) -> [f64; 2] {
+        *self
+    }
+    fn side(&self, n: &[f64; 2], v: &Self) -> Ordering {
+        side_filter(n, *self, *v).unwrap_or_else(|| {
+            let exact = |p: &[f64; 2]| [exact_f64(p[0]), exact_f64(p[1])];
+            side_exact(n, &exact(self), &exact(v))
+        })
+    }
+}
+
+/// A double approximation of a unit vector along `v` (`None` for zero or non-finite).
+fn unit(v: [f64; 2]) -> Option<[f64; 2]> {
+    let n = v[0].hypot(v[1]);
+    (n > 0.0 && n.is_finite()).then(|| [v[0] / n, v[1] / n])
+}
+
+fn minus(a: [f64; 2], b: [f64; 2]) -> [f64; 2] {
+    [a[0] - b[0], a[1] - b[1]]
 }
 
 /// Whether P (ending at v) and Q (starting at v) provably meet only at v.
-pub(crate) fn consecutive_meet_only_at_join(p: &[[Rational; 2]], q: &[[Rational; 2]]) -> bool {
+pub(crate) fn consecutive_meet_only_at_join<P: ProofPoint>(p: &[P], q: &[P]) -> bool {
     let v = &p[p.len() - 1];
     if &q[0] != v {
         return false;
@@ -75,49 +104,35 @@ pub(crate) fn consecutive_meet_only_at_join(p: &[[Rational; 2]], q: &[[Rational;
     let Some(after) = q.iter().find(|x| *x != v) else {
         return false;
     };
-    let (Some(ub), Some(ua)) = (unit(&sub(before, v)), unit(&sub(after, v))) else {
+    let (vf, bf, af) = (v.approx(), before.approx(), after.approx());
+    let (Some(ub), Some(ua)) = (unit(minus(bf, vf)), unit(minus(af, vf))) else {
         return false;
     };
-    let candidates = [
-        [ua[0] - ub[0], ua[1] - ub[1]],
-        [
-            rational_to_f64(&(&after[0] - &before[0])),
-            rational_to_f64(&(&after[1] - &before[1])),
-        ],
-    ];
+    let candidates = [minus(ua, ub), minus(af, bf)];
     candidates.into_iter().any(|n| {
-        let Some(n_exact) = exact(n) else {
-            return false;
-        };
-        p.iter()
-            .filter(|x| *x != v)
-            .all(|x| side(&n, &n_exact, x, v) == Ordering::Less)
+        n.iter().all(|c| c.is_finite())
+            && p.iter()
+                .filter(|x| *x != v)
+                .all(|x| x.side(&n, v) == Ordering::Less)
             && q.iter()
                 .filter(|x| *x != v)
-                .all(|x| side(&n, &n_exact, x, v) == Ordering::Greater)
+                .all(|x| x.side(&n, v) == Ordering::Greater)
     })
 }
 
 /// Whether the curve with control points `p` is provably one-to-one (so has no
 /// self-intersection and does not retrace itself).
-pub(crate) fn one_to_one(p: &[[Rational; 2]]) -> bool {
-    let chord = sub(&p[p.len() - 1], &p[0]);
+pub(crate) fn one_to_one<P: ProofPoint>(p: &[P]) -> bool {
+    let chord = minus(p[p.len() - 1].approx(), p[0].approx());
     let mut sum = [0.0, 0.0];
     for w in p.windows(2) {
-        for a in 0..2 {
-            sum[a] += rational_to_f64(&w[1][a]) - rational_to_f64(&w[0][a]);
-        }
+        let d = minus(w[1].approx(), w[0].approx());
+        sum = [sum[0] + d[0], sum[1] + d[1]];
     }
-    let candidates = [
-        [rational_to_f64(&chord[0]), rational_to_f64(&chord[1])],
-        sum,
-    ];
-    candidates.iter().any(|d| {
-        let Some(d_exact) = exact(*d) else {
-            return false;
-        };
-        p.windows(2)
-            .all(|w| side(d, &d_exact, &w[1], &w[0]) == Ordering::Greater)
+    [chord, sum].iter().any(|d| {
+        d.iter().all(|c| c.is_finite())
+            && p.windows(2)
+                .all(|w| w[1].side(d, &w[0]) == Ordering::Greater)
     })
 }
 

@@ -78,12 +78,12 @@ pub(super) fn assert_well_formed(regions: &[&Region], r: &RegionResult) {
                 (end[0] - start[0]).abs() < 1e-9 && (end[1] - start[1]).abs() < 1e-9,
                 "edge {i} ends at {end:?}, the next starts at {start:?}"
             );
-            assert!(!e.from.equals(&e.to));
+            assert!(e.from.compare(&e.to).unwrap().is_ne());
             let same_curve = (e.region, e.loop_index, e.curve) == (f.region, f.loop_index, f.curve);
             assert!(
                 !(same_curve
-                    && e.to.equals(&f.from)
-                    && (e.from.compare(&e.to) == f.from.compare(&f.to))),
+                    && e.to.compare(&f.from).unwrap().is_eq()
+                    && (e.from.compare(&e.to).unwrap() == f.from.compare(&f.to).unwrap())),
                 "edges {i} and {} continue one curve",
                 (i + 1) % n
             );

@@ -283,7 +283,10 @@ fn a_shared_piece_of_parabola_is_reported_once_from_the_first_region() {
     let parabola = r.loops[0].edges.iter().find(|e| e.curve == 0).unwrap();
     assert_eq!(parabola.region, 0);
     assert_eq!(
-        (parabola.from.exact(), parabola.to.exact()),
+        (
+            parabola.from.algebraic().unwrap().exact(),
+            parabola.to.algebraic().unwrap().exact()
+        ),
         (Some(&q(1, 2)), Some(&q(1, 1)))
     );
     let r = boolean(&a, &b, BooleanOp::Union).unwrap();

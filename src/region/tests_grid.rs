@@ -95,9 +95,11 @@ fn result_winding(regions: &[&Region], r: &RegionResult, cx: i64, cy: i64) -> i6
     for lp in &r.loops {
         for e in &lp.edges {
             let c = &regions[e.region].loops()[e.loop_index][e.curve];
-            let (from, to) = (e.from.exact().unwrap(), e.to.exact().unwrap());
+            let exact =
+                |p: &crate::region::Parameter| p.algebraic().unwrap().exact().unwrap().clone();
+            let (from, to) = (exact(&e.from), exact(&e.to));
             let at = |t: &Rational| c.eval(t);
-            let (a, b) = (at(from), at(to));
+            let (a, b) = (at(&from), at(&to));
             let up = a[1] <= py && py < b[1];
             let down = b[1] <= py && py < a[1];
             if up || down {

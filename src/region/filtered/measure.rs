@@ -1,0 +1,252 @@
+//! Rigorous enclosures in floating point: the sign of a crossing, the signed area of a loop
+//! and of the result, and the assembled answer.
+//!
+//! Everything is computed in [`BoundedF64`] (a double with a rigorous bound on its distance
+//! to the exact value of the same operations on the same inputs). A parameter t* known to lie
+//! in an enclosure [lo, hi] of doubles around its correctly rounded double m enters as m with
+//! the bound hi - lo (rounded up), which covers |t* - m|; evaluations by de Casteljau's
+//! pyramid in convex form ([`ConvexStep`]) are then enclosures of the exact values at t*.
+//!
+//! **Area.** The signed area of a closed loop is the sum over its pieces of the integral of
+//! (x - o) dy, for any constant o (the integral of o dy over a closed loop is zero); o is a
+//! double near the middle of the input, which keeps the terms small. For a curve of degree n
+//! with control points (x_i, y_i), the integrand (x(t) - o) y'(t) is a Bernstein polynomial
+//! of degree 2n - 1 with coefficients
+//! c_k = sum over i + j = k of C(n, i) C(n - 1, j) / C(2n - 1, k) (x_i - o) n (y_(j+1) - y_j),
+//! so its antiderivative F(t) from 0 is the Bernstein polynomial of degree 2n with
+//! coefficients f_0 = 0, f_(k+1) = f_k + c_k / (2n), and F(1) = f_(2n). A piece from a to b
+//! contributes F(b) - F(a).
+
+use super::split::{Mark, Split};
+use super::walk::BoundaryLoop;
+use crate::intersect::interval::{lower, upper, ConvexStep};
+use crate::num::bounded::{BoundedF64, UNIT_ROUNDOFF};
+use crate::num::ring::Ring;
+use crate::region::boolean::{Edge, RegionResult, ResultLoop};
+use crate::region::parameter::Parameter;
+use crate::shape::flat::curve_pyramid_in_place;
+
+/// The sign of an enclosure: `Some(±1)` when it excludes zero.
+fn sign(x: &BoundedF64) -> Option<i64> {
+    if x.value() - x.error_bound() > 0.0 {
+        Some(1)
+    } else if x.value() + x.error_bound() < 0.0 {
+        Some(-1)
+    } else {
+        None
+    }
+}
+
+/// The parameter t* in `[lo, hi]` as its double `m` with the bound hi - lo.
+fn parameter(m: f64, [lo, hi]: [f64; 2]) -> BoundedF64 {
+    BoundedF64::with_bound(m, (hi - lo).next_up())
+}
+
+/// An enclosure of the polynomial with Bernstein coefficients `coefficients` (each `dim`
+/// numbers) at `t`, into `out`.
+fn evaluate(coefficients: &[BoundedF64], dim: usize, t: BoundedF64, level: &mut Vec<BoundedF64>) {
+    level.clear();
+    level.extend_from_slice(coefficients);
+    curve_pyramid_in_place(level, dim, &ConvexStep::new(t));
+}
+
+/// The hodograph's control points n (p_(i+1) - p_i), flat (x, y, x, y, ...).
+fn hodograph(points: &[[f64; 2]]) -> Vec<BoundedF64> {
+    let n = BoundedF64::exact((points.len() - 1) as f64);
+    points
+        .windows(2)
+        .flat_map(|w| {
+            [0, 1].map(|a| {
+                BoundedF64::exact(w[1][a])
+                    .sub(&BoundedF64::exact(w[0][a]))
+                    .mul(&n)
+            })
+        })
+        .collect()
+}
+
+/// The exact sign of cross(P'(s*), Q'(t*)) at a certified crossing (s* in `s_box` around
+/// `s`, t* in `t_box` around `t`), or `None` when the enclosure of the cross product does
+/// not exclude zero.
+pub(super) fn crossing_sign(
+    p: &[[f64; 2]],
+    q: &[[f64; 2]],
+    s: f64,
+    s_box: [f64; 2],
+    t: f64,
+    t_box: [f64; 2],
+) -> Option<i64> {
+    let mut level = Vec::new();
+    evaluate(&hodograph(p), 2, parameter(s, s_box), &mut level);
+    let a = [level[0], level[1]];
+    evaluate(&hodograph(q), 2, parameter(t, t_box), &mut level);
+    let b = [level[0], level[1]];
+    sign(&a[0].mul(&b[1]).sub(&a[1].mul(&b[0])))
+}
+
+/// C(n, k) as a double (exact for the degrees taken, n <= 2 * 20).
+fn binomial(n: usize, k: usize) -> i128 {
+    (0..k).fold(1i128, |acc, i| acc * (n - i) as i128 / (i + 1) as i128)
+}
+
+/// The Bernstein coefficients f_0..f_2n of F(t), the integral of (x - o) dy from 0 to t
+/// (module docs).
+pub(super) fn area_coefficients(points: &[[f64; 2]], o: f64) -> Vec<BoundedF64> {
+    let n = points.len() - 1;
+    let x: Vec<BoundedF64> = points
+        .iter()
+        .map(|p| BoundedF64::exact(p[0]).sub(&BoundedF64::exact(o)))
+        .collect();
+    let dy: Vec<BoundedF64> = points
+        .windows(2)
+        .map(|w| BoundedF64::exact(w[1][1]).sub(&BoundedF64::exact(w[0][1])))
+        .collect();
+    let mut f = Vec::with_capacity(2 * n + 1);
+    let mut running = BoundedF64::exact(0.0);
+    f.push(running);
+    for k in 0..2 * n {
+        let mut c = BoundedF64::exact(0.0);
+        for i in k.saturating_sub(n - 1)..=k.min(n) {
+            let j = k - i;
+            // C(n, i) C(n - 1, j) n / (C(2n - 1, k) 2n) = C(n, i) C(n - 1, j) / (2 C(2n - 1, k)).
+            let weight = x[i].mul(&dy[j]).scale_frac(
+                binomial(n, i) * binomial(n - 1, j),
+                2 * binomial(2 * n - 1, k),
+            );
+            c = c.add(&weight);
+        }
+        running = running.add(&c);
+        f.push(running);
+    }
+    f
+}
+
+/// The loops' signed areas and the answer's parameters, from the split and the area
+/// coefficients.
+struct Areas<'s, 'a> {
+    split: &'s Split<'a>,
+    /// Each curve's area coefficients, computed on first use.
+    coefficients: Vec<Option<Vec<BoundedF64>>>,
+    origin: f64,
+    level: Vec<BoundedF64>,
+}
+
+impl<'s, 'a> Areas<'s, 'a> {
+    fn new(split: &'s Split<'a>) -> Self {
+        let (lo, hi) = split
+            .curves
+            .iter()
+            .fold((f64::MAX, f64::MIN), |(lo, hi), c| {
+                (lo.min(c.bbox[0]), hi.max(c.bbox[2]))
+            });
+        Areas {
+            split,
+            coefficients: vec![None; split.curves.len()],
+            origin: lo / 2.0 + hi / 2.0,
+            level: Vec::new(),
+        }
+    }
+
+    /// F_c at position `k` of curve c (0: its start, `marks.len() + 1`: its end, else the
+    /// crossing `marks[k - 1]`).
+    fn at(&mut self, c: usize, k: usize) -> BoundedF64 {
+        let points = self.split.curves[c].points;
+        let origin = self.origin;
+        let f = self.coefficients[c].get_or_insert_with(|| area_coefficients(points, origin));
+        let marks = &self.split.marks[c];
+        if k == 0 {
+            return f[0];
+        }
+        if k == marks.len() + 1 {
+            return f[f.len() - 1];
+        }
+        let m: Mark = marks[k - 1];
+        let x = &self.split.crossings[m.crossing];
+        let t = parameter(x.nearest[m.side], x.enclosures[m.side]);
+        evaluate(f, 1, t, &mut self.level);
+        self.level[0]
+    }
+}
+
+/// The signed area of each loop of the input, or `None` when an enclosure does not exclude
+/// zero.
+pub(super) fn loop_orientations(split: &Split<'_>) -> Option<Vec<i64>> {
+    let mut areas = Areas::new(split);
+    split
+        .loops
+        .iter()
+        .map(|l| {
+            let mut sum = BoundedF64::exact(0.0);
+            for c in l.first..l.first + l.len {
+                let end = split.marks[c].len() + 1;
+                sum = sum.add(&areas.at(c, end));
+            }
+            sign(&sum)
+        })
+        .collect()
+}
+
+/// The parameter of position `k` of curve c, as the answer gives it.
+fn parameter_at(split: &Split<'_>, c: usize, k: usize) -> Parameter {
+    let marks = &split.marks[c];
+    if k == 0 || k == marks.len() + 1 {
+        return Parameter::end(k != 0);
+    }
+    let m = marks[k - 1];
+    let x = &split.crossings[m.crossing];
+    Parameter::crossing(
+        x.pair.clone(),
+        m.side,
+        x.enclosures[0],
+        x.enclosures[1],
+        x.nearest[m.side],
+    )
+}
+
+/// The answer: each boundary loop's edges, whether it is a hole (the sign of its area), and
+/// the enclosure of the total area; `None` when a loop's sign is not proved or the area
+/// enclosure is wider than the promised 2^-40 B.
+pub(super) fn answer(split: &Split<'_>, loops: Vec<BoundaryLoop>) -> Option<RegionResult> {
+    let mut areas = Areas::new(split);
+    let mut total = BoundedF64::exact(0.0);
+    let mut out = Vec::with_capacity(loops.len());
+    for runs in &loops {
+        let mut sum = BoundedF64::exact(0.0);
+        let mut edges = Vec::with_capacity(runs.len());
+        for r in runs {
+            sum = sum.add(&areas.at(r.curve, r.to).sub(&areas.at(r.curve, r.from)));
+            let id = split.curves[r.curve].id;
+            edges.push(Edge {
+                region: id.region,
+                loop_index: id.loop_index,
+                curve: id.curve,
+                from: parameter_at(split, r.curve, r.from),
+                to: parameter_at(split, r.curve, r.to),
+            });
+        }
+        let hole = sign(&sum)? < 0;
+        total = total.add(&sum);
+        out.push(ResultLoop { hole, edges });
+    }
+    if out.is_empty() {
+        return Some(RegionResult {
+            loops: out,
+            area: [0.0, 0.0],
+        });
+    }
+    let area = [lower(&total), upper(&total)];
+    // B, the input box's area, rounded down.
+    let b = split
+        .curves
+        .iter()
+        .fold([f64::MAX, f64::MAX, f64::MIN, f64::MIN], |b, c| {
+            [
+                b[0].min(c.bbox[0]),
+                b[1].min(c.bbox[1]),
+                b[2].max(c.bbox[2]),
+                b[3].max(c.bbox[3]),
+            ]
+        });
+    let big_b = (b[2] - b[0]) * (b[3] - b[1]) * (1.0 - 4.0 * UNIT_ROUNDOFF);
+    (area[1] - area[0] <= big_b * 2f64.powi(-40)).then_some(RegionResult { loops: out, area })
+}

@@ -1,0 +1,60 @@
+//! The float path of the booleans: the common configuration decided in floating point with
+//! rigorous bounds, no big numbers; anything else is left to the exact pipeline.
+//!
+//! It answers only regions whose control points are doubles, and only when it can **prove**
+//! that the configuration is *generic*:
+//!
+//! * every loop is simple and the loops of one region are pairwise disjoint: each curve is
+//!   one-to-one, consecutive curves of a loop meet only at their join, and every other pair of
+//!   curves of one region either has disjoint boxes or no common point (the float filter
+//!   [`certified_crossings_f64`] proves the empty answer) (module `split`);
+//! * every common point of a curve of A and a curve of B is a transversal crossing strictly
+//!   inside both curves (the filter's proof, which excludes ends, tangencies and overlaps);
+//!   no point of the plane is then on more than two curves, and the crossings along a curve
+//!   have disjoint enclosures, which orders them.
+//!
+//! Where any of this is not proved, `run` answers `None` and [`super::pipeline`] runs the
+//! exact stages, which handle every configuration; so the answer never depends on which
+//! path gave it (the tests compare the two on the same inputs).
+//!
+//! In the generic configuration the winding numbers need no ray per piece. The winding
+//! number of region R just left of a loop L of R is the winding number around R's other
+//! loops (constant along L, which meets none of them) plus 1 when L runs counter-clockwise
+//! (its signed area is positive), and just right of it that sum minus 1 when L runs
+//! clockwise. The winding number of the other region R' changes along L only at the
+//! crossings, by the sign of cross(Q', P') where L's curve P crosses Q (moving from the
+//! right of Q to its left adds 1). So one exact ray count per loop, at one of its vertices
+//! (module `side`), and the crossing signs give every piece its four winding numbers
+//! (module `walk`); the fill rules and the operation say which pieces bound the result and
+//! which way. A crossing vertex has exactly four half-pieces around it, in the counter-
+//! clockwise order +P', +Q', -P', -Q' when cross(P', Q') > 0 (else +P', -Q', -P', +Q'),
+//! which is all the angular order the chaining needs.
+//!
+//! Signed areas and crossing signs are enclosed by [`BoundedF64`](crate::BoundedF64)
+//! (rigorous running error bounds; a parameter known to lie in an enclosure of doubles
+//! enters as its correctly rounded double with that radius) (module `measure`); a sign is
+//! taken only when the enclosure excludes zero. The parameters of the answer are
+//! [`Parameter`](super::Parameter)s: the filter's correctly rounded doubles and enclosures,
+//! made exact on demand.
+
+mod measure;
+mod side;
+mod split;
+mod walk;
+
+use super::boolean::{BooleanOp, RegionResult};
+use super::input::Region;
+
+/// The boolean `op` of the two regions when every input number is a double and the
+/// configuration is proved generic (module docs), else `None`.
+pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Option<RegionResult> {
+    let doubles = [regions[0].doubles()?, regions[1].doubles()?];
+    let arrangement = split::Split::build(doubles)?;
+    let fills = [regions[0].fill(), regions[1].fill()];
+    let windings = side::loop_windings(&arrangement)?;
+    let loops = walk::boundary(&arrangement, &windings, fills, op)?;
+    measure::answer(&arrangement, loops)
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,108 @@
+//! The winding numbers along each loop: an exact ray count at one vertex of the loop
+//! against every other loop, and the loop's own orientation.
+//!
+//! **The ray count.** The winding number of closed loops around a point X on none of them is
+//! the signed number of times they pass between the half-planes y < X_y and y >= X_y at a
+//! point with x > X_x (upwards +1). For one curve with control points of doubles, compared
+//! exactly with X (a double vertex): when every control point has y >= X_y, or every one
+//! y < X_y, or every one x < X_x, the curve (inside the hull of its control points) passes
+//! no such point: 0. When every one has x > X_x, every passage counts, and their signed
+//! number is fixed by the ends: [y_n >= X_y] - [y_0 >= X_y]. Otherwise the curve is
+//! undecided in this direction. The same holds for the rays along -x, +y and -y after a
+//! quarter turn of the plane (negations of doubles: exact; turns keep winding numbers);
+//! the first direction that decides every curve gives the count, and if none does, the
+//! next vertex of the loop is tried.
+
+use super::measure::loop_orientations;
+use super::split::Split;
+
+/// The winding numbers around a loop L of region R: `own` = [left of L, right of L] for R,
+/// and `other` = the winding number of the other region at the start of curve `start` of L.
+pub(super) struct LoopWindings {
+    pub own: [i64; 2],
+    pub other: i64,
+    pub start: usize,
+}
+
+/// The point p turned so that the ray along direction `d` (0: +x, 1: +y, 2: -x, 3: -y) runs
+/// along +x.
+fn turn(p: [f64; 2], d: usize) -> [f64; 2] {
+    match d {
+        0 => p,
+        1 => [p[1], -p[0]],
+        2 => [-p[0], -p[1]],
+        _ => [-p[1], p[0]],
+    }
+}
+
+/// The signed number of passages of the curve across the ray from x along direction `d`,
+/// or `None` when the control points do not decide it (module docs).
+fn ray_passages(x: [f64; 2], points: &[[f64; 2]], d: usize) -> Option<i64> {
+    let x = turn(x, d);
+    let (mut above, mut below, mut left, mut right) = (true, true, true, true);
+    for p in points {
+        let p = turn(*p, d);
+        above &= p[1] >= x[1];
+        below &= p[1] < x[1];
+        left &= p[0] < x[0];
+        right &= p[0] > x[0];
+    }
+    if above || below || left {
+        return Some(0);
+    }
+    if right {
+        let up = |p: [f64; 2]| i64::from(turn(p, d)[1] >= x[1]);
+        return Some(up(points[points.len() - 1]) - up(points[0]));
+    }
+    None
+}
+
+/// The winding numbers of both regions at `x` around every loop but `skip`, or `None` when
+/// no direction decides every curve.
+fn windings_at(split: &Split<'_>, x: [f64; 2], skip: usize) -> Option<[i64; 2]> {
+    'directions: for d in 0..4 {
+        let mut w = [0, 0];
+        for c in &split.curves {
+            if c.loop_no == skip {
+                continue;
+            }
+            match ray_passages(x, c.points, d) {
+                Some(k) => w[c.id.region] += k,
+                None => continue 'directions,
+            }
+        }
+        return Some(w);
+    }
+    None
+}
+
+/// How many vertices of a loop are tried before the exact path is left to answer.
+const VERTICES_TRIED: usize = 8;
+
+/// The winding numbers around every loop (see [`LoopWindings`]), or `None` when a loop's
+/// orientation or a ray count is not decided.
+pub(super) fn loop_windings(split: &Split<'_>) -> Option<Vec<LoopWindings>> {
+    let orientation = loop_orientations(split)?;
+    split
+        .loops
+        .iter()
+        .enumerate()
+        .map(|(l, lp)| {
+            let (start, w) = (lp.first..lp.first + lp.len)
+                .take(VERTICES_TRIED)
+                .find_map(|c| Some((c, windings_at(split, split.curves[c].points[0], l)?)))?;
+            let base = w[lp.region];
+            // Left of a counter-clockwise loop is its inside (+1); right of a clockwise one.
+            let own = if orientation[l] > 0 {
+                [base + 1, base]
+            } else {
+                [base, base - 1]
+            };
+            Some(LoopWindings {
+                own,
+                other: w[1 - lp.region],
+                start,
+            })
+        })
+        .collect()
+}

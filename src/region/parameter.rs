@@ -1,0 +1,247 @@
+//! The parameters of result edges: exact numbers, made exact only when asked.
+//!
+//! A parameter is either known exactly from the start (a curve's end 0 or 1, or a number the
+//! exact pipeline found) or a *certified crossing*: the float filter
+//! ([`certified_crossings_f64`](crate::certified_crossings_f64)) proved that the two curves
+//! cross exactly once in a box of doubles, and gave the correctly rounded double of each
+//! parameter. Both facts are proofs, so the answer is certified without the exact number; the
+//! exact [`AlgebraicReal`] (resultant, square-free part, isolating interval) is computed from
+//! the two curves on the first call to [`Parameter::algebraic`], then kept. A boolean of regions
+//! with a few dozen crossings therefore costs float work only, unless its caller asks for the
+//! exact numbers.
+
+use crate::error::{Error, ErrorKind, Result};
+use crate::intersect::algebraic::{exact_f64, AlgebraicReal};
+use crate::intersect::curves::{intersect_curves_f64, Intersections};
+use crate::num::ring::Rational;
+use std::cmp::Ordering;
+use std::fmt;
+use std::sync::{Arc, OnceLock};
+
+/// One exact parameter of a result edge (see [`Edge`](super::Edge)).
+///
+/// [`to_f64`](Parameter::to_f64) and [`enclosure`](Parameter::enclosure) are free: the double
+/// nearest to the exact parameter (ties to even) and doubles around it, both certified.
+/// [`algebraic`](Parameter::algebraic) gives the exact algebraic number; for a crossing found by the
+/// float filter it is computed on the first call (exact intersection of the two curves, a
+/// fraction of a millisecond for cubics) and kept.
+///
+/// ```
+/// use blossom::region::{boolean, BooleanOp, FillRule, Region};
+/// use blossom::Bezier;
+/// let square = |x: f64, y: f64| -> Result<Region, blossom::Error> {
+///     let c = [[x, y], [x + 2.0, y], [x + 2.0, y + 2.0], [x, y + 2.0]];
+///     let sides = (0..4).map(|i| Bezier::new(vec![c[i], c[(i + 1) % 4]]));
+///     Region::from_f64(vec![sides.collect::<Result<_, _>>()?], FillRule::NonZero)
+/// };
+/// let r = boolean(&square(0.0, 0.0)?, &square(1.0, 1.0)?, BooleanOp::Intersection)?;
+/// for e in &r.loops[0].edges {
+///     let [lo, hi] = e.from.enclosure();
+///     assert!(lo <= e.from.to_f64() && e.from.to_f64() <= hi);
+///     // The exact number rounds to the same double.
+///     assert_eq!(e.from.algebraic()?.to_f64(), e.from.to_f64());
+/// }
+/// # Ok::<(), blossom::Error>(())
+/// ```
+#[derive(Clone)]
+pub struct Parameter {
+    nearest: f64,
+    enclosure: [f64; 2],
+    exact: OnceLock<AlgebraicReal>,
+    source: Source,
+}
+
+/// What makes the exact number when it is not known yet.
+#[derive(Clone)]
+enum Source {
+    /// Known from the start.
+    Known,
+    /// A curve's end: 0 (`false`) or 1 (`true`).
+    End(bool),
+    /// A crossing proved by the float filter.
+    Crossing(Crossing),
+}
+
+/// Where a crossing parameter comes from: the pair, which side, and both enclosures (which
+/// pick the crossing among the pair's exact intersections).
+#[derive(Clone)]
+struct Crossing {
+    pair: Arc<Pair>,
+    /// 0: the parameter on the pair's first curve, 1: on the second.
+    side: usize,
+    s: [f64; 2],
+    t: [f64; 2],
+}
+
+/// Two curves of doubles and, once computed, their exact intersections.
+pub(crate) struct Pair {
+    p: Vec<[f64; 2]>,
+    q: Vec<[f64; 2]>,
+    exact: OnceLock<std::result::Result<Intersections, Error>>,
+}
+
+impl Pair {
+    pub(crate) fn new(p: Vec<[f64; 2]>, q: Vec<[f64; 2]>) -> Arc<Pair> {
+        Arc::new(Pair {
+            p,
+            q,
+            exact: OnceLock::new(),
+        })
+    }
+}
+
+/// Whether the exact number `x` lies in the closed interval of doubles `[lo, hi]`.
+fn inside(x: &AlgebraicReal, [lo, hi]: [f64; 2]) -> bool {
+    x.cmp_rational(&exact_f64(lo)) != Ordering::Less
+        && x.cmp_rational(&exact_f64(hi)) != Ordering::Greater
+}
+
+impl Parameter {
+    /// An exact number.
+    pub(crate) fn known(x: AlgebraicReal) -> Parameter {
+        Parameter {
+            nearest: x.to_f64(),
+            enclosure: [x.to_f64_down(), x.to_f64_up()],
+            exact: OnceLock::from(x),
+            source: Source::Known,
+        }
+    }
+
+    /// A curve's end, 0 or 1 (its exact number made on demand, to spare the allocations).
+    pub(crate) fn end(one: bool) -> Parameter {
+        let x = f64::from(u8::from(one));
+        Parameter {
+            nearest: x,
+            enclosure: [x, x],
+            exact: OnceLock::new(),
+            source: Source::End(one),
+        }
+    }
+
+    /// The parameter on side `side` (0: first curve, 1: second) of the crossing of `pair`
+    /// proved in the box `s` x `t`, with `nearest` its correctly rounded double.
+    pub(crate) fn crossing(
+        pair: Arc<Pair>,
+        side: usize,
+        s: [f64; 2],
+        t: [f64; 2],
+        nearest: f64,
+    ) -> Parameter {
+        Parameter {
+            nearest,
+            enclosure: if side == 0 { s } else { t },
+            exact: OnceLock::new(),
+            source: Source::Crossing(Crossing { pair, side, s, t }),
+        }
+    }
+
+    /// The double nearest to the exact parameter (ties to even), certified.
+    pub fn to_f64(&self) -> f64 {
+        self.nearest
+    }
+
+    /// Doubles `[lo, hi]` with lo <= the exact parameter <= hi (a few ulps apart for a
+    /// crossing; the two doubles around it, or the double itself, for a known number).
+    pub fn enclosure(&self) -> [f64; 2] {
+        self.enclosure
+    }
+
+    /// Whether the parameter is known to be the end 0 or 1 of its curve without exact work
+    /// (`Some(false)` for 0, `Some(true)` for 1); crossings proved by the filter lie strictly
+    /// inside (0, 1), so they answer `None`.
+    pub fn curve_end(&self) -> Option<bool> {
+        if let Source::End(one) = self.source {
+            return Some(one);
+        }
+        let x = self.exact.get()?.exact()?;
+        if x == &Rational::from_integer(0.into()) {
+            Some(false)
+        } else if x == &Rational::from_integer(1.into()) {
+            Some(true)
+        } else {
+            None
+        }
+    }
+
+    /// The exact parameter: computed on the first call for a crossing proved by the float
+    /// filter, from the exact intersections of its two curves, then kept.
+    ///
+    /// # Errors
+    /// Those of [`intersect_curves`](crate::intersect_curves) on the two curves (none for
+    /// curves the filter decided, whose degrees are within the region limit), and an
+    /// `Invalid` error if no exact intersection lies in the certified box (a bug).
+    pub fn algebraic(&self) -> Result<&AlgebraicReal> {
+        if let Some(x) = self.exact.get() {
+            return Ok(x);
+        }
+        let c = match &self.source {
+            Source::Crossing(c) => c,
+            Source::End(one) => {
+                let x = Rational::from_integer(i64::from(*one).into());
+                return Ok(self.exact.get_or_init(|| AlgebraicReal::from_rational(x)));
+            }
+            Source::Known => unreachable!("a known parameter has its exact number"),
+        };
+        let found = c
+            .pair
+            .exact
+            .get_or_init(|| intersect_curves_f64(&c.pair.p, &c.pair.q))
+            .as_ref()
+            .map_err(Clone::clone)?
+            .points
+            .iter()
+            .find(|x| inside(&x.s, c.s) && inside(&x.t, c.t))
+            .ok_or_else(|| {
+                Error::of(
+                    ErrorKind::Invalid,
+                    "parameter",
+                    "internal: no exact intersection lies in the certified box",
+                )
+            })?;
+        let x = if c.side == 0 { &found.s } else { &found.t };
+        Ok(self.exact.get_or_init(|| x.clone()))
+    }
+
+    /// The exact order of two parameters (of one curve): their enclosures first, exact
+    /// numbers only where those meet.
+    ///
+    /// # Errors
+    /// Those of [`Parameter::algebraic`].
+    pub fn compare(&self, other: &Parameter) -> Result<Ordering> {
+        if self.enclosure[1] < other.enclosure[0] {
+            return Ok(Ordering::Less);
+        }
+        if other.enclosure[1] < self.enclosure[0] {
+            return Ok(Ordering::Greater);
+        }
+        Ok(self.algebraic()?.compare(other.algebraic()?))
+    }
+}
+
+impl From<AlgebraicReal> for Parameter {
+    fn from(x: AlgebraicReal) -> Parameter {
+        Parameter::known(x)
+    }
+}
+
+impl fmt::Debug for Parameter {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match (self.exact.get(), &self.source) {
+            (Some(x), _) => write!(f, "{x}"),
+            (None, Source::End(one)) => write!(f, "{}", u8::from(*one)),
+            (None, _) => write!(
+                f,
+                "{:?} (crossing in [{:?}, {:?}])",
+                self.nearest, self.enclosure[0], self.enclosure[1]
+            ),
+        }
+    }
+}
+
+impl fmt::Display for Parameter {
+    /// The exact number when known (`1/2`, or the root with its polynomial), else the
+    /// correctly rounded double with its certified enclosure.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Debug::fmt(self, f)
+    }
+}
