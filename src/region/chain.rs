@@ -122,6 +122,8 @@ pub(crate) fn close_walks(
     runs: &[Run],
 ) -> Vec<Vec<Run>> {
     let mut used = vec![false; next.len()];
+    let vertices = starts.iter().chain(ends).max().map_or(0, |v| v + 1);
+    let mut at = vec![usize::MAX; vertices];
     let mut loops = Vec::new();
     for start in 0..next.len() {
         if used[start] {
@@ -135,7 +137,7 @@ pub(crate) fn close_walks(
             e = next[e];
         }
         debug_assert_eq!(e, start, "a walk closes where it started");
-        for simple in split_at_repeats(starts, ends, &walk) {
+        for simple in split_at_repeats(starts, ends, &walk, &mut at) {
             loops.push(merge(simple.iter().map(|&i| runs[i]).collect()));
         }
     }
@@ -183,17 +185,23 @@ fn successors(
 }
 
 /// Cuts a closed walk at every vertex it passes twice.
-fn split_at_repeats(starts: &[usize], ends: &[usize], walk: &[usize]) -> Vec<Vec<usize>> {
+/// `at[v]` is scratch indexed by vertex, `usize::MAX` everywhere on entry and on return.
+fn split_at_repeats(
+    starts: &[usize],
+    ends: &[usize],
+    walk: &[usize],
+    at: &mut [usize],
+) -> Vec<Vec<usize>> {
     let mut out = Vec::new();
     let mut stack: Vec<usize> = Vec::new();
-    let mut at: HashMap<usize, usize> = HashMap::new();
     for &e in walk {
-        at.insert(starts[e], stack.len());
+        at[starts[e]] = stack.len();
         stack.push(e);
-        if let Some(&p) = at.get(&ends[e]) {
+        let p = at[ends[e]];
+        if p != usize::MAX {
             let piece: Vec<usize> = stack.drain(p..).collect();
             for &f in &piece {
-                at.remove(&starts[f]);
+                at[starts[f]] = usize::MAX;
             }
             out.push(piece);
         }

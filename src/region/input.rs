@@ -4,6 +4,7 @@ use super::curve::is_double;
 use crate::error::{Error, ErrorKind, Result};
 use crate::num::ring::{rational_to_f64, Rational};
 use crate::shape::array::Bezier;
+use std::sync::Arc;
 
 /// The highest curve degree a region accepts: the exact intersection of two curves of degree
 /// n costs about n^4 operations on growing numbers (see
@@ -68,11 +69,14 @@ pub struct Region {
     fill: FillRule,
     /// The control points as doubles when every coordinate is one exactly (the float path
     /// of the booleans reads these).
-    doubles: Option<Vec<Vec<Vec<[f64; 2]>>>>,
+    doubles: Option<Arc<Doubles>>,
 }
 
+/// The control points of a region's curves as doubles, `[loop][curve][point]`.
+pub(crate) type Doubles = Vec<Vec<Vec<[f64; 2]>>>;
+
 /// The control points of `loops` as doubles, when every coordinate is one exactly.
-fn as_doubles(loops: &[Vec<Bezier<Rational, 2>>]) -> Option<Vec<Vec<Vec<[f64; 2]>>>> {
+fn as_doubles(loops: &[Vec<Bezier<Rational, 2>>]) -> Option<Doubles> {
     loops
         .iter()
         .map(|curves| {
@@ -147,7 +151,7 @@ impl Region {
                 }
             }
         }
-        let doubles = as_doubles(&loops);
+        let doubles = as_doubles(&loops).map(Arc::new);
         Ok(Region {
             loops,
             fill,
@@ -250,8 +254,8 @@ impl Region {
 
     /// The control points as doubles, loop by loop and curve by curve, when every input
     /// coordinate is a double exactly.
-    pub(crate) fn doubles(&self) -> Option<&[Vec<Vec<[f64; 2]>>]> {
-        self.doubles.as_deref()
+    pub(crate) fn doubles(&self) -> Option<&Arc<Doubles>> {
+        self.doubles.as_ref()
     }
 }
 

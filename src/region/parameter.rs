@@ -14,6 +14,8 @@ use crate::error::{Error, ErrorKind, Result};
 use crate::intersect::algebraic::{exact_f64, AlgebraicReal};
 use crate::intersect::curves::{intersect_curves_f64, Intersections};
 use crate::num::ring::Rational;
+use crate::region::arrangement::CurveId;
+use crate::region::input::Doubles;
 use std::cmp::Ordering;
 use std::fmt;
 use std::sync::{Arc, OnceLock};
@@ -66,27 +68,41 @@ enum Source {
 /// pick the crossing among the pair's exact intersections).
 #[derive(Clone)]
 struct Crossing {
-    pair: Arc<Pair>,
+    all: Arc<Crossings>,
+    /// The index of the pair in `all`.
+    pair: usize,
     /// 0: the parameter on the pair's first curve, 1: on the second.
     side: usize,
     s: [f64; 2],
     t: [f64; 2],
 }
 
-/// Two curves of doubles and, once computed, their exact intersections.
-pub(crate) struct Pair {
-    p: Vec<[f64; 2]>,
-    q: Vec<[f64; 2]>,
-    exact: OnceLock<std::result::Result<Intersections, Error>>,
+/// The curves of the two regions of one boolean (shared, not copied), the pairs of curves
+/// that cross, and each pair's exact intersections once computed.
+pub(crate) struct Crossings {
+    doubles: [Arc<Doubles>; 2],
+    pairs: Vec<[CurveId; 2]>,
+    exact: Vec<OnceLock<std::result::Result<Intersections, Error>>>,
 }
 
-impl Pair {
-    pub(crate) fn new(p: Vec<[f64; 2]>, q: Vec<[f64; 2]>) -> Arc<Pair> {
-        Arc::new(Pair {
-            p,
-            q,
-            exact: OnceLock::new(),
+impl Crossings {
+    pub(crate) fn new(doubles: [Arc<Doubles>; 2], pairs: Vec<[CurveId; 2]>) -> Arc<Crossings> {
+        let exact = pairs.iter().map(|_| OnceLock::new()).collect();
+        Arc::new(Crossings {
+            doubles,
+            pairs,
+            exact,
         })
+    }
+
+    fn points(&self, id: CurveId) -> &[[f64; 2]] {
+        &self.doubles[id.region][id.loop_index][id.curve]
+    }
+
+    /// The exact intersections of pair k, computed once.
+    fn exact(&self, k: usize) -> &std::result::Result<Intersections, Error> {
+        let [p, q] = self.pairs[k];
+        self.exact[k].get_or_init(|| intersect_curves_f64(self.points(p), self.points(q)))
     }
 }
 
@@ -118,10 +134,12 @@ impl Parameter {
         }
     }
 
-    /// The parameter on side `side` (0: first curve, 1: second) of the crossing of `pair`
-    /// proved in the box `s` x `t`, with `nearest` its correctly rounded double.
+    /// The parameter on side `side` (0: first curve, 1: second) of the crossing of pair
+    /// `pair` of `all` proved in the box `s` x `t`, with `nearest` its correctly rounded
+    /// double.
     pub(crate) fn crossing(
-        pair: Arc<Pair>,
+        all: Arc<Crossings>,
+        pair: usize,
         side: usize,
         s: [f64; 2],
         t: [f64; 2],
@@ -131,7 +149,13 @@ impl Parameter {
             nearest,
             enclosure: if side == 0 { s } else { t },
             exact: OnceLock::new(),
-            source: Source::Crossing(Crossing { pair, side, s, t }),
+            source: Source::Crossing(Crossing {
+                all,
+                pair,
+                side,
+                s,
+                t,
+            }),
         }
     }
 
@@ -183,9 +207,8 @@ impl Parameter {
             Source::Known => unreachable!("a known parameter has its exact number"),
         };
         let found = c
-            .pair
-            .exact
-            .get_or_init(|| intersect_curves_f64(&c.pair.p, &c.pair.q))
+            .all
+            .exact(c.pair)
             .as_ref()
             .map_err(Clone::clone)?
             .points

@@ -82,9 +82,11 @@ impl ProofPoint for [f64; 2] {
     }
 }
 
-/// A double approximation of a unit vector along `v` (`None` for zero or non-finite).
+/// `v` scaled to a largest coordinate of magnitude about 1 (`None` for zero or non-finite):
+/// the directions to the neighbours of a corner at a comparable length, so that their
+/// difference points across the corner (any direction is sound: the proof tests it exactly).
 fn unit(v: [f64; 2]) -> Option<[f64; 2]> {
-    let n = v[0].hypot(v[1]);
+    let n = v[0].abs().max(v[1].abs());
     (n > 0.0 && n.is_finite()).then(|| [v[0] / n, v[1] / n])
 }
 

@@ -23,8 +23,11 @@ use crate::intersect::interval::{lower, upper, ConvexStep};
 use crate::num::bounded::{BoundedF64, UNIT_ROUNDOFF};
 use crate::num::ring::Ring;
 use crate::region::boolean::{Edge, RegionResult, ResultLoop};
-use crate::region::parameter::Parameter;
+use crate::region::input::Doubles;
+use crate::region::input::MAX_REGION_DEGREE;
+use crate::region::parameter::{Crossings, Parameter};
 use crate::shape::flat::curve_pyramid_in_place;
+use std::sync::Arc;
 
 /// The sign of an enclosure: `Some(±1)` when it excludes zero.
 fn sign(x: &BoundedF64) -> Option<i64> {
@@ -42,27 +45,31 @@ fn parameter(m: f64, [lo, hi]: [f64; 2]) -> BoundedF64 {
     BoundedF64::with_bound(m, (hi - lo).next_up())
 }
 
+/// Room for the de Casteljau pyramid of any curve or area polynomial of the region layer.
+const LEVEL: usize = 2 * (2 * MAX_REGION_DEGREE + 1);
+
 /// An enclosure of the polynomial with Bernstein coefficients `coefficients` (each `dim`
-/// numbers) at `t`, into `out`.
-fn evaluate(coefficients: &[BoundedF64], dim: usize, t: BoundedF64, level: &mut Vec<BoundedF64>) {
-    level.clear();
-    level.extend_from_slice(coefficients);
+/// numbers, at most [`LEVEL`] in all) at `t`: the first `dim` entries of the answer.
+fn evaluate(coefficients: &[BoundedF64], dim: usize, t: BoundedF64) -> [BoundedF64; 2] {
+    let mut level = [BoundedF64::default(); LEVEL];
+    let level = &mut level[..coefficients.len()];
+    level.copy_from_slice(coefficients);
     curve_pyramid_in_place(level, dim, &ConvexStep::new(t));
+    [level[0], if dim > 1 { level[1] } else { level[0] }]
 }
 
-/// The hodograph's control points n (p_(i+1) - p_i), flat (x, y, x, y, ...).
-fn hodograph(points: &[[f64; 2]]) -> Vec<BoundedF64> {
+/// The hodograph's control points n (p_(i+1) - p_i), flat (x, y, x, y, ...), in `out`;
+/// returns how many numbers it wrote.
+fn hodograph(points: &[[f64; 2]], out: &mut [BoundedF64; LEVEL]) -> usize {
     let n = BoundedF64::exact((points.len() - 1) as f64);
-    points
-        .windows(2)
-        .flat_map(|w| {
-            [0, 1].map(|a| {
-                BoundedF64::exact(w[1][a])
-                    .sub(&BoundedF64::exact(w[0][a]))
-                    .mul(&n)
-            })
-        })
-        .collect()
+    for (k, w) in points.windows(2).enumerate() {
+        for a in 0..2 {
+            out[2 * k + a] = BoundedF64::exact(w[1][a])
+                .sub(&BoundedF64::exact(w[0][a]))
+                .mul(&n);
+        }
+    }
+    2 * (points.len() - 1)
 }
 
 /// The exact sign of cross(P'(s*), Q'(t*)) at a certified crossing (s* in `s_box` around
@@ -76,83 +83,109 @@ pub(super) fn crossing_sign(
     t: f64,
     t_box: [f64; 2],
 ) -> Option<i64> {
-    let mut level = Vec::new();
-    evaluate(&hodograph(p), 2, parameter(s, s_box), &mut level);
-    let a = [level[0], level[1]];
-    evaluate(&hodograph(q), 2, parameter(t, t_box), &mut level);
-    let b = [level[0], level[1]];
+    let mut h = [BoundedF64::default(); LEVEL];
+    let len = hodograph(p, &mut h);
+    let a = evaluate(&h[..len], 2, parameter(s, s_box));
+    let len = hodograph(q, &mut h);
+    let b = evaluate(&h[..len], 2, parameter(t, t_box));
     sign(&a[0].mul(&b[1]).sub(&a[1].mul(&b[0])))
 }
 
-/// C(n, k) as a double (exact for the degrees taken, n <= 2 * 20).
+/// C(n, k) (exact for the degrees taken, n <= 2 * 20).
 fn binomial(n: usize, k: usize) -> i128 {
     (0..k).fold(1i128, |acc, i| acc * (n - i) as i128 / (i + 1) as i128)
 }
 
-/// The Bernstein coefficients f_0..f_2n of F(t), the integral of (x - o) dy from 0 to t
-/// (module docs).
-pub(super) fn area_coefficients(points: &[[f64; 2]], o: f64) -> Vec<BoundedF64> {
+/// The weights C(n, i) C(n - 1, j) / (2 C(2n - 1, i + j)) of the area coefficients, as
+/// doubles with their conversion bounds, row i, column j (n columns), for degree n.
+fn weights(n: usize) -> Vec<BoundedF64> {
+    (0..=n)
+        .flat_map(|i| {
+            (0..n).map(move |j| {
+                BoundedF64::exact(1.0).scale_frac(
+                    binomial(n, i) * binomial(n - 1, j),
+                    2 * binomial(2 * n - 1, i + j),
+                )
+            })
+        })
+        .collect()
+}
+
+/// [`weights`] of every degree up to the region limit, made once.
+fn weight_table(n: usize) -> &'static [BoundedF64] {
+    static TABLE: std::sync::OnceLock<Vec<Vec<BoundedF64>>> = std::sync::OnceLock::new();
+    &TABLE.get_or_init(|| {
+        (0..=MAX_REGION_DEGREE)
+            .map(|n| if n == 0 { Vec::new() } else { weights(n) })
+            .collect()
+    })[n]
+}
+
+/// Appends the Bernstein coefficients f_0..f_2n of F(t), the integral of (x - o) dy from 0
+/// to t (module docs), to `f`.
+fn area_coefficients(points: &[[f64; 2]], o: f64, f: &mut Vec<BoundedF64>) {
     let n = points.len() - 1;
-    let x: Vec<BoundedF64> = points
-        .iter()
-        .map(|p| BoundedF64::exact(p[0]).sub(&BoundedF64::exact(o)))
-        .collect();
-    let dy: Vec<BoundedF64> = points
-        .windows(2)
-        .map(|w| BoundedF64::exact(w[1][1]).sub(&BoundedF64::exact(w[0][1])))
-        .collect();
-    let mut f = Vec::with_capacity(2 * n + 1);
+    let w = weight_table(n);
+    let o = BoundedF64::exact(o);
+    let (mut x, mut dy) = (
+        [BoundedF64::default(); MAX_REGION_DEGREE + 1],
+        [BoundedF64::default(); MAX_REGION_DEGREE],
+    );
+    for (i, p) in points.iter().enumerate() {
+        x[i] = BoundedF64::exact(p[0]).sub(&o);
+    }
+    for (j, w) in points.windows(2).enumerate() {
+        dy[j] = BoundedF64::exact(w[1][1]).sub(&BoundedF64::exact(w[0][1]));
+    }
     let mut running = BoundedF64::exact(0.0);
     f.push(running);
     for k in 0..2 * n {
         let mut c = BoundedF64::exact(0.0);
         for i in k.saturating_sub(n - 1)..=k.min(n) {
             let j = k - i;
-            // C(n, i) C(n - 1, j) n / (C(2n - 1, k) 2n) = C(n, i) C(n - 1, j) / (2 C(2n - 1, k)).
-            let weight = x[i].mul(&dy[j]).scale_frac(
-                binomial(n, i) * binomial(n - 1, j),
-                2 * binomial(2 * n - 1, k),
-            );
-            c = c.add(&weight);
+            c = c.add(&x[i].mul(&dy[j]).mul(&w[i * n + j]));
         }
         running = running.add(&c);
         f.push(running);
     }
-    f
 }
 
-/// The loops' signed areas and the answer's parameters, from the split and the area
-/// coefficients.
-struct Areas<'s, 'a> {
+/// Every curve's area coefficients, one after the other, and the answer's parameters.
+pub(super) struct Areas<'s, 'a> {
     split: &'s Split<'a>,
-    /// Each curve's area coefficients, computed on first use.
-    coefficients: Vec<Option<Vec<BoundedF64>>>,
-    origin: f64,
-    level: Vec<BoundedF64>,
+    /// Curve c's coefficients are `coefficients[offsets[c]..offsets[c + 1]]`.
+    coefficients: Vec<BoundedF64>,
+    offsets: Vec<usize>,
 }
 
 impl<'s, 'a> Areas<'s, 'a> {
-    fn new(split: &'s Split<'a>) -> Self {
+    pub(super) fn new(split: &'s Split<'a>) -> Self {
         let (lo, hi) = split
             .curves
             .iter()
             .fold((f64::MAX, f64::MIN), |(lo, hi), c| {
                 (lo.min(c.bbox[0]), hi.max(c.bbox[2]))
             });
+        let origin = lo / 2.0 + hi / 2.0;
+        let total: usize = split.curves.iter().map(|c| 2 * c.points.len() - 1).sum();
+        let mut coefficients = Vec::with_capacity(total);
+        let mut offsets = Vec::with_capacity(split.curves.len() + 1);
+        for c in &split.curves {
+            offsets.push(coefficients.len());
+            area_coefficients(c.points, origin, &mut coefficients);
+        }
+        offsets.push(coefficients.len());
         Areas {
             split,
-            coefficients: vec![None; split.curves.len()],
-            origin: lo / 2.0 + hi / 2.0,
-            level: Vec::new(),
+            coefficients,
+            offsets,
         }
     }
 
     /// F_c at position `k` of curve c (0: its start, `marks.len() + 1`: its end, else the
     /// crossing `marks[k - 1]`).
-    fn at(&mut self, c: usize, k: usize) -> BoundedF64 {
-        let points = self.split.curves[c].points;
-        let origin = self.origin;
-        let f = self.coefficients[c].get_or_insert_with(|| area_coefficients(points, origin));
+    fn at(&self, c: usize, k: usize) -> BoundedF64 {
+        let f = &self.coefficients[self.offsets[c]..self.offsets[c + 1]];
         let marks = &self.split.marks[c];
         if k == 0 {
             return f[0];
@@ -162,16 +195,14 @@ impl<'s, 'a> Areas<'s, 'a> {
         }
         let m: Mark = marks[k - 1];
         let x = &self.split.crossings[m.crossing];
-        let t = parameter(x.nearest[m.side], x.enclosures[m.side]);
-        evaluate(f, 1, t, &mut self.level);
-        self.level[0]
+        evaluate(f, 1, parameter(x.nearest[m.side], x.enclosures[m.side]))[0]
     }
 }
 
 /// The signed area of each loop of the input, or `None` when an enclosure does not exclude
 /// zero.
-pub(super) fn loop_orientations(split: &Split<'_>) -> Option<Vec<i64>> {
-    let mut areas = Areas::new(split);
+pub(super) fn loop_orientations(areas: &Areas<'_, '_>) -> Option<Vec<i64>> {
+    let split = areas.split;
     split
         .loops
         .iter()
@@ -186,16 +217,32 @@ pub(super) fn loop_orientations(split: &Split<'_>) -> Option<Vec<i64>> {
         .collect()
 }
 
-/// The parameter of position `k` of curve c, as the answer gives it.
-fn parameter_at(split: &Split<'_>, c: usize, k: usize) -> Parameter {
+/// The parameter of position `k` of curve c, as the answer gives it (`all`: the crossings,
+/// made once the answer has any).
+fn parameter_at(
+    split: &Split<'_>,
+    all: &mut Option<Arc<Crossings>>,
+    doubles: [&Arc<Doubles>; 2],
+    c: usize,
+    k: usize,
+) -> Parameter {
     let marks = &split.marks[c];
     if k == 0 || k == marks.len() + 1 {
         return Parameter::end(k != 0);
     }
     let m = marks[k - 1];
     let x = &split.crossings[m.crossing];
+    let all = all
+        .get_or_insert_with(|| {
+            Crossings::new(
+                [doubles[0].clone(), doubles[1].clone()],
+                split.pairs.clone(),
+            )
+        })
+        .clone();
     Parameter::crossing(
-        x.pair.clone(),
+        all,
+        x.pair,
         m.side,
         x.enclosures[0],
         x.enclosures[1],
@@ -206,8 +253,13 @@ fn parameter_at(split: &Split<'_>, c: usize, k: usize) -> Parameter {
 /// The answer: each boundary loop's edges, whether it is a hole (the sign of its area), and
 /// the enclosure of the total area; `None` when a loop's sign is not proved or the area
 /// enclosure is wider than the promised 2^-40 B.
-pub(super) fn answer(split: &Split<'_>, loops: Vec<BoundaryLoop>) -> Option<RegionResult> {
-    let mut areas = Areas::new(split);
+pub(super) fn answer(
+    areas: &Areas<'_, '_>,
+    loops: Vec<BoundaryLoop>,
+    doubles: [&Arc<Doubles>; 2],
+) -> Option<RegionResult> {
+    let split = areas.split;
+    let mut all = None;
     let mut total = BoundedF64::exact(0.0);
     let mut out = Vec::with_capacity(loops.len());
     for runs in &loops {
@@ -220,8 +272,8 @@ pub(super) fn answer(split: &Split<'_>, loops: Vec<BoundaryLoop>) -> Option<Regi
                 region: id.region,
                 loop_index: id.loop_index,
                 curve: id.curve,
-                from: parameter_at(split, r.curve, r.from),
-                to: parameter_at(split, r.curve, r.to),
+                from: parameter_at(split, &mut all, doubles, r.curve, r.from),
+                to: parameter_at(split, &mut all, doubles, r.curve, r.to),
             });
         }
         let hole = sign(&sum)? < 0;

@@ -49,11 +49,12 @@ use super::input::Region;
 /// configuration is proved generic (module docs), else `None`.
 pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Option<RegionResult> {
     let doubles = [regions[0].doubles()?, regions[1].doubles()?];
-    let arrangement = split::Split::build(doubles)?;
+    let arrangement = split::Split::build([doubles[0].as_slice(), doubles[1].as_slice()])?;
     let fills = [regions[0].fill(), regions[1].fill()];
-    let windings = side::loop_windings(&arrangement)?;
+    let areas = measure::Areas::new(&arrangement);
+    let windings = side::loop_windings(&arrangement, &areas)?;
     let loops = walk::boundary(&arrangement, &windings, fills, op)?;
-    measure::answer(&arrangement, loops)
+    measure::answer(&areas, loops, doubles)
 }
 
 #[cfg(test)]

@@ -13,7 +13,7 @@
 //! the first direction that decides every curve gives the count, and if none does, the
 //! next vertex of the loop is tried.
 
-use super::measure::loop_orientations;
+use super::measure::{loop_orientations, Areas};
 use super::split::Split;
 
 /// The winding numbers around a loop L of region R: `own` = [left of L, right of L] for R,
@@ -81,8 +81,8 @@ const VERTICES_TRIED: usize = 8;
 
 /// The winding numbers around every loop (see [`LoopWindings`]), or `None` when a loop's
 /// orientation or a ray count is not decided.
-pub(super) fn loop_windings(split: &Split<'_>) -> Option<Vec<LoopWindings>> {
-    let orientation = loop_orientations(split)?;
+pub(super) fn loop_windings(split: &Split<'_>, areas: &Areas<'_, '_>) -> Option<Vec<LoopWindings>> {
+    let orientation = loop_orientations(areas)?;
     split
         .loops
         .iter()

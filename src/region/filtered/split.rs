@@ -4,9 +4,7 @@
 use super::measure::crossing_sign;
 use crate::intersect::filter::certified_crossings_f64;
 use crate::region::arrangement::{meeting_boxes, CurveId};
-use crate::region::parameter::Pair;
 use crate::region::prune::{consecutive_meet_only_at_join, one_to_one};
-use std::sync::Arc;
 
 /// One input curve.
 pub(super) struct Curve<'a> {
@@ -33,8 +31,8 @@ pub(super) struct Crossing {
     pub enclosures: [[f64; 2]; 2],
     /// The sign (+1 or -1) of cross(P'(s), Q'(t)), the curve of side 0 and Q of side 1.
     pub sign: i64,
-    /// The two curves, for the exact parameters on demand.
-    pub pair: Arc<Pair>,
+    /// The index of its pair of curves in [`Split::pairs`].
+    pub pair: usize,
 }
 
 /// A crossing on one curve: which crossing and which side of it the curve is.
@@ -51,6 +49,8 @@ pub(super) struct Split<'a> {
     pub crossings: Vec<Crossing>,
     /// Each curve's crossings in increasing order of its parameter.
     pub marks: Vec<Vec<Mark>>,
+    /// The pairs of curves that cross.
+    pub pairs: Vec<[CurveId; 2]>,
 }
 
 fn bbox(points: &[[f64; 2]]) -> [f64; 4] {
@@ -88,6 +88,7 @@ impl<'a> Split<'a> {
             loops: Vec::new(),
             crossings: Vec::new(),
             marks: Vec::new(),
+            pairs: Vec::new(),
         };
         for (region, loops) in doubles.iter().enumerate() {
             for (loop_index, curves) in loops.iter().enumerate() {
@@ -149,7 +150,8 @@ impl<'a> Split<'a> {
         if self.curves[i].id.region == self.curves[j].id.region {
             return None;
         }
-        let pair = Pair::new(p.to_vec(), q.to_vec());
+        let pair = self.pairs.len();
+        self.pairs.push([self.curves[i].id, self.curves[j].id]);
         for x in crossings {
             let sign = crossing_sign(p, q, x.s, x.s_enclosure, x.t, x.t_enclosure)?;
             let k = self.crossings.len();
@@ -157,7 +159,7 @@ impl<'a> Split<'a> {
                 nearest: [x.s, x.t],
                 enclosures: [x.s_enclosure, x.t_enclosure],
                 sign,
-                pair: pair.clone(),
+                pair,
             });
             self.marks[i].push(Mark {
                 crossing: k,

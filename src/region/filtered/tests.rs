@@ -198,3 +198,63 @@ fn degenerate_inputs_are_left_to_the_exact_stages() {
         .expect("transversal crossings");
     assert!(r.area[0] <= 1.625 && 1.625 <= r.area[1]);
 }
+
+#[test]
+#[ignore]
+fn probe_triangles() {
+    let text = std::fs::read_to_string("/work/targets/main/region/triangles.json").unwrap();
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let mut stats = std::collections::HashMap::new();
+    for p in v["pairs"].as_array().unwrap() {
+        let t: Vec<Region> = p["triangles"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|t| {
+                let nodes = t
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|xy| {
+                        let f = |k: usize| {
+                            crate::intersect::algebraic::exact_f64(xy[k].as_f64().unwrap())
+                        };
+                        [f(0), f(1)]
+                    })
+                    .collect();
+                Region::triangle(2, nodes).unwrap()
+            })
+            .collect();
+        let d = [
+            t[0].doubles().unwrap().as_slice(),
+            t[1].doubles().unwrap().as_slice(),
+        ];
+        let why = match super::split::Split::build(d) {
+            None => "split",
+            Some(s) => {
+                let areas = super::measure::Areas::new(&s);
+                match super::side::loop_windings(&s, &areas) {
+                    None => "windings",
+                    Some(w) => match super::walk::boundary(
+                        &s,
+                        &w,
+                        [FillRule::NonZero; 2],
+                        BooleanOp::Intersection,
+                    ) {
+                        None => "walk",
+                        Some(l) => match super::measure::answer(
+                            &areas,
+                            l,
+                            [t[0].doubles().unwrap(), t[1].doubles().unwrap()],
+                        ) {
+                            None => "answer",
+                            Some(_) => "ok",
+                        },
+                    },
+                }
+            }
+        };
+        *stats.entry(why).or_insert(0) += 1;
+    }
+    eprintln!("{stats:?}");
+}

@@ -144,21 +144,24 @@ pub(super) fn boundary(
 /// result's sector on the left). `None` when the counts do not match (a bug).
 fn successors(split: &Split<'_>, edges: &[Directed]) -> Option<Vec<usize>> {
     let vertices = split.crossings.len() + split.curves.len();
-    let mut leaving: Vec<Vec<usize>> = vec![Vec::new(); vertices];
+    // At most two edges leave a vertex (a crossing has four half-pieces, a join two).
+    let mut leaving: Vec<([usize; 2], usize)> = vec![([usize::MAX; 2], 0); vertices];
     for (i, e) in edges.iter().enumerate() {
-        leaving[e.start(split)].push(i);
+        let (slots, count) = &mut leaving[e.start(split)];
+        *slots.get_mut(*count)? = i;
+        *count += 1;
     }
     let mut next = vec![usize::MAX; edges.len()];
     for (i, e) in edges.iter().enumerate() {
         let v = e.end(split);
-        next[i] = match leaving[v].as_slice() {
+        let (slots, count) = &leaving[v];
+        next[i] = match &slots[..*count] {
             [o] => *o,
-            [_, _] if v < split.crossings.len() => {
+            outs @ [_, _] if v < split.crossings.len() => {
                 let arriving = e.slot(split, false);
                 // Clockwise from the arriving slot: slots arriving - 1, arriving - 2, ...
                 (1..4).map(|d| (arriving + 4 - d) % 4).find_map(|s| {
-                    leaving[v]
-                        .iter()
+                    outs.iter()
                         .copied()
                         .find(|&o| edges[o].slot(split, true) == s)
                 })?
