@@ -82,11 +82,12 @@ impl ProofPoint for [f64; 2] {
     }
 }
 
-/// `v` scaled to a largest coordinate of magnitude about 1 (`None` for zero or non-finite):
-/// the directions to the neighbours of a corner at a comparable length, so that their
-/// difference points across the corner (any direction is sound: the proof tests it exactly).
+/// A double approximation of a unit vector along `v` (`None` for zero, or when the square
+/// of its length overflows or underflows: the exact path then decides). The directions to the
+/// neighbours of a corner at unit length make their difference normal to the corner's
+/// bisector (any direction is sound: the proof tests it exactly).
 fn unit(v: [f64; 2]) -> Option<[f64; 2]> {
-    let n = v[0].abs().max(v[1].abs());
+    let n = (v[0] * v[0] + v[1] * v[1]).sqrt();
     (n > 0.0 && n.is_finite()).then(|| [v[0] / n, v[1] / n])
 }
 
