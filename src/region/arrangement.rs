@@ -161,9 +161,23 @@ pub(crate) fn candidate_pairs(curves: &[Curve]) -> Vec<(usize, usize)> {
 /// sorted: a sweep over the boxes ordered by their left side, each paired with the later
 /// ones whose left side is not beyond its right side.
 pub(crate) fn meeting_boxes(boxes: &[[f64; 4]]) -> Vec<(usize, usize)> {
+    let meet =
+        |a: &[f64; 4], b: &[f64; 4]| a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3];
+    // A few boxes: every pair, already in order (cheaper than the sort).
+    if boxes.len() <= 16 {
+        let mut pairs = Vec::with_capacity(2 * boxes.len());
+        for (i, a) in boxes.iter().enumerate() {
+            for (j, b) in boxes.iter().enumerate().skip(i + 1) {
+                if meet(a, b) {
+                    pairs.push((i, j));
+                }
+            }
+        }
+        return pairs;
+    }
     let mut order: Vec<usize> = (0..boxes.len()).collect();
-    order.sort_by(|&i, &j| boxes[i][0].total_cmp(&boxes[j][0]));
-    let mut pairs = Vec::new();
+    order.sort_unstable_by(|&i, &j| boxes[i][0].total_cmp(&boxes[j][0]));
+    let mut pairs = Vec::with_capacity(4 * boxes.len());
     for (n, &i) in order.iter().enumerate() {
         let (a, rest) = (&boxes[i], &order[n + 1..]);
         for &j in rest {

@@ -96,24 +96,23 @@ fn binomial(n: usize, k: usize) -> i128 {
     (0..k).fold(1i128, |acc, i| acc * (n - i) as i128 / (i + 1) as i128)
 }
 
-/// The weights C(n, i) C(n - 1, j) / (2 C(2n - 1, i + j)) of the area coefficients, as
-/// doubles with their conversion bounds, row i, column j (n columns), for degree n.
-fn weights(n: usize) -> Vec<BoundedF64> {
+/// The weights C(n, i) C(n - 1, j) / (2 C(2n - 1, i + j)) of the area coefficients, row i,
+/// column j (n columns), for degree n: each the correctly rounded quotient of two integers
+/// below 2^53 (IEEE division), so within u of the exact weight, relatively.
+fn weights(n: usize) -> Vec<f64> {
     (0..=n)
         .flat_map(|i| {
             (0..n).map(move |j| {
-                BoundedF64::exact(1.0).scale_frac(
-                    binomial(n, i) * binomial(n - 1, j),
-                    2 * binomial(2 * n - 1, i + j),
-                )
+                (binomial(n, i) * binomial(n - 1, j)) as f64
+                    / (2 * binomial(2 * n - 1, i + j)) as f64
             })
         })
         .collect()
 }
 
 /// [`weights`] of every degree up to the region limit, made once.
-fn weight_table(n: usize) -> &'static [BoundedF64] {
-    static TABLE: std::sync::OnceLock<Vec<Vec<BoundedF64>>> = std::sync::OnceLock::new();
+fn weight_table(n: usize) -> &'static [f64] {
+    static TABLE: std::sync::OnceLock<Vec<Vec<f64>>> = std::sync::OnceLock::new();
     &TABLE.get_or_init(|| {
         (0..=MAX_REGION_DEGREE)
             .map(|n| if n == 0 { Vec::new() } else { weights(n) })
@@ -122,40 +121,53 @@ fn weight_table(n: usize) -> &'static [BoundedF64] {
 }
 
 /// Appends the Bernstein coefficients f_0..f_2n of F(t), the integral of (x - o) dy from 0
-/// to t (module docs), to `f`.
+/// to t (module docs), to `f`, each with one bound E on its error.
+///
+/// **The bound.** Plain `f64`: each term t = fl(fl(fl(x_i - o) fl(y_(j+1) - y_j)) w_ij) is
+/// the exact term times (1 + δ) with |δ| <= γ_5 (two differences, the weight's conversion,
+/// two products; γ_k = k u / (1 - k u)), up to an absolute η per product for underflow. A
+/// coefficient f_k sums its terms in at most n + 2n additions (the terms of each c_k, then
+/// the running sum), so |f̂_k - f_k| <= γ_(3n+5) S plus the underflow terms, where S is the
+/// sum of |t| over every term of the curve (the exact |t| <= |t̂| (1 + γ_5)). The computed
+/// S' is within a factor (1 + γ_(2n^2+2n)) of the sum of the |t̂|, so
+/// E = (3n + 8) u S' (1 + 2^-20) + 2^-300 covers all of it for n <= 20 (the absolute term
+/// covers any number of underflows of η = 2^-1074 each the run could make). Each f_k is that double with the
+/// bound E (f_0 = 0 exactly, also with E, harmlessly).
 fn area_coefficients(points: &[[f64; 2]], o: f64, f: &mut Vec<BoundedF64>) {
+    const MARGIN: f64 = 1.0 + 1.0 / (1u64 << 20) as f64;
+    const UNDERFLOWS: f64 =
+        1.0 / (1u128 << 100) as f64 / (1u128 << 100) as f64 / (1u128 << 100) as f64;
     let n = points.len() - 1;
-    let w = weight_table(n);
-    let o = BoundedF64::exact(o);
-    let (mut x, mut dy) = (
-        [BoundedF64::default(); MAX_REGION_DEGREE + 1],
-        [BoundedF64::default(); MAX_REGION_DEGREE],
-    );
-    for (i, p) in points.iter().enumerate() {
-        x[i] = BoundedF64::exact(p[0]).sub(&o);
-    }
-    for (j, w) in points.windows(2).enumerate() {
-        dy[j] = BoundedF64::exact(w[1][1]).sub(&BoundedF64::exact(w[0][1]));
-    }
-    let mut running = BoundedF64::exact(0.0);
-    f.push(running);
+    let w = &weight_table(n)[..(n + 1) * n];
+    let start = f.len();
+    let (mut running, mut size) = (0.0, 0.0);
+    f.push(BoundedF64::exact(0.0));
     for k in 0..2 * n {
-        let mut c = BoundedF64::exact(0.0);
+        let mut c = 0.0;
         for i in k.saturating_sub(n - 1)..=k.min(n) {
             let j = k - i;
-            c = c.add(&x[i].mul(&dy[j]).mul(&w[i * n + j]));
+            let t = (points[i][0] - o) * (points[j + 1][1] - points[j][1]) * w[i * n + j];
+            c += t;
+            size += t.abs();
         }
-        running = running.add(&c);
-        f.push(running);
+        running += c;
+        f.push(BoundedF64::exact(running));
+    }
+    let e = (3 * n + 8) as f64 * UNIT_ROUNDOFF * size * MARGIN + UNDERFLOWS;
+    for v in &mut f[start..] {
+        *v = BoundedF64::with_bound(v.value(), e);
     }
 }
 
-/// Every curve's area coefficients, one after the other, and the answer's parameters.
+/// The area coefficients of the curves the answer needs, one after the other, computed on
+/// first use.
 pub(super) struct Areas<'s, 'a> {
     split: &'s Split<'a>,
-    /// Curve c's coefficients are `coefficients[offsets[c]..offsets[c + 1]]`.
+    /// Curve c's coefficients are `coefficients[spans[c].0..spans[c].1]` (an empty span:
+    /// not computed yet).
     coefficients: Vec<BoundedF64>,
-    offsets: Vec<usize>,
+    spans: Vec<(usize, usize)>,
+    origin: f64,
 }
 
 impl<'s, 'a> Areas<'s, 'a> {
@@ -166,26 +178,27 @@ impl<'s, 'a> Areas<'s, 'a> {
             .fold((f64::MAX, f64::MIN), |(lo, hi), c| {
                 (lo.min(c.bbox[0]), hi.max(c.bbox[2]))
             });
-        let origin = lo / 2.0 + hi / 2.0;
-        let total: usize = split.curves.iter().map(|c| 2 * c.points.len() - 1).sum();
-        let mut coefficients = Vec::with_capacity(total);
-        let mut offsets = Vec::with_capacity(split.curves.len() + 1);
-        for c in &split.curves {
-            offsets.push(coefficients.len());
-            area_coefficients(c.points, origin, &mut coefficients);
-        }
-        offsets.push(coefficients.len());
         Areas {
             split,
-            coefficients,
-            offsets,
+            coefficients: Vec::new(),
+            spans: vec![(0, 0); split.curves.len()],
+            origin: lo / 2.0 + hi / 2.0,
         }
     }
 
     /// F_c at position `k` of curve c (0: its start, `marks.len() + 1`: its end, else the
     /// crossing `marks[k - 1]`).
-    fn at(&self, c: usize, k: usize) -> BoundedF64 {
-        let f = &self.coefficients[self.offsets[c]..self.offsets[c + 1]];
+    fn at(&mut self, c: usize, k: usize) -> BoundedF64 {
+        if self.spans[c].0 == self.spans[c].1 {
+            let start = self.coefficients.len();
+            area_coefficients(
+                self.split.curves[c].points,
+                self.origin,
+                &mut self.coefficients,
+            );
+            self.spans[c] = (start, self.coefficients.len());
+        }
+        let f = &self.coefficients[self.spans[c].0..self.spans[c].1];
         let marks = &self.split.marks[c];
         if k == 0 {
             return f[0];
@@ -199,22 +212,16 @@ impl<'s, 'a> Areas<'s, 'a> {
     }
 }
 
-/// The signed area of each loop of the input, or `None` when an enclosure does not exclude
-/// zero.
-pub(super) fn loop_orientations(areas: &Areas<'_, '_>) -> Option<Vec<i64>> {
-    let split = areas.split;
-    split
-        .loops
-        .iter()
-        .map(|l| {
-            let mut sum = BoundedF64::exact(0.0);
-            for c in l.first..l.first + l.len {
-                let end = split.marks[c].len() + 1;
-                sum = sum.add(&areas.at(c, end));
-            }
-            sign(&sum)
-        })
-        .collect()
+/// The sign of the signed area of loop `l` of the input, or `None` when its enclosure does
+/// not exclude zero.
+pub(super) fn loop_area_sign(areas: &mut Areas<'_, '_>, l: usize) -> Option<i64> {
+    let lp = &areas.split.loops[l];
+    let mut sum = BoundedF64::exact(0.0);
+    for c in lp.first..lp.first + lp.len {
+        let end = areas.split.marks[c].len() + 1;
+        sum = sum.add(&areas.at(c, end));
+    }
+    sign(&sum)
 }
 
 /// The parameter of position `k` of curve c, as the answer gives it (`all`: the crossings,
@@ -254,7 +261,7 @@ fn parameter_at(
 /// the enclosure of the total area; `None` when a loop's sign is not proved or the area
 /// enclosure is wider than the promised 2^-40 B.
 pub(super) fn answer(
-    areas: &Areas<'_, '_>,
+    areas: &mut Areas<'_, '_>,
     loops: Vec<BoundaryLoop>,
     doubles: [&Arc<Doubles>; 2],
 ) -> Option<RegionResult> {

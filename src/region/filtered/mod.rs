@@ -51,10 +51,10 @@ pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Option<RegionResult>
     let doubles = [regions[0].doubles()?, regions[1].doubles()?];
     let arrangement = split::Split::build([doubles[0].as_slice(), doubles[1].as_slice()])?;
     let fills = [regions[0].fill(), regions[1].fill()];
-    let areas = measure::Areas::new(&arrangement);
-    let windings = side::loop_windings(&arrangement, &areas)?;
+    let mut areas = measure::Areas::new(&arrangement);
+    let windings = side::loop_windings(&arrangement, &mut areas)?;
     let loops = walk::boundary(&arrangement, &windings, fills, op)?;
-    measure::answer(&areas, loops, doubles)
+    measure::answer(&mut areas, loops, doubles)
 }
 
 #[cfg(test)]

@@ -13,8 +13,13 @@
 //! the first direction that decides every curve gives the count, and if none does, the
 //! next vertex of the loop is tried.
 
-use super::measure::{loop_orientations, Areas};
+use super::measure::{loop_area_sign, Areas};
 use super::split::Split;
+use crate::intersect::algebraic::exact_f64;
+use crate::num::bounded::UNIT_ROUNDOFF;
+use crate::num::ring::Rational;
+use num_traits::Zero;
+use std::cmp::Ordering;
 
 /// The winding numbers around a loop L of region R: `own` = [left of L, right of L] for R,
 /// and `other` = the winding number of the other region at the start of curve `start` of L.
@@ -76,13 +81,73 @@ fn windings_at(split: &Split<'_>, x: [f64; 2], skip: usize) -> Option<[i64; 2]> 
     None
 }
 
+/// The exact sign of the turn a -> v -> b: cross(v - a, b - v) (a float filter with
+/// Shewchuk's bound, exact rationals when it does not decide).
+fn turn_sign(a: [f64; 2], v: [f64; 2], b: [f64; 2]) -> Ordering {
+    let (l, r) = ((v[0] - a[0]) * (b[1] - v[1]), (v[1] - a[1]) * (b[0] - v[0]));
+    let det = l - r;
+    let bound = 4.0 * UNIT_ROUNDOFF * (l.abs() + r.abs());
+    if det.is_finite() && det.abs() > bound && det.abs() > 1e-290 {
+        return det.partial_cmp(&0.0).expect("finite");
+    }
+    let q = |p: [f64; 2]| [exact_f64(p[0]), exact_f64(p[1])];
+    let (a, v, b) = (q(a), q(v), q(b));
+    let det = (&v[0] - &a[0]) * (&b[1] - &v[1]) - (&v[1] - &a[1]) * (&b[0] - &v[0]);
+    det.cmp(&Rational::zero())
+}
+
+/// The orientation (+1 counter-clockwise, -1 clockwise) of the simple loop `l` from one of
+/// its extreme corners, or `None` when none decides it.
+///
+/// Turned so that a direction points down (see [`turn`]), let v be a join of two curves of
+/// the loop whose height is the least of every control point of the loop. The loop lies
+/// in the half-plane above v (hulls), so the points just below v are outside it; near v
+/// the loop is the arriving curve, coming in along d_in = v - a (a its last control point
+/// other than v), and the leaving one, along d_out = b - v (b its first other than v). When
+/// cross(d_in, d_out) is not zero, the inside near v is the wedge of angle below 180
+/// degrees between -d_in and d_out (the other wedge holds points below v), which is on the
+/// left of the loop exactly when cross(d_in, d_out) > 0. Turns keep crosses' signs.
+pub(super) fn corner_orientation(split: &Split<'_>, l: usize) -> Option<i64> {
+    let lp = &split.loops[l];
+    let curves = &split.curves[lp.first..lp.first + lp.len];
+    for d in 0..4 {
+        // The least height (turned) over every control point, and a join attaining it.
+        let height = |p: &[f64; 2]| turn(*p, d)[1];
+        let least = curves
+            .iter()
+            .flat_map(|c| c.points.iter())
+            .map(height)
+            .fold(f64::INFINITY, f64::min);
+        for (k, c) in curves.iter().enumerate() {
+            let v = c.points[0];
+            if height(&v) != least {
+                continue;
+            }
+            let before = &curves[(k + curves.len() - 1) % curves.len()].points;
+            let a = before.iter().rev().find(|p| **p != v)?;
+            let b = c.points.iter().find(|p| **p != v)?;
+            match turn_sign(*a, v, *b) {
+                Ordering::Greater => return Some(1),
+                Ordering::Less => return Some(-1),
+                Ordering::Equal => {}
+            }
+        }
+    }
+    None
+}
+
 /// How many vertices of a loop are tried before the exact path is left to answer.
 const VERTICES_TRIED: usize = 8;
 
 /// The winding numbers around every loop (see [`LoopWindings`]), or `None` when a loop's
 /// orientation or a ray count is not decided.
-pub(super) fn loop_windings(split: &Split<'_>, areas: &Areas<'_, '_>) -> Option<Vec<LoopWindings>> {
-    let orientation = loop_orientations(areas)?;
+pub(super) fn loop_windings(
+    split: &Split<'_>,
+    areas: &mut Areas<'_, '_>,
+) -> Option<Vec<LoopWindings>> {
+    let orientation = (0..split.loops.len())
+        .map(|l| corner_orientation(split, l).or_else(|| loop_area_sign(areas, l)))
+        .collect::<Option<Vec<i64>>>()?;
     split
         .loops
         .iter()

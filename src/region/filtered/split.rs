@@ -83,12 +83,14 @@ impl<'a> Split<'a> {
     /// curve c of loop l of region r), or `None` when the configuration is not proved
     /// generic.
     pub fn build(doubles: [&'a [Vec<Vec<[f64; 2]>>]; 2]) -> Option<Split<'a>> {
+        let count = |r: &[Vec<Vec<[f64; 2]>>]| r.iter().map(Vec::len).sum::<usize>();
+        let curves = count(doubles[0]) + count(doubles[1]);
         let mut split = Split {
-            curves: Vec::new(),
-            loops: Vec::new(),
-            crossings: Vec::new(),
+            curves: Vec::with_capacity(curves),
+            loops: Vec::with_capacity(doubles[0].len() + doubles[1].len()),
+            crossings: Vec::with_capacity(8),
             marks: Vec::new(),
-            pairs: Vec::new(),
+            pairs: Vec::with_capacity(8),
         };
         for (region, loops) in doubles.iter().enumerate() {
             for (loop_index, curves) in loops.iter().enumerate() {

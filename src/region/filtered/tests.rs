@@ -232,8 +232,8 @@ fn probe_triangles() {
         let why = match super::split::Split::build(d) {
             None => "split",
             Some(s) => {
-                let areas = super::measure::Areas::new(&s);
-                match super::side::loop_windings(&s, &areas) {
+                let mut areas = super::measure::Areas::new(&s);
+                match super::side::loop_windings(&s, &mut areas) {
                     None => "windings",
                     Some(w) => match super::walk::boundary(
                         &s,
@@ -243,7 +243,7 @@ fn probe_triangles() {
                     ) {
                         None => "walk",
                         Some(l) => match super::measure::answer(
-                            &areas,
+                            &mut areas,
                             l,
                             [t[0].doubles().unwrap(), t[1].doubles().unwrap()],
                         ) {

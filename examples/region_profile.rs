@@ -1,0 +1,56 @@
+//! A loop of region booleans to profile (`valgrind --tool=callgrind` or `perf record`):
+//! the 200 quadratic triangle pairs of `benches/region.rs`, or the 8 + 8 cubic stars.
+//!
+//! `cargo build --release -p blossom --example region_profile`, then
+//! `target/release/examples/region_profile triangles 100` (passes over the pairs) or
+//! `target/release/examples/region_profile stars 10000`. Prints the time per boolean.
+
+use blossom::region::{boolean, triangle_intersection, BooleanOp, FillRule, Region};
+use blossom::{Bezier, Rational};
+use std::time::Instant;
+
+#[path = "../benches/region_peers/src/shapes.rs"]
+#[allow(dead_code)]
+mod shapes;
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let what = args.get(1).map_or("triangles", String::as_str);
+    let passes: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(100);
+    let pairs: Vec<(Region, Region, BooleanOp)> = if what == "stars" {
+        let [a, b] = shapes::star_pair();
+        let region = |curves: &[shapes::Cubic]| {
+            let curves = curves
+                .iter()
+                .map(|c| Bezier::new(c.to_vec()).expect("4 points"));
+            Region::from_f64(vec![curves.collect()], FillRule::NonZero).expect("a loop")
+        };
+        vec![(region(&a), region(&b), BooleanOp::Intersection)]
+    } else {
+        let triangle = |t: &shapes::Triangle| {
+            let nodes = t
+                .iter()
+                .map(|p| p.map(|x| Rational::from_float(x).expect("finite")))
+                .collect();
+            Region::triangle(2, nodes).expect("six nodes")
+        };
+        shapes::triangle_pairs(200)
+            .iter()
+            .map(|[t1, t2]| (triangle(t1), triangle(t2), BooleanOp::Intersection))
+            .collect()
+    };
+    let start = Instant::now();
+    let mut loops = 0;
+    for _ in 0..passes {
+        for (a, b, op) in &pairs {
+            let r = if what == "stars" {
+                boolean(a, b, *op)
+            } else {
+                triangle_intersection(a, b)
+            };
+            loops += r.expect("answered").loops.len();
+        }
+    }
+    let each = start.elapsed().as_secs_f64() / (passes * pairs.len()) as f64;
+    println!("{what}: {:.3} us per boolean ({loops} loops)", each * 1e6);
+}
