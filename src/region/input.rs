@@ -4,7 +4,7 @@ use super::curve::is_double;
 use crate::error::{Error, ErrorKind, Result};
 use crate::num::ring::{rational_to_f64, Rational};
 use crate::shape::array::Bezier;
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 /// The highest curve degree a region accepts: the exact intersection of two curves of degree
 /// n costs about n^4 operations on growing numbers (see
@@ -63,13 +63,23 @@ impl FillRule {
 /// assert_eq!(square.contains(&inside), Position::Inside);
 /// # Ok::<(), blossom::Error>(())
 /// ```
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub struct Region {
     loops: Vec<Vec<Bezier<Rational, 2>>>,
     fill: FillRule,
     /// The control points as doubles when every coordinate is one exactly (the float path
     /// of the booleans reads these).
     doubles: Option<Arc<Doubles>>,
+    /// Whether the float path proved the loops simple and pairwise disjoint (computed by the
+    /// first boolean that asks, then kept: a fact about the region alone).
+    simple: OnceLock<bool>,
+}
+
+impl PartialEq for Region {
+    /// The same loops of the same curves and the same fill rule.
+    fn eq(&self, other: &Self) -> bool {
+        self.loops == other.loops && self.fill == other.fill
+    }
 }
 
 /// The control points of a region's curves as doubles, `[loop][curve][point]`.
@@ -156,6 +166,7 @@ impl Region {
             loops,
             fill,
             doubles,
+            simple: OnceLock::new(),
         })
     }
 
@@ -256,6 +267,12 @@ impl Region {
     /// coordinate is a double exactly.
     pub(crate) fn doubles(&self) -> Option<&Arc<Doubles>> {
         self.doubles.as_ref()
+    }
+
+    /// Whether the float path proved the region's loops simple and pairwise disjoint, by
+    /// `prove` on the first call.
+    pub(crate) fn proved_simple(&self, prove: impl FnOnce() -> bool) -> bool {
+        *self.simple.get_or_init(prove)
     }
 }
 

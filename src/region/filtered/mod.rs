@@ -13,7 +13,9 @@
 //!   no point of the plane is then on more than two curves, and the crossings along a curve
 //!   have disjoint enclosures, which orders them.
 //!
-//! Where any of this is not proved, `run` answers `None` and [`super::pipeline`] runs the
+//! The first item is a fact about each region alone: it is proved once per [`Region`] and
+//! kept (a region reused in many booleans pays for it once). Where any of this is not
+//! proved, `run` answers `None` and [`super::pipeline`] runs the
 //! exact stages, which handle every configuration; so the answer never depends on which
 //! path gave it (the tests compare the two on the same inputs).
 //!
@@ -49,7 +51,12 @@ use super::input::Region;
 /// configuration is proved generic (module docs), else `None`.
 pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Option<RegionResult> {
     let doubles = [regions[0].doubles()?, regions[1].doubles()?];
-    let arrangement = split::Split::build([doubles[0].as_slice(), doubles[1].as_slice()])?;
+    for (region, d) in regions.iter().zip(doubles) {
+        if !region.proved_simple(|| split::simple(d)) {
+            return None;
+        }
+    }
+    let arrangement = split::Split::build([doubles[0].as_slice(), doubles[1].as_slice()], true)?;
     let fills = [regions[0].fill(), regions[1].fill()];
     let mut areas = measure::Areas::new(&arrangement);
     let windings = side::loop_windings(&arrangement, &mut areas)?;

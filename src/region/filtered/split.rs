@@ -66,6 +66,14 @@ fn bbox(points: &[[f64; 2]]) -> [f64; 4] {
     b
 }
 
+/// Whether the loops of one region (`doubles[l][c]`: the control points of curve c of loop
+/// l) are proved simple and pairwise disjoint: each of at least three curves, each curve
+/// one-to-one, consecutive curves meeting only at their join, other curves whose boxes meet
+/// without a common point (module docs of [`super`]).
+pub(super) fn simple(doubles: &[Vec<Vec<[f64; 2]>>]) -> bool {
+    Split::build([doubles, &[]], false).is_some()
+}
+
 impl<'a> Split<'a> {
     /// The curve following `c` in its loop.
     pub fn next(&self, c: usize) -> usize {
@@ -81,8 +89,9 @@ impl<'a> Split<'a> {
 
     /// The split of the curves of both regions (`doubles[r][l][c]`: the control points of
     /// curve c of loop l of region r), or `None` when the configuration is not proved
-    /// generic.
-    pub fn build(doubles: [&'a [Vec<Vec<[f64; 2]>>]; 2]) -> Option<Split<'a>> {
+    /// generic. With `each_simple`, each region is known to have simple pairwise disjoint
+    /// loops ([`simple`]), and only pairs of curves of different regions are examined.
+    pub fn build(doubles: [&'a [Vec<Vec<[f64; 2]>>]; 2], each_simple: bool) -> Option<Split<'a>> {
         let count = |r: &[Vec<Vec<[f64; 2]>>]| r.iter().map(Vec::len).sum::<usize>();
         let curves = count(doubles[0]) + count(doubles[1]);
         let mut split = Split {
@@ -96,7 +105,7 @@ impl<'a> Split<'a> {
             for (loop_index, curves) in loops.iter().enumerate() {
                 // A loop of fewer than three curves, or with a curve that is one point, is
                 // not proved simple by the tests below: the exact path takes it.
-                if curves.len() < 3 {
+                if curves.len() < 3 && !each_simple {
                     return None;
                 }
                 let loop_no = split.loops.len();
@@ -106,8 +115,9 @@ impl<'a> Split<'a> {
                     len: curves.len(),
                 });
                 for (curve, points) in curves.iter().enumerate() {
-                    if !points.iter().all(|p| p[0].is_finite() && p[1].is_finite())
-                        || !one_to_one(points.as_slice())
+                    if !each_simple
+                        && (!points.iter().all(|p| p[0].is_finite() && p[1].is_finite())
+                            || !one_to_one(points.as_slice()))
                     {
                         return None;
                     }
@@ -127,7 +137,9 @@ impl<'a> Split<'a> {
         split.marks = vec![Vec::new(); split.curves.len()];
         let boxes: Vec<[f64; 4]> = split.curves.iter().map(|c| c.bbox).collect();
         for (i, j) in meeting_boxes(&boxes) {
-            split.pair(i, j)?;
+            if !(each_simple && split.curves[i].id.region == split.curves[j].id.region) {
+                split.pair(i, j)?;
+            }
         }
         for c in 0..split.curves.len() {
             split.order_marks(c)?;

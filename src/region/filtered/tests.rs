@@ -229,7 +229,7 @@ fn probe_triangles() {
             t[0].doubles().unwrap().as_slice(),
             t[1].doubles().unwrap().as_slice(),
         ];
-        let why = match super::split::Split::build(d) {
+        let why = match super::split::Split::build(d, false) {
             None => "split",
             Some(s) => {
                 let mut areas = super::measure::Areas::new(&s);
