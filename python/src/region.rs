@@ -9,7 +9,7 @@
 //! else a float64 Curve over the correctly rounded parameters.
 
 use crate::curve::{check_work, max_work_arg, Curve, CurveShape};
-use crate::errors::{bad, call_detached};
+use crate::errors::{bad, call_detached, from_lib};
 use crate::numbers::{read_array, rounded, Num};
 use crate::records::Algebraic;
 use crate::triangle::{to_bezier_order, CurvedPolygon, Triangle};
@@ -18,7 +18,6 @@ use blossom::region::{
     Winding,
 };
 use blossom::{AlgebraicReal, Bezier, BezierCurve, Rational};
-use num_traits::{One, Zero};
 use pyo3::prelude::*;
 use pyo3::types::PyList;
 
@@ -73,17 +72,21 @@ fn curve_arg(obj: &Bound<'_, PyAny>, path: &str) -> PyResult<Curve> {
     }
 }
 
+/// The exact number of an edge's parameter (computed on demand by the library).
+fn exact_parameter(p: &blossom::region::Parameter) -> PyResult<&AlgebraicReal> {
+    p.algebraic().map_err(|e| from_lib(&e, &[]))
+}
+
 /// The piece of `c` from `e.from` to `e.to`, traversed that way.
 fn piece(c: &Curve, e: &Edge) -> Curve {
-    let (zero, one) = (Rational::zero(), Rational::one());
-    let whole = |x: Option<&Rational>, v: &Rational| x == Some(v);
     let reversed = |coords: &[f64], dim: usize| -> Vec<f64> {
         coords.chunks_exact(dim).rev().flatten().copied().collect()
     };
-    if whole(e.from.exact(), &zero) && whole(e.to.exact(), &one) {
+    let ends = (e.from.curve_end(), e.to.curve_end());
+    if ends == (Some(false), Some(true)) {
         return c.clone();
     }
-    if whole(e.from.exact(), &one) && whole(e.to.exact(), &zero) {
+    if ends == (Some(true), Some(false)) {
         let shape = match &c.shape {
             CurveShape::F64(x) => CurveShape::F64(
                 BezierCurve::from_coordinates(x.dim(), reversed(x.coordinates(), x.dim()))
@@ -104,10 +107,13 @@ fn piece(c: &Curve, e: &Edge) -> Curve {
         };
         return Curve { shape };
     }
-    let shape = match (&c.shape, e.from.exact(), e.to.exact()) {
-        (CurveShape::Exact(x), Some(a), Some(b)) => {
-            CurveShape::Exact(x.subsegment(a.clone()..b.clone()))
-        }
+    // An exact curve is cut exactly at rational parameters (made exact on demand).
+    let rational = |p: &blossom::region::Parameter| match c.shape {
+        CurveShape::Exact(_) => p.algebraic().ok().and_then(|a| a.exact().cloned()),
+        CurveShape::F64(_) => None,
+    };
+    let shape = match (&c.shape, rational(&e.from), rational(&e.to)) {
+        (CurveShape::Exact(x), Some(a), Some(b)) => CurveShape::Exact(x.subsegment(a..b)),
         (CurveShape::F64(x), _, _) => CurveShape::F64(x.subsegment(e.from.to_f64()..e.to.to_f64())),
         (CurveShape::Exact(x), _, _) => {
             let rounded_curve = BezierCurve::from_coordinates(x.dim(), rounded(x.coordinates()))
@@ -181,8 +187,8 @@ fn result_of(
                 e.region,
                 e.loop_index,
                 e.curve,
-                algebraic(py, &e.from)?,
-                algebraic(py, &e.to)?,
+                algebraic(py, exact_parameter(&e.from)?)?,
+                algebraic(py, exact_parameter(&e.to)?)?,
             );
             records.append(record)?;
         }
@@ -434,8 +440,7 @@ fn whole_triangle(r: &RegionResult) -> Option<usize> {
     let [l] = r.loops.as_slice() else {
         return None;
     };
-    let (zero, one) = (Rational::zero(), Rational::one());
-    let whole = |e: &Edge| e.from.exact() == Some(&zero) && e.to.exact() == Some(&one);
+    let whole = |e: &Edge| e.from.curve_end() == Some(false) && e.to.curve_end() == Some(true);
     let region = l.edges.first()?.region;
     let mut seen = [false; 3];
     for e in &l.edges {

@@ -149,13 +149,17 @@ fn expected_points(p: &Curve, q: &Curve) -> u128 {
 const PER_POINT: u128 = 1_000_000;
 
 /// The work estimate of [`run`], in nanoseconds as
-/// [`intersection_work`](crate::budget::intersection_work): the pairs (proved joins a few
+/// [`intersection_work`](crate::budget::intersection_work): [`super::filtered::work`] when
+/// the float path applies to the two regions, else that of the exact stages: the pairs (proved joins a few
 /// microseconds, others [`curve_pair_work`] plus [`PER_POINT`] per expected point), the
 /// self-intersections, and the classification of about one group per curve and two per
 /// point, each a ray tested against every curve's box (~20 ns) with a few exact tests, and
 /// its share of the splitting, chaining and area (~50 µs in all, measured on the wavy
 /// outlines of the scale test).
 pub(crate) fn work(regions: &[&Region; 2]) -> u128 {
+    if let Some(w) = super::filtered::work(regions) {
+        return w;
+    }
     let (curves, _, next) = collect(regions);
     let pairs = candidate_pairs(&curves);
     // A proof by a separating line or a monotone direction: a few microseconds.

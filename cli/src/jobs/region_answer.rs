@@ -38,7 +38,7 @@ pub fn region_result(
 
 /// One EDGE.
 fn edge(e: &Edge, triangle_edges: bool) -> Result<Value, Error> {
-    let (from, to) = (param(&e.from)?, param(&e.to)?);
+    let (from, to) = (param(e.from.algebraic()?)?, param(e.to.algebraic()?)?);
     Ok(if triangle_edges {
         json!({"curve": e.triangle_edge(), "from": from, "to": to})
     } else {

@@ -53,7 +53,8 @@ pub(super) struct Split<'a> {
     pub pairs: Vec<[CurveId; 2]>,
 }
 
-fn bbox(points: &[[f64; 2]]) -> [f64; 4] {
+/// `[x_lo, y_lo, x_hi, y_hi]` of the control points.
+pub(super) fn bbox(points: &[[f64; 2]]) -> [f64; 4] {
     let mut b = [points[0][0], points[0][1], points[0][0], points[0][1]];
     for p in points {
         b = [
