@@ -4,8 +4,8 @@
 //! A [`Region`] is loops of 2-D polynomial Bézier curves with exact rational control points
 //! and a [`FillRule`]. [`Region::winding`] gives the exact winding number of a point,
 //! [`boolean`] the regularized result of [`BooleanOp`] on two regions as oriented simple
-//! loops of [`Edge`]s (pieces of input curves between exact parameters) with an enclosure of
-//! its area, [`triangle_intersection`] the same for two [`Region::triangle`]s.
+//! loops of [`Edge`]s (pieces of input curves between exact [`Parameter`]s) with an
+//! enclosure of its area, [`triangle_intersection`] the same for two [`Region::triangle`]s.
 //!
 //! API notes (for callers that followed the first sketch): the work estimates
 //! [`boolean_work`] and [`Region::winding_work`] return `u128` nanoseconds, like
@@ -26,7 +26,22 @@
 //! rigorous interval arithmetic (`crossing`), the exact path running whenever it does not. Parameters are
 //! [`AlgebraicReal`](crate::AlgebraicReal)s, so their `to_f64` is correctly rounded.
 //!
-//! # The algorithm, stage by stage (one file each)
+//! # Two paths, one answer
+//!
+//! Regions whose control points are doubles take the **float path** first (`filtered`):
+//! when it proves the configuration generic (each region's loops simple and pairwise
+//! disjoint, every contact between the regions a transversal crossing strictly inside both
+//! curves, proved by the certified float filter), it decides everything in floating point
+//! with rigorous bounds: winding numbers by one exact ray count per loop and the crossing
+//! signs, chaining from the crossing signs, the area by rigorous running error bounds. The
+//! parameters of its answer are [`Parameter`]s: the filter's correctly rounded doubles and
+//! enclosures at once, the exact algebraic numbers on demand. Every other input (shared
+//! pieces, touching, vertices on edges, self-crossing loops, rationals that are not doubles)
+//! goes through the exact stages below, which handle every configuration. The two give the
+//! same answer (the tests compare them on random and degenerate inputs); the float path is
+//! two orders of magnitude faster.
+//!
+//! # The exact stages, one file each
 //!
 //! 1. `input` checks the loops; `curve` puts each input curve in power form with an
 //!    outward-rounded box and, on demand, its breaks into pieces monotone in x or y.
