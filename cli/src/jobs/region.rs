@@ -11,14 +11,18 @@
 //!
 //! * Curve and triangle degrees 1..=[`MAX_REGION_DEGREE`] (the contract asks for 10); a
 //!   longer curve is refused before its numbers are read.
-//! * The work of a `boolean` or `triangle-triangle` job is [`boolean_work`]: the float filter
+//! * The work of a `boolean` or `triangle-triangle` job is [`boolean_work`], in nanoseconds
+//!   of a 2-core machine: for regions of doubles with simple loops the library's float path
+//!   (a few microseconds per close pair of curves across the regions), else the float filter
 //!   and the exact intersections of every pair of curves whose boxes meet, the
-//!   self-intersections of every curve and the classification of the pieces, in nanoseconds
-//!   of a 2-core machine. A job whose estimate is over twice `--max-work` is refused
-//!   up front (`within_budget`) naming `regions` (or `triangles`), as `intersect` refuses its
-//!   curves; what the estimate lets through then runs under the work meter
-//!   ([`super::budget::metered`], charged by the exact arithmetic and the intersection
-//!   loops), which stops it at `--max-work` naming the same field.
+//!   self-intersections of every curve and the classification of the pieces. A job whose
+//!   estimate is over twice `--max-work` is refused up front (`within_budget`) naming
+//!   `regions` (or `triangles`), as `intersect` refuses its curves; what the estimate lets
+//!   through then runs under the work meter ([`super::budget::metered`], charged by the exact
+//!   arithmetic and the intersection loops), which stops it at `--max-work` naming the same
+//!   field. The answer is written under the meter as well: the exact parameters of the
+//!   crossings the float path proved are computed there (the contract prints each one's
+//!   polynomial and isolating interval).
 //! * The work of a `winding` job is [`blossom::region::Region::winding_work`] (each curve's monotone breaks
 //!   once, then per point a box test against every curve and exact tests on the curves its
 //!   ray meets), refused over twice `--max-work` naming `points`, and metered the same way.
@@ -139,10 +143,11 @@ fn triangle_triangle(
     let t1 = triangle(&items[0], "triangles[0]", arithmetic)?;
     let t2 = triangle(&items[1], "triangles[1]", arithmetic)?;
     within_budget("triangles", boolean_work(&t1, &t2), limits.max_work)?;
-    let result = metered(limits, "triangles", || {
-        triangle_intersection(&t1, &t2).map_err(|e| at("triangles", e))
-    })?;
-    region_result("triangle-triangle", &result, true)
+    // The answer is written under the meter too: its exact parameters are computed there.
+    metered(limits, "triangles", || {
+        let result = triangle_intersection(&t1, &t2).map_err(|e| at("triangles", e))?;
+        region_result("triangle-triangle", &result, true)
+    })
 }
 
 /// `"boolean"`.
@@ -156,10 +161,10 @@ fn boolean_job(
     let a = region(&items[0], "regions[0]", arithmetic)?;
     let b = region(&items[1], "regions[1]", arithmetic)?;
     within_budget("regions", boolean_work(&a, &b), limits.max_work)?;
-    let result = metered(limits, "regions", || {
-        boolean(&a, &b, op).map_err(|e| at("regions", e))
-    })?;
-    region_result("boolean", &result, false)
+    metered(limits, "regions", || {
+        let result = boolean(&a, &b, op).map_err(|e| at("regions", e))?;
+        region_result("boolean", &result, false)
+    })
 }
 
 /// The operation named at `op`.
