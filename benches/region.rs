@@ -185,9 +185,22 @@ fn main() {
             "seconds_first": first,
         }));
     }
+    // The degenerate pairs, for the peer's wrong answers (not timed).
+    let degenerate: Vec<serde_json::Value> = shapes::degenerate_triangle_pairs()
+        .iter()
+        .map(|(name, [t1, t2])| {
+            let r = triangle_intersection(&triangle_of(t1), &triangle_of(t2)).expect("answered");
+            serde_json::json!({
+                "name": name,
+                "triangles": [t1, t2],
+                "area": r.area,
+                "loops": r.loops.len(),
+            })
+        })
+        .collect();
     std::fs::write(
         out_dir().join("triangles.json"),
-        serde_json::json!({ "degree": 2, "pairs": records }).to_string(),
+        serde_json::json!({ "degree": 2, "pairs": records, "degenerate": degenerate }).to_string(),
     )
     .expect("a writable target directory");
     let _ = writeln!(

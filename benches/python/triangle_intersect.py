@@ -84,6 +84,46 @@ def main():
                 f"pair {index}: bezier area {area:.12f}, certified [{lo:.12f}, {hi:.12f}] "
                 f"({len(result)} piece(s), certified {pair['loops']} loop(s))"
             )
+    # The same pairs through blossom's Python package, when it is installed, timed in this run
+    # beside bezier: the first call on fresh triangles (it builds and keeps their regions),
+    # then the median of 5 calls.
+    py_first, py_warm = [], []
+    try:
+        import blossom
+    except ImportError:
+        blossom = None
+    if blossom is not None:
+        for pair in pairs:
+            t1, t2 = (
+                blossom.Triangle(np.asfortranarray(np.array(t, dtype=float).T), degree=degree)
+                for t in pair["triangles"]
+            )
+            start = time.perf_counter()
+            t1.intersect(t2)
+            py_first.append(time.perf_counter() - start)
+            times = []
+            for _ in range(5):
+                start = time.perf_counter()
+                t1.intersect(t2)
+                times.append(time.perf_counter() - start)
+            py_warm.append(statistics.median(times))
+
+    # The degenerate pairs: bezier's answer against the certified one (not timed).
+    degenerate = data.get("degenerate", [])
+    degenerate_wrong = []
+    for case in degenerate:
+        t1, t2 = (triangle(t, degree) for t in case["triangles"])
+        lo, hi = case["area"]
+        try:
+            result = t1.intersect(t2)
+        except Exception as error:  # noqa: BLE001 - every failure is counted by type
+            degenerate_wrong.append(f"{case['name']}: {type(error).__name__}: {error}")
+            continue
+        area = area_of(result)
+        if area < lo - 1e-9 or area > hi + 1e-9:
+            degenerate_wrong.append(
+                f"{case['name']}: bezier area {area:.12f}, certified [{lo:.12f}, {hi:.12f}]"
+            )
     mean = lambda xs: sum(xs) / len(xs) if xs else float("nan")
     lines = [
         f"pairs: {len(pairs)} quadratic triangle pairs (benches/region.rs)",
@@ -96,7 +136,18 @@ def main():
         f"bezier wrong: {len(wrong)} of {len(pairs)} pairs "
         f"(area outside the certified enclosure by more than 1e-9, or an exception: "
         f"{dict(exceptions) or 'none'})",
-    ] + ["  " + w for w in wrong]
+    ] + (
+        [
+            f"blossom (Python package) Triangle.intersect, same run: {mean(py_warm) * 1e6:.2f} us "
+            f"per pair (median of 5 calls; ratio bezier / blossom {mean(theirs) / mean(py_warm):.2f}), "
+            f"first call on fresh triangles {mean(py_first) * 1e6:.2f} us "
+            f"(ratio {mean(theirs) / mean(py_first):.2f})"
+        ]
+        if py_warm
+        else ["blossom's Python package is not installed: its line is skipped"]
+    ) + ["  " + w for w in wrong] + [
+        f"bezier wrong on the degenerate pairs: {len(degenerate_wrong)} of {len(degenerate)}"
+    ] + ["  " + w for w in degenerate_wrong]
     text = "\n".join(lines) + "\n"
     print(text, end="")
     (directory / "python_triangles.txt").write_text(text)

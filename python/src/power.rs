@@ -168,9 +168,7 @@ fn power_triangle<T: WrapTriangle>(
     let patch = call(&[], || {
         Ok(restrict_power_triangle(&surface, &[c1, c2, c0], method))
     })?;
-    Ok(Triangle {
-        shape: T::wrap_triangle(patch),
-    })
+    Ok(Triangle::of_shape(T::wrap_triangle(patch)))
 }
 
 /// The power-form polynomial p(s, t) = sum_(i + j <= N) c_ij s^i t^j (`coefficients` a

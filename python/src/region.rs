@@ -9,7 +9,7 @@
 //! else a float64 Curve over the correctly rounded parameters.
 
 use crate::curve::{check_work, max_work_arg, Curve, CurveShape};
-use crate::errors::{bad, call_detached, from_lib};
+use crate::errors::{bad, call, call_detached, from_lib};
 use crate::numbers::{read_array, rounded, Num};
 use crate::records::Algebraic;
 use crate::triangle::{to_bezier_order, CurvedPolygon, Triangle};
@@ -25,6 +25,7 @@ use pyo3::types::PyList;
 /// previous one ends), filled by the rule `fill_rule`: `"nonzero"` (default) or `"evenodd"`,
 /// as SVG's. Loops may cross themselves and each other and run either way.
 #[pyclass(module = "blossom", frozen)]
+#[derive(Clone)]
 pub struct CurvedRegion {
     region: Region,
     /// The input curves as given (`loops[l][c]`), for the pieces of a result.
@@ -376,6 +377,15 @@ fn fill_rule_arg(name: &str) -> PyResult<FillRule> {
     fill_rule(name)
 }
 
+/// The region of a planar triangle, the argument `arg`, made once and kept on the triangle.
+fn cached_region<'t>(t: &'t Triangle, arg: &str) -> PyResult<&'t CurvedRegion> {
+    if let Some(r) = t.region.get() {
+        return Ok(r);
+    }
+    let r = triangle_region(t, arg)?;
+    Ok(t.region.get_or_init(|| r))
+}
+
 /// The region of a planar triangle, the argument `arg`.
 fn triangle_region(t: &Triangle, arg: &str) -> PyResult<CurvedRegion> {
     let (n, d) = (t.degree(), t.dim());
@@ -418,11 +428,16 @@ pub fn triangle_intersect(
     max_work: Option<f64>,
 ) -> PyResult<Py<PyList>> {
     let max_work = max_work_arg(max_work)?;
-    let a = triangle_region(t1, "self")?;
-    let b = triangle_region(t2, "other")?;
+    let a = cached_region(t1, "self")?;
+    let b = cached_region(t2, "other")?;
     check_boolean_work(&a.region, &b.region, max_work)?;
     let (ra, rb) = (&a.region, &b.region);
-    let r = call_detached(py, &[], || triangle_intersection(ra, rb))?;
+    // Small pairs (the float path: microseconds) keep the GIL: releasing it costs more.
+    let r = if boolean_work(ra, rb) < 100_000 {
+        call(&[], || triangle_intersection(ra, rb))?
+    } else {
+        call_detached(py, &[], || triangle_intersection(ra, rb))?
+    };
     let out = PyList::empty(py);
     if let Some(which) = whole_triangle(&r) {
         let t = if which == 0 { t1 } else { t2 };

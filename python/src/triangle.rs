@@ -100,12 +100,23 @@ pub fn to_bezier_order<T: blossom::Ring>(p: &TriangularPatch<T>) -> Vec<T> {
 #[derive(Clone)]
 pub struct Triangle {
     pub shape: TriangleShape,
+    /// The triangle's region for `intersect`, made on first use and kept (the library also
+    /// keeps on it the proof that its boundary is simple).
+    pub region: std::sync::OnceLock<crate::region::CurvedRegion>,
+}
+
+impl Triangle {
+    /// A triangle of the shape `shape`.
+    pub fn of_shape(shape: TriangleShape) -> Triangle {
+        Triangle {
+            shape,
+            region: std::sync::OnceLock::new(),
+        }
+    }
 }
 
 fn triangle_of<T: WrapTriangle>(p: TriangularPatch<T>) -> Triangle {
-    Triangle {
-        shape: T::wrap_triangle(p),
-    }
+    Triangle::of_shape(T::wrap_triangle(p))
 }
 
 impl Triangle {
@@ -156,7 +167,7 @@ impl Triangle {
                 TriangularPatch::from_coordinates(n, d, from_bezier_order(&c, d, count, n))
             })?),
         };
-        Ok(Triangle { shape })
+        Ok(Triangle::of_shape(shape))
     }
 
     pub fn degree(&self) -> usize {

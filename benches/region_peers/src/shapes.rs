@@ -151,3 +151,61 @@ pub fn triangle_pairs(count: usize) -> Vec<[Triangle; 2]> {
         })
         .collect()
 }
+
+/// A quadratic triangle with straight edges through the corners `a`, `b`, `c` (its edge
+/// nodes the midpoints, exact for corners on the grid).
+pub fn flat_triangle(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Triangle {
+    let mid = |p: [f64; 2], q: [f64; 2]| [(p[0] + q[0]) / 2.0, (p[1] + q[1]) / 2.0];
+    [a, mid(a, b), b, mid(a, c), mid(b, c), c]
+}
+
+/// Degenerate pairs of quadratic triangles, the configurations that break float-only
+/// intersectors, each named: identical triangles, a shared edge (the mirror image across
+/// it), half of an edge shared, a corner touching an edge from outside, a corner on a corner,
+/// one triangle inside the other touching its edge, nested with a shared corner, a curved
+/// edge tangent to a straight one from outside, and a triangle against a copy with its nodes
+/// listed from another corner (the same region).
+pub fn degenerate_triangle_pairs() -> Vec<(&'static str, [Triangle; 2])> {
+    let unit = flat_triangle([0.0, 0.0], [1.0, 0.0], [0.0, 1.0]);
+    // The unit triangle with its edge 0 (along y = 0) bent down to the node (0.5, -0.25).
+    let mut bent = unit;
+    bent[1] = [0.5, -0.25];
+    vec![
+        ("identical", [unit, unit]),
+        (
+            "shared edge",
+            [unit, flat_triangle([1.0, 0.0], [1.0, 1.0], [0.0, 1.0])],
+        ),
+        (
+            "half an edge shared",
+            [unit, flat_triangle([0.5, 0.0], [1.5, -1.0], [1.5, 0.0])],
+        ),
+        (
+            "corner on an edge",
+            [unit, flat_triangle([0.5, 0.5], [1.0, 0.5], [1.0, 1.0])],
+        ),
+        (
+            "corner on a corner",
+            [unit, flat_triangle([1.0, 0.0], [2.0, 0.0], [1.0, 1.0])],
+        ),
+        (
+            "inside, touching an edge",
+            [unit, flat_triangle([0.25, 0.0], [0.5, 0.0], [0.25, 0.25])],
+        ),
+        (
+            "nested, a corner shared",
+            [unit, flat_triangle([0.0, 0.0], [0.5, 0.0], [0.0, 0.5])],
+        ),
+        (
+            "curved edge tangent to a straight one",
+            [
+                bent,
+                flat_triangle([0.0, -0.125], [1.0, -0.125], [0.5, -0.5]),
+            ],
+        ),
+        (
+            "the same triangle from another corner",
+            [unit, flat_triangle([1.0, 0.0], [0.0, 1.0], [0.0, 0.0])],
+        ),
+    ]
+}
