@@ -275,3 +275,18 @@ def test_bezier_peer_triangle_areas():
         assert lo - 1e-9 <= area <= hi + 1e-9
         compared += 1
     assert compared >= 10
+
+
+def test_repeated_intersections_with_kept_regions_agree():
+    # Each triangle keeps its region after the first intersect; later calls (and other
+    # partners) must give the same exact answers.
+    rng = random.Random(7)
+    tris = [linear_triangle(*random_ccw_triangle(rng), exact=True) for _ in range(6)]
+    first = {}
+    for i, a in enumerate(tris):
+        for j, b in enumerate(tris):
+            first[i, j] = F(polygon_area_of(a.intersect(b)))
+    for (i, j), area in first.items():
+        assert F(polygon_area_of(tris[i].intersect(tris[j]))) == area
+        # The symmetric operation: the same region (its area summed in another order).
+        assert abs(F(polygon_area_of(tris[j].intersect(tris[i]))) - area) <= F(1, 2**40)
