@@ -105,41 +105,55 @@ pub(crate) fn chain(arr: &Arrangement, verdicts: &[Option<bool>]) -> Vec<Vec<Run
         leaving.entry(e.start(arr)).or_default().push(i);
     }
     let next = successors(arr, &edges, &leaving);
-    let starts: Vec<usize> = edges.iter().map(|e| e.start(arr)).collect();
-    let ends: Vec<usize> = edges.iter().map(|e| e.end(arr)).collect();
-    let runs: Vec<Run> = edges.iter().map(|e| e.run(arr)).collect();
-    close_walks(&starts, &ends, &next, &runs)
+    let steps: Vec<Step> = edges
+        .iter()
+        .map(|e| Step {
+            start: e.start(arr),
+            end: e.end(arr),
+            run: e.run(arr),
+        })
+        .collect();
+    close_walks(&steps, &next)
 }
 
-/// The simple loops of maximal runs traced by directed edges (edge i runs from vertex
-/// `starts[i]` to `ends[i]` as `runs[i]`, and the walk continues after it by `next[i]`):
-/// each closed walk, cut at every vertex it passes twice, its consecutive runs that continue
-/// each other merged.
-pub(crate) fn close_walks(
-    starts: &[usize],
-    ends: &[usize],
-    next: &[usize],
-    runs: &[Run],
-) -> Vec<Vec<Run>> {
-    let mut used = vec![false; next.len()];
-    let vertices = starts.iter().chain(ends).max().map_or(0, |v| v + 1);
+/// A directed edge for [`close_walks`]: from vertex `start` to vertex `end`, as `run`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Step {
+    pub start: usize,
+    pub end: usize,
+    pub run: Run,
+}
+
+/// The simple loops of maximal runs traced by directed edges (the walk continues after
+/// `steps[i]` by `steps[next[i]]`): each closed walk, cut at every vertex it passes twice (a
+/// loop is cut off the walk each time it returns to a vertex it has left), its consecutive
+/// runs that continue each other merged.
+pub(crate) fn close_walks(steps: &[Step], next: &[usize]) -> Vec<Vec<Run>> {
+    let mut used = vec![false; steps.len()];
+    let vertices = steps
+        .iter()
+        .map(|s| s.start.max(s.end) + 1)
+        .max()
+        .unwrap_or(0);
+    // at[v]: the position on the stack of the step leaving v, usize::MAX when none is.
     let mut at = vec![usize::MAX; vertices];
-    let mut loops = Vec::new();
-    for start in 0..next.len() {
-        if used[start] {
-            continue;
-        }
-        let mut walk = Vec::new();
-        let mut e = start;
+    let (mut stack, mut loops): (Vec<usize>, Vec<Vec<Run>>) = (Vec::new(), Vec::new());
+    for first in 0..steps.len() {
+        let mut e = first;
         while !used[e] {
             used[e] = true;
-            walk.push(e);
+            at[steps[e].start] = stack.len();
+            stack.push(e);
+            let p = at[steps[e].end];
+            if p != usize::MAX {
+                for &f in &stack[p..] {
+                    at[steps[f].start] = usize::MAX;
+                }
+                loops.push(merge(stack.drain(p..).map(|i| steps[i].run).collect()));
+            }
             e = next[e];
         }
-        debug_assert_eq!(e, start, "a walk closes where it started");
-        for simple in split_at_repeats(starts, ends, &walk, &mut at) {
-            loops.push(merge(simple.iter().map(|&i| runs[i]).collect()));
-        }
+        debug_assert!(stack.is_empty(), "a closed walk splits into closed loops");
     }
     loops
 }
@@ -182,32 +196,6 @@ fn successors(
         }
     }
     next
-}
-
-/// Cuts a closed walk at every vertex it passes twice.
-/// `at[v]` is scratch indexed by vertex, `usize::MAX` everywhere on entry and on return.
-fn split_at_repeats(
-    starts: &[usize],
-    ends: &[usize],
-    walk: &[usize],
-    at: &mut [usize],
-) -> Vec<Vec<usize>> {
-    let mut out = Vec::new();
-    let mut stack: Vec<usize> = Vec::new();
-    for &e in walk {
-        at[starts[e]] = stack.len();
-        stack.push(e);
-        let p = at[ends[e]];
-        if p != usize::MAX {
-            let piece: Vec<usize> = stack.drain(p..).collect();
-            for &f in &piece {
-                at[starts[f]] = usize::MAX;
-            }
-            out.push(piece);
-        }
-    }
-    debug_assert!(stack.is_empty(), "a closed walk splits into closed loops");
-    out
 }
 
 /// Merges consecutive runs that continue each other on one curve (cyclically).

@@ -11,7 +11,8 @@
 //! undecided in this direction. The same holds for the rays along -x, +y and -y after a
 //! quarter turn of the plane (negations of doubles: exact; turns keep winding numbers);
 //! the first direction that decides every curve gives the count, and if none does, the
-//! next vertex of the loop is tried.
+//! next vertex of the loop is tried. (The tests on every control point are tests on the
+//! sides of the curve's box.)
 
 use super::measure::{loop_area_sign, Areas};
 use super::split::Split;
@@ -41,21 +42,23 @@ fn turn(p: [f64; 2], d: usize) -> [f64; 2] {
 }
 
 /// The signed number of passages of the curve across the ray from x along direction `d`,
-/// or `None` when the control points do not decide it (module docs).
-fn ray_passages(x: [f64; 2], points: &[[f64; 2]], d: usize) -> Option<i64> {
+/// or `None` when the control points do not decide it (module docs). The tests on every
+/// control point are tests on the sides of their box `bbox` (`[x_lo, y_lo, x_hi, y_hi]`),
+/// turned with the plane.
+fn ray_passages(x: [f64; 2], points: &[[f64; 2]], bbox: &[f64; 4], d: usize) -> Option<i64> {
+    // The turned box: the least and largest turned coordinates.
+    let (lo, hi) = {
+        let (a, b) = (turn([bbox[0], bbox[1]], d), turn([bbox[2], bbox[3]], d));
+        (
+            [a[0].min(b[0]), a[1].min(b[1])],
+            [a[0].max(b[0]), a[1].max(b[1])],
+        )
+    };
     let x = turn(x, d);
-    let (mut above, mut below, mut left, mut right) = (true, true, true, true);
-    for p in points {
-        let p = turn(*p, d);
-        above &= p[1] >= x[1];
-        below &= p[1] < x[1];
-        left &= p[0] < x[0];
-        right &= p[0] > x[0];
-    }
-    if above || below || left {
+    if lo[1] >= x[1] || hi[1] < x[1] || hi[0] < x[0] {
         return Some(0);
     }
-    if right {
+    if lo[0] > x[0] {
         let up = |p: [f64; 2]| i64::from(turn(p, d)[1] >= x[1]);
         return Some(up(points[points.len() - 1]) - up(points[0]));
     }
@@ -71,7 +74,7 @@ fn windings_at(split: &Split<'_>, x: [f64; 2], skip: usize) -> Option<[i64; 2]> 
             if c.loop_no == skip {
                 continue;
             }
-            match ray_passages(x, c.points, d) {
+            match ray_passages(x, c.points, &c.bbox, d) {
                 Some(k) => w[c.id.region] += k,
                 None => continue 'directions,
             }
@@ -99,38 +102,38 @@ fn turn_sign(a: [f64; 2], v: [f64; 2], b: [f64; 2]) -> Ordering {
 /// The orientation (+1 counter-clockwise, -1 clockwise) of the simple loop `l` from one of
 /// its extreme corners, or `None` when none decides it.
 ///
-/// Turned so that a direction points down (see [`turn`]), let v be a join of two curves of
-/// the loop whose height is the least of every control point of the loop. The loop lies
-/// in the half-plane above v (hulls), so the points just below v are outside it; near v
-/// the loop is the arriving curve, coming in along d_in = v - a (a its last control point
-/// other than v), and the leaving one, along d_out = b - v (b its first other than v). When
-/// cross(d_in, d_out) is not zero, the inside near v is the wedge of angle below 180
-/// degrees between -d_in and d_out (the other wedge holds points below v), which is on the
-/// left of the loop exactly when cross(d_in, d_out) > 0. Turns keep crosses' signs.
+/// Let v be a join of two curves of the loop on a side of the box of every control point of
+/// the loop (least or largest x or y), so the loop lies in the closed half-plane on the
+/// box's side of the line through v along that side (hulls), and the points just beyond it
+/// are outside the loop. Near v the loop is the arriving curve, coming in along d_in = v - a
+/// (a its last control point other than v), and the leaving one, along d_out = b - v (b its
+/// first other than v), both in that half-plane. When cross(d_in, d_out) is not zero, the
+/// inside near v is the wedge of angle below 180 degrees between -d_in and d_out (the other
+/// wedge holds points beyond the line), which is on the left of the loop exactly when
+/// cross(d_in, d_out) > 0.
 pub(super) fn corner_orientation(split: &Split<'_>, l: usize) -> Option<i64> {
     let lp = &split.loops[l];
     let curves = &split.curves[lp.first..lp.first + lp.len];
-    for d in 0..4 {
-        // The least height (turned) over every control point, and a join attaining it.
-        let height = |p: &[f64; 2]| turn(*p, d)[1];
-        let least = curves
-            .iter()
-            .flat_map(|c| c.points.iter())
-            .map(height)
-            .fold(f64::INFINITY, f64::min);
-        for (k, c) in curves.iter().enumerate() {
-            let v = c.points[0];
-            if height(&v) != least {
-                continue;
-            }
-            let before = &curves[(k + curves.len() - 1) % curves.len()].points;
-            let a = before.iter().rev().find(|p| **p != v)?;
-            let b = c.points.iter().find(|p| **p != v)?;
-            match turn_sign(*a, v, *b) {
-                Ordering::Greater => return Some(1),
-                Ordering::Less => return Some(-1),
-                Ordering::Equal => {}
-            }
+    let b = curves.iter().fold(curves[0].bbox, |b, c| {
+        [
+            b[0].min(c.bbox[0]),
+            b[1].min(c.bbox[1]),
+            b[2].max(c.bbox[2]),
+            b[3].max(c.bbox[3]),
+        ]
+    });
+    for (k, c) in curves.iter().enumerate() {
+        let v = c.points[0];
+        if !(v[0] == b[0] || v[1] == b[1] || v[0] == b[2] || v[1] == b[3]) {
+            continue;
+        }
+        let before = &curves[(k + curves.len() - 1) % curves.len()].points;
+        let a = before.iter().rev().find(|p| **p != v)?;
+        let after = c.points.iter().find(|p| **p != v)?;
+        match turn_sign(*a, v, *after) {
+            Ordering::Greater => return Some(1),
+            Ordering::Less => return Some(-1),
+            Ordering::Equal => {}
         }
     }
     None

@@ -9,7 +9,7 @@
 use super::side::LoopWindings;
 use super::split::Split;
 use crate::region::boolean::BooleanOp;
-use crate::region::chain::{close_walks, Run};
+use crate::region::chain::{close_walks, Run, Step};
 use crate::region::input::FillRule;
 
 /// A loop of the answer as runs of positions.
@@ -133,10 +133,15 @@ pub(super) fn boundary(
         }
     }
     let next = successors(split, &edges)?;
-    let starts: Vec<usize> = edges.iter().map(|e| e.start(split)).collect();
-    let ends: Vec<usize> = edges.iter().map(|e| e.end(split)).collect();
-    let runs: Vec<Run> = edges.iter().map(Directed::run).collect();
-    Some(close_walks(&starts, &ends, &next, &runs))
+    let steps: Vec<Step> = edges
+        .iter()
+        .map(|e| Step {
+            start: e.start(split),
+            end: e.end(split),
+            run: e.run(),
+        })
+        .collect();
+    Some(close_walks(&steps, &next))
 }
 
 /// For each edge the edge after it: the only one leaving its end vertex, or at a crossing
