@@ -54,16 +54,7 @@ fn region_of(curves: &[Cubic]) -> Region {
 
 /// The region of a quadratic triangle.
 fn triangle_of(t: &Triangle) -> Region {
-    let nodes = t
-        .iter()
-        .map(|p| {
-            [
-                blossom::Rational::from_float(p[0]).expect("finite"),
-                blossom::Rational::from_float(p[1]).expect("finite"),
-            ]
-        })
-        .collect();
-    Region::triangle(2, nodes).expect("six nodes")
+    Region::triangle_f64(2, t.to_vec()).expect("six finite nodes")
 }
 
 fn out_dir() -> PathBuf {

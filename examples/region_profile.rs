@@ -2,11 +2,13 @@
 //! the 200 quadratic triangle pairs of `benches/region.rs`, or the 8 + 8 cubic stars.
 //!
 //! `cargo build --release -p blossom --example region_profile`, then
-//! `target/release/examples/region_profile triangles 100` (passes over the pairs) or
+//! `target/release/examples/region_profile triangles 100` (passes over the pairs),
+//! `target/release/examples/region_profile fresh 100` (the same, each triangle's region built
+//! from its nodes inside the timed loop: construction and first boolean) or
 //! `target/release/examples/region_profile stars 10000`. Prints the time per boolean.
 
 use blossom::region::{boolean, triangle_intersection, BooleanOp, FillRule, Region};
-use blossom::{Bezier, Rational};
+use blossom::Bezier;
 use std::time::Instant;
 
 #[path = "../benches/region_peers/src/shapes.rs"]
@@ -27,18 +29,31 @@ fn main() {
         };
         vec![(region(&a), region(&b), BooleanOp::Intersection)]
     } else {
-        let triangle = |t: &shapes::Triangle| {
-            let nodes = t
-                .iter()
-                .map(|p| p.map(|x| Rational::from_float(x).expect("finite")))
-                .collect();
-            Region::triangle(2, nodes).expect("six nodes")
-        };
+        let triangle =
+            |t: &shapes::Triangle| Region::triangle_f64(2, t.to_vec()).expect("six nodes");
         shapes::triangle_pairs(200)
             .iter()
             .map(|[t1, t2]| (triangle(t1), triangle(t2), BooleanOp::Intersection))
             .collect()
     };
+    if what == "fresh" {
+        let nodes = shapes::triangle_pairs(200);
+        let start = Instant::now();
+        let mut loops = 0;
+        for _ in 0..passes {
+            for [t1, t2] in &nodes {
+                let a = Region::triangle_f64(2, t1.to_vec()).expect("six nodes");
+                let b = Region::triangle_f64(2, t2.to_vec()).expect("six nodes");
+                loops += triangle_intersection(&a, &b).expect("answered").loops.len();
+            }
+        }
+        let each = start.elapsed().as_secs_f64() / (passes * nodes.len()) as f64;
+        println!(
+            "fresh triangles: {:.3} us per boolean ({loops} loops)",
+            each * 1e6
+        );
+        return;
+    }
     let start = Instant::now();
     let mut loops = 0;
     for _ in 0..passes {

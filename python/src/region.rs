@@ -12,7 +12,7 @@ use crate::curve::{check_work, max_work_arg, Curve, CurveShape};
 use crate::errors::{bad, call, call_detached, from_lib};
 use crate::numbers::{read_array, rounded, Num};
 use crate::records::Algebraic;
-use crate::triangle::{to_bezier_order, CurvedPolygon, Triangle};
+use crate::triangle::{to_bezier_order, CurvedPolygon, Triangle, TriangleShape};
 use blossom::region::{
     boolean, boolean_work, triangle_intersection, BooleanOp, Edge, FillRule, Region, RegionResult,
     Winding,
@@ -216,7 +216,7 @@ impl CurvedRegion {
             pyo3::exceptions::PyTypeError::new_err("other: expected a CurvedRegion")
         })?;
         let other = other.get();
-        check_boolean_work(&self.region, &other.region, max_work)?;
+        check_boolean_work(self, other, max_work)?;
         let (a, b) = (&self.region, &other.region);
         let r = call_detached(py, &[], || boolean(a, b, op))?;
         result_of(py, &r, [&self.curves, &other.curves])
@@ -363,14 +363,15 @@ const SMALL_DEGREE: usize = 4;
 
 /// Refuses a boolean whose estimated work (`boolean_work`) is over `max_work`; small inputs
 /// (bounded by [`SMALL_CURVES`] and [`SMALL_DEGREE`]) are not estimated.
-fn check_boolean_work(a: &Region, b: &Region, max_work: Option<f64>) -> PyResult<()> {
-    let curves = || a.loops().iter().chain(b.loops()).flatten();
-    let small =
-        curves().count() <= SMALL_CURVES && curves().all(|c| c.points().len() <= SMALL_DEGREE + 1);
+fn check_boolean_work(a: &CurvedRegion, b: &CurvedRegion, max_work: Option<f64>) -> PyResult<()> {
+    // The curves as given (the library's exact curves of a region of doubles are made only
+    // when needed).
+    let curves = || a.curves.iter().chain(&b.curves).flatten();
+    let small = curves().count() <= SMALL_CURVES && curves().all(|c| c.degree() <= SMALL_DEGREE);
     if small && max_work.is_none() {
         return Ok(());
     }
-    check_work(boolean_work(a, b), max_work)
+    check_work(boolean_work(&a.region, &b.region), max_work)
 }
 
 fn fill_rule_arg(name: &str) -> PyResult<FillRule> {
@@ -396,12 +397,22 @@ fn triangle_region(t: &Triangle, arg: &str) -> PyResult<CurvedRegion> {
             format!("triangle intersection is defined for planar triangles (dimension 2), found dimension {d}"),
         ));
     }
-    let coords: Vec<Rational> = to_bezier_order(&t.exact_patch());
-    let nodes = coords
-        .chunks_exact(2)
-        .map(|p| [p[0].clone(), p[1].clone()])
-        .collect();
-    let region = Region::triangle(n, nodes).map_err(|e| {
+    // Doubles stay doubles (the library makes exact curves only if it needs them).
+    let region = match &t.shape {
+        TriangleShape::F64(p) => {
+            let coords = to_bezier_order(p);
+            Region::triangle_f64(n, coords.chunks_exact(2).map(|p| [p[0], p[1]]).collect())
+        }
+        TriangleShape::Exact(p) => {
+            let coords = to_bezier_order(p);
+            let nodes = coords
+                .chunks_exact(2)
+                .map(|p| [p[0].clone(), p[1].clone()])
+                .collect();
+            Region::triangle(n, nodes)
+        }
+    };
+    let region = region.map_err(|e| {
         let path = match e.path() {
             "" => format!("{arg}.nodes"),
             "degree" => format!("{arg}.degree"),
@@ -430,7 +441,7 @@ pub fn triangle_intersect(
     let max_work = max_work_arg(max_work)?;
     let a = cached_region(t1, "self")?;
     let b = cached_region(t2, "other")?;
-    check_boolean_work(&a.region, &b.region, max_work)?;
+    check_boolean_work(a, b, max_work)?;
     let (ra, rb) = (&a.region, &b.region);
     // Small pairs (the float path: microseconds) keep the GIL: releasing it costs more.
     let r = if boolean_work(ra, rb) < 100_000 {

@@ -2,6 +2,7 @@
 
 use super::curve::is_double;
 use crate::error::{Error, ErrorKind, Result};
+use crate::intersect::algebraic::exact_f64;
 use crate::num::ring::{rational_to_f64, Rational};
 use crate::shape::array::Bezier;
 use std::sync::{Arc, OnceLock};
@@ -65,7 +66,8 @@ impl FillRule {
 /// ```
 #[derive(Clone, Debug)]
 pub struct Region {
-    loops: Vec<Vec<Bezier<Rational, 2>>>,
+    /// The exact curves: given, or made from `doubles` on first use.
+    loops: OnceLock<Vec<Vec<Bezier<Rational, 2>>>>,
     fill: FillRule,
     /// The control points as doubles when every coordinate is one exactly (the float path
     /// of the booleans reads these).
@@ -78,7 +80,7 @@ pub struct Region {
 impl PartialEq for Region {
     /// The same loops of the same curves and the same fill rule.
     fn eq(&self, other: &Self) -> bool {
-        self.loops == other.loops && self.fill == other.fill
+        self.loops() == other.loops() && self.fill == other.fill
     }
 }
 
@@ -106,6 +108,84 @@ fn as_doubles(loops: &[Vec<Bezier<Rational, 2>>]) -> Option<Doubles> {
         .collect()
 }
 
+/// The checks of [`Region::new`] on the control points of every curve (`loops[l][c]`),
+/// `show` writing a point for the messages.
+fn validate<P: PartialEq>(loops: &[Vec<&[P]>], show: impl Fn(&P) -> String) -> Result<()> {
+    for (l, curves) in loops.iter().enumerate() {
+        if curves.is_empty() {
+            return Err(Error::of(
+                ErrorKind::Empty,
+                format!("loops[{l}]"),
+                "a loop needs at least one curve",
+            ));
+        }
+        for (c, points) in curves.iter().enumerate() {
+            let n = points.len().saturating_sub(1);
+            if n == 0 || n > MAX_REGION_DEGREE {
+                return Err(Error::of(
+                    ErrorKind::Degree,
+                    format!("loops[{l}][{c}]"),
+                    format!(
+                        "degree {n} is outside the accepted 1..={MAX_REGION_DEGREE} \
+                         (a curve needs at least 2 control points)"
+                    ),
+                ));
+            }
+        }
+        for c in 0..curves.len() {
+            let previous = curves[(c + curves.len() - 1) % curves.len()];
+            let end = previous.last().expect("degree >= 1");
+            let start = &curves[c][0];
+            if end != start {
+                return Err(Error::of(
+                    ErrorKind::Shape,
+                    format!("loops[{l}][{c}]"),
+                    format!(
+                        "starts at {}, the previous curve ends at {}",
+                        show(start),
+                        show(end)
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The three edges (control points) of the planar Bézier triangle of degree `degree` with
+/// `nodes` in the spec's order (see [`Region::triangle`]).
+fn triangle_edges<P: Clone>(degree: usize, nodes: &[P]) -> Result<[Vec<P>; 3]> {
+    if degree == 0 || degree > MAX_REGION_DEGREE {
+        return Err(Error::of(
+            ErrorKind::Degree,
+            "degree",
+            format!("degree {degree} is outside the accepted 1..={MAX_REGION_DEGREE}"),
+        ));
+    }
+    let n = degree;
+    let expected = (n + 1) * (n + 2) / 2;
+    if nodes.len() != expected {
+        return Err(Error::of(
+            ErrorKind::Shape,
+            "nodes",
+            format!(
+                "a triangle of degree {n} has {expected} nodes, found {}",
+                nodes.len()
+            ),
+        ));
+    }
+    // p_ijk with i = n - j - k sits at offset(k) + j, offset(k) = sum_(k' < k) (n + 1 - k').
+    let at = |j: usize, k: usize| {
+        let offset: usize = (0..k).map(|kk| n + 1 - kk).sum();
+        nodes[offset + j].clone()
+    };
+    Ok([
+        (0..=n).map(|j| at(j, 0)).collect(),
+        (0..=n).map(|k| at(n - k, k)).collect(),
+        (0..=n).map(|i| at(0, n - i)).collect(),
+    ])
+}
+
 /// A point written as the spec writes it: `(1, 1/2)`.
 pub(crate) fn show(p: &[Rational; 2]) -> String {
     format!("({}, {})", p[0], p[1])
@@ -123,47 +203,14 @@ impl Region {
     ///   c - 1 ends (`starts at (1, 0), the previous curve ends at (1, 1/2)`); a last curve
     ///   that does not end where the first starts names curve 0.
     pub fn new(loops: Vec<Vec<Bezier<Rational, 2>>>, fill: FillRule) -> Result<Region> {
-        for (l, curves) in loops.iter().enumerate() {
-            if curves.is_empty() {
-                return Err(Error::of(
-                    ErrorKind::Empty,
-                    format!("loops[{l}]"),
-                    "a loop needs at least one curve",
-                ));
-            }
-            for (c, curve) in curves.iter().enumerate() {
-                let n = curve.degree();
-                if n == 0 || n > MAX_REGION_DEGREE {
-                    return Err(Error::of(
-                        ErrorKind::Degree,
-                        format!("loops[{l}][{c}]"),
-                        format!(
-                            "degree {n} is outside the accepted 1..={MAX_REGION_DEGREE} \
-                             (a curve needs at least 2 control points)"
-                        ),
-                    ));
-                }
-            }
-            for c in 0..curves.len() {
-                let previous = &curves[(c + curves.len() - 1) % curves.len()];
-                let end = previous.points().last().expect("degree >= 1");
-                let start = &curves[c].points()[0];
-                if end != start {
-                    return Err(Error::of(
-                        ErrorKind::Shape,
-                        format!("loops[{l}][{c}]"),
-                        format!(
-                            "starts at {}, the previous curve ends at {}",
-                            show(start),
-                            show(end)
-                        ),
-                    ));
-                }
-            }
-        }
+        let points: Vec<Vec<&[[Rational; 2]]>> = loops
+            .iter()
+            .map(|curves| curves.iter().map(|c| c.points()).collect())
+            .collect();
+        validate(&points, |p| show(p))?;
         let doubles = as_doubles(&loops).map(Arc::new);
         Ok(Region {
-            loops,
+            loops: OnceLock::from(loops),
             fill,
             doubles,
             simple: OnceLock::new(),
@@ -176,28 +223,40 @@ impl Region {
     /// [`ErrorKind::NotFinite`] on `loops[l][c][i]` for a NaN or an infinity, else as
     /// [`Region::new`].
     pub fn from_f64(loops: Vec<Vec<Bezier<f64, 2>>>, fill: FillRule) -> Result<Region> {
-        let mut exact = Vec::with_capacity(loops.len());
-        for (l, curves) in loops.iter().enumerate() {
-            let mut out = Vec::with_capacity(curves.len());
-            for (c, curve) in curves.iter().enumerate() {
-                let mut points = Vec::with_capacity(curve.points().len());
-                for (i, xy) in curve.points().iter().enumerate() {
-                    let read = |x: f64| {
-                        Rational::from_float(x).ok_or_else(|| {
-                            Error::of(
-                                ErrorKind::NotFinite,
-                                format!("loops[{l}][{c}][{i}]"),
-                                format!("expected a finite number, found {x}"),
-                            )
-                        })
-                    };
-                    points.push([read(xy[0])?, read(xy[1])?]);
+        let doubles: Doubles = loops
+            .iter()
+            .map(|curves| curves.iter().map(|c| c.points().to_vec()).collect())
+            .collect();
+        Region::of_doubles(doubles, fill)
+    }
+
+    /// The region of loops of curves of doubles (`doubles[l][c]`: the control points of
+    /// curve c of loop l), each number read exactly; the exact curves are made on first use.
+    fn of_doubles(doubles: Doubles, fill: FillRule) -> Result<Region> {
+        for (l, curves) in doubles.iter().enumerate() {
+            for (c, points) in curves.iter().enumerate() {
+                for (i, xy) in points.iter().enumerate() {
+                    if let Some(x) = xy.iter().find(|x| !x.is_finite()) {
+                        return Err(Error::of(
+                            ErrorKind::NotFinite,
+                            format!("loops[{l}][{c}][{i}]"),
+                            format!("expected a finite number, found {x}"),
+                        ));
+                    }
                 }
-                out.push(Bezier::new(points)?);
             }
-            exact.push(out);
         }
-        Region::new(exact, fill)
+        let points: Vec<Vec<&[[f64; 2]]>> = doubles
+            .iter()
+            .map(|curves| curves.iter().map(Vec::as_slice).collect())
+            .collect();
+        validate(&points, |p| show(&[exact_f64(p[0]), exact_f64(p[1])]))?;
+        Ok(Region {
+            loops: OnceLock::new(),
+            fill,
+            doubles: Some(Arc::new(doubles)),
+            simple: OnceLock::new(),
+        })
     }
 
     /// The region of the planar Bézier triangle of degree `degree` with `nodes` in the spec's
@@ -219,43 +278,57 @@ impl Region {
     /// [`ErrorKind::Degree`] on `degree` for 0 or over [`MAX_REGION_DEGREE`];
     /// [`ErrorKind::Shape`] on `nodes` when there are not (n + 1)(n + 2)/2 of them.
     pub fn triangle(degree: usize, nodes: Vec<[Rational; 2]>) -> Result<Region> {
-        if degree == 0 || degree > MAX_REGION_DEGREE {
-            return Err(Error::of(
-                ErrorKind::Degree,
-                "degree",
-                format!("degree {degree} is outside the accepted 1..={MAX_REGION_DEGREE}"),
-            ));
-        }
-        let n = degree;
-        let expected = (n + 1) * (n + 2) / 2;
-        if nodes.len() != expected {
-            return Err(Error::of(
-                ErrorKind::Shape,
-                "nodes",
-                format!(
-                    "a triangle of degree {n} has {expected} nodes, found {}",
-                    nodes.len()
-                ),
-            ));
-        }
-        // p_ijk with i = n - j - k sits at offset(k) + j, offset(k) = sum_(k' < k) (n + 1 - k').
-        let at = |j: usize, k: usize| {
-            let offset: usize = (0..k).map(|kk| n + 1 - kk).sum();
-            nodes[offset + j].clone()
-        };
-        let edge0: Vec<_> = (0..=n).map(|j| at(j, 0)).collect();
-        let edge1: Vec<_> = (0..=n).map(|k| at(n - k, k)).collect();
-        let edge2: Vec<_> = (0..=n).map(|i| at(0, n - i)).collect();
-        let curves = [edge0, edge1, edge2]
+        let curves = triangle_edges(degree, &nodes)?
             .into_iter()
             .map(Bezier::new)
             .collect::<Result<Vec<_>>>()?;
         Region::new(vec![curves], FillRule::NonZero)
     }
 
+    /// [`Region::triangle`] of nodes given as doubles, each read exactly (the exact curves are
+    /// made only if an exact computation needs them).
+    ///
+    /// ```
+    /// use blossom::region::{triangle_intersection, Region};
+    /// let t1 = Region::triangle_f64(1, vec![[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]])?;
+    /// let t2 = Region::triangle_f64(1, vec![[1.0, 0.0], [3.0, 0.0], [1.0, 2.0]])?;
+    /// let r = triangle_intersection(&t1, &t2)?;
+    /// // The overlap is the triangle (1, 0), (2, 0), (1, 1): area 1/2.
+    /// assert!(r.area[0] <= 0.5 && 0.5 <= r.area[1]);
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`Region::triangle`], and [`ErrorKind::NotFinite`] on `loops[0][c][i]` for a NaN or
+    /// an infinity.
+    pub fn triangle_f64(degree: usize, nodes: Vec<[f64; 2]>) -> Result<Region> {
+        let edges = triangle_edges(degree, &nodes)?;
+        Region::of_doubles(vec![edges.to_vec()], FillRule::NonZero)
+    }
+
     /// The loops: `loops()[l][c]` is curve c of loop l.
     pub fn loops(&self) -> &[Vec<Bezier<Rational, 2>>] {
-        &self.loops
+        self.loops.get_or_init(|| {
+            let doubles = self
+                .doubles
+                .as_ref()
+                .expect("a region without its exact curves was made from doubles");
+            doubles
+                .iter()
+                .map(|curves| {
+                    curves
+                        .iter()
+                        .map(|points| {
+                            let exact = points
+                                .iter()
+                                .map(|p| [exact_f64(p[0]), exact_f64(p[1])])
+                                .collect();
+                            Bezier::new(exact).expect("validated when the region was made")
+                        })
+                        .collect()
+                })
+                .collect()
+        })
     }
 
     /// The fill rule.
