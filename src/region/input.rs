@@ -299,9 +299,19 @@ impl Region {
     /// ```
     ///
     /// # Errors
-    /// As [`Region::triangle`], and [`ErrorKind::NotFinite`] on `loops[0][c][i]` for a NaN or
-    /// an infinity.
+    /// As [`Region::triangle`], and [`ErrorKind::NotFinite`] on `nodes[k]` for a node with a
+    /// NaN or an infinity.
     pub fn triangle_f64(degree: usize, nodes: Vec<[f64; 2]>) -> Result<Region> {
+        if let Some(k) = nodes
+            .iter()
+            .position(|p| !(p[0].is_finite() && p[1].is_finite()))
+        {
+            return Err(Error::of(
+                ErrorKind::NotFinite,
+                format!("nodes[{k}]"),
+                format!("expected finite numbers, found {:?}", nodes[k]),
+            ));
+        }
         let edges = triangle_edges(degree, &nodes)?;
         Region::of_doubles(vec![edges.to_vec()], FillRule::NonZero)
     }

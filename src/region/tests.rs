@@ -468,6 +468,59 @@ fn bad_input_names_the_field() {
         (e.path(), e.kind()),
         ("loops[0][0][1]", ErrorKind::NotFinite)
     );
+    // The same checks on doubles: an open loop, a degree, a triangle's node.
+    let open = Region::from_f64(
+        vec![vec![
+            Bezier::new(vec![[0.0, 0.0], [1.0, 0.0]]).unwrap(),
+            Bezier::new(vec![[1.0, 0.5], [0.0, 0.0]]).unwrap(),
+        ]],
+        FillRule::NonZero,
+    )
+    .unwrap_err();
+    assert_eq!(
+        open.to_string(),
+        "loops[0][1]: starts at (1, 1/2), the previous curve ends at (1, 0)"
+    );
+    let high = Bezier::new(vec![[0.0, 0.0]; 22]).unwrap();
+    let e = Region::from_f64(vec![vec![high]], FillRule::NonZero).unwrap_err();
+    assert_eq!((e.path(), e.kind()), ("loops[0][0]", ErrorKind::Degree));
+    let mut nodes = vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+    nodes[2][1] = f64::INFINITY;
+    let e = Region::triangle_f64(1, nodes).unwrap_err();
+    assert_eq!((e.path(), e.kind()), ("nodes[2]", ErrorKind::NotFinite));
+    let e = Region::triangle_f64(2, vec![[0.0, 0.0]; 5]).unwrap_err();
+    assert_eq!((e.path(), e.kind()), ("nodes", ErrorKind::Shape));
+}
+
+#[test]
+fn regions_of_doubles_equal_their_exact_copies() {
+    // A curved triangle from doubles and from the same numbers as rationals: the same region
+    // (its exact curves made on demand), the same booleans.
+    let nodes = [
+        [0.0, 0.0],
+        [0.5, -0.25],
+        [1.0, 0.0],
+        [0.0, 0.5],
+        [0.5, 0.5],
+        [0.0, 1.0],
+    ];
+    let exact: Vec<[Rational; 2]> = nodes
+        .iter()
+        .map(|p| p.map(|x| Rational::from_float(x).unwrap()))
+        .collect();
+    let (a, b) = (
+        Region::triangle_f64(2, nodes.to_vec()).unwrap(),
+        Region::triangle(2, exact).unwrap(),
+    );
+    assert_eq!(a, b);
+    assert_eq!(a.loops(), b.loops());
+    let other = Region::triangle_f64(1, vec![[0.25, -0.5], [1.5, 0.25], [0.25, 1.0]]).unwrap();
+    let (ra, rb) = (
+        crate::region::boolean(&a, &other, BooleanOp::Union).unwrap(),
+        crate::region::boolean(&b, &other, BooleanOp::Union).unwrap(),
+    );
+    assert_eq!(ra.loops.len(), rb.loops.len());
+    assert_eq!(ra.area, rb.area);
 }
 
 /// A star of `n` cubic edges around `centre`: vertices alternately at radius 1 and 0.6,
