@@ -619,8 +619,8 @@ fn scale_of_star_booleans() {
             let r = boolean(&a, &b, op).unwrap();
             let took = t.elapsed();
             println!(
-                "n = {n} {op:?}: {:.3} s, {} loops, {} edges, area {:?}, estimate {:.3} s",
-                took.as_secs_f64(),
+                "n = {n} {op:?}: {:.3} ms, {} loops, {} edges, area {:?}, estimate {:.3} s",
+                took.as_secs_f64() * 1e3,
                 r.loops.len(),
                 r.loops.iter().map(|l| l.edges.len()).sum::<usize>(),
                 r.area,
