@@ -207,7 +207,7 @@ impl Region {
             .iter()
             .map(|curves| curves.iter().map(|c| c.points()).collect())
             .collect();
-        validate(&points, |p| show(p))?;
+        validate(&points, show)?;
         let doubles = as_doubles(&loops).map(Arc::new);
         Ok(Region {
             loops: OnceLock::from(loops),
