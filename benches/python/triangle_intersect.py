@@ -5,6 +5,9 @@ Run the Rust bench first; it writes the pairs, the certified areas and its own t
     cargo bench -p blossom --bench region
     pip install bezier          # 2024.6.20, with numpy; its compiled speedups ship in the wheel
     python3 benches/python/triangle_intersect.py
+    # and, interleaved with the library in the same run:
+    cargo build --release -p blossom --example region_profile
+    BLOSSOM_REGION_PROFILE=target/release/examples/region_profile python3 benches/python/triangle_intersect.py
 
 The file is read from $CARGO_TARGET_DIR/region/triangles.json (else target/region/ of the
 workspace), or from the directory given as the first argument:
@@ -108,6 +111,31 @@ def main():
                 times.append(time.perf_counter() - start)
             py_warm.append(statistics.median(times))
 
+    # Interleaved with the library itself, when its profiling example is given
+    # (BLOSSOM_REGION_PROFILE=target/release/examples/region_profile, built by
+    # `cargo build --release -p blossom --example region_profile`): 5 rounds, each one pass of
+    # bezier over the pairs and one run of the example over the same pairs, medians.
+    interleaved = None
+    profile = os.environ.get("BLOSSOM_REGION_PROFILE")
+    if profile:
+        import subprocess
+
+        bezier_pairs = [tuple(triangle(t, degree) for t in p["triangles"]) for p in pairs]
+        rounds_bezier, rounds_ours = [], []
+        for _ in range(5):
+            start = time.perf_counter()
+            for t1, t2 in bezier_pairs:
+                try:
+                    t1.intersect(t2)
+                except Exception:  # noqa: BLE001 - counted above
+                    pass
+            rounds_bezier.append((time.perf_counter() - start) / len(bezier_pairs))
+            out = subprocess.run(
+                [profile, "triangles", "200"], capture_output=True, text=True, check=True
+            ).stdout
+            rounds_ours.append(float(out.split(":")[1].split("us")[0]) * 1e-6)
+        interleaved = (statistics.median(rounds_bezier), statistics.median(rounds_ours))
+
     # The degenerate pairs: bezier's answer against the certified one (not timed).
     degenerate = data.get("degenerate", [])
     degenerate_wrong = []
@@ -137,6 +165,14 @@ def main():
         f"(area outside the certified enclosure by more than 1e-9, or an exception: "
         f"{dict(exceptions) or 'none'})",
     ] + (
+        [
+            f"interleaved in this run (5 rounds, medians): bezier {interleaved[0] * 1e6:.2f} us, "
+            f"blossom region_profile {interleaved[1] * 1e6:.3f} us per pair, "
+            f"ratio {interleaved[0] / interleaved[1]:.2f}"
+        ]
+        if interleaved
+        else []
+    ) + (
         [
             f"blossom (Python package) Triangle.intersect, same run: {mean(py_warm) * 1e6:.2f} us "
             f"per pair (median of 5 calls; ratio bezier / blossom {mean(theirs) / mean(py_warm):.2f}), "
