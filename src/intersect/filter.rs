@@ -27,7 +27,11 @@
 //! a sum, rounded; the error of the control points), so Q(T) lies in that band (the fat
 //! line). A common point P(s) = Q(t) with s = a + u (b - a) has ν·P(s) = Σ δ_k B_k(u) in the
 //! band, the δ_k = ν·p_k of the exact P piece, which lie within m_p of the computed D_k: so
-//! Σ D_k B_k(u) lies in the band [L, H] widened by m_p, rounded outwards. The graph of
+//! Σ D_k B_k(u) lies in the band [L, H] = [lo - m_q - m_p, hi + m_q + m_p]. Its edges are
+//! computed as fl(lo - m) and fl(hi + m) with m = fl(|ν|_1 (E_p + E_q + 4u (M_p + M_q)) +
+//! 8η), rounded upwards: m exceeds m_p + m_q by at least u |ν|_1 M_q + 16u (m_p + m_q), more
+//! than the rounding of the edge, at most u (|lo| + m) with |lo|, |hi| <= |ν|_1 M_q
+//! (1 + 2^-38) (a sum has no underflow error), so the computed edges lie outside [L, H]. The graph of
 //! Σ D_k B_k lies in the convex hull C of the points (k/n, D_k). Its least abscissa in the
 //! band ([`Band`]): 0 when D_0 is in the band; else, say D_0 > H, it is the least abscissa of
 //! C on the line y = H (were the least point x* of C in the band below that line, the
@@ -38,14 +42,17 @@
 //! crossings i + (j - i) ρ, ρ = (D_i - H) / (D_i - D_j), over i < j with D_i beyond the
 //! edge and D_j not, in units of 1/n; no such pair: every point beyond the edge, the cell
 //! holds no root and is dropped. The largest abscissa likewise from D_n. The decisions
-//! "beyond" are exact (fl(x - y) has the sign of x - y). A crossing is computed within 7u:
-//! ρ' = fl(fl(D_i - e) / fl(D_i - D_j)) = ρ (1 + δ1)(1 + δ3) / (1 + δ2) with |δ| <= u (and an
-//! absolute η/2 for underflow), so |ρ' - ρ| <= 3.0001u + η as ρ <= 1; the product by the
-//! integer j - i and the sum with i (values at most n) add 2un (1 + 4u), the division by n
-//! u; in [0, 1]: at most 5.001u + u + 2η < 7u. The two ends, ordered (rounding may reverse
-//! them when C meets the band in one abscissa), are widened by 2^-48 = 32u (the rounding of
-//! the subtraction adds at most u), clamped to [0, 1], then mapped to the global parameter
-//! with a margin of 4u b + η and `next_down`/`next_up`, clamped to S. S is clipped so, then
+//! "beyond" are exact (fl(x - y) has the sign of x - y). A crossing is computed within 8u:
+//! ρ' = fl(fl(D_i - e) fl(1 / fl(D_i - D_j))) = ρ (1 + δ1)(1 + δ3)(1 + δ4) / (1 + δ2) with
+//! |δ| <= u (and an absolute η/2 for underflow; for a cubic, by the reciprocal unless it
+//! overflows, else, and for other degrees, by one division, a rounding fewer), so
+//! |ρ' - ρ| <= 4.0001u + η as ρ <= 1; the product by the integer j - i and the sum with i
+//! (values at most n) add 2un (1 + 4u), the division by n u; in [0, 1]: at most
+//! 6.001u + u + 2η < 8u. The two ends, ordered (rounding may reverse them when C meets the
+//! band in one abscissa), are widened by 2^-48 = 32u (the rounding of the subtraction adds
+//! at most u), clamped to [0, 1], then mapped to the global parameter a + u (b - a) (three
+//! roundings, within 3.01u b + η) moved outwards by fl(8u b + 2η) (which covers that and
+//! its own rounding, 1.01u b + u η), clamped to S. S is clipped so, then
 //! T against the new P piece's fat line; cells that a round of clipping shrinks by less than
 //! 20% on both sides are halved (the wider side), so every root in [0, 1]^2 stays in some
 //! cell. Cells inside a box proved below (its one root known) are dropped.
@@ -151,6 +158,9 @@ const TINY_WIDTH: f64 = MIN_WIDTH;
 /// A cell that clipping no longer shrinks is tried by Krawczyk's test when its sides are at
 /// most this wide (else halved).
 const SETTLE_WIDTH: f64 = 1.0 / (1u64 << 20) as f64;
+/// A cell that clipping shrinks well is tried once when its sides are at most this wide.
+/// A cell that clipping shrinks well is tried once when its sides are at most this wide.
+const EARLY_WIDTH: f64 = 1.0 / (1u64 << 20) as f64;
 /// Clipping that leaves more than this fraction of both sides has stalled: the cell is halved.
 const PROGRESS: f64 = 0.8;
 /// The outward margin of a clipped range in the local parameter (module documentation, 1).
@@ -162,6 +172,10 @@ const TIGHT_RADIUS: f64 = 1.0 / (1u64 << 48) as f64;
 const COVER: f64 = 1.25;
 /// Newton iterations from the centre of a cell that is not tiny.
 const NEWTON_STEPS: usize = 12;
+/// A Newton step at most this long ends the iteration.
+const NEWTON_DONE: f64 = 1.0 / (1u64 << 30) as f64;
+/// How far beyond the cell a Newton point may lie and still centre a Krawczyk box.
+const NEWTON_REACH: f64 = 1.0 / (1u64 << 40) as f64;
 /// The largest degree the filter takes (its a-priori bounds assume n <= 256).
 const MAX_DEGREE: usize = 256;
 /// The largest and least admissible size of the input coordinates (beyond: the exact path).
@@ -181,7 +195,8 @@ struct Curve {
     /// E = n β of the module documentation: the bound on the distance of each computed control
     /// point coordinate of a restriction ([`Curve::restrict`]) to the exact one.
     error: f64,
-    /// E + 3 u M: the per-unit-weight part of a distance coefficient's margin ([`clip`]).
+    /// E + 4 u M: the per-unit-weight part of a distance coefficient's margin ([`clip`]),
+    /// with u M for the rounding of the band's edges (module documentation, 1).
     reach: f64,
     /// The bound of [`Curve::eval_dd`] at arguments in [0, 1], known a priori
     /// ([`lerp_pyramid_bound`]).
@@ -236,7 +251,7 @@ impl Curve {
         let beta = upward(5.0 * UNIT_ROUNDOFF * m0 * (1.0 + 2f64.powi(-38)) + ETA);
         self.error = upward(self.degree as f64 * beta);
         let size = m0 * (1.0 + 2f64.powi(-39));
-        self.reach = upward(self.error + 3.0 * UNIT_ROUNDOFF * size);
+        self.reach = upward(self.error + 4.0 * UNIT_ROUNDOFF * size);
         self.dd_bound = lerp_pyramid_bound(self.degree, m0);
         Some(())
     }
@@ -260,19 +275,23 @@ impl Curve {
 
     /// P(s) and P'(s) in plain `f64` (for Newton's method only): n - 1 de Casteljau steps
     /// leave the segment b0 b1 with P(s) = b0 + s (b1 - b0) and P'(s) = n (b1 - b0).
+    /// Unrolled for degrees 1 to 3.
+    #[inline]
     fn eval_f64(&mut self, s: f64) -> ([f64; 2], [f64; 2]) {
-        let level = &mut self.level;
-        level.clear();
-        level.extend_from_slice(&self.points);
-        for k in (3..=self.degree + 1).rev() {
-            lerp_step(&mut level[..k], s);
+        match *self.points {
+            [p0, p1] => eval_fixed([p0, p1], s),
+            [p0, p1, p2] => eval_fixed([p0, p1, p2], s),
+            [p0, p1, p2, p3] => eval_fixed([p0, p1, p2, p3], s),
+            _ => {
+                let level = &mut self.level;
+                level.clear();
+                level.extend_from_slice(&self.points);
+                for k in (3..=self.degree + 1).rev() {
+                    lerp_step(&mut level[..k], s);
+                }
+                segment_point(level[0], level[1], s, self.degree)
+            }
         }
-        let d = [level[1][0] - level[0][0], level[1][1] - level[0][1]];
-        let n = self.degree as f64;
-        (
-            [level[0][0] + s * d[0], level[0][1] + s * d[1]],
-            [n * d[0], n * d[1]],
-        )
     }
 
     /// P at the double `s` in double-double with a bound (de Casteljau's pyramid by
@@ -295,6 +314,26 @@ impl Curve {
         let step = ConvexStep::new(BoundedF64::with_bound(mid, radius));
         convex_point(&self.hodograph, &step, &mut self.level_bounded)
     }
+}
+
+/// [`Curve::eval_f64`] on N points held in an array.
+#[inline(always)]
+fn eval_fixed<const N: usize>(mut level: [[f64; 2]; N], s: f64) -> ([f64; 2], [f64; 2]) {
+    for k in (3..=N).rev() {
+        for i in 0..k - 1 {
+            level[i] = lerp(level[i], level[i + 1], s);
+        }
+    }
+    segment_point(level[0], level[1], s, N - 1)
+}
+
+/// The point b0 + s (b1 - b0) and the derivative n (b1 - b0) from the last level of de
+/// Casteljau's pyramid of a curve of degree n.
+#[inline(always)]
+fn segment_point(b0: [f64; 2], b1: [f64; 2], s: f64, n: usize) -> ([f64; 2], [f64; 2]) {
+    let d = [b1[0] - b0[0], b1[1] - b0[1]];
+    let n = n as f64;
+    ([b0[0] + s * d[0], b0[1] + s * d[1]], [n * d[0], n * d[1]])
 }
 
 /// One de Casteljau step at `t` on the points of `level` (k points make k - 1, in place):
@@ -483,7 +522,7 @@ fn boxes_meet(a: &[[f64; 2]], b: &[[f64; 2]], e: f64) -> bool {
     x[0] - y[1] <= e && y[0] - x[1] <= e && x[2] - y[3] <= e && y[2] - x[3] <= e
 }
 
-/// Fat-line clipping of the piece `a` (control points within `a_reach - 3uM` of the exact
+/// Fat-line clipping of the piece `a` (control points within `a_reach - 4uM` of the exact
 /// ones, see [`Curve::reach`]) against the fat line of the piece `b` (module documentation,
 /// 1): `None` when no point of `a` lies on the fat line (no common point), else a range
 /// [u0, u1] of `a`'s local parameter in [0, 1] outside which `a` has no common point with
@@ -504,29 +543,34 @@ fn clip(a: &[[f64; 2]], a_reach: f64, b: &[[f64; 2]], b_reach: f64) -> Option<[f
     }
     // The margins of both pieces' distance coefficients, added to the band.
     let weight = upward(normal[0].abs() + normal[1].abs());
+    // (The margin covers the rounding of the edges too: see `Curve::reach`.)
     let margin = upward(weight * (a_reach + b_reach) + 8.0 * ETA);
-    let (low, high) = ((lo - margin).next_down(), (hi + margin).next_up());
+    let (low, high) = (lo - margin, hi + margin);
     let band = Band::new(low, high, dot(&a[0]), dot(&a[a.len() - 1]));
     let coefficient = |xy: &[f64; 2]| band.coefficient(dot(xy));
     // The hull's range in the band, unrolled for a cubic.
     let range = match a {
         [p0, p1, p2, p3] => {
-            let d = [p0, p1, p2, p3].map(coefficient);
-            let mut range = band.start(3);
-            Band::pair(&mut range, 0, 1, &d[0], &d[1]);
-            Band::pair(&mut range, 0, 2, &d[0], &d[2]);
-            Band::pair(&mut range, 0, 3, &d[0], &d[3]);
-            Band::pair(&mut range, 1, 2, &d[1], &d[2]);
-            Band::pair(&mut range, 1, 3, &d[1], &d[3]);
-            Band::pair(&mut range, 2, 3, &d[2], &d[3]);
-            range
+            let d = [
+                coefficient(p0),
+                coefficient(p1),
+                coefficient(p2),
+                coefficient(p3),
+            ];
+            // By reciprocals (one division per pair), unless one of them is not finite (a
+            // subnormal difference where a candidate applies): then by divisions.
+            match band.cubic_hull(&d, true) {
+                (range, true) => range,
+                _ => band.cubic_hull(&d, false).0,
+            }
         }
         _ => {
-            let mut range = band.start(a.len() - 1);
+            let (mut range, mut finite) = (band.start(a.len() - 1), true);
             for (i, pi) in a.iter().enumerate() {
                 let di = coefficient(pi);
                 for (j, pj) in a.iter().enumerate().skip(i + 1) {
-                    Band::pair(&mut range, i, j, &di, &coefficient(pj));
+                    let dj = coefficient(pj);
+                    Band::pair(&mut range, &mut finite, false, i, j, &di, &dj);
                 }
             }
             range
@@ -608,19 +652,51 @@ impl Band {
     }
 
     /// The crossings of the segment from point i to the later point j that apply.
-    /// (Branch-free: a candidate that does not apply is replaced by ±∞. The inputs' bound
-    /// 1e90 keeps every D_k finite, and D_i - D_j != 0 where the sides differ.)
+    /// (Branch-free: a candidate that does not apply is made ±∞ or NaN. The inputs' bound
+    /// 1e90 keeps every D_k finite, and D_i - D_j != 0 where the sides differ.) With
+    /// `reciprocal`, the ratios are taken as products by fl(1 / (D_i - D_j)), and `finite`
+    /// is cleared when that reciprocal overflows (a subnormal difference) where a candidate
+    /// applies; else by divisions.
+    #[allow(clippy::too_many_arguments)]
     #[inline(always)]
-    fn pair(range: &mut [f64; 2], i: usize, j: usize, di: &Coefficient, dj: &Coefficient) {
-        // (Divisions, not a reciprocal, which would overflow for a subnormal D_i - D_j.)
+    fn pair(
+        range: &mut [f64; 2],
+        finite: &mut bool,
+        reciprocal: bool,
+        i: usize,
+        j: usize,
+        di: &Coefficient,
+        dj: &Coefficient,
+    ) {
         let gap = di.value - dj.value;
         let w = (j - i) as f64;
-        let c0 = i as f64 + w * (di.offset[0] / gap);
-        let c1 = i as f64 + w * (di.offset[1] / gap);
         let first = di.beyond[0] & !dj.beyond[0];
         let last = dj.beyond[1] & !di.beyond[1];
-        range[0] = least(range[0], if first { c0 } else { f64::INFINITY });
-        range[1] = largest(range[1], if last { c1 } else { f64::NEG_INFINITY });
+        let (r0, r1) = if reciprocal {
+            let inverse = 1.0 / gap;
+            *finite &= !(first | last) | (inverse.abs() <= f64::MAX);
+            (di.offset[0] * inverse, di.offset[1] * inverse)
+        } else {
+            (di.offset[0] / gap, di.offset[1] / gap)
+        };
+        let c0 = i as f64 + w * r0;
+        let c1 = i as f64 + w * r1;
+        // A candidate that does not apply is moved to ±∞ (or to NaN from ∓∞, which `least`
+        // and `largest` ignore) by adding a constant, so that no branch is taken on it.
+        let penalty = |applies: bool, infinity: f64| if applies { 0.0 } else { infinity };
+        range[0] = least(range[0], c0 + penalty(first, f64::INFINITY));
+        range[1] = largest(range[1], c1 + penalty(last, f64::NEG_INFINITY));
+    }
+
+    /// The range of the hull of a cubic's coefficients `d` in the band, unfinished (in
+    /// units of 1/3), and whether every reciprocal taken was finite ([`Band::pair`]).
+    #[inline(always)]
+    fn cubic_hull(&self, d: &[Coefficient; 4], reciprocal: bool) -> ([f64; 2], bool) {
+        let (mut range, mut finite) = (self.start(3), true);
+        for (i, j) in [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)] {
+            Band::pair(&mut range, &mut finite, reciprocal, i, j, &d[i], &d[j]);
+        }
+        (range, finite)
     }
 
     /// The local range, widened by the slack, or `None` when every point lies beyond one edge.
@@ -662,20 +738,22 @@ fn largest(a: f64, b: f64) -> f64 {
 fn to_global(range: [f64; 2], u: [f64; 2]) -> [f64; 2] {
     let [a, b] = range;
     let w = b - a;
-    // Each end a + u w is computed with an error below 3u b + η (three roundings of numbers
-    // at most b), covered by the slack.
-    let slack = 4.0 * UNIT_ROUNDOFF * b + ETA;
+    // Each end a + u w is computed within 3.01u b + η of the exact one (three roundings of
+    // numbers at most b (1 + 3u)); the slack, at least 8u b (1 - u) + η, moves it outwards
+    // past that error and the rounding of the slack's own sum or difference (at most
+    // 1.01u b + u η).
+    let slack = 8.0 * UNIT_ROUNDOFF * b + 2.0 * ETA;
     let lo = if u[0] == 0.0 {
         a
     } else {
-        ((a + u[0] * w) - slack).next_down().max(a)
+        largest((a + u[0] * w) - slack, a)
     };
     let hi = if u[1] == 1.0 {
         b
     } else {
-        ((a + u[1] * w) + slack).next_up().min(b)
+        least((a + u[1] * w) + slack, b)
     };
-    [lo, hi.max(lo)]
+    [lo, largest(hi, lo)]
 }
 
 /// A box in (s, t): midpoint and radii, standing for m ± r exactly.
@@ -735,39 +813,52 @@ fn krawczyk(
         [dp[0].value(), -dq[0].value()],
         [dp[1].value(), -dq[1].value()],
     ];
-    let rho = [
-        [dp[0].error_bound(), dq[0].error_bound()],
-        [dp[1].error_bound(), dq[1].error_bound()],
-    ];
     let det = a[0][0] * a[1][1] - a[0][1] * a[1][0];
+    let inverse = 1.0 / det;
     let y = [
-        [a[1][1] / det, -a[0][1] / det],
-        [-a[1][0] / det, a[0][0] / det],
+        [a[1][1] * inverse, -a[0][1] * inverse],
+        [-a[1][0] * inverse, a[0][0] * inverse],
     ];
     // (Also false for NaN: a zero, non-finite or nearly singular determinant.)
-    if !y.iter().flatten().all(|e| e.abs() <= MAX_INVERSE) {
+    let small = |e: f64| e.abs() <= MAX_INVERSE;
+    if !(small(y[0][0]) && small(y[0][1]) && small(y[1][0]) && small(y[1][1])) {
         return None;
     }
     let u = UNIT_ROUNDOFF;
     // ρ' = ρ + 3u |a|: the radius of J(X) with the rounding of Y a.
-    let rho = [0, 1].map(|k| [0, 1].map(|j| rho[k][j] + 3.0 * u * a[k][j].abs()));
-    let (fv, fe) = (f.map(|e| e.value()), f.map(|e| e.error_bound()));
+    let rho = [
+        [
+            dp[0].error_bound() + 3.0 * u * a[0][0].abs(),
+            dq[0].error_bound() + 3.0 * u * a[0][1].abs(),
+        ],
+        [
+            dp[1].error_bound() + 3.0 * u * a[1][0].abs(),
+            dq[1].error_bound() + 3.0 * u * a[1][1].abs(),
+        ],
+    ];
+    let (fv, fe) = (
+        [f[0].value(), f[1].value()],
+        [f[0].error_bound(), f[1].error_bound()],
+    );
     let r = x.radius;
-    let offset = [0, 1].map(|i| {
+    // One row i of K(X) - m: μ_i and R_i.
+    let row = |i: usize| {
         let (y0, y1) = (y[i][0], y[i][1]);
         let mid = -(y0 * fv[0] + y1 * fv[1]);
         // |Y_i| e_F + 3u |Y_i| |F| + Σ_j (|ĉ_ij| + |Y_i| ρ'_j) r_j, ĉ = fl(I - Y a).
         let (ay0, ay1) = (y0.abs(), y1.abs());
         let mut rad = ay0 * fe[0] + ay1 * fe[1] + 3.0 * u * (ay0 * fv[0].abs() + ay1 * fv[1].abs());
+        let identity = [(i == 0) as u8 as f64, (i == 1) as u8 as f64];
         for j in 0..2 {
-            let identity = if i == j { 1.0 } else { 0.0 };
-            let c = identity - (y0 * a[0][j] + y1 * a[1][j]);
+            let c = identity[j] - (y0 * a[0][j] + y1 * a[1][j]);
             rad += (c.abs() + ay0 * rho[0][j] + ay1 * rho[1][j]) * r[j];
         }
         BoundedF64::with_bound(mid, rad * KRAWCZYK_SCALE + KRAWCZYK_FLOOR)
-    });
+    };
+    let offset = [row(0), row(1)];
     // fl(|m| + R) < r implies |m| + R < r (rounding is monotone, r a double).
-    let proved = (0..2).all(|i| offset[i].value().abs() + offset[i].error_bound() < r[i]);
+    let inside = |i: usize| offset[i].value().abs() + offset[i].error_bound() < r[i];
+    let proved = inside(0) && inside(1);
     Some(Krawczyk { offset, proved })
 }
 
@@ -812,7 +903,9 @@ fn newton(p: &mut Curve, q: &mut Curve, start: [f64; 2]) -> Option<[f64; 2]> {
             return None;
         }
         let step = ds.abs().max(dt.abs());
-        if step <= 1e-15 {
+        // Near a regular root the next step would be some multiple of step^2: too small to
+        // matter for the Krawczyk box centred here.
+        if step <= NEWTON_DONE {
             return Some([s, t]);
         }
         // Past the first steps the iteration must contract (it converges quadratically near a
@@ -836,9 +929,11 @@ struct Root {
 /// and P'(S) over the box's s side in `dp` (module documentation, 3): `None` when undecided,
 /// else the root with its crossing when inside (0, 1)^2.
 fn root_of(z: [f64; 2], pz: [Dd; 2], k: &Krawczyk, dp: [BoundedF64; 2]) -> Option<Root> {
-    let s = BoundedF64::exact(z[0]).add(&k.offset[0]);
-    let t = BoundedF64::exact(z[1]).add(&k.offset[1]);
-    let tight = [[lower(&s), upper(&s)], [lower(&t), upper(&t)]];
+    let enclose = |m: f64, d: &BoundedF64| {
+        let x = BoundedF64::exact(m).add(d);
+        [lower(&x), upper(&x)]
+    };
+    let tight = [enclose(z[0], &k.offset[0]), enclose(z[1], &k.offset[1])];
     let outside = |e: [f64; 2]| e[1] < 0.0 || e[0] > 1.0;
     let inside = |e: [f64; 2]| e[0] > 0.0 && e[1] < 1.0;
     if outside(tight[0]) || outside(tight[1]) {
@@ -850,19 +945,22 @@ fn root_of(z: [f64; 2], pz: [Dd; 2], k: &Krawczyk, dp: [BoundedF64; 2]) -> Optio
     if !(inside(tight[0]) && inside(tight[1])) {
         return None;
     }
+    let s = round_nearest(z[0], &k.offset[0])?;
+    let t = round_nearest(z[1], &k.offset[1])?;
     // P(s*) in P(z_s) + (s* - z_s) P'(S), coordinate by coordinate (mean value theorem).
-    let point = [0, 1].map(|c| {
+    let coordinate = |c: usize| {
         let offset = pz[c].rest().add(&k.offset[0].mul(&dp[c]));
         round_nearest(pz[c].hi(), &offset)
-    });
+    };
+    let point = [coordinate(0)?, coordinate(1)?];
     Some(Root {
         tight,
         crossing: Some(CertifiedCrossing {
-            s: round_nearest(z[0], &k.offset[0])?,
-            t: round_nearest(z[1], &k.offset[1])?,
+            s,
+            t,
             s_enclosure: tight[0],
             t_enclosure: tight[1],
-            point: [point[0]?, point[1]?],
+            point,
         }),
     })
 }
@@ -898,26 +996,35 @@ impl Search {
     /// Krawczyk's test on a box containing the cell `s` x `t` (module documentation, 2 and
     /// 3): `Some(true)` when the cell is settled (its roots are the one root of a proved box,
     /// recorded), `Some(false)` when the test fails, `None` when a proved root is undecided.
-    fn settle(&mut self, s: [f64; 2], t: [f64; 2]) -> Option<bool> {
+    fn settle(&mut self, s: [f64; 2], t: [f64; 2], early: bool) -> Option<bool> {
         let centre = [0.5 * (s[0] + s[1]), 0.5 * (t[0] + t[1])];
         let half = [0.5 * (s[1] - s[0]), 0.5 * (t[1] - t[0])];
         let (p, q) = (&mut self.p, &mut self.q);
         p.prepare();
         q.prepare();
+        let tiny = half[0].max(half[1]) <= TINY_WIDTH;
+        // What a failure means: an early try only says "not yet" (clipping goes on).
+        let fail = if early { Some(false) } else { None };
         // The box's centre: the cell's centre when the cell is tiny, else a Newton point near
         // it (a heuristic choice; the box contains the cell either way).
-        let z = if half[0].max(half[1]) <= TINY_WIDTH {
+        let z = if tiny {
             centre
         } else {
-            newton(p, q, centre)
-                .filter(|z| (0..2).all(|i| (z[i] - centre[i]).abs() <= 2.0 * half[i]))
-                .unwrap_or(centre)
+            let near = |z: &[f64; 2]| {
+                (0..2).all(|i| (z[i] - centre[i]).abs() <= 2.0 * half[i] + NEWTON_REACH)
+            };
+            match newton(p, q, centre).filter(near) {
+                Some(z) => z,
+                None if early => return Some(false),
+                None => centre,
+            }
         };
-        let cover = [0, 1].map(|i| {
+        let reach = |i: usize| {
             upward(COVER * ((z[i] - centre[i]).abs().next_up() + half[i])).max(TIGHT_RADIUS)
-        });
+        };
+        let cover = [reach(0), reach(1)];
         let (fdd, pz) = residual_dd(p, q, z);
-        let f = fdd.map(|c| c.to_bounded());
+        let f = [fdd[0].to_bounded(), fdd[1].to_bounded()];
         let outer = Box2 {
             mid: z,
             radius: cover,
@@ -927,23 +1034,38 @@ impl Search {
         let Some(k) = krawczyk(&outer, f, dp, dq).filter(|k| k.proved) else {
             return Some(false);
         };
-        // The outer box's enclosure decides the common case (a tiny cell, whose enclosure is
-        // some |Y| |J(X) - J(z)| r wide, far below an ulp); else a tighter box around z: 8
-        // times the Newton correction.
-        let root = match root_of(z, pz, &k, dp) {
+        // The outer box's enclosure decides the common case of a tiny cell (its enclosure is
+        // some |Y| |J(X) - J(z)| r wide, far below an ulp); else a tighter box around z, 8
+        // times the Newton correction, first with the outer box's Jacobian enclosure (which
+        // encloses J over the tighter box too), then with its own.
+        let root = match tiny.then(|| root_of(z, pz, &k, dp)).flatten() {
             Some(root) => root,
             None => {
-                let wanted = [0, 1].map(|i| (8.0 * k.offset[i].value().abs()).max(TIGHT_RADIUS));
-                if (0..2).all(|i| wanted[i] >= cover[i]) {
-                    return None;
+                let wanted = |i: usize| (8.0 * k.offset[i].value().abs()).max(TIGHT_RADIUS);
+                let wanted = [wanted(0), wanted(1)];
+                if wanted[0] >= cover[0] && wanted[1] >= cover[1] {
+                    return fail;
                 }
-                let radius = [0, 1].map(|i| wanted[i].min(cover[i]));
-                let dp_inner = p.tangent_pyramid(z[0], radius[0]);
-                let dq_inner = q.tangent_pyramid(z[1], radius[1]);
+                let radius = [wanted[0].min(cover[0]), wanted[1].min(cover[1])];
                 let inner = Box2 { mid: z, radius };
                 // Its one root is the one root of the outer box, which contains it.
-                let k_inner = krawczyk(&inner, f, dp_inner, dq_inner).filter(|k| k.proved)?;
-                root_of(z, pz, &k_inner, dp_inner)?
+                let first = krawczyk(&inner, f, dp, dq)
+                    .filter(|k| k.proved)
+                    .and_then(|k1| root_of(z, pz, &k1, dp));
+                match first {
+                    Some(root) => root,
+                    None => {
+                        let dp_inner = p.tangent_pyramid(z[0], radius[0]);
+                        let dq_inner = q.tangent_pyramid(z[1], radius[1]);
+                        let found = krawczyk(&inner, f, dp_inner, dq_inner)
+                            .filter(|k| k.proved)
+                            .and_then(|k| root_of(z, pz, &k, dp_inner));
+                        match found {
+                            Some(root) => root,
+                            None => return fail,
+                        }
+                    }
+                }
             }
         };
         let index = self.add_root(root, &outer)?;
@@ -1068,15 +1190,38 @@ impl Search {
 
 impl Search {
     /// Examines the cells of the stack until none is left (module documentation, 1): `None`
-    /// when undecided.
+    /// when undecided. On x86-64 processors with AVX2 (detected at run time) this runs a
+    /// build of the same source compiled for AVX2 ([`Search::cells_avx2`]): the same
+    /// floating-point operations in the same order, so the same doubles bit for bit (Rust
+    /// never fuses a multiplication and an addition by itself), in fewer instructions.
     #[inline(always)]
     fn cells(&mut self, piece_p: &mut impl Piece, piece_q: &mut impl Piece) -> Option<()> {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the processor has just been seen to support AVX2.
+            #[allow(unsafe_code)]
+            return unsafe { self.cells_avx2(piece_p, piece_q) };
+        }
+        self.cells_body(piece_p, piece_q)
+    }
+
+    /// [`Search::cells`] compiled for AVX2; callers make sure that the processor has it.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    fn cells_avx2(&mut self, piece_p: &mut impl Piece, piece_q: &mut impl Piece) -> Option<()> {
+        self.cells_body(piece_p, piece_q)
+    }
+
+    /// The body of [`Search::cells`], shared by its two builds.
+    #[inline(always)]
+    fn cells_body(&mut self, piece_p: &mut impl Piece, piece_q: &mut impl Piece) -> Option<()> {
         let (pr, qr) = (self.p.reach, self.q.reach);
         let errors = upward(self.p.error + self.q.error);
         let mut steps = 0usize;
         while let Some((mut s, mut t)) = self.stack.pop() {
             piece_p.restrict(&self.p.points, s);
             piece_q.restrict(&self.q.points, t);
+            let mut tried = false;
             loop {
                 steps += 1;
                 if steps > MAX_STEPS {
@@ -1104,14 +1249,18 @@ impl Search {
                 let (ws2, wt2) = (s[1] - s[0], t[1] - t[0]);
                 let stalled = ws2 > PROGRESS * ws && wt2 > PROGRESS * wt;
                 let size = ws2.max(wt2);
-                if size <= TINY_WIDTH || (stalled && size <= SETTLE_WIDTH) {
-                    if self.settle(s, t)? {
+                let early = !stalled && !tried && size <= EARLY_WIDTH;
+                if size <= TINY_WIDTH || (stalled && size <= SETTLE_WIDTH) || early {
+                    if self.settle(s, t, early && size > TINY_WIDTH)? {
                         break;
+                    }
+                    if early && size > TINY_WIDTH {
+                        tried = true;
+                        continue;
                     }
                 } else if !stalled {
                     continue;
                 }
-                // Stalled (or not settled): halve the wider side.
                 if size <= MIN_WIDTH {
                     return None;
                 }
