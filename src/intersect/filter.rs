@@ -64,11 +64,17 @@
 //! evaluated in interval arithmetic ([`BoundedF64`] as midpoint-radius intervals, see
 //! [`super::interval`]; de Casteljau's steps in convex form, [`ConvexStep`], so that the
 //! bounds do not grow geometrically with the degree): F(m) from de Casteljau at the double m
-//! in double-double ([`Dd`], with a rigorous bound near n^2 u^2 M), J(X) from de Casteljau
-//! of the hodographs n (p_(i+1) - p_i) (their rounding bounded by `BoundedF64`) at the
-//! interval arguments m ± r, which encloses P'(S) and Q'(T) (interval evaluation is
-//! inclusion isotone): values a and radii ρ, |A - a| <= ρ entrywise for A in J(X), and
-//! F(m) within e_F of f. The product with the matrix Y (the computed inverse of a, any
+//! in double-double ([`Dd`], with a rigorous bound near n^2 u^2 M), J(X) as enclosures of
+//! P'(S) and Q'(T) ([`Curve::tangent`]): when S lies in [0, 1], by the mean value theorem,
+//! P'(s) within r G of P'(m_s), G = n (n - 1) max |p_(i+2) - 2 p_(i+1) + p_i| bounding |P''|
+//! on [0, 1] (the second hodograph's control points, convex hull), rounded upwards, and
+//! P'(m_s) = n (B1 - B0) from de Casteljau's pyramid at the double m_s in plain `f64` (B0,
+//! B1 blossom values after n - 1 steps, each computed within (n - 1) β, part 1), so that the
+//! computed v = fl(n fl(b1 - b0)) lies within 2 (n - 1) E + 2.0001u |v| + η of it; else
+//! from de Casteljau of the hodographs n (p_(i+1) - p_i) (their rounding bounded by
+//! `BoundedF64`) at the interval argument m_s ± r_s (interval evaluation is inclusion
+//! isotone): values a and radii ρ, |A - a| <= ρ entrywise for A in J(X), and F(m) within
+//! e_F of f. The product with the matrix Y (the computed inverse of a, any
 //! doubles: Krawczyk's operator is sound for every Y) is done in plain `f64` ([`krawczyk`]):
 //! K(X) - m lies in μ ± R, μ_i = fl(-(Y_i0 f_0 + Y_i1 f_1)) (off from -(Y f)_i by at most
 //! (2u + u^2) T_i + 2η, T_i = |Y_i0| |f_0| + |Y_i1| |f_1|), and for each column j the entry
@@ -90,17 +96,20 @@
 //! |I - Y A| r < r for the positive vector r, hence the spectral radius of I - Y A is
 //! below 1. The Jacobian at the root is then nonsingular, i.e. cross(P'(s), Q'(t)) != 0: the
 //! crossing is transversal and `tangent` is false, exactly. A cell is tried
-//! ([`Search::settle`]) when both sides are at most 2^-40 wide, or when clipping has stalled
-//! on a cell at most 2^-20 wide: X is centred at z (the cell's centre when tiny, else a
-//! Newton point near it, found in plain `f64`: a heuristic choice) with radii 1.25 times
-//! |z - centre| + half width, rounded up, at least 2^-48, so that X contains the cell. A
-//! proved X is an *exclusion box*: the cell's roots are its one root. A cell whose test
-//! fails is halved, or left undecided below 2^-40.
+//! ([`Search::settle`]) when both sides are at most 2^-40 wide, when clipping has stalled
+//! on a cell at most 2^-20 wide, and once early, when a round that shrank it well leaves
+//! both sides at most 2^-24 wide (a failure then only lets clipping go on): X is centred at
+//! z (the cell's centre when tiny, else a Newton point near it, found in plain `f64`: a
+//! heuristic choice) with radii 1.25 times |z - centre| + half width, rounded up, at least
+//! 2^-48, so that X contains the cell. A proved X is an *exclusion box*: the cell's roots
+//! are its one root. A cell whose test fails is halved, or left undecided below 2^-40.
 //!
-//! **3. A tight enclosure and correct rounding.** X's own enclosure K(X) when it decides
-//! what follows (the common case: for a cell of 2^-40 it is some |Y| |J(X) - J(z)| r wide,
+//! **3. A tight enclosure and correct rounding.** For a tiny cell, X's own enclosure K(X)
+//! when it decides what follows (for a cell of 2^-40 it is some |Y| |J(X) - J(z)| r wide,
 //! near 1e-27); else, when X is wider than 8 times the Newton correction |Y F(z)|, a second
-//! Krawczyk step on z ± max(8 |Y F(z)|, 2^-48) (inside X, so its root is X's root). It
+//! Krawczyk step on X' = z ± max(8 |Y F(z)|, 2^-48), inside X, so that its root is X's
+//! root: first with X's enclosure of the Jacobian (which encloses it over X' too), then,
+//! when that does not decide, with an enclosure over X' itself. It
 //! encloses the root as s* in z_s + Δ_s, t* in z_t + Δ_t. The correctly rounded s and t (ties
 //! to even) are decided from these offsets against the half-ulp boundaries
 //! ([`round_nearest`]); the common point from P(s*) in P(z_s) + Δ_s P'(S'), also correctly
@@ -160,7 +169,7 @@ const TINY_WIDTH: f64 = MIN_WIDTH;
 const SETTLE_WIDTH: f64 = 1.0 / (1u64 << 20) as f64;
 /// A cell that clipping shrinks well is tried once when its sides are at most this wide.
 /// A cell that clipping shrinks well is tried once when its sides are at most this wide.
-const EARLY_WIDTH: f64 = 1.0 / (1u64 << 20) as f64;
+const EARLY_WIDTH: f64 = 1.0 / (1u64 << 24) as f64;
 /// Clipping that leaves more than this fraction of both sides has stalled: the cell is halved.
 const PROGRESS: f64 = 0.8;
 /// The outward margin of a clipped range in the local parameter (module documentation, 1).
@@ -192,6 +201,15 @@ struct Curve {
     hodograph: Vec<[BoundedF64; 2]>,
     /// Whether `hodograph` is that of `points` ([`Curve::prepare`]).
     prepared: bool,
+    /// G >= n (n - 1) max |p_(i+2) - 2 p_(i+1) + p_i| (every coordinate), a bound on |P''| over
+    /// [0, 1], once `bend_known` ([`Curve::bend`]).
+    bend: f64,
+    bend_known: bool,
+    /// 2 (n - 1) E: with 2u |v| + η, the bound on the error of the derivative v computed by
+    /// [`Curve::eval_f64`] at an argument in [0, 1] ([`Curve::tangent`]).
+    slope_error: f64,
+    /// The largest |coordinate| M0.
+    size: f64,
     /// E = n β of the module documentation: the bound on the distance of each computed control
     /// point coordinate of a restriction ([`Curve::restrict`]) to the exact one.
     error: f64,
@@ -215,6 +233,10 @@ impl Curve {
             points: Vec::new(),
             hodograph: Vec::new(),
             prepared: false,
+            bend: 0.0,
+            bend_known: false,
+            slope_error: 0.0,
+            size: 0.0,
             error: 0.0,
             reach: 0.0,
             dd_bound: 0.0,
@@ -232,28 +254,79 @@ impl Curve {
             return None;
         }
         // The largest |coordinate| (∞ for an infinite one), and whether all points are equal.
-        let (mut m0, mut single) = (0.0f64, true);
+        // (Branch-free: `largest` ignores a NaN, which `nan` records.)
+        let (mut m0, mut single, mut nan) = (0.0f64, true, false);
         for c in p {
-            if c[0].is_nan() || c[1].is_nan() {
-                return None;
-            }
-            m0 = m0.max(c[0].abs()).max(c[1].abs());
-            single &= c == &p[0];
+            nan |= c[0].is_nan() | c[1].is_nan();
+            m0 = largest(largest(m0, c[0].abs()), c[1].abs());
+            single &= (c[0] == p[0][0]) & (c[1] == p[0][1]);
         }
-        if single || !(MIN_SIZE..=MAX_SIZE).contains(&m0) {
+        if nan || single || !(MIN_SIZE..=MAX_SIZE).contains(&m0) {
             return None;
         }
         self.degree = p.len() - 1;
         self.points.clear();
         self.points.extend_from_slice(p);
         self.prepared = false;
+        self.bend_known = false;
+        self.size = m0;
         // β = 5u M (1 + 2^-39) + η with M = M0 (1 + 2^-40) (module documentation, 1).
         let beta = upward(5.0 * UNIT_ROUNDOFF * m0 * (1.0 + 2f64.powi(-38)) + ETA);
         self.error = upward(self.degree as f64 * beta);
         let size = m0 * (1.0 + 2f64.powi(-39));
         self.reach = upward(self.error + 4.0 * UNIT_ROUNDOFF * size);
+        self.slope_error = upward(2.0 * (self.degree - 1) as f64 * self.error);
         self.dd_bound = lerp_pyramid_bound(self.degree, m0);
         Some(())
+    }
+
+    /// G of [`Curve::bend`]'s field, computed on first use after [`Curve::reset`]: from the
+    /// computed second differences x = fl(fl(c - b) - fl(b - a)) of the coordinates, whose
+    /// exact values are at most |x| (1 + u) + 4u M0 (each first difference, at most 2 M0, is
+    /// off by at most u times that, the outer difference by u |x|; a difference has no
+    /// underflow error), times n (n - 1), rounded upwards. Zero for a line.
+    fn bend(&mut self) -> f64 {
+        if !self.bend_known {
+            let mut largest_difference = 0.0f64;
+            for w in self.points.windows(3) {
+                for c in 0..2 {
+                    let x = (w[2][c] - w[1][c]) - (w[1][c] - w[0][c]);
+                    largest_difference = largest(largest_difference, x.abs());
+                }
+            }
+            let n = self.degree as f64;
+            let difference =
+                largest_difference * (1.0 + UNIT_ROUNDOFF) + 4.0 * UNIT_ROUNDOFF * self.size;
+            self.bend = upward(n * (n - 1.0) * difference);
+            self.bend_known = true;
+        }
+        self.bend
+    }
+
+    /// An enclosure of P'(s) for every s with |s - mid| <= radius. When [mid - radius,
+    /// mid + radius] lies in [0, 1] (decided exactly: radius <= mid, fl(mid + radius) < 1),
+    /// by the mean value theorem: P'(s) lies within radius G ([`Curve::bend`]) of P'(mid),
+    /// and the v = fl(n fl(b1 - b0)) of [`Curve::eval_f64`] within 2 (n - 1) E + 2.0001u |v|
+    /// + η of P'(mid) = n (B1 - B0) (b0, b1 are blossom values after n - 1 de Casteljau steps
+    /// at mid, each within (n - 1) β of the exact B0, B1 (module documentation, 1); the
+    /// difference and the product add u |b1 - b0| and u |v| + η/2); the sum rounded upwards.
+    /// Else from de Casteljau's pyramid of the hodograph at the interval argument
+    /// ([`Curve::tangent_pyramid`]).
+    #[inline]
+    fn tangent(&mut self, mid: f64, radius: f64) -> [BoundedF64; 2] {
+        if radius <= mid && mid + radius < 1.0 {
+            let spread = radius * self.bend();
+            let (_, d) = self.eval_f64(mid);
+            let error = self.slope_error;
+            let bound = |v: f64| upward(error + 2.0 * UNIT_ROUNDOFF * v.abs() + ETA + spread);
+            [
+                BoundedF64::with_bound(d[0], bound(d[0])),
+                BoundedF64::with_bound(d[1], bound(d[1])),
+            ]
+        } else {
+            self.prepare();
+            self.tangent_pyramid(mid, radius)
+        }
     }
 
     /// Makes the hodograph, on first use after [`Curve::reset`] (most pairs never need it).
@@ -273,9 +346,9 @@ impl Curve {
         }
     }
 
-    /// P(s) and P'(s) in plain `f64` (for Newton's method only): n - 1 de Casteljau steps
-    /// leave the segment b0 b1 with P(s) = b0 + s (b1 - b0) and P'(s) = n (b1 - b0).
-    /// Unrolled for degrees 1 to 3.
+    /// P(s) and P'(s) in plain `f64` (for Newton's method, and the derivative for
+    /// [`Curve::tangent`]): n - 1 de Casteljau steps leave the segment b0 b1 with
+    /// P(s) = b0 + s (b1 - b0) and P'(s) = n (b1 - b0). Unrolled for degrees 1 to 3.
     #[inline]
     fn eval_f64(&mut self, s: f64) -> ([f64; 2], [f64; 2]) {
         match *self.points {
@@ -564,17 +637,7 @@ fn clip(a: &[[f64; 2]], a_reach: f64, b: &[[f64; 2]], b_reach: f64) -> Option<[f
                 _ => band.cubic_hull(&d, false).0,
             }
         }
-        _ => {
-            let (mut range, mut finite) = (band.start(a.len() - 1), true);
-            for (i, pi) in a.iter().enumerate() {
-                let di = coefficient(pi);
-                for (j, pj) in a.iter().enumerate().skip(i + 1) {
-                    let dj = coefficient(pj);
-                    Band::pair(&mut range, &mut finite, false, i, j, &di, &dj);
-                }
-            }
-            range
-        }
+        _ => band.hull(a.iter().map(coefficient), a.len() - 1),
     };
     band.finish(range, a.len() - 1)
 }
@@ -651,52 +714,67 @@ impl Band {
         ]
     }
 
-    /// The crossings of the segment from point i to the later point j that apply.
-    /// (Branch-free: a candidate that does not apply is made ±∞ or NaN. The inputs' bound
-    /// 1e90 keeps every D_k finite, and D_i - D_j != 0 where the sides differ.) With
-    /// `reciprocal`, the ratios are taken as products by fl(1 / (D_i - D_j)), and `finite`
-    /// is cleared when that reciprocal overflows (a subnormal difference) where a candidate
-    /// applies; else by divisions.
-    #[allow(clippy::too_many_arguments)]
+    /// The crossings of the segment from point i to the later point j, of the edge e0 as a
+    /// candidate for the least abscissa and of e1 for the largest, each made +∞ or -∞ (or NaN,
+    /// from ∓∞) where it does not apply, values that [`least`] and [`largest`] ignore in a
+    /// fold from a number (branch-free: the inputs' bound 1e90 keeps every D_k finite, and
+    /// D_i - D_j != 0 where the sides differ, so an applicable candidate is finite). With
+    /// `reciprocal`, the ratios are taken as products by fl(1 / (D_i - D_j)), and the flag
+    /// returned is false when that reciprocal overflows (a subnormal difference) where a
+    /// candidate applies; else by divisions.
     #[inline(always)]
-    fn pair(
-        range: &mut [f64; 2],
-        finite: &mut bool,
-        reciprocal: bool,
+    fn candidates(
         i: usize,
         j: usize,
         di: &Coefficient,
         dj: &Coefficient,
-    ) {
+        reciprocal: bool,
+    ) -> ([f64; 2], bool) {
         let gap = di.value - dj.value;
         let w = (j - i) as f64;
         let first = di.beyond[0] & !dj.beyond[0];
         let last = dj.beyond[1] & !di.beyond[1];
-        let (r0, r1) = if reciprocal {
+        let (r0, r1, finite) = if reciprocal {
             let inverse = 1.0 / gap;
-            *finite &= !(first | last) | (inverse.abs() <= f64::MAX);
-            (di.offset[0] * inverse, di.offset[1] * inverse)
+            let finite = !(first | last) | (inverse.abs() <= f64::MAX);
+            (di.offset[0] * inverse, di.offset[1] * inverse, finite)
         } else {
-            (di.offset[0] / gap, di.offset[1] / gap)
+            (di.offset[0] / gap, di.offset[1] / gap, true)
         };
         let c0 = i as f64 + w * r0;
         let c1 = i as f64 + w * r1;
-        // A candidate that does not apply is moved to ±∞ (or to NaN from ∓∞, which `least`
-        // and `largest` ignore) by adding a constant, so that no branch is taken on it.
+        // By adding a constant rather than by a choice, so that no branch is taken on it.
         let penalty = |applies: bool, infinity: f64| if applies { 0.0 } else { infinity };
-        range[0] = least(range[0], c0 + penalty(first, f64::INFINITY));
-        range[1] = largest(range[1], c1 + penalty(last, f64::NEG_INFINITY));
+        let lower = c0 + penalty(first, f64::INFINITY);
+        let upper = c1 + penalty(last, f64::NEG_INFINITY);
+        ([lower, upper], finite)
     }
 
     /// The range of the hull of a cubic's coefficients `d` in the band, unfinished (in
-    /// units of 1/3), and whether every reciprocal taken was finite ([`Band::pair`]).
+    /// units of 1/3), and whether every reciprocal taken was finite ([`Band::candidates`]).
     #[inline(always)]
     fn cubic_hull(&self, d: &[Coefficient; 4], reciprocal: bool) -> ([f64; 2], bool) {
         let (mut range, mut finite) = (self.start(3), true);
         for (i, j) in [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)] {
-            Band::pair(&mut range, &mut finite, reciprocal, i, j, &d[i], &d[j]);
+            let ([l, u], f) = Band::candidates(i, j, &d[i], &d[j], reciprocal);
+            range = [least(range[0], l), largest(range[1], u)];
+            finite &= f;
         }
         (range, finite)
+    }
+
+    /// The range of the hull of any piece's coefficients `d` in the band, unfinished (in
+    /// units of 1/n), by divisions.
+    #[inline(always)]
+    fn hull(&self, d: impl Iterator<Item = Coefficient> + Clone, n: usize) -> [f64; 2] {
+        let mut range = self.start(n);
+        for (i, di) in d.clone().enumerate() {
+            for (j, dj) in d.clone().enumerate().skip(i + 1) {
+                let ([l, u], _) = Band::candidates(i, j, &di, &dj, false);
+                range = [least(range[0], l), largest(range[1], u)];
+            }
+        }
+        range
     }
 
     /// The local range, widened by the slack, or `None` when every point lies beyond one edge.
@@ -1000,8 +1078,6 @@ impl Search {
         let centre = [0.5 * (s[0] + s[1]), 0.5 * (t[0] + t[1])];
         let half = [0.5 * (s[1] - s[0]), 0.5 * (t[1] - t[0])];
         let (p, q) = (&mut self.p, &mut self.q);
-        p.prepare();
-        q.prepare();
         let tiny = half[0].max(half[1]) <= TINY_WIDTH;
         // What a failure means: an early try only says "not yet" (clipping goes on).
         let fail = if early { Some(false) } else { None };
@@ -1029,8 +1105,8 @@ impl Search {
             mid: z,
             radius: cover,
         };
-        let dp = p.tangent_pyramid(z[0], cover[0]);
-        let dq = q.tangent_pyramid(z[1], cover[1]);
+        let dp = p.tangent(z[0], cover[0]);
+        let dq = q.tangent(z[1], cover[1]);
         let Some(k) = krawczyk(&outer, f, dp, dq).filter(|k| k.proved) else {
             return Some(false);
         };
@@ -1055,8 +1131,8 @@ impl Search {
                 match first {
                     Some(root) => root,
                     None => {
-                        let dp_inner = p.tangent_pyramid(z[0], radius[0]);
-                        let dq_inner = q.tangent_pyramid(z[1], radius[1]);
+                        let dp_inner = p.tangent(z[0], radius[0]);
+                        let dq_inner = q.tangent(z[1], radius[1]);
                         let found = krawczyk(&inner, f, dp_inner, dq_inner)
                             .filter(|k| k.proved)
                             .and_then(|k| root_of(z, pz, &k, dp_inner));
