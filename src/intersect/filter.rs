@@ -954,6 +954,19 @@ pub(super) fn krawczyk_offsets(
     Some((k.offset, k.proved))
 }
 
+/// [`Curve::tangent`] of the curve with control points `points` (the filter takes it: see
+/// [`Curve::reset`]), for tests of its enclosure against exact rationals.
+#[cfg(test)]
+pub(super) fn tangent_enclosure(
+    points: &[[f64; 2]],
+    mid: f64,
+    radius: f64,
+) -> Option<[BoundedF64; 2]> {
+    let mut curve = Curve::empty();
+    curve.reset(points)?;
+    Some(curve.tangent(mid, radius))
+}
+
 /// F(m) = P(m_s) - Q(m_t) in double-double with a bound, per coordinate, with P(m_s).
 fn residual_dd(p: &mut Curve, q: &mut Curve, m: [f64; 2]) -> ([Dd; 2], [Dd; 2]) {
     let (a, b) = (p.eval_dd(m[0]), q.eval_dd(m[1]));
