@@ -42,18 +42,20 @@
 //! crossings i + (j - i) ρ, ρ = (D_i - H) / (D_i - D_j), over i < j with D_i beyond the
 //! edge and D_j not, in units of 1/n; no such pair: every point beyond the edge, the cell
 //! holds no root and is dropped. The largest abscissa likewise from D_n. The decisions
-//! "beyond" are exact (fl(x - y) has the sign of x - y). A crossing is computed within 8u:
+//! "beyond" are exact (fl(x - y) has the sign of x - y). A crossing is computed within 9u:
 //! ρ' = fl(fl(D_i - e) fl(1 / fl(D_i - D_j))) = ρ (1 + δ1)(1 + δ3)(1 + δ4) / (1 + δ2) with
 //! |δ| <= u (and an absolute η/2 for underflow; for a cubic, by the reciprocal unless it
 //! overflows, else, and for other degrees, by one division, a rounding fewer), so
 //! |ρ' - ρ| <= 4.0001u + η as ρ <= 1; the product by the integer j - i and the sum with i
-//! (values at most n) add 2un (1 + 4u), the division by n u; in [0, 1]: at most
-//! 6.001u + u + 2η < 8u. The two ends, ordered (rounding may reverse them when C meets the
+//! (values at most n) add 2un (1 + 4u), the product by fl(1 / n) (itself within u of 1 / n,
+//! relatively) 2.0001u + η; in [0, 1]: at most 6.001u + 2.0001u + 3η < 9u. The two ends,
+//! ordered (rounding may reverse them when C meets the
 //! band in one abscissa), are widened by 2^-48 = 32u (the rounding of the subtraction adds
 //! at most u), clamped to [0, 1], then mapped to the global parameter a + u (b - a) (three
 //! roundings, within 3.01u b + η) moved outwards by fl(8u b + 2η) (which covers that and
-//! its own rounding, 1.01u b + u η), clamped to S. S is clipped so, then
-//! T against the new P piece's fat line; cells that a round of clipping shrinks by less than
+//! its own rounding, 1.01u b + u η), clamped to S. A round clips S so, and T against the
+//! fat line of the same cell's P piece, side by side (the two clips are independent, which
+//! shortens the chain of dependent operations); cells that a round shrinks by less than
 //! 20% on both sides are halved (the wider side), so every root in [0, 1]^2 stays in some
 //! cell. Cells inside a box proved below (its one root known) are dropped.
 //!
@@ -98,7 +100,7 @@
 //! crossing is transversal and `tangent` is false, exactly. A cell is tried
 //! ([`Search::settle`]) when both sides are at most 2^-40 wide, when clipping has stalled
 //! on a cell at most 2^-20 wide, and once early, when a round that shrank it well leaves
-//! both sides at most 2^-24 wide (a failure then only lets clipping go on): X is centred at
+//! both sides at most 2^-14 wide (a failure then only lets clipping go on): X is centred at
 //! z (the cell's centre when tiny, else a Newton point near it, found in plain `f64`: a
 //! heuristic choice) with radii 1.25 times |z - centre| + half width, rounded up, at least
 //! 2^-48, so that X contains the cell. A proved X is an *exclusion box*: the cell's roots
@@ -168,8 +170,7 @@ const TINY_WIDTH: f64 = MIN_WIDTH;
 /// most this wide (else halved).
 const SETTLE_WIDTH: f64 = 1.0 / (1u64 << 20) as f64;
 /// A cell that clipping shrinks well is tried once when its sides are at most this wide.
-/// A cell that clipping shrinks well is tried once when its sides are at most this wide.
-const EARLY_WIDTH: f64 = 1.0 / (1u64 << 24) as f64;
+const EARLY_WIDTH: f64 = 1.0 / (1u64 << 14) as f64;
 /// Clipping that leaves more than this fraction of both sides has stalled: the cell is halved.
 const PROGRESS: f64 = 0.8;
 /// The outward margin of a clipped range in the local parameter (module documentation, 1).
@@ -581,15 +582,25 @@ fn restrict(
 /// disjoint.
 #[inline(always)]
 fn boxes_meet(a: &[[f64; 2]], b: &[[f64; 2]], e: f64) -> bool {
-    let bounds = |pts: &[[f64; 2]]| {
-        let mut r = [pts[0][0], pts[0][0], pts[0][1], pts[0][1]];
-        for xy in &pts[1..] {
-            r[0] = least(r[0], xy[0]);
-            r[1] = largest(r[1], xy[0]);
-            r[2] = least(r[2], xy[1]);
-            r[3] = largest(r[3], xy[1]);
+    let bounds = |pts: &[[f64; 2]]| match pts {
+        // In a tree for a cubic (a shorter chain of dependent operations).
+        [p0, p1, p2, p3] => {
+            let (l, h) = (
+                |c: usize| least(least(p0[c], p1[c]), least(p2[c], p3[c])),
+                |c: usize| largest(largest(p0[c], p1[c]), largest(p2[c], p3[c])),
+            );
+            [l(0), h(0), l(1), h(1)]
         }
-        r
+        _ => {
+            let mut r = [pts[0][0], pts[0][0], pts[0][1], pts[0][1]];
+            for xy in &pts[1..] {
+                r[0] = least(r[0], xy[0]);
+                r[1] = largest(r[1], xy[0]);
+                r[2] = least(r[2], xy[1]);
+                r[3] = largest(r[3], xy[1]);
+            }
+            r
+        }
     };
     let (x, y) = (bounds(a), bounds(b));
     x[0] - y[1] <= e && y[0] - x[1] <= e && x[2] - y[3] <= e && y[2] - x[3] <= e
@@ -608,12 +619,22 @@ fn clip(a: &[[f64; 2]], a_reach: f64, b: &[[f64; 2]], b_reach: f64) -> Option<[f
         return Some([0.0, 1.0]);
     }
     let dot = |xy: &[f64; 2]| normal[0] * xy[0] + normal[1] * xy[1];
-    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for xy in b {
-        let d = dot(xy);
-        lo = least(lo, d);
-        hi = largest(hi, d);
-    }
+    let (lo, hi) = match b {
+        // In a tree for a cubic (a shorter chain of dependent operations).
+        [b0, b1, b2, b3] => {
+            let d = [dot(b0), dot(b1), dot(b2), dot(b3)];
+            (
+                least(least(d[0], d[1]), least(d[2], d[3])),
+                largest(largest(d[0], d[1]), largest(d[2], d[3])),
+            )
+        }
+        _ => b
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), xy| {
+                let d = dot(xy);
+                (least(lo, d), largest(hi, d))
+            }),
+    };
     // The margins of both pieces' distance coefficients, added to the band.
     let weight = upward(normal[0].abs() + normal[1].abs());
     // (The margin covers the rounding of the edges too: see `Curve::reach`.)
@@ -715,9 +736,8 @@ impl Band {
     }
 
     /// The crossings of the segment from point i to the later point j, of the edge e0 as a
-    /// candidate for the least abscissa and of e1 for the largest, each made +∞ or -∞ (or NaN,
-    /// from ∓∞) where it does not apply, values that [`least`] and [`largest`] ignore in a
-    /// fold from a number (branch-free: the inputs' bound 1e90 keeps every D_k finite, and
+    /// candidate for the least abscissa and of e1 for the largest, each replaced by +∞ or -∞
+    /// where it does not apply (the inputs' bound 1e90 keeps every D_k finite, and
     /// D_i - D_j != 0 where the sides differ, so an applicable candidate is finite). With
     /// `reciprocal`, the ratios are taken as products by fl(1 / (D_i - D_j)), and the flag
     /// returned is false when that reciprocal overflows (a subnormal difference) where a
@@ -743,10 +763,8 @@ impl Band {
         };
         let c0 = i as f64 + w * r0;
         let c1 = i as f64 + w * r1;
-        // By adding a constant rather than by a choice, so that no branch is taken on it.
-        let penalty = |applies: bool, infinity: f64| if applies { 0.0 } else { infinity };
-        let lower = c0 + penalty(first, f64::INFINITY);
-        let upper = c1 + penalty(last, f64::NEG_INFINITY);
+        let lower = if first { c0 } else { f64::INFINITY };
+        let upper = if last { c1 } else { f64::NEG_INFINITY };
         ([lower, upper], finite)
     }
 
@@ -754,13 +772,24 @@ impl Band {
     /// units of 1/3), and whether every reciprocal taken was finite ([`Band::candidates`]).
     #[inline(always)]
     fn cubic_hull(&self, d: &[Coefficient; 4], reciprocal: bool) -> ([f64; 2], bool) {
-        let (mut range, mut finite) = (self.start(3), true);
-        for (i, j) in [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)] {
-            let ([l, u], f) = Band::candidates(i, j, &d[i], &d[j], reciprocal);
-            range = [least(range[0], l), largest(range[1], u)];
-            finite &= f;
-        }
-        (range, finite)
+        let c = |i: usize, j: usize| Band::candidates(i, j, &d[i], &d[j], reciprocal);
+        let ([l01, u01], f01) = c(0, 1);
+        let ([l02, u02], f02) = c(0, 2);
+        let ([l03, u03], f03) = c(0, 3);
+        let ([l12, u12], f12) = c(1, 2);
+        let ([l13, u13], f13) = c(1, 3);
+        let ([l23, u23], f23) = c(2, 3);
+        // In a tree, for a short chain of dependent operations (no candidate is NaN).
+        let start = self.start(3);
+        let lower = least(
+            least(least(start[0], l01), least(l02, l03)),
+            least(least(l12, l13), l23),
+        );
+        let upper = largest(
+            largest(largest(start[1], u01), largest(u02, u03)),
+            largest(largest(u12, u13), u23),
+        );
+        ([lower, upper], f01 & f02 & f03 & f12 & f13 & f23)
     }
 
     /// The range of the hull of any piece's coefficients `d` in the band, unfinished (in
@@ -783,10 +812,11 @@ impl Band {
         if u0 == f64::INFINITY || u1 == f64::NEG_INFINITY {
             return None;
         }
-        let scale = n as f64;
+        // Times fl(1 / n) rather than divided by n: a shorter chain of operations.
+        let scale = 1.0 / n as f64;
         // The two ends come from different candidates: rounding may order them wrongly when
         // the hull meets the band in one abscissa.
-        let (lo, hi) = (least(u0, u1) / scale, largest(u0, u1) / scale);
+        let (lo, hi) = (least(u0, u1) * scale, largest(u0, u1) * scale);
         Some([largest(lo - CLIP_SLACK, 0.0), least(hi + CLIP_SLACK, 1.0)])
     }
 }
@@ -1321,16 +1351,14 @@ impl Search {
                     break;
                 }
                 let (ws, wt) = (s[1] - s[0], t[1] - t[0]);
-                let Some(u) = clip(pp, pr, qq, qr) else {
+                // Both pieces clipped against the other's fat line of this cell, side by side.
+                let (Some(u), Some(v)) = (clip(pp, pr, qq, qr), clip(qq, qr, pp, pr)) else {
                     break;
                 };
                 if u != [0.0, 1.0] {
                     s = to_global(s, u);
                     piece_p.restrict(&self.p.points, s);
                 }
-                let Some(v) = clip(piece_q.points(), qr, piece_p.points(), pr) else {
-                    break;
-                };
                 if v != [0.0, 1.0] {
                     t = to_global(t, v);
                     piece_q.restrict(&self.q.points, t);
