@@ -110,8 +110,7 @@
 //! when it decides what follows (for a cell of 2^-40 it is some |Y| |J(X) - J(z)| r wide,
 //! near 1e-27); else, when X is wider than 8 times the Newton correction |Y F(z)|, a second
 //! Krawczyk step on X' = z ± max(8 |Y F(z)|, 2^-48), inside X, so that its root is X's
-//! root: first with X's enclosure of the Jacobian (which encloses it over X' too), then,
-//! when that does not decide, with an enclosure over X' itself. It
+//! root, with the Jacobian enclosed over X'. It
 //! encloses the root as s* in z_s + Δ_s, t* in z_t + Δ_t. The correctly rounded s and t (ties
 //! to even) are decided from these offsets against the half-ulp boundaries
 //! ([`round_nearest`]); the common point from P(s*) in P(z_s) + Δ_s P'(S'), also correctly
@@ -1155,8 +1154,7 @@ impl Search {
         };
         // The outer box's enclosure decides the common case of a tiny cell (its enclosure is
         // some |Y| |J(X) - J(z)| r wide, far below an ulp); else a tighter box around z, 8
-        // times the Newton correction, first with the outer box's Jacobian enclosure (which
-        // encloses J over the tighter box too), then with its own.
+        // times the Newton correction, with the Jacobian enclosed over it.
         let root = match tiny.then(|| root_of(z, pz, &k, dp)).flatten() {
             Some(root) => root,
             None => {
@@ -1168,22 +1166,13 @@ impl Search {
                 let radius = [wanted[0].min(cover[0]), wanted[1].min(cover[1])];
                 let inner = Box2 { mid: z, radius };
                 // Its one root is the one root of the outer box, which contains it.
-                let first = krawczyk(&inner, f, dp, dq)
+                let (dp_inner, dq_inner) = (p.tangent(z[0], radius[0]), q.tangent(z[1], radius[1]));
+                let found = krawczyk(&inner, f, dp_inner, dq_inner)
                     .filter(|k| k.proved)
-                    .and_then(|k1| root_of(z, pz, &k1, dp));
-                match first {
+                    .and_then(|k| root_of(z, pz, &k, dp_inner));
+                match found {
                     Some(root) => root,
-                    None => {
-                        let dp_inner = p.tangent(z[0], radius[0]);
-                        let dq_inner = q.tangent(z[1], radius[1]);
-                        let found = krawczyk(&inner, f, dp_inner, dq_inner)
-                            .filter(|k| k.proved)
-                            .and_then(|k| root_of(z, pz, &k, dp_inner));
-                        match found {
-                            Some(root) => root,
-                            None => return fail,
-                        }
-                    }
+                    None => return fail,
                 }
             }
         };
