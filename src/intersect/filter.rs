@@ -138,7 +138,7 @@
 //! per thread and reused, so a call allocates nothing after the first (but its answer).
 
 use super::interval::{lerp_pyramid_bound, lower, round_nearest, upper, ConvexStep, Dd};
-use super::pyramid::{convex_point, dd_point, dd_point_bounded};
+use super::pyramid::{convex_point, dd_point, dd_point_bounded, dd_points_bounded};
 use crate::num::bounded::{upward, BoundedF64, ETA, UNIT_ROUNDOFF};
 use crate::num::ring::Ring;
 
@@ -996,9 +996,20 @@ pub(super) fn tangent_enclosure(
     Some(curve.tangent(mid, radius))
 }
 
-/// F(m) = P(m_s) - Q(m_t) in double-double with a bound, per coordinate, with P(m_s).
+/// F(m) = P(m_s) - Q(m_t) in double-double with a bound, per coordinate, with P(m_s): the
+/// two points at once when both arguments lie in [0, 1] (the common case), else one by one
+/// ([`Curve::eval_dd`]).
 fn residual_dd(p: &mut Curve, q: &mut Curve, m: [f64; 2]) -> ([Dd; 2], [Dd; 2]) {
-    let (a, b) = (p.eval_dd(m[0]), q.eval_dd(m[1]));
+    let unit = |x: f64| (0.0..=1.0).contains(&x);
+    let [a, b] = if unit(m[0]) && unit(m[1]) {
+        dd_points_bounded(
+            (&p.points, m[0], p.dd_bound),
+            (&q.points, m[1], q.dd_bound),
+            &mut p.level_dd,
+        )
+    } else {
+        [p.eval_dd(m[0]), q.eval_dd(m[1])]
+    };
     ([a[0].sub(&b[0]), a[1].sub(&b[1])], a)
 }
 

@@ -123,6 +123,8 @@ pub fn intersection_peers() {
         filter.push(timed(|| filter_pass(&pairs)));
         lyon.push(timed(|| lyon_pass(&segments)));
     }
+    let least = |v: &[f64]| v.iter().copied().fold(f64::INFINITY, f64::min);
+    let fastest = [least(&lyon), least(&rounded), least(&filter)];
     let (rounded, filter, lyon) = (median(rounded), median(filter), median(lyon));
     println!(
         "curve-curve intersection, {PAIRS} random cubic pairs in [0, 1)^2 (seed {SEED}), {crossings} crossings, \
@@ -134,6 +136,14 @@ pub fn intersection_peers() {
         "| {lyon:.1} | {rounded:.1} ({:.2}) | {filter:.1} ({:.2}) |",
         rounded / lyon,
         filter / lyon
+    );
+    println!(
+        "fastest passes: lyon {:.1}, rounded {:.1} ({:.2}), filter {:.1} ({:.2})",
+        fastest[0],
+        fastest[1],
+        fastest[1] / fastest[0],
+        fastest[2],
+        fastest[2] / fastest[0]
     );
     println!("filter undecided on {undecided} pairs; lyon's count differs on {lyon_differs} pairs");
 }
