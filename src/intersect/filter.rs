@@ -28,10 +28,14 @@
 //! line). A common point P(s) = Q(t) with s = a + u (b - a) has ν·P(s) = Σ δ_k B_k(u) in the
 //! band, the δ_k = ν·p_k of the exact P piece, which lie within m_p of the computed D_k: so
 //! Σ D_k B_k(u) lies in the band [L, H] = [lo - m_q - m_p, hi + m_q + m_p]. Its edges are
-//! computed as fl(lo - m) and fl(hi + m) with m = fl(|ν|_1 (E_p + E_q + 4u (M_p + M_q)) +
-//! 8η), rounded upwards: m exceeds m_p + m_q by at least u |ν|_1 M_q + 16u (m_p + m_q), more
-//! than the rounding of the edge, at most u (|lo| + m) with |lo|, |hi| <= |ν|_1 M_q
-//! (1 + 2^-38) (a sum has no underflow error), so the computed edges lie outside [L, H]. The graph of
+//! computed as fl(lo - m) and fl(hi + m) with m = fl(fl(fl(|ν_0| + |ν_1|) K) + 16η), K the
+//! sum of the two reaches E + 4u M times 1 + 64u, rounded upwards ([`margin_scale`]): three
+//! roundings down (each at least 1 - u) leave m >= |ν|_1 (E_p + E_q + 4u (M_p + M_q))
+//! (1 + 60u), and 15η more when the product is below 2^-1022 (where it is off by η/2 and the
+//! sum is exact), else 44u times a normal number, over 20η. So m exceeds m_p + m_q by at
+//! least u |ν|_1 M_q + 16u (m_p + m_q), more than the rounding of the edge, at most
+//! u (|lo| + m) with |lo|, |hi| <= |ν|_1 M_q (1 + 2^-38) (a sum has no underflow error), so
+//! the computed edges lie outside [L, H]. The graph of
 //! Σ D_k B_k lies in the convex hull C of the points (k/n, D_k). Its least abscissa in the
 //! band ([`Band`]): 0 when D_0 is in the band; else, say D_0 > H, it is the least abscissa of
 //! C on the line y = H (were the least point x* of C in the band below that line, the
@@ -605,13 +609,21 @@ fn boxes_meet(a: &[[f64; 2]], b: &[[f64; 2]], e: f64) -> bool {
     x[0] - y[1] <= e && y[0] - x[1] <= e && x[2] - y[3] <= e && y[2] - x[3] <= e
 }
 
-/// Fat-line clipping of the piece `a` (control points within `a_reach - 4uM` of the exact
-/// ones, see [`Curve::reach`]) against the fat line of the piece `b` (module documentation,
-/// 1): `None` when no point of `a` lies on the fat line (no common point), else a range
-/// [u0, u1] of `a`'s local parameter in [0, 1] outside which `a` has no common point with
-/// `b`. [0, 1] when nothing is clipped.
+/// The margin of a fat line per unit of |ν|_1 for pieces of two curves with the reaches
+/// `a_reach` and `b_reach` ([`Curve::reach`]): their sum times 1 + 64u, rounded upwards
+/// (module documentation, 1; [`clip`]).
+fn margin_scale(a_reach: f64, b_reach: f64) -> f64 {
+    upward(upward(a_reach + b_reach) * (1.0 + 64.0 * UNIT_ROUNDOFF))
+}
+
+/// Fat-line clipping of the piece `a` against the fat line of the piece `b` (control points
+/// within `reach - 4uM` of the exact ones, see [`Curve::reach`]; `scale` from
+/// [`margin_scale`] of both curves' reaches) (module documentation, 1): `None` when no point
+/// of `a` lies on the fat line (no common point), else a range [u0, u1] of `a`'s local
+/// parameter in [0, 1] outside which `a` has no common point with `b`. [0, 1] when nothing
+/// is clipped.
 #[inline(always)]
-fn clip(a: &[[f64; 2]], a_reach: f64, b: &[[f64; 2]], b_reach: f64) -> Option<[f64; 2]> {
+fn clip(a: &[[f64; 2]], b: &[[f64; 2]], scale: f64) -> Option<[f64; 2]> {
     let (first, last) = (b[0], b[b.len() - 1]);
     let normal = [first[1] - last[1], last[0] - first[0]];
     if normal == [0.0, 0.0] {
@@ -634,10 +646,9 @@ fn clip(a: &[[f64; 2]], a_reach: f64, b: &[[f64; 2]], b_reach: f64) -> Option<[f
                 (least(lo, d), largest(hi, d))
             }),
     };
-    // The margins of both pieces' distance coefficients, added to the band.
-    let weight = upward(normal[0].abs() + normal[1].abs());
-    // (The margin covers the rounding of the edges too: see `Curve::reach`.)
-    let margin = upward(weight * (a_reach + b_reach) + 8.0 * ETA);
+    // The margins of both pieces' distance coefficients, added to the band, and the rounding
+    // of the edges (module documentation, 1).
+    let margin = (normal[0].abs() + normal[1].abs()) * scale + 16.0 * ETA;
     let (low, high) = (lo - margin, hi + margin);
     let band = Band::new(low, high, dot(&a[0]), dot(&a[a.len() - 1]));
     let coefficient = |xy: &[f64; 2]| band.coefficient(dot(xy));
@@ -1026,8 +1037,9 @@ fn newton(p: &mut Curve, q: &mut Curve, start: [f64; 2]) -> Option<[f64; 2]> {
         if det == 0.0 || !det.is_finite() {
             return None;
         }
-        let ds = (-dqt[1] * f[0] + dqt[0] * f[1]) / det;
-        let dt = (-dps[1] * f[0] + dps[0] * f[1]) / det;
+        let inverse = 1.0 / det;
+        let ds = (-dqt[1] * f[0] + dqt[0] * f[1]) * inverse;
+        let dt = (-dps[1] * f[0] + dps[0] * f[1]) * inverse;
         s -= ds;
         t -= dt;
         if !((-1.0..=2.0).contains(&s) && (-1.0..=2.0).contains(&t)) {
@@ -1334,7 +1346,7 @@ impl Search {
     /// The body of [`Search::cells`], shared by its two builds.
     #[inline(always)]
     fn cells_body(&mut self, piece_p: &mut impl Piece, piece_q: &mut impl Piece) -> Option<()> {
-        let (pr, qr) = (self.p.reach, self.q.reach);
+        let scale = margin_scale(self.p.reach, self.q.reach);
         let errors = upward(self.p.error + self.q.error);
         let mut steps = 0usize;
         while let Some((mut s, mut t)) = self.stack.pop() {
@@ -1352,7 +1364,7 @@ impl Search {
                 }
                 let (ws, wt) = (s[1] - s[0], t[1] - t[0]);
                 // Both pieces clipped against the other's fat line of this cell, side by side.
-                let (Some(u), Some(v)) = (clip(pp, pr, qq, qr), clip(qq, qr, pp, pr)) else {
+                let (Some(u), Some(v)) = (clip(pp, qq, scale), clip(qq, pp, scale)) else {
                     break;
                 };
                 if u != [0.0, 1.0] {
@@ -1412,5 +1424,5 @@ pub(super) fn clip_cell(
     pq.resize(q.len());
     pp.restrict(p, s);
     pq.restrict(q, t);
-    clip(pp.points(), cp.reach, pq.points(), cq.reach)
+    clip(pp.points(), pq.points(), margin_scale(cp.reach, cq.reach))
 }
