@@ -293,9 +293,10 @@ impl Curve {
         if !self.bend_known {
             let mut largest_difference = 0.0f64;
             for w in self.points.windows(3) {
-                for c in 0..2 {
-                    let x = (w[2][c] - w[1][c]) - (w[1][c] - w[0][c]);
-                    largest_difference = largest(largest_difference, x.abs());
+                let (a, b, c) = (w[0], w[1], w[2]);
+                for (x, (y, z)) in a.iter().zip(b.iter().zip(&c)) {
+                    let second = (z - y) - (y - x);
+                    largest_difference = largest(largest_difference, second.abs());
                 }
             }
             let n = self.degree as f64;
@@ -311,7 +312,7 @@ impl Curve {
     /// mid + radius] lies in [0, 1] (decided exactly: radius <= mid, fl(mid + radius) < 1),
     /// by the mean value theorem: P'(s) lies within radius G ([`Curve::bend`]) of P'(mid),
     /// and the v = fl(n fl(b1 - b0)) of [`Curve::eval_f64`] within 2 (n - 1) E + 2.0001u |v|
-    /// + η of P'(mid) = n (B1 - B0) (b0, b1 are blossom values after n - 1 de Casteljau steps
+    /// plus η of P'(mid) = n (B1 - B0) (b0, b1 are blossom values after n - 1 de Casteljau steps
     /// at mid, each within (n - 1) β of the exact B0, B1 (module documentation, 1); the
     /// difference and the product add u |b1 - b0| and u |v| + η/2); the sum rounded upwards.
     /// Else from de Casteljau's pyramid of the hodograph at the interval argument

@@ -760,7 +760,11 @@ fn rounding_decisions_are_the_nearest_double_of_the_whole_enclosure() {
     let abs = |x: Rational| if x < q(0.0) { -x } else { x };
     let (mut decided, mut clear) = (0, 0);
     for round in 0..20000 {
-        let sign = if r.next() % 2 == 0 { 1.0 } else { -1.0 };
+        let sign = if r.next().is_multiple_of(2) {
+            1.0
+        } else {
+            -1.0
+        };
         let exponent = (r.next() % 2001) as i32 - 1000;
         // Powers of two (a gap changes there) and random mantissas.
         let mantissa = if round % 5 == 0 { 1.0 } else { 1.0 + r.unit() };

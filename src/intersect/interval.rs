@@ -337,7 +337,7 @@ pub(crate) fn round_nearest(base: f64, offset: &BoundedF64) -> Option<f64> {
     let (c, w) = two_sum(base, v);
     // Half gaps are exact for normal c away from the top of the range.
     let size = c.abs();
-    if !(size >= 4.0 * f64::MIN_POSITIVE && size < f64::MAX) {
+    if !(4.0 * f64::MIN_POSITIVE..f64::MAX).contains(&size) {
         return None;
     }
     // The neighbours of the normal, finite c: one unit of the last place away in the bits
