@@ -920,6 +920,7 @@ const KRAWCZYK_SCALE: f64 = 1.0 + 256.0 * UNIT_ROUNDOFF;
 /// Krawczyk's operator on the box `x`, with F(m) enclosed by `f`, P'(S) by `dp` and Q'(T) by
 /// `dq` (module documentation, 2), in plain `f64` with the radius bound derived there.
 /// `None` when the midpoint Jacobian is singular or nearly so.
+#[inline(always)]
 fn krawczyk(
     x: &Box2,
     f: [BoundedF64; 2],
@@ -1026,6 +1027,7 @@ fn residual_dd(p: &mut Curve, q: &mut Curve, m: [f64; 2]) -> ([Dd; 2], [Dd; 2]) 
 }
 
 /// Newton's method in `f64` from `start`: the point it converges to, if it does.
+#[inline(always)]
 fn newton(p: &mut Curve, q: &mut Curve, start: [f64; 2]) -> Option<[f64; 2]> {
     let [mut s, mut t] = start;
     let mut previous = f64::INFINITY;
@@ -1072,6 +1074,7 @@ struct Root {
 /// The root proved by Krawczyk's operator `k` on a box centred at `z`, with P(z_s) in `pz`
 /// and P'(S) over the box's s side in `dp` (module documentation, 3): `None` when undecided,
 /// else the root with its crossing when inside (0, 1)^2.
+#[inline(always)]
 fn root_of(z: [f64; 2], pz: [Dd; 2], k: &Krawczyk, dp: [BoundedF64; 2]) -> Option<Root> {
     let enclose = |m: f64, d: &BoundedF64| {
         let x = BoundedF64::exact(m).add(d);
@@ -1123,6 +1126,9 @@ struct Search {
     exclusions: Vec<([[f64; 2]; 2], usize)>,
     /// Cells S x T still to examine.
     stack: Vec<([f64; 2], [f64; 2])>,
+    /// Tests only: run the plain builds even where AVX2 is present.
+    #[cfg(test)]
+    plain: bool,
 }
 
 impl Search {
@@ -1134,13 +1140,47 @@ impl Search {
             roots: Vec::new(),
             exclusions: Vec::new(),
             stack: Vec::new(),
+            #[cfg(test)]
+            plain: false,
         }
+    }
+
+    /// Whether the builds compiled for AVX2 may run: the processor has it (and, in tests,
+    /// they are not switched off).
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    fn wide(&self) -> bool {
+        #[cfg(test)]
+        if self.plain {
+            return false;
+        }
+        std::arch::is_x86_feature_detected!("avx2")
     }
 
     /// Krawczyk's test on a box containing the cell `s` x `t` (module documentation, 2 and
     /// 3): `Some(true)` when the cell is settled (its roots are the one root of a proved box,
     /// recorded), `Some(false)` when the test fails, `None` when a proved root is undecided.
     fn settle(&mut self, s: [f64; 2], t: [f64; 2], early: bool) -> Option<bool> {
+        #[cfg(target_arch = "x86_64")]
+        if self.wide() {
+            // SAFETY: the processor has just been seen to support AVX2.
+            #[allow(unsafe_code)]
+            return unsafe { self.settle_avx2(s, t, early) };
+        }
+        self.settle_body(s, t, early)
+    }
+
+    /// [`Search::settle`] compiled for AVX2 (as [`Search::cells_avx2`]: the same doubles);
+    /// callers make sure that the processor has it.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    fn settle_avx2(&mut self, s: [f64; 2], t: [f64; 2], early: bool) -> Option<bool> {
+        self.settle_body(s, t, early)
+    }
+
+    /// The body of [`Search::settle`], shared by its two builds.
+    #[inline(always)]
+    fn settle_body(&mut self, s: [f64; 2], t: [f64; 2], early: bool) -> Option<bool> {
         let centre = [0.5 * (s[0] + s[1]), 0.5 * (t[0] + t[1])];
         let half = [0.5 * (s[1] - s[0]), 0.5 * (t[1] - t[0])];
         let (p, q) = (&mut self.p, &mut self.q);
@@ -1329,7 +1369,7 @@ impl Search {
     #[inline(always)]
     fn cells(&mut self, piece_p: &mut impl Piece, piece_q: &mut impl Piece) -> Option<()> {
         #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx2") {
+        if self.wide() {
             // SAFETY: the processor has just been seen to support AVX2.
             #[allow(unsafe_code)]
             return unsafe { self.cells_avx2(piece_p, piece_q) };
@@ -1406,6 +1446,18 @@ impl Search {
         }
         Some(())
     }
+}
+
+/// [`certified_crossings_f64`] by the plain builds only (never the AVX2 ones), for tests
+/// that the two give the same answers bit for bit.
+#[cfg(test)]
+pub(super) fn certified_crossings_plain(
+    p: &[[f64; 2]],
+    q: &[[f64; 2]],
+) -> Option<Vec<CertifiedCrossing>> {
+    let mut search = Search::empty();
+    search.plain = true;
+    search.run(p, q)
 }
 
 /// The clipping of P's piece over `s` against the fat line of Q's piece over `t`, as one
