@@ -136,10 +136,14 @@
 //! [1e-90, 1e90], so that no product of the filter overflows or loses its bound).
 //!
 //! The speed comes from clipping (Sederberg and Nishita's Bézier clipping, with the
-//! rigorous margins above): a transversal crossing is cut down quadratically to a cell of
-//! about 1e-15, so that a random pair of cubics costs a few rounds of clipping and, per
-//! crossing, one Krawczyk test and one double-double evaluation; the search state is kept
-//! per thread and reused, so a call allocates nothing after the first (but its answer).
+//! rigorous margins above): a transversal crossing is cut down quadratically, and once a
+//! cell is 2^-14 wide a few Newton steps in `f64` centre the Krawczyk boxes, so that a random
+//! pair of cubics costs a few rounds of clipping and, per crossing, two Krawczyk tests and
+//! one double-double evaluation of each curve. The two clips of a round are independent
+//! (a short chain of dependent operations per round), and on x86-64 processors with AVX2 the
+//! search and the settlement run builds of the same source compiled for AVX2 (the same
+//! doubles). The search state is kept per thread and reused, so a call allocates nothing
+//! after the first (but its answer).
 
 use super::interval::{lerp_pyramid_bound, lower, round_nearest, upper, ConvexStep, Dd};
 use super::pyramid::{convex_point, dd_point, dd_point_bounded, dd_points_bounded};
