@@ -104,7 +104,7 @@
 //! crossing is transversal and `tangent` is false, exactly. A cell is tried
 //! ([`Search::settle`]) when both sides are at most 2^-40 wide, when clipping has stalled
 //! on a cell at most 2^-20 wide, and once early, when a round that shrank it well leaves
-//! both sides at most 2^-14 wide (a failure then only lets clipping go on): X is centred at
+//! both sides at most 2^-7 wide (a failure then only lets clipping go on): X is centred at
 //! z (the cell's centre when tiny, else a Newton point near it, found in plain `f64`: a
 //! heuristic choice) with radii 1.25 times |z - centre| + half width, rounded up, at least
 //! 2^-48, so that X contains the cell. A proved X is an *exclusion box*: the cell's roots
@@ -137,7 +137,7 @@
 //!
 //! The speed comes from clipping (Sederberg and Nishita's Bézier clipping, with the
 //! rigorous margins above): a transversal crossing is cut down quadratically, and once a
-//! cell is 2^-14 wide a few Newton steps in `f64` centre the Krawczyk boxes, so that a random
+//! cell is 2^-7 wide a few Newton steps in `f64` centre the Krawczyk boxes, so that a random
 //! pair of cubics costs a few rounds of clipping and, per crossing, two Krawczyk tests and
 //! one double-double evaluation of each curve. The two clips of a round are independent
 //! (a short chain of dependent operations per round), and on x86-64 processors with AVX2 the
@@ -177,7 +177,7 @@ const TINY_WIDTH: f64 = MIN_WIDTH;
 /// most this wide (else halved).
 const SETTLE_WIDTH: f64 = 1.0 / (1u64 << 20) as f64;
 /// A cell that clipping shrinks well is tried once when its sides are at most this wide.
-const EARLY_WIDTH: f64 = 1.0 / (1u64 << 14) as f64;
+const EARLY_WIDTH: f64 = 1.0 / (1u64 << 7) as f64;
 /// Clipping that leaves more than this fraction of both sides has stalled: the cell is halved.
 const PROGRESS: f64 = 0.8;
 /// The outward margin of a clipped range in the local parameter (module documentation, 1).
