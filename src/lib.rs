@@ -116,8 +116,9 @@
 //! * J. Dueñas Béjar, *Los puntos de de Boor de una curva seccionalmente polinómica*: de Boor
 //!   points as blossoms, de Boor's algorithm, piecewise polynomials as B-splines
 //!   (Curry-Schoenberg).
-// No unsafe code but the calls of the AVX build of the halving (`shape/halving.rs`) and of
-// the FMA build of the filter's double-double point (`intersect/pyramid.rs`), each after the
+// No unsafe code but the calls of the AVX build of the halving (`shape/halving.rs`), of
+// the FMA builds of the filter's double-double points (`intersect/pyramid.rs`) and of the
+// AVX2 builds of the filter's search and settlement (`intersect/filter.rs`), each after the
 // processor was seen to support the feature.
 #![deny(unsafe_code)]
 // Every example of the docs and of the README (`ReadmeDoctests` below) compiles without a

@@ -27,7 +27,15 @@
 //! a sum, rounded; the error of the control points), so Q(T) lies in that band (the fat
 //! line). A common point P(s) = Q(t) with s = a + u (b - a) has ν·P(s) = Σ δ_k B_k(u) in the
 //! band, the δ_k = ν·p_k of the exact P piece, which lie within m_p of the computed D_k: so
-//! Σ D_k B_k(u) lies in the band [L, H] widened by m_p, rounded outwards. The graph of
+//! Σ D_k B_k(u) lies in the band [L, H] = [lo - m_q - m_p, hi + m_q + m_p]. Its edges are
+//! computed as fl(lo - m) and fl(hi + m) with m = fl(fl(fl(|ν_0| + |ν_1|) K) + 16η), K the
+//! sum of the two reaches E + 4u M times 1 + 64u, rounded upwards ([`margin_scale`]): three
+//! roundings down (each at least 1 - u) leave m >= |ν|_1 (E_p + E_q + 4u (M_p + M_q))
+//! (1 + 60u), and 15η more when the product is below 2^-1022 (where it is off by η/2 and the
+//! sum is exact), else 44u times a normal number, over 20η. So m exceeds m_p + m_q by at
+//! least u |ν|_1 M_q + 16u (m_p + m_q), more than the rounding of the edge, at most
+//! u (|lo| + m) with |lo|, |hi| <= |ν|_1 M_q (1 + 2^-38) (a sum has no underflow error), so
+//! the computed edges lie outside [L, H]. The graph of
 //! Σ D_k B_k lies in the convex hull C of the points (k/n, D_k). Its least abscissa in the
 //! band ([`Band`]): 0 when D_0 is in the band; else, say D_0 > H, it is the least abscissa of
 //! C on the line y = H (were the least point x* of C in the band below that line, the
@@ -38,15 +46,20 @@
 //! crossings i + (j - i) ρ, ρ = (D_i - H) / (D_i - D_j), over i < j with D_i beyond the
 //! edge and D_j not, in units of 1/n; no such pair: every point beyond the edge, the cell
 //! holds no root and is dropped. The largest abscissa likewise from D_n. The decisions
-//! "beyond" are exact (fl(x - y) has the sign of x - y). A crossing is computed within 7u:
-//! ρ' = fl(fl(D_i - e) / fl(D_i - D_j)) = ρ (1 + δ1)(1 + δ3) / (1 + δ2) with |δ| <= u (and an
-//! absolute η/2 for underflow), so |ρ' - ρ| <= 3.0001u + η as ρ <= 1; the product by the
-//! integer j - i and the sum with i (values at most n) add 2un (1 + 4u), the division by n
-//! u; in [0, 1]: at most 5.001u + u + 2η < 7u. The two ends, ordered (rounding may reverse
-//! them when C meets the band in one abscissa), are widened by 2^-48 = 32u (the rounding of
-//! the subtraction adds at most u), clamped to [0, 1], then mapped to the global parameter
-//! with a margin of 4u b + η and `next_down`/`next_up`, clamped to S. S is clipped so, then
-//! T against the new P piece's fat line; cells that a round of clipping shrinks by less than
+//! "beyond" are exact (fl(x - y) has the sign of x - y). A crossing is computed within 9u:
+//! ρ' = fl(fl(D_i - e) fl(1 / fl(D_i - D_j))) = ρ (1 + δ1)(1 + δ3)(1 + δ4) / (1 + δ2) with
+//! |δ| <= u (and an absolute η/2 for underflow; for a cubic, by the reciprocal unless it
+//! overflows, else, and for other degrees, by one division, a rounding fewer), so
+//! |ρ' - ρ| <= 4.0001u + η as ρ <= 1; the product by the integer j - i and the sum with i
+//! (values at most n) add 2un (1 + 4u), the product by fl(1 / n) (itself within u of 1 / n,
+//! relatively) 2.0001u + η; in [0, 1]: at most 6.001u + 2.0001u + 3η < 9u. The two ends,
+//! ordered (rounding may reverse them when C meets the
+//! band in one abscissa), are widened by 2^-48 = 32u (the rounding of the subtraction adds
+//! at most u), clamped to [0, 1], then mapped to the global parameter a + u (b - a) (three
+//! roundings, within 3.01u b + η) moved outwards by fl(8u b + 2η) (which covers that and
+//! its own rounding, 1.01u b + u η), clamped to S. A round clips S so, and T against the
+//! fat line of the same cell's P piece, side by side (the two clips are independent, which
+//! shortens the chain of dependent operations); cells that a round shrinks by less than
 //! 20% on both sides are halved (the wider side), so every root in [0, 1]^2 stays in some
 //! cell. Cells inside a box proved below (its one root known) are dropped.
 //!
@@ -57,11 +70,17 @@
 //! evaluated in interval arithmetic ([`BoundedF64`] as midpoint-radius intervals, see
 //! [`super::interval`]; de Casteljau's steps in convex form, [`ConvexStep`], so that the
 //! bounds do not grow geometrically with the degree): F(m) from de Casteljau at the double m
-//! in double-double ([`Dd`], with a rigorous bound near n^2 u^2 M), J(X) from de Casteljau
-//! of the hodographs n (p_(i+1) - p_i) (their rounding bounded by `BoundedF64`) at the
-//! interval arguments m ± r, which encloses P'(S) and Q'(T) (interval evaluation is
-//! inclusion isotone): values a and radii ρ, |A - a| <= ρ entrywise for A in J(X), and
-//! F(m) within e_F of f. The product with the matrix Y (the computed inverse of a, any
+//! in double-double ([`Dd`], with a rigorous bound near n^2 u^2 M), J(X) as enclosures of
+//! P'(S) and Q'(T) ([`Curve::tangent`]): when S lies in [0, 1], by the mean value theorem,
+//! P'(s) within r G of P'(m_s), G = n (n - 1) max |p_(i+2) - 2 p_(i+1) + p_i| bounding |P''|
+//! on [0, 1] (the second hodograph's control points, convex hull), rounded upwards, and
+//! P'(m_s) = n (B1 - B0) from de Casteljau's pyramid at the double m_s in plain `f64` (B0,
+//! B1 blossom values after n - 1 steps, each computed within (n - 1) β, part 1), so that the
+//! computed v = fl(n fl(b1 - b0)) lies within 2 (n - 1) E + 2.0001u |v| + η of it; else
+//! from de Casteljau of the hodographs n (p_(i+1) - p_i) (their rounding bounded by
+//! `BoundedF64`) at the interval argument m_s ± r_s (interval evaluation is inclusion
+//! isotone): values a and radii ρ, |A - a| <= ρ entrywise for A in J(X), and F(m) within
+//! e_F of f. The product with the matrix Y (the computed inverse of a, any
 //! doubles: Krawczyk's operator is sound for every Y) is done in plain `f64` ([`krawczyk`]):
 //! K(X) - m lies in μ ± R, μ_i = fl(-(Y_i0 f_0 + Y_i1 f_1)) (off from -(Y f)_i by at most
 //! (2u + u^2) T_i + 2η, T_i = |Y_i0| |f_0| + |Y_i1| |f_1|), and for each column j the entry
@@ -83,17 +102,19 @@
 //! |I - Y A| r < r for the positive vector r, hence the spectral radius of I - Y A is
 //! below 1. The Jacobian at the root is then nonsingular, i.e. cross(P'(s), Q'(t)) != 0: the
 //! crossing is transversal and `tangent` is false, exactly. A cell is tried
-//! ([`Search::settle`]) when both sides are at most 2^-40 wide, or when clipping has stalled
-//! on a cell at most 2^-20 wide: X is centred at z (the cell's centre when tiny, else a
-//! Newton point near it, found in plain `f64`: a heuristic choice) with radii 1.25 times
-//! |z - centre| + half width, rounded up, at least 2^-48, so that X contains the cell. A
-//! proved X is an *exclusion box*: the cell's roots are its one root. A cell whose test
-//! fails is halved, or left undecided below 2^-40.
+//! ([`Search::settle`]) when both sides are at most 2^-40 wide, when clipping has stalled
+//! on a cell at most 2^-20 wide, and once early, when a round that shrank it well leaves
+//! both sides at most 2^-7 wide (a failure then only lets clipping go on): X is centred at
+//! z (the cell's centre when tiny, else a Newton point near it, found in plain `f64`: a
+//! heuristic choice) with radii 1.25 times |z - centre| + half width, rounded up, at least
+//! 2^-48, so that X contains the cell. A proved X is an *exclusion box*: the cell's roots
+//! are its one root. A cell whose test fails is halved, or left undecided below 2^-40.
 //!
-//! **3. A tight enclosure and correct rounding.** X's own enclosure K(X) when it decides
-//! what follows (the common case: for a cell of 2^-40 it is some |Y| |J(X) - J(z)| r wide,
+//! **3. A tight enclosure and correct rounding.** For a tiny cell, X's own enclosure K(X)
+//! when it decides what follows (for a cell of 2^-40 it is some |Y| |J(X) - J(z)| r wide,
 //! near 1e-27); else, when X is wider than 8 times the Newton correction |Y F(z)|, a second
-//! Krawczyk step on z ± max(8 |Y F(z)|, 2^-48) (inside X, so its root is X's root). It
+//! Krawczyk step on X' = z ± max(8 |Y F(z)|, 2^-48), inside X, so that its root is X's
+//! root, with the Jacobian enclosed over X'. It
 //! encloses the root as s* in z_s + Δ_s, t* in z_t + Δ_t. The correctly rounded s and t (ties
 //! to even) are decided from these offsets against the half-ulp boundaries
 //! ([`round_nearest`]); the common point from P(s*) in P(z_s) + Δ_s P'(S'), also correctly
@@ -115,13 +136,17 @@
 //! [1e-90, 1e90], so that no product of the filter overflows or loses its bound).
 //!
 //! The speed comes from clipping (Sederberg and Nishita's Bézier clipping, with the
-//! rigorous margins above): a transversal crossing is cut down quadratically to a cell of
-//! about 1e-15, so that a random pair of cubics costs a few rounds of clipping and, per
-//! crossing, one Krawczyk test and one double-double evaluation; the search state is kept
-//! per thread and reused, so a call allocates nothing after the first (but its answer).
+//! rigorous margins above): a transversal crossing is cut down quadratically, and once a
+//! cell is 2^-7 wide a few Newton steps in `f64` centre the Krawczyk boxes, so that a random
+//! pair of cubics costs a few rounds of clipping and, per crossing, two Krawczyk tests and
+//! one double-double evaluation of each curve. The two clips of a round are independent
+//! (a short chain of dependent operations per round), and on x86-64 processors with AVX2 the
+//! search and the settlement run builds of the same source compiled for AVX2 (the same
+//! doubles). The search state is kept per thread and reused, so a call allocates nothing
+//! after the first (but its answer).
 
 use super::interval::{lerp_pyramid_bound, lower, round_nearest, upper, ConvexStep, Dd};
-use super::pyramid::{convex_point, dd_point, dd_point_bounded};
+use super::pyramid::{convex_point, dd_point, dd_point_bounded, dd_points_bounded};
 use crate::num::bounded::{upward, BoundedF64, ETA, UNIT_ROUNDOFF};
 use crate::num::ring::Ring;
 
@@ -151,6 +176,8 @@ const TINY_WIDTH: f64 = MIN_WIDTH;
 /// A cell that clipping no longer shrinks is tried by Krawczyk's test when its sides are at
 /// most this wide (else halved).
 const SETTLE_WIDTH: f64 = 1.0 / (1u64 << 20) as f64;
+/// A cell that clipping shrinks well is tried once when its sides are at most this wide.
+const EARLY_WIDTH: f64 = 1.0 / (1u64 << 7) as f64;
 /// Clipping that leaves more than this fraction of both sides has stalled: the cell is halved.
 const PROGRESS: f64 = 0.8;
 /// The outward margin of a clipped range in the local parameter (module documentation, 1).
@@ -162,6 +189,10 @@ const TIGHT_RADIUS: f64 = 1.0 / (1u64 << 48) as f64;
 const COVER: f64 = 1.25;
 /// Newton iterations from the centre of a cell that is not tiny.
 const NEWTON_STEPS: usize = 12;
+/// A Newton step at most this long ends the iteration.
+const NEWTON_DONE: f64 = 1.0 / (1u64 << 30) as f64;
+/// How far beyond the cell a Newton point may lie and still centre a Krawczyk box.
+const NEWTON_REACH: f64 = 1.0 / (1u64 << 40) as f64;
 /// The largest degree the filter takes (its a-priori bounds assume n <= 256).
 const MAX_DEGREE: usize = 256;
 /// The largest and least admissible size of the input coordinates (beyond: the exact path).
@@ -178,10 +209,20 @@ struct Curve {
     hodograph: Vec<[BoundedF64; 2]>,
     /// Whether `hodograph` is that of `points` ([`Curve::prepare`]).
     prepared: bool,
+    /// G >= n (n - 1) max |p_(i+2) - 2 p_(i+1) + p_i| (every coordinate), a bound on |P''| over
+    /// [0, 1], once `bend_known` ([`Curve::bend`]).
+    bend: f64,
+    bend_known: bool,
+    /// 2 (n - 1) E: with 2u |v| + η, the bound on the error of the derivative v computed by
+    /// [`Curve::eval_f64`] at an argument in [0, 1] ([`Curve::tangent`]).
+    slope_error: f64,
+    /// The largest |coordinate| M0.
+    size: f64,
     /// E = n β of the module documentation: the bound on the distance of each computed control
     /// point coordinate of a restriction ([`Curve::restrict`]) to the exact one.
     error: f64,
-    /// E + 3 u M: the per-unit-weight part of a distance coefficient's margin ([`clip`]).
+    /// E + 4 u M: the per-unit-weight part of a distance coefficient's margin ([`clip`]),
+    /// with u M for the rounding of the band's edges (module documentation, 1).
     reach: f64,
     /// The bound of [`Curve::eval_dd`] at arguments in [0, 1], known a priori
     /// ([`lerp_pyramid_bound`]).
@@ -200,6 +241,10 @@ impl Curve {
             points: Vec::new(),
             hodograph: Vec::new(),
             prepared: false,
+            bend: 0.0,
+            bend_known: false,
+            slope_error: 0.0,
+            size: 0.0,
             error: 0.0,
             reach: 0.0,
             dd_bound: 0.0,
@@ -217,28 +262,80 @@ impl Curve {
             return None;
         }
         // The largest |coordinate| (∞ for an infinite one), and whether all points are equal.
-        let (mut m0, mut single) = (0.0f64, true);
+        // (Branch-free: `largest` ignores a NaN, which `nan` records.)
+        let (mut m0, mut single, mut nan) = (0.0f64, true, false);
         for c in p {
-            if c[0].is_nan() || c[1].is_nan() {
-                return None;
-            }
-            m0 = m0.max(c[0].abs()).max(c[1].abs());
-            single &= c == &p[0];
+            nan |= c[0].is_nan() | c[1].is_nan();
+            m0 = largest(largest(m0, c[0].abs()), c[1].abs());
+            single &= (c[0] == p[0][0]) & (c[1] == p[0][1]);
         }
-        if single || !(MIN_SIZE..=MAX_SIZE).contains(&m0) {
+        if nan || single || !(MIN_SIZE..=MAX_SIZE).contains(&m0) {
             return None;
         }
         self.degree = p.len() - 1;
         self.points.clear();
         self.points.extend_from_slice(p);
         self.prepared = false;
+        self.bend_known = false;
+        self.size = m0;
         // β = 5u M (1 + 2^-39) + η with M = M0 (1 + 2^-40) (module documentation, 1).
         let beta = upward(5.0 * UNIT_ROUNDOFF * m0 * (1.0 + 2f64.powi(-38)) + ETA);
         self.error = upward(self.degree as f64 * beta);
         let size = m0 * (1.0 + 2f64.powi(-39));
-        self.reach = upward(self.error + 3.0 * UNIT_ROUNDOFF * size);
+        self.reach = upward(self.error + 4.0 * UNIT_ROUNDOFF * size);
+        self.slope_error = upward(2.0 * (self.degree - 1) as f64 * self.error);
         self.dd_bound = lerp_pyramid_bound(self.degree, m0);
         Some(())
+    }
+
+    /// G of [`Curve::bend`]'s field, computed on first use after [`Curve::reset`]: from the
+    /// computed second differences x = fl(fl(c - b) - fl(b - a)) of the coordinates, whose
+    /// exact values are at most |x| (1 + u) + 4u M0 (each first difference, at most 2 M0, is
+    /// off by at most u times that, the outer difference by u |x|; a difference has no
+    /// underflow error), times n (n - 1), rounded upwards. Zero for a line.
+    fn bend(&mut self) -> f64 {
+        if !self.bend_known {
+            let mut largest_difference = 0.0f64;
+            for w in self.points.windows(3) {
+                let (a, b, c) = (w[0], w[1], w[2]);
+                for (x, (y, z)) in a.iter().zip(b.iter().zip(&c)) {
+                    let second = (z - y) - (y - x);
+                    largest_difference = largest(largest_difference, second.abs());
+                }
+            }
+            let n = self.degree as f64;
+            let difference =
+                largest_difference * (1.0 + UNIT_ROUNDOFF) + 4.0 * UNIT_ROUNDOFF * self.size;
+            self.bend = upward(n * (n - 1.0) * difference);
+            self.bend_known = true;
+        }
+        self.bend
+    }
+
+    /// An enclosure of P'(s) for every s with |s - mid| <= radius. When [mid - radius,
+    /// mid + radius] lies in [0, 1] (decided exactly: radius <= mid, fl(mid + radius) < 1),
+    /// by the mean value theorem: P'(s) lies within radius G ([`Curve::bend`]) of P'(mid),
+    /// and the v = fl(n fl(b1 - b0)) of [`Curve::eval_f64`] within 2 (n - 1) E + 2.0001u |v|
+    /// plus η of P'(mid) = n (B1 - B0) (b0, b1 are blossom values after n - 1 de Casteljau steps
+    /// at mid, each within (n - 1) β of the exact B0, B1 (module documentation, 1); the
+    /// difference and the product add u |b1 - b0| and u |v| + η/2); the sum rounded upwards.
+    /// Else from de Casteljau's pyramid of the hodograph at the interval argument
+    /// ([`Curve::tangent_pyramid`]).
+    #[inline]
+    fn tangent(&mut self, mid: f64, radius: f64) -> [BoundedF64; 2] {
+        if radius <= mid && mid + radius < 1.0 {
+            let spread = radius * self.bend();
+            let (_, d) = self.eval_f64(mid);
+            let error = self.slope_error;
+            let bound = |v: f64| upward(error + 2.0 * UNIT_ROUNDOFF * v.abs() + ETA + spread);
+            [
+                BoundedF64::with_bound(d[0], bound(d[0])),
+                BoundedF64::with_bound(d[1], bound(d[1])),
+            ]
+        } else {
+            self.prepare();
+            self.tangent_pyramid(mid, radius)
+        }
     }
 
     /// Makes the hodograph, on first use after [`Curve::reset`] (most pairs never need it).
@@ -258,21 +355,25 @@ impl Curve {
         }
     }
 
-    /// P(s) and P'(s) in plain `f64` (for Newton's method only): n - 1 de Casteljau steps
-    /// leave the segment b0 b1 with P(s) = b0 + s (b1 - b0) and P'(s) = n (b1 - b0).
+    /// P(s) and P'(s) in plain `f64` (for Newton's method, and the derivative for
+    /// [`Curve::tangent`]): n - 1 de Casteljau steps leave the segment b0 b1 with
+    /// P(s) = b0 + s (b1 - b0) and P'(s) = n (b1 - b0). Unrolled for degrees 1 to 3.
+    #[inline]
     fn eval_f64(&mut self, s: f64) -> ([f64; 2], [f64; 2]) {
-        let level = &mut self.level;
-        level.clear();
-        level.extend_from_slice(&self.points);
-        for k in (3..=self.degree + 1).rev() {
-            lerp_step(&mut level[..k], s);
+        match *self.points {
+            [p0, p1] => eval_fixed([p0, p1], s),
+            [p0, p1, p2] => eval_fixed([p0, p1, p2], s),
+            [p0, p1, p2, p3] => eval_fixed([p0, p1, p2, p3], s),
+            _ => {
+                let level = &mut self.level;
+                level.clear();
+                level.extend_from_slice(&self.points);
+                for k in (3..=self.degree + 1).rev() {
+                    lerp_step(&mut level[..k], s);
+                }
+                segment_point(level[0], level[1], s, self.degree)
+            }
         }
-        let d = [level[1][0] - level[0][0], level[1][1] - level[0][1]];
-        let n = self.degree as f64;
-        (
-            [level[0][0] + s * d[0], level[0][1] + s * d[1]],
-            [n * d[0], n * d[1]],
-        )
     }
 
     /// P at the double `s` in double-double with a bound (de Casteljau's pyramid by
@@ -295,6 +396,26 @@ impl Curve {
         let step = ConvexStep::new(BoundedF64::with_bound(mid, radius));
         convex_point(&self.hodograph, &step, &mut self.level_bounded)
     }
+}
+
+/// [`Curve::eval_f64`] on N points held in an array.
+#[inline(always)]
+fn eval_fixed<const N: usize>(mut level: [[f64; 2]; N], s: f64) -> ([f64; 2], [f64; 2]) {
+    for k in (3..=N).rev() {
+        for i in 0..k - 1 {
+            level[i] = lerp(level[i], level[i + 1], s);
+        }
+    }
+    segment_point(level[0], level[1], s, N - 1)
+}
+
+/// The point b0 + s (b1 - b0) and the derivative n (b1 - b0) from the last level of de
+/// Casteljau's pyramid of a curve of degree n.
+#[inline(always)]
+fn segment_point(b0: [f64; 2], b1: [f64; 2], s: f64, n: usize) -> ([f64; 2], [f64; 2]) {
+    let d = [b1[0] - b0[0], b1[1] - b0[1]];
+    let n = n as f64;
+    ([b0[0] + s * d[0], b0[1] + s * d[1]], [n * d[0], n * d[1]])
 }
 
 /// One de Casteljau step at `t` on the points of `level` (k points make k - 1, in place):
@@ -469,68 +590,90 @@ fn restrict(
 /// disjoint.
 #[inline(always)]
 fn boxes_meet(a: &[[f64; 2]], b: &[[f64; 2]], e: f64) -> bool {
-    let bounds = |pts: &[[f64; 2]]| {
-        let mut r = [pts[0][0], pts[0][0], pts[0][1], pts[0][1]];
-        for xy in &pts[1..] {
-            r[0] = least(r[0], xy[0]);
-            r[1] = largest(r[1], xy[0]);
-            r[2] = least(r[2], xy[1]);
-            r[3] = largest(r[3], xy[1]);
+    let bounds = |pts: &[[f64; 2]]| match pts {
+        // In a tree for a cubic (a shorter chain of dependent operations).
+        [p0, p1, p2, p3] => {
+            let (l, h) = (
+                |c: usize| least(least(p0[c], p1[c]), least(p2[c], p3[c])),
+                |c: usize| largest(largest(p0[c], p1[c]), largest(p2[c], p3[c])),
+            );
+            [l(0), h(0), l(1), h(1)]
         }
-        r
+        _ => {
+            let mut r = [pts[0][0], pts[0][0], pts[0][1], pts[0][1]];
+            for xy in &pts[1..] {
+                r[0] = least(r[0], xy[0]);
+                r[1] = largest(r[1], xy[0]);
+                r[2] = least(r[2], xy[1]);
+                r[3] = largest(r[3], xy[1]);
+            }
+            r
+        }
     };
     let (x, y) = (bounds(a), bounds(b));
     x[0] - y[1] <= e && y[0] - x[1] <= e && x[2] - y[3] <= e && y[2] - x[3] <= e
 }
 
-/// Fat-line clipping of the piece `a` (control points within `a_reach - 3uM` of the exact
-/// ones, see [`Curve::reach`]) against the fat line of the piece `b` (module documentation,
-/// 1): `None` when no point of `a` lies on the fat line (no common point), else a range
-/// [u0, u1] of `a`'s local parameter in [0, 1] outside which `a` has no common point with
-/// `b`. [0, 1] when nothing is clipped.
+/// The margin of a fat line per unit of |ν|_1 for pieces of two curves with the reaches
+/// `a_reach` and `b_reach` ([`Curve::reach`]): their sum times 1 + 64u, rounded upwards
+/// (module documentation, 1; [`clip`]).
+fn margin_scale(a_reach: f64, b_reach: f64) -> f64 {
+    upward(upward(a_reach + b_reach) * (1.0 + 64.0 * UNIT_ROUNDOFF))
+}
+
+/// Fat-line clipping of the piece `a` against the fat line of the piece `b` (control points
+/// within `reach - 4uM` of the exact ones, see [`Curve::reach`]; `scale` from
+/// [`margin_scale`] of both curves' reaches) (module documentation, 1): `None` when no point
+/// of `a` lies on the fat line (no common point), else a range [u0, u1] of `a`'s local
+/// parameter in [0, 1] outside which `a` has no common point with `b`. [0, 1] when nothing
+/// is clipped.
 #[inline(always)]
-fn clip(a: &[[f64; 2]], a_reach: f64, b: &[[f64; 2]], b_reach: f64) -> Option<[f64; 2]> {
+fn clip(a: &[[f64; 2]], b: &[[f64; 2]], scale: f64) -> Option<[f64; 2]> {
     let (first, last) = (b[0], b[b.len() - 1]);
     let normal = [first[1] - last[1], last[0] - first[0]];
     if normal == [0.0, 0.0] {
         return Some([0.0, 1.0]);
     }
     let dot = |xy: &[f64; 2]| normal[0] * xy[0] + normal[1] * xy[1];
-    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for xy in b {
-        let d = dot(xy);
-        lo = least(lo, d);
-        hi = largest(hi, d);
-    }
-    // The margins of both pieces' distance coefficients, added to the band.
-    let weight = upward(normal[0].abs() + normal[1].abs());
-    let margin = upward(weight * (a_reach + b_reach) + 8.0 * ETA);
-    let (low, high) = ((lo - margin).next_down(), (hi + margin).next_up());
+    let (lo, hi) = match b {
+        // In a tree for a cubic (a shorter chain of dependent operations).
+        [b0, b1, b2, b3] => {
+            let d = [dot(b0), dot(b1), dot(b2), dot(b3)];
+            (
+                least(least(d[0], d[1]), least(d[2], d[3])),
+                largest(largest(d[0], d[1]), largest(d[2], d[3])),
+            )
+        }
+        _ => b
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), xy| {
+                let d = dot(xy);
+                (least(lo, d), largest(hi, d))
+            }),
+    };
+    // The margins of both pieces' distance coefficients, added to the band, and the rounding
+    // of the edges (module documentation, 1).
+    let margin = (normal[0].abs() + normal[1].abs()) * scale + 16.0 * ETA;
+    let (low, high) = (lo - margin, hi + margin);
     let band = Band::new(low, high, dot(&a[0]), dot(&a[a.len() - 1]));
     let coefficient = |xy: &[f64; 2]| band.coefficient(dot(xy));
     // The hull's range in the band, unrolled for a cubic.
     let range = match a {
         [p0, p1, p2, p3] => {
-            let d = [p0, p1, p2, p3].map(coefficient);
-            let mut range = band.start(3);
-            Band::pair(&mut range, 0, 1, &d[0], &d[1]);
-            Band::pair(&mut range, 0, 2, &d[0], &d[2]);
-            Band::pair(&mut range, 0, 3, &d[0], &d[3]);
-            Band::pair(&mut range, 1, 2, &d[1], &d[2]);
-            Band::pair(&mut range, 1, 3, &d[1], &d[3]);
-            Band::pair(&mut range, 2, 3, &d[2], &d[3]);
-            range
-        }
-        _ => {
-            let mut range = band.start(a.len() - 1);
-            for (i, pi) in a.iter().enumerate() {
-                let di = coefficient(pi);
-                for (j, pj) in a.iter().enumerate().skip(i + 1) {
-                    Band::pair(&mut range, i, j, &di, &coefficient(pj));
-                }
+            let d = [
+                coefficient(p0),
+                coefficient(p1),
+                coefficient(p2),
+                coefficient(p3),
+            ];
+            // By reciprocals (one division per pair), unless one of them is not finite (a
+            // subnormal difference where a candidate applies): then by divisions.
+            match band.cubic_hull(&d, true) {
+                (range, true) => range,
+                _ => band.cubic_hull(&d, false).0,
             }
-            range
         }
+        _ => band.hull(a.iter().map(coefficient), a.len() - 1),
     };
     band.finish(range, a.len() - 1)
 }
@@ -607,20 +750,75 @@ impl Band {
         ]
     }
 
-    /// The crossings of the segment from point i to the later point j that apply.
-    /// (Branch-free: a candidate that does not apply is replaced by ±∞. The inputs' bound
-    /// 1e90 keeps every D_k finite, and D_i - D_j != 0 where the sides differ.)
+    /// The crossings of the segment from point i to the later point j, of the edge e0 as a
+    /// candidate for the least abscissa and of e1 for the largest, each replaced by +∞ or -∞
+    /// where it does not apply (the inputs' bound 1e90 keeps every D_k finite, and
+    /// D_i - D_j != 0 where the sides differ, so an applicable candidate is finite). With
+    /// `reciprocal`, the ratios are taken as products by fl(1 / (D_i - D_j)), and the flag
+    /// returned is false when that reciprocal overflows (a subnormal difference) where a
+    /// candidate applies; else by divisions.
     #[inline(always)]
-    fn pair(range: &mut [f64; 2], i: usize, j: usize, di: &Coefficient, dj: &Coefficient) {
-        // (Divisions, not a reciprocal, which would overflow for a subnormal D_i - D_j.)
+    fn candidates(
+        i: usize,
+        j: usize,
+        di: &Coefficient,
+        dj: &Coefficient,
+        reciprocal: bool,
+    ) -> ([f64; 2], bool) {
         let gap = di.value - dj.value;
         let w = (j - i) as f64;
-        let c0 = i as f64 + w * (di.offset[0] / gap);
-        let c1 = i as f64 + w * (di.offset[1] / gap);
         let first = di.beyond[0] & !dj.beyond[0];
         let last = dj.beyond[1] & !di.beyond[1];
-        range[0] = least(range[0], if first { c0 } else { f64::INFINITY });
-        range[1] = largest(range[1], if last { c1 } else { f64::NEG_INFINITY });
+        let (r0, r1, finite) = if reciprocal {
+            let inverse = 1.0 / gap;
+            let finite = !(first | last) | (inverse.abs() <= f64::MAX);
+            (di.offset[0] * inverse, di.offset[1] * inverse, finite)
+        } else {
+            (di.offset[0] / gap, di.offset[1] / gap, true)
+        };
+        let c0 = i as f64 + w * r0;
+        let c1 = i as f64 + w * r1;
+        let lower = if first { c0 } else { f64::INFINITY };
+        let upper = if last { c1 } else { f64::NEG_INFINITY };
+        ([lower, upper], finite)
+    }
+
+    /// The range of the hull of a cubic's coefficients `d` in the band, unfinished (in
+    /// units of 1/3), and whether every reciprocal taken was finite ([`Band::candidates`]).
+    #[inline(always)]
+    fn cubic_hull(&self, d: &[Coefficient; 4], reciprocal: bool) -> ([f64; 2], bool) {
+        let c = |i: usize, j: usize| Band::candidates(i, j, &d[i], &d[j], reciprocal);
+        let ([l01, u01], f01) = c(0, 1);
+        let ([l02, u02], f02) = c(0, 2);
+        let ([l03, u03], f03) = c(0, 3);
+        let ([l12, u12], f12) = c(1, 2);
+        let ([l13, u13], f13) = c(1, 3);
+        let ([l23, u23], f23) = c(2, 3);
+        // In a tree, for a short chain of dependent operations (no candidate is NaN).
+        let start = self.start(3);
+        let lower = least(
+            least(least(start[0], l01), least(l02, l03)),
+            least(least(l12, l13), l23),
+        );
+        let upper = largest(
+            largest(largest(start[1], u01), largest(u02, u03)),
+            largest(largest(u12, u13), u23),
+        );
+        ([lower, upper], f01 & f02 & f03 & f12 & f13 & f23)
+    }
+
+    /// The range of the hull of any piece's coefficients `d` in the band, unfinished (in
+    /// units of 1/n), by divisions.
+    #[inline(always)]
+    fn hull(&self, d: impl Iterator<Item = Coefficient> + Clone, n: usize) -> [f64; 2] {
+        let mut range = self.start(n);
+        for (i, di) in d.clone().enumerate() {
+            for (j, dj) in d.clone().enumerate().skip(i + 1) {
+                let ([l, u], _) = Band::candidates(i, j, &di, &dj, false);
+                range = [least(range[0], l), largest(range[1], u)];
+            }
+        }
+        range
     }
 
     /// The local range, widened by the slack, or `None` when every point lies beyond one edge.
@@ -629,10 +827,11 @@ impl Band {
         if u0 == f64::INFINITY || u1 == f64::NEG_INFINITY {
             return None;
         }
-        let scale = n as f64;
+        // Times fl(1 / n) rather than divided by n: a shorter chain of operations.
+        let scale = 1.0 / n as f64;
         // The two ends come from different candidates: rounding may order them wrongly when
         // the hull meets the band in one abscissa.
-        let (lo, hi) = (least(u0, u1) / scale, largest(u0, u1) / scale);
+        let (lo, hi) = (least(u0, u1) * scale, largest(u0, u1) * scale);
         Some([largest(lo - CLIP_SLACK, 0.0), least(hi + CLIP_SLACK, 1.0)])
     }
 }
@@ -662,20 +861,22 @@ fn largest(a: f64, b: f64) -> f64 {
 fn to_global(range: [f64; 2], u: [f64; 2]) -> [f64; 2] {
     let [a, b] = range;
     let w = b - a;
-    // Each end a + u w is computed with an error below 3u b + η (three roundings of numbers
-    // at most b), covered by the slack.
-    let slack = 4.0 * UNIT_ROUNDOFF * b + ETA;
+    // Each end a + u w is computed within 3.01u b + η of the exact one (three roundings of
+    // numbers at most b (1 + 3u)); the slack, at least 8u b (1 - u) + η, moves it outwards
+    // past that error and the rounding of the slack's own sum or difference (at most
+    // 1.01u b + u η).
+    let slack = 8.0 * UNIT_ROUNDOFF * b + 2.0 * ETA;
     let lo = if u[0] == 0.0 {
         a
     } else {
-        ((a + u[0] * w) - slack).next_down().max(a)
+        largest((a + u[0] * w) - slack, a)
     };
     let hi = if u[1] == 1.0 {
         b
     } else {
-        ((a + u[1] * w) + slack).next_up().min(b)
+        least((a + u[1] * w) + slack, b)
     };
-    [lo, hi.max(lo)]
+    [lo, largest(hi, lo)]
 }
 
 /// A box in (s, t): midpoint and radii, standing for m ± r exactly.
@@ -723,6 +924,7 @@ const KRAWCZYK_SCALE: f64 = 1.0 + 256.0 * UNIT_ROUNDOFF;
 /// Krawczyk's operator on the box `x`, with F(m) enclosed by `f`, P'(S) by `dp` and Q'(T) by
 /// `dq` (module documentation, 2), in plain `f64` with the radius bound derived there.
 /// `None` when the midpoint Jacobian is singular or nearly so.
+#[inline(always)]
 fn krawczyk(
     x: &Box2,
     f: [BoundedF64; 2],
@@ -735,39 +937,52 @@ fn krawczyk(
         [dp[0].value(), -dq[0].value()],
         [dp[1].value(), -dq[1].value()],
     ];
-    let rho = [
-        [dp[0].error_bound(), dq[0].error_bound()],
-        [dp[1].error_bound(), dq[1].error_bound()],
-    ];
     let det = a[0][0] * a[1][1] - a[0][1] * a[1][0];
+    let inverse = 1.0 / det;
     let y = [
-        [a[1][1] / det, -a[0][1] / det],
-        [-a[1][0] / det, a[0][0] / det],
+        [a[1][1] * inverse, -a[0][1] * inverse],
+        [-a[1][0] * inverse, a[0][0] * inverse],
     ];
     // (Also false for NaN: a zero, non-finite or nearly singular determinant.)
-    if !y.iter().flatten().all(|e| e.abs() <= MAX_INVERSE) {
+    let small = |e: f64| e.abs() <= MAX_INVERSE;
+    if !(small(y[0][0]) && small(y[0][1]) && small(y[1][0]) && small(y[1][1])) {
         return None;
     }
     let u = UNIT_ROUNDOFF;
     // ρ' = ρ + 3u |a|: the radius of J(X) with the rounding of Y a.
-    let rho = [0, 1].map(|k| [0, 1].map(|j| rho[k][j] + 3.0 * u * a[k][j].abs()));
-    let (fv, fe) = (f.map(|e| e.value()), f.map(|e| e.error_bound()));
+    let rho = [
+        [
+            dp[0].error_bound() + 3.0 * u * a[0][0].abs(),
+            dq[0].error_bound() + 3.0 * u * a[0][1].abs(),
+        ],
+        [
+            dp[1].error_bound() + 3.0 * u * a[1][0].abs(),
+            dq[1].error_bound() + 3.0 * u * a[1][1].abs(),
+        ],
+    ];
+    let (fv, fe) = (
+        [f[0].value(), f[1].value()],
+        [f[0].error_bound(), f[1].error_bound()],
+    );
     let r = x.radius;
-    let offset = [0, 1].map(|i| {
+    // One row i of K(X) - m: μ_i and R_i.
+    let row = |i: usize| {
         let (y0, y1) = (y[i][0], y[i][1]);
         let mid = -(y0 * fv[0] + y1 * fv[1]);
         // |Y_i| e_F + 3u |Y_i| |F| + Σ_j (|ĉ_ij| + |Y_i| ρ'_j) r_j, ĉ = fl(I - Y a).
         let (ay0, ay1) = (y0.abs(), y1.abs());
         let mut rad = ay0 * fe[0] + ay1 * fe[1] + 3.0 * u * (ay0 * fv[0].abs() + ay1 * fv[1].abs());
+        let identity = [(i == 0) as u8 as f64, (i == 1) as u8 as f64];
         for j in 0..2 {
-            let identity = if i == j { 1.0 } else { 0.0 };
-            let c = identity - (y0 * a[0][j] + y1 * a[1][j]);
+            let c = identity[j] - (y0 * a[0][j] + y1 * a[1][j]);
             rad += (c.abs() + ay0 * rho[0][j] + ay1 * rho[1][j]) * r[j];
         }
         BoundedF64::with_bound(mid, rad * KRAWCZYK_SCALE + KRAWCZYK_FLOOR)
-    });
+    };
+    let offset = [row(0), row(1)];
     // fl(|m| + R) < r implies |m| + R < r (rounding is monotone, r a double).
-    let proved = (0..2).all(|i| offset[i].value().abs() + offset[i].error_bound() < r[i]);
+    let inside = |i: usize| offset[i].value().abs() + offset[i].error_bound() < r[i];
+    let proved = inside(0) && inside(1);
     Some(Krawczyk { offset, proved })
 }
 
@@ -785,13 +1000,38 @@ pub(super) fn krawczyk_offsets(
     Some((k.offset, k.proved))
 }
 
-/// F(m) = P(m_s) - Q(m_t) in double-double with a bound, per coordinate, with P(m_s).
+/// [`Curve::tangent`] of the curve with control points `points` (the filter takes it: see
+/// [`Curve::reset`]), for tests of its enclosure against exact rationals.
+#[cfg(test)]
+pub(super) fn tangent_enclosure(
+    points: &[[f64; 2]],
+    mid: f64,
+    radius: f64,
+) -> Option<[BoundedF64; 2]> {
+    let mut curve = Curve::empty();
+    curve.reset(points)?;
+    Some(curve.tangent(mid, radius))
+}
+
+/// F(m) = P(m_s) - Q(m_t) in double-double with a bound, per coordinate, with P(m_s): the
+/// two points at once when both arguments lie in [0, 1] (the common case), else one by one
+/// ([`Curve::eval_dd`]).
 fn residual_dd(p: &mut Curve, q: &mut Curve, m: [f64; 2]) -> ([Dd; 2], [Dd; 2]) {
-    let (a, b) = (p.eval_dd(m[0]), q.eval_dd(m[1]));
+    let unit = |x: f64| (0.0..=1.0).contains(&x);
+    let [a, b] = if unit(m[0]) && unit(m[1]) {
+        dd_points_bounded(
+            (&p.points, m[0], p.dd_bound),
+            (&q.points, m[1], q.dd_bound),
+            &mut p.level_dd,
+        )
+    } else {
+        [p.eval_dd(m[0]), q.eval_dd(m[1])]
+    };
     ([a[0].sub(&b[0]), a[1].sub(&b[1])], a)
 }
 
 /// Newton's method in `f64` from `start`: the point it converges to, if it does.
+#[inline(always)]
 fn newton(p: &mut Curve, q: &mut Curve, start: [f64; 2]) -> Option<[f64; 2]> {
     let [mut s, mut t] = start;
     let mut previous = f64::INFINITY;
@@ -804,15 +1044,18 @@ fn newton(p: &mut Curve, q: &mut Curve, start: [f64; 2]) -> Option<[f64; 2]> {
         if det == 0.0 || !det.is_finite() {
             return None;
         }
-        let ds = (-dqt[1] * f[0] + dqt[0] * f[1]) / det;
-        let dt = (-dps[1] * f[0] + dps[0] * f[1]) / det;
+        let inverse = 1.0 / det;
+        let ds = (-dqt[1] * f[0] + dqt[0] * f[1]) * inverse;
+        let dt = (-dps[1] * f[0] + dps[0] * f[1]) * inverse;
         s -= ds;
         t -= dt;
         if !((-1.0..=2.0).contains(&s) && (-1.0..=2.0).contains(&t)) {
             return None;
         }
         let step = ds.abs().max(dt.abs());
-        if step <= 1e-15 {
+        // Near a regular root the next step would be some multiple of step^2: too small to
+        // matter for the Krawczyk box centred here.
+        if step <= NEWTON_DONE {
             return Some([s, t]);
         }
         // Past the first steps the iteration must contract (it converges quadratically near a
@@ -835,10 +1078,13 @@ struct Root {
 /// The root proved by Krawczyk's operator `k` on a box centred at `z`, with P(z_s) in `pz`
 /// and P'(S) over the box's s side in `dp` (module documentation, 3): `None` when undecided,
 /// else the root with its crossing when inside (0, 1)^2.
+#[inline(always)]
 fn root_of(z: [f64; 2], pz: [Dd; 2], k: &Krawczyk, dp: [BoundedF64; 2]) -> Option<Root> {
-    let s = BoundedF64::exact(z[0]).add(&k.offset[0]);
-    let t = BoundedF64::exact(z[1]).add(&k.offset[1]);
-    let tight = [[lower(&s), upper(&s)], [lower(&t), upper(&t)]];
+    let enclose = |m: f64, d: &BoundedF64| {
+        let x = BoundedF64::exact(m).add(d);
+        [lower(&x), upper(&x)]
+    };
+    let tight = [enclose(z[0], &k.offset[0]), enclose(z[1], &k.offset[1])];
     let outside = |e: [f64; 2]| e[1] < 0.0 || e[0] > 1.0;
     let inside = |e: [f64; 2]| e[0] > 0.0 && e[1] < 1.0;
     if outside(tight[0]) || outside(tight[1]) {
@@ -850,19 +1096,22 @@ fn root_of(z: [f64; 2], pz: [Dd; 2], k: &Krawczyk, dp: [BoundedF64; 2]) -> Optio
     if !(inside(tight[0]) && inside(tight[1])) {
         return None;
     }
+    let s = round_nearest(z[0], &k.offset[0])?;
+    let t = round_nearest(z[1], &k.offset[1])?;
     // P(s*) in P(z_s) + (s* - z_s) P'(S), coordinate by coordinate (mean value theorem).
-    let point = [0, 1].map(|c| {
+    let coordinate = |c: usize| {
         let offset = pz[c].rest().add(&k.offset[0].mul(&dp[c]));
         round_nearest(pz[c].hi(), &offset)
-    });
+    };
+    let point = [coordinate(0)?, coordinate(1)?];
     Some(Root {
         tight,
         crossing: Some(CertifiedCrossing {
-            s: round_nearest(z[0], &k.offset[0])?,
-            t: round_nearest(z[1], &k.offset[1])?,
+            s,
+            t,
             s_enclosure: tight[0],
             t_enclosure: tight[1],
-            point: [point[0]?, point[1]?],
+            point,
         }),
     })
 }
@@ -881,6 +1130,9 @@ struct Search {
     exclusions: Vec<([[f64; 2]; 2], usize)>,
     /// Cells S x T still to examine.
     stack: Vec<([f64; 2], [f64; 2])>,
+    /// Tests only: run the plain builds even where AVX2 is present.
+    #[cfg(test)]
+    plain: bool,
 }
 
 impl Search {
@@ -892,58 +1144,104 @@ impl Search {
             roots: Vec::new(),
             exclusions: Vec::new(),
             stack: Vec::new(),
+            #[cfg(test)]
+            plain: false,
         }
+    }
+
+    /// Whether the builds compiled for AVX2 may run: the processor has it (and, in tests,
+    /// they are not switched off).
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    fn wide(&self) -> bool {
+        #[cfg(test)]
+        if self.plain {
+            return false;
+        }
+        std::arch::is_x86_feature_detected!("avx2")
     }
 
     /// Krawczyk's test on a box containing the cell `s` x `t` (module documentation, 2 and
     /// 3): `Some(true)` when the cell is settled (its roots are the one root of a proved box,
     /// recorded), `Some(false)` when the test fails, `None` when a proved root is undecided.
-    fn settle(&mut self, s: [f64; 2], t: [f64; 2]) -> Option<bool> {
+    fn settle(&mut self, s: [f64; 2], t: [f64; 2], early: bool) -> Option<bool> {
+        #[cfg(target_arch = "x86_64")]
+        if self.wide() {
+            // SAFETY: the processor has just been seen to support AVX2.
+            #[allow(unsafe_code)]
+            return unsafe { self.settle_avx2(s, t, early) };
+        }
+        self.settle_body(s, t, early)
+    }
+
+    /// [`Search::settle`] compiled for AVX2 (as [`Search::cells_avx2`]: the same doubles);
+    /// callers make sure that the processor has it.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    fn settle_avx2(&mut self, s: [f64; 2], t: [f64; 2], early: bool) -> Option<bool> {
+        self.settle_body(s, t, early)
+    }
+
+    /// The body of [`Search::settle`], shared by its two builds.
+    #[inline(always)]
+    fn settle_body(&mut self, s: [f64; 2], t: [f64; 2], early: bool) -> Option<bool> {
         let centre = [0.5 * (s[0] + s[1]), 0.5 * (t[0] + t[1])];
         let half = [0.5 * (s[1] - s[0]), 0.5 * (t[1] - t[0])];
         let (p, q) = (&mut self.p, &mut self.q);
-        p.prepare();
-        q.prepare();
+        let tiny = half[0].max(half[1]) <= TINY_WIDTH;
+        // What a failure means: an early try only says "not yet" (clipping goes on).
+        let fail = if early { Some(false) } else { None };
         // The box's centre: the cell's centre when the cell is tiny, else a Newton point near
         // it (a heuristic choice; the box contains the cell either way).
-        let z = if half[0].max(half[1]) <= TINY_WIDTH {
+        let z = if tiny {
             centre
         } else {
-            newton(p, q, centre)
-                .filter(|z| (0..2).all(|i| (z[i] - centre[i]).abs() <= 2.0 * half[i]))
-                .unwrap_or(centre)
+            let near = |z: &[f64; 2]| {
+                (0..2).all(|i| (z[i] - centre[i]).abs() <= 2.0 * half[i] + NEWTON_REACH)
+            };
+            match newton(p, q, centre).filter(near) {
+                Some(z) => z,
+                None if early => return Some(false),
+                None => centre,
+            }
         };
-        let cover = [0, 1].map(|i| {
+        let reach = |i: usize| {
             upward(COVER * ((z[i] - centre[i]).abs().next_up() + half[i])).max(TIGHT_RADIUS)
-        });
+        };
+        let cover = [reach(0), reach(1)];
         let (fdd, pz) = residual_dd(p, q, z);
-        let f = fdd.map(|c| c.to_bounded());
+        let f = [fdd[0].to_bounded(), fdd[1].to_bounded()];
         let outer = Box2 {
             mid: z,
             radius: cover,
         };
-        let dp = p.tangent_pyramid(z[0], cover[0]);
-        let dq = q.tangent_pyramid(z[1], cover[1]);
+        let dp = p.tangent(z[0], cover[0]);
+        let dq = q.tangent(z[1], cover[1]);
         let Some(k) = krawczyk(&outer, f, dp, dq).filter(|k| k.proved) else {
             return Some(false);
         };
-        // The outer box's enclosure decides the common case (a tiny cell, whose enclosure is
-        // some |Y| |J(X) - J(z)| r wide, far below an ulp); else a tighter box around z: 8
-        // times the Newton correction.
-        let root = match root_of(z, pz, &k, dp) {
+        // The outer box's enclosure decides the common case of a tiny cell (its enclosure is
+        // some |Y| |J(X) - J(z)| r wide, far below an ulp); else a tighter box around z, 8
+        // times the Newton correction, with the Jacobian enclosed over it.
+        let root = match tiny.then(|| root_of(z, pz, &k, dp)).flatten() {
             Some(root) => root,
             None => {
-                let wanted = [0, 1].map(|i| (8.0 * k.offset[i].value().abs()).max(TIGHT_RADIUS));
-                if (0..2).all(|i| wanted[i] >= cover[i]) {
-                    return None;
+                let wanted = |i: usize| (8.0 * k.offset[i].value().abs()).max(TIGHT_RADIUS);
+                let wanted = [wanted(0), wanted(1)];
+                if wanted[0] >= cover[0] && wanted[1] >= cover[1] {
+                    return fail;
                 }
-                let radius = [0, 1].map(|i| wanted[i].min(cover[i]));
-                let dp_inner = p.tangent_pyramid(z[0], radius[0]);
-                let dq_inner = q.tangent_pyramid(z[1], radius[1]);
+                let radius = [wanted[0].min(cover[0]), wanted[1].min(cover[1])];
                 let inner = Box2 { mid: z, radius };
                 // Its one root is the one root of the outer box, which contains it.
-                let k_inner = krawczyk(&inner, f, dp_inner, dq_inner).filter(|k| k.proved)?;
-                root_of(z, pz, &k_inner, dp_inner)?
+                let (dp_inner, dq_inner) = (p.tangent(z[0], radius[0]), q.tangent(z[1], radius[1]));
+                let found = krawczyk(&inner, f, dp_inner, dq_inner)
+                    .filter(|k| k.proved)
+                    .and_then(|k| root_of(z, pz, &k, dp_inner));
+                match found {
+                    Some(root) => root,
+                    None => return fail,
+                }
             }
         };
         let index = self.add_root(root, &outer)?;
@@ -1068,15 +1366,38 @@ impl Search {
 
 impl Search {
     /// Examines the cells of the stack until none is left (module documentation, 1): `None`
-    /// when undecided.
+    /// when undecided. On x86-64 processors with AVX2 (detected at run time) this runs a
+    /// build of the same source compiled for AVX2 ([`Search::cells_avx2`]): the same
+    /// floating-point operations in the same order, so the same doubles bit for bit (Rust
+    /// never fuses a multiplication and an addition by itself), in fewer instructions.
     #[inline(always)]
     fn cells(&mut self, piece_p: &mut impl Piece, piece_q: &mut impl Piece) -> Option<()> {
-        let (pr, qr) = (self.p.reach, self.q.reach);
+        #[cfg(target_arch = "x86_64")]
+        if self.wide() {
+            // SAFETY: the processor has just been seen to support AVX2.
+            #[allow(unsafe_code)]
+            return unsafe { self.cells_avx2(piece_p, piece_q) };
+        }
+        self.cells_body(piece_p, piece_q)
+    }
+
+    /// [`Search::cells`] compiled for AVX2; callers make sure that the processor has it.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    fn cells_avx2(&mut self, piece_p: &mut impl Piece, piece_q: &mut impl Piece) -> Option<()> {
+        self.cells_body(piece_p, piece_q)
+    }
+
+    /// The body of [`Search::cells`], shared by its two builds.
+    #[inline(always)]
+    fn cells_body(&mut self, piece_p: &mut impl Piece, piece_q: &mut impl Piece) -> Option<()> {
+        let scale = margin_scale(self.p.reach, self.q.reach);
         let errors = upward(self.p.error + self.q.error);
         let mut steps = 0usize;
         while let Some((mut s, mut t)) = self.stack.pop() {
             piece_p.restrict(&self.p.points, s);
             piece_q.restrict(&self.q.points, t);
+            let mut tried = false;
             loop {
                 steps += 1;
                 if steps > MAX_STEPS {
@@ -1087,16 +1408,14 @@ impl Search {
                     break;
                 }
                 let (ws, wt) = (s[1] - s[0], t[1] - t[0]);
-                let Some(u) = clip(pp, pr, qq, qr) else {
+                // Both pieces clipped against the other's fat line of this cell, side by side.
+                let (Some(u), Some(v)) = (clip(pp, qq, scale), clip(qq, pp, scale)) else {
                     break;
                 };
                 if u != [0.0, 1.0] {
                     s = to_global(s, u);
                     piece_p.restrict(&self.p.points, s);
                 }
-                let Some(v) = clip(piece_q.points(), qr, piece_p.points(), pr) else {
-                    break;
-                };
                 if v != [0.0, 1.0] {
                     t = to_global(t, v);
                     piece_q.restrict(&self.q.points, t);
@@ -1104,14 +1423,18 @@ impl Search {
                 let (ws2, wt2) = (s[1] - s[0], t[1] - t[0]);
                 let stalled = ws2 > PROGRESS * ws && wt2 > PROGRESS * wt;
                 let size = ws2.max(wt2);
-                if size <= TINY_WIDTH || (stalled && size <= SETTLE_WIDTH) {
-                    if self.settle(s, t)? {
+                let early = !stalled && !tried && size <= EARLY_WIDTH;
+                if size <= TINY_WIDTH || (stalled && size <= SETTLE_WIDTH) || early {
+                    if self.settle(s, t, early && size > TINY_WIDTH)? {
                         break;
+                    }
+                    if early && size > TINY_WIDTH {
+                        tried = true;
+                        continue;
                     }
                 } else if !stalled {
                     continue;
                 }
-                // Stalled (or not settled): halve the wider side.
                 if size <= MIN_WIDTH {
                     return None;
                 }
@@ -1127,6 +1450,18 @@ impl Search {
         }
         Some(())
     }
+}
+
+/// [`certified_crossings_f64`] by the plain builds only (never the AVX2 ones), for tests
+/// that the two give the same answers bit for bit.
+#[cfg(test)]
+pub(super) fn certified_crossings_plain(
+    p: &[[f64; 2]],
+    q: &[[f64; 2]],
+) -> Option<Vec<CertifiedCrossing>> {
+    let mut search = Search::empty();
+    search.plain = true;
+    search.run(p, q)
 }
 
 /// The clipping of P's piece over `s` against the fat line of Q's piece over `t`, as one
@@ -1146,5 +1481,5 @@ pub(super) fn clip_cell(
     pq.resize(q.len());
     pp.restrict(p, s);
     pq.restrict(q, t);
-    clip(pp.points(), cp.reach, pq.points(), cq.reach)
+    clip(pp.points(), pq.points(), margin_scale(cp.reach, cq.reach))
 }

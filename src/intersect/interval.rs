@@ -39,12 +39,13 @@
 //! (|1 - s| + |s|) e plus the new roundings per level: additively for s in [0, 1]. The filter
 //! runs the engine's pyramid ([`crate::shape::flat::curve_pyramid_in_place`]) with it.
 //!
-//! **Correct rounding: [`round_nearest`].** With x known to lie in base + [d_lo, d_hi]
-//! (base a double, the offset an interval), x rounds to the double c = fl(base + d) when the
-//! offsets of x from c lie strictly between minus half the gap to the double below c and half
-//! the gap to the double above c (both gaps exact doubles for normal c). Anything else (the
-//! enclosure touches a rounding boundary, c is zero, subnormal or the largest double) is
-//! undecided (`None`), never guessed.
+//! **Correct rounding: [`round_nearest`].** With x known to lie in base + [v - e, v + e]
+//! (base a double, the offset an interval), x rounds to the double c = fl(base + v) when the
+//! offsets of x from c (an interval [w - e, w + e] with w = base + v - c, exact by TwoSum) lie
+//! strictly between minus half the gap to the double below c and half the gap to the double
+//! above c (both gaps exact doubles for normal c). Anything else (the enclosure touches a
+//! rounding boundary, c is zero, subnormal or the largest double) is undecided (`None`),
+//! never guessed.
 
 use crate::num::bounded::{rounding, upward, BoundedF64, ETA, UNIT_ROUNDOFF};
 use crate::num::ring::{rational_to_f64, Rational, Ring};
@@ -317,25 +318,40 @@ impl<T: Ring> CurveStep<T> for ConvexStep<T> {
 
 /// The double nearest to x (ties to even) for x in `base` + `offset` (exactly, `base` a
 /// double), or `None` when the enclosure does not decide it (module documentation).
+///
+/// With v ± e the offset, TwoSum gives c = fl(base + v) and its error w = base + v - c
+/// exactly, so x - c lies in [w - e, w + e]. For normal c below the largest double, the gaps
+/// to its neighbours are exact doubles (one unit of the last place apart in the bits), and so
+/// are their halves h_down and h_up. x rounds to c when -h_down < w - e and w + e < h_up:
+/// decided from the rounded fl(w - e) > -h_down and fl(w + e) < h_up (rounding is monotone
+/// and the halves are doubles, so the rounded comparisons imply the exact ones). A tie
+/// (x exactly half-way) is never inside the strict inequalities: undecided, as is anything
+/// non-finite, a c that is zero, subnormal or near the top of the range.
+#[inline]
 pub(crate) fn round_nearest(base: f64, offset: &BoundedF64) -> Option<f64> {
-    let (d_lo, d_hi) = (lower(offset), upper(offset));
-    if !(base.is_finite() && d_lo.is_finite() && d_hi.is_finite()) {
+    let (v, e) = (offset.value(), offset.error_bound());
+    // Also false for NaN.
+    if !(base.is_finite() && v.is_finite() && e < f64::INFINITY) {
         return None;
     }
-    let c = base + offset.value();
+    let (c, w) = two_sum(base, v);
     // Half gaps are exact for normal c away from the top of the range.
-    if !(c.abs() >= 4.0 * f64::MIN_POSITIVE && c.abs() < f64::MAX) {
+    let size = c.abs();
+    if !(4.0 * f64::MIN_POSITIVE..f64::MAX).contains(&size) {
         return None;
     }
-    // g = c - base exactly, else the shift is not representable: undecided.
-    let (g, r) = two_sum(c, -base);
-    if r != 0.0 {
-        return None;
-    }
-    let (lo, hi) = ((d_lo - g).next_down(), (d_hi - g).next_up());
-    let half_up = 0.5 * (c.next_up() - c);
-    let half_down = 0.5 * (c - c.next_down());
-    (lo > -half_down && hi < half_up).then_some(c)
+    // The neighbours of the normal, finite c: one unit of the last place away in the bits
+    // (towards zero and away from it; the magnitude's bits are ordered as the magnitudes).
+    let bits = c.to_bits();
+    let (smaller, larger) = (f64::from_bits(bits - 1), f64::from_bits(bits + 1));
+    let (below, above) = if c > 0.0 {
+        (smaller, larger)
+    } else {
+        (larger, smaller)
+    };
+    let half_up = 0.5 * (above - c);
+    let half_down = 0.5 * (c - below);
+    (w - e > -half_down && w + e < half_up).then_some(c)
 }
 
 #[cfg(test)]

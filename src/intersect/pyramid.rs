@@ -77,6 +77,48 @@ pub(super) fn dd_point_bounded(
     dd_point_bounded_body(points, s, bound, level)
 }
 
+/// [`dd_point_bounded`] of two curves at once, `p` at `s` and `q` at `t` (both in [0, 1]),
+/// with their bounds: the same doubles as two calls, in one body (the FMA build when the
+/// processor has it), where the processor can overlap the two pyramids.
+#[inline]
+pub(super) fn dd_points_bounded(
+    (p, s, bound_p): (&[[f64; 2]], f64, f64),
+    (q, t, bound_q): (&[[f64; 2]], f64, f64),
+    level: &mut Vec<Dd>,
+) -> [[Dd; 2]; 2] {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the processor has just been seen to support FMA.
+        #[allow(unsafe_code)]
+        return unsafe { dd_points_bounded_fma((p, s, bound_p), (q, t, bound_q), level) };
+    }
+    dd_points_bounded_body((p, s, bound_p), (q, t, bound_q), level)
+}
+
+/// [`dd_points_bounded`] compiled with FMA enabled; callers make sure the processor has it.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+fn dd_points_bounded_fma(
+    p: (&[[f64; 2]], f64, f64),
+    q: (&[[f64; 2]], f64, f64),
+    level: &mut Vec<Dd>,
+) -> [[Dd; 2]; 2] {
+    dd_points_bounded_body(p, q, level)
+}
+
+/// The body of [`dd_points_bounded`], shared by its two builds.
+#[inline(always)]
+fn dd_points_bounded_body(
+    (p, s, bound_p): (&[[f64; 2]], f64, f64),
+    (q, t, bound_q): (&[[f64; 2]], f64, f64),
+    level: &mut Vec<Dd>,
+) -> [[Dd; 2]; 2] {
+    [
+        dd_point_bounded_body(p, s, bound_p, level),
+        dd_point_bounded_body(q, t, bound_q, level),
+    ]
+}
+
 /// [`dd_point_bounded`] compiled with FMA enabled; callers make sure the processor has it.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "fma")]
@@ -323,6 +365,16 @@ mod tests {
             }
             // And of double-double size: some n u^2 times the points.
             assert!(bound <= 1e-30 * size * n as f64, "{bound:e} for {size:e}");
+            // Two curves at once: the same doubles and bounds as one by one.
+            let other = points(&mut rng, 2 + round % 4, 300);
+            let t = argument(&mut rng);
+            let other_bound = lerp_pyramid_bound(other.len() - 1, 1e300);
+            let [a, b] = dd_points_bounded((&p, s, bound), (&other, t, other_bound), &mut level);
+            let single = dd_point_bounded(&other, t, other_bound, &mut level);
+            assert!(
+                same_dd(&a, &fast) && same_dd(&b, &single),
+                "{p:?} {other:?}"
+            );
         }
     }
 

@@ -8,6 +8,11 @@
 //! * `BezierCurve::subsegment`, `Bezier::subsegment`: the library's returning forms;
 //! * `Bezier::subsegment_into`: into a reused buffer;
 //! * lyon's `CubicBezierSegment::split_range` and kurbo's `ParamCurve::subsegment` (cubic only).
+//!
+//! With the argument `intersect`, only the curve-curve intersections of [`intersect`] run; with
+//! `restrict`, only the restrictions; with none, both.
+
+mod intersect;
 
 use blossom::{Bezier, BezierCurve};
 use std::hint::black_box;
@@ -87,7 +92,12 @@ fn cases<const N: usize, const D: usize>(rng: &mut Rng) -> Cases<N, D> {
         .map(|c| Bezier::new(c.to_vec()).expect("a curve"))
         .collect();
     let curves = beziers.iter().map(BezierCurve::from).collect();
-    Cases { arrays, curves, beziers, ranges }
+    Cases {
+        arrays,
+        curves,
+        beziers,
+        ranges,
+    }
 }
 
 /// One line per library form at degree N - 1 in dimension D; returns the textbook time.
@@ -128,7 +138,8 @@ fn degree_lines<const N: usize, const D: usize>(rng: &mut Rng) {
     let into_ns = median_ns(|| {
         let mut acc = 0.0;
         for (c, &(a, b)) in cs.beziers.iter().zip(&cs.ranges) {
-            c.subsegment_into(&a, &b, &mut out, &mut scratch).expect("sized");
+            c.subsegment_into(&a, &b, &mut out, &mut scratch)
+                .expect("sized");
             acc += sum_points(&out);
         }
         acc
@@ -158,13 +169,27 @@ fn planar_cubic_peers(rng: &mut Rng) {
     let kurbos: Vec<kurbo::CubicBez> = cs
         .arrays
         .iter()
-        .map(|c| kurbo::CubicBez::new((c[0][0], c[0][1]), (c[1][0], c[1][1]), (c[2][0], c[2][1]), (c[3][0], c[3][1])))
+        .map(|c| {
+            kurbo::CubicBez::new(
+                (c[0][0], c[0][1]),
+                (c[1][0], c[1][1]),
+                (c[2][0], c[2][1]),
+                (c[3][0], c[3][1]),
+            )
+        })
         .collect();
     let lyon_ns = median_ns(|| {
         let mut acc = 0.0;
         for (c, &(a, b)) in lyons.iter().zip(&cs.ranges) {
             let s = c.split_range(a..b);
-            acc += s.from.x + s.from.y + s.ctrl1.x + s.ctrl1.y + s.ctrl2.x + s.ctrl2.y + s.to.x + s.to.y;
+            acc += s.from.x
+                + s.from.y
+                + s.ctrl1.x
+                + s.ctrl1.y
+                + s.ctrl2.x
+                + s.ctrl2.y
+                + s.to.x
+                + s.to.y;
         }
         acc
     });
@@ -210,6 +235,14 @@ fn planar_cubic_peers(rng: &mut Rng) {
 }
 
 fn main() {
+    let only = std::env::args().nth(1);
+    if only.as_deref() != Some("restrict") {
+        intersect::intersection_peers();
+        println!();
+    }
+    if only.as_deref() == Some("intersect") {
+        return;
+    }
     let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
     planar_cubic_peers(&mut rng);
     println!();

@@ -41,7 +41,10 @@ fn run<const N: usize>(form: &str, passes: usize) -> f64 {
     let arrays: Vec<[[f64; 3]; N]> = (0..1000)
         .map(|_| std::array::from_fn(|_| std::array::from_fn(|_| rng.next())))
         .collect();
-    let beziers: Vec<Bezier<f64, 3>> = arrays.iter().map(|c| Bezier::new(c.to_vec()).unwrap()).collect();
+    let beziers: Vec<Bezier<f64, 3>> = arrays
+        .iter()
+        .map(|c| Bezier::new(c.to_vec()).unwrap())
+        .collect();
     let curves: Vec<BezierCurve<f64>> = beziers.iter().map(BezierCurve::from).collect();
     let (a, b) = (0.2, 0.7);
     let mut acc = 0.0;
@@ -49,11 +52,28 @@ fn run<const N: usize>(form: &str, passes: usize) -> f64 {
     let mut scratch = Vec::new();
     for _ in 0..passes {
         match form {
-            "textbook" => arrays.iter().for_each(|c| acc += textbook(black_box(c), a, b).iter().flatten().sum::<f64>()),
-            "curve" => curves.iter().for_each(|c| acc += black_box(c).subsegment(a..b).coordinates().iter().sum::<f64>()),
-            "bezier" => beziers.iter().for_each(|c| acc += black_box(c).subsegment(a..b).points().iter().flatten().sum::<f64>()),
+            "textbook" => arrays
+                .iter()
+                .for_each(|c| acc += textbook(black_box(c), a, b).iter().flatten().sum::<f64>()),
+            "curve" => curves.iter().for_each(|c| {
+                acc += black_box(c)
+                    .subsegment(a..b)
+                    .coordinates()
+                    .iter()
+                    .sum::<f64>()
+            }),
+            "bezier" => beziers.iter().for_each(|c| {
+                acc += black_box(c)
+                    .subsegment(a..b)
+                    .points()
+                    .iter()
+                    .flatten()
+                    .sum::<f64>()
+            }),
             "into" => beziers.iter().for_each(|c| {
-                black_box(c).subsegment_into(&a, &b, &mut out, &mut scratch).unwrap();
+                black_box(c)
+                    .subsegment_into(&a, &b, &mut out, &mut scratch)
+                    .unwrap();
                 acc += out.iter().flatten().sum::<f64>()
             }),
             _ => panic!("form"),
@@ -64,7 +84,11 @@ fn run<const N: usize>(form: &str, passes: usize) -> f64 {
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let (form, degree, passes) = (&args[1], args[2].parse::<usize>().unwrap(), args[3].parse::<usize>().unwrap());
+    let (form, degree, passes) = (
+        &args[1],
+        args[2].parse::<usize>().unwrap(),
+        args[3].parse::<usize>().unwrap(),
+    );
     let acc = match degree {
         3 => run::<4>(form, passes),
         5 => run::<6>(form, passes),
