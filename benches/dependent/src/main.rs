@@ -15,22 +15,12 @@
 mod intersect;
 
 use blossom::{Bezier, BezierCurve};
+use blossom_dependent_bench::{textbook, Rng};
 use std::hint::black_box;
 use std::time::Instant;
 
 const CURVES: usize = 100_000;
 const PASSES: usize = 15;
-
-/// xorshift64*, uniform doubles in [0, 1).
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        (self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
 
 /// The median over `PASSES` passes of `pass`, in nanoseconds per curve.
 fn median_ns(mut pass: impl FnMut() -> f64) -> f64 {
@@ -43,27 +33,6 @@ fn median_ns(mut pass: impl FnMut() -> f64) -> f64 {
         .collect();
     times.sort_by(f64::total_cmp);
     times[PASSES / 2]
-}
-
-/// The textbook restriction on a fixed-size array.
-fn textbook<const N: usize, const D: usize>(ctrl: &[[f64; D]; N], a: f64, b: f64) -> [[f64; D]; N] {
-    let mut out = *ctrl;
-    for r in 1..N {
-        for i in (r..N).rev() {
-            for x in 0..D {
-                out[i][x] = out[i - 1][x] + b * (out[i][x] - out[i - 1][x]);
-            }
-        }
-    }
-    let t = a / b;
-    for r in 1..N {
-        for i in 0..N - r {
-            for x in 0..D {
-                out[i][x] += t * (out[i + 1][x] - out[i][x]);
-            }
-        }
-    }
-    out
 }
 
 fn sum_points<const D: usize>(points: &[[f64; D]]) -> f64 {

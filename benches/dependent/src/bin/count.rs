@@ -4,37 +4,8 @@
 //! difference over 10,000 curves.
 
 use blossom::{Bezier, BezierCurve};
+use blossom_dependent_bench::{textbook, Rng};
 use std::hint::black_box;
-
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        (self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
-fn textbook<const N: usize, const D: usize>(ctrl: &[[f64; D]; N], a: f64, b: f64) -> [[f64; D]; N] {
-    let mut out = *ctrl;
-    for r in 1..N {
-        for i in (r..N).rev() {
-            for x in 0..D {
-                out[i][x] = out[i - 1][x] + b * (out[i][x] - out[i - 1][x]);
-            }
-        }
-    }
-    let t = a / b;
-    for r in 1..N {
-        for i in 0..N - r {
-            for x in 0..D {
-                out[i][x] += t * (out[i + 1][x] - out[i][x]);
-            }
-        }
-    }
-    out
-}
 
 fn run<const N: usize>(form: &str, passes: usize) -> f64 {
     let mut rng = Rng(7);
