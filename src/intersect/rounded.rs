@@ -129,8 +129,9 @@ pub(crate) fn rounded_named<T: ExactInput>(
     if let (Some(pd), Some(qd)) = (T::as_doubles(p), T::as_doubles(q)) {
         if let Some(crossings) = certified_crossings_f64(pd.as_chunks().0, qd.as_chunks().0) {
             return Ok(RoundedIntersections {
+                // In place: the answer reuses the filter's vector.
                 points: crossings
-                    .iter()
+                    .into_iter()
                     .map(|c| RoundedPoint {
                         s: c.s,
                         t: c.t,
