@@ -66,20 +66,10 @@ fn ours(p: &Cubic, q: &Cubic) -> Vec<(f64, f64)> {
     found.points.iter().map(|x| (x.s, x.t)).collect()
 }
 
-fn lyon_of(c: &Cubic) -> lyon_geom::CubicBezierSegment<f64> {
-    let p = |i: usize| lyon_geom::point(c[i][0], c[i][1]);
-    lyon_geom::CubicBezierSegment {
-        from: p(0),
-        ctrl1: p(1),
-        ctrl2: p(2),
-        to: p(3),
-    }
-}
-
 /// lyon_geom's answer, sorted by s then t.
 fn lyon(p: &Cubic, q: &Cubic) -> Vec<(f64, f64)> {
-    let mut st: Vec<(f64, f64)> = lyon_of(p)
-        .cubic_intersections_t(&lyon_of(q))
+    let mut st: Vec<(f64, f64)> = common::lyon_cubic(p)
+        .cubic_intersections_t(&common::lyon_cubic(q))
         .into_iter()
         .collect();
     st.sort_by(|a, b| a.partial_cmp(b).expect("finite parameters"));

@@ -29,22 +29,16 @@ fn certified_pass(pairs: &[(Cubic, Cubic)]) -> (usize, usize) {
     (decided, crossings)
 }
 
-fn segment(c: &Cubic) -> lyon_geom::CubicBezierSegment<f64> {
-    let p = |i: usize| lyon_geom::point(c[i][0], c[i][1]);
-    lyon_geom::CubicBezierSegment {
-        from: p(0),
-        ctrl1: p(1),
-        ctrl2: p(2),
-        to: p(3),
-    }
-}
-
 /// lyon_geom's pass on the same pairs: crossings.
 #[inline(never)]
 fn lyon_pass(pairs: &[(Cubic, Cubic)]) -> usize {
     pairs
         .iter()
-        .map(|(p, q)| segment(p).cubic_intersections_t(&segment(q)).len())
+        .map(|(p, q)| {
+            common::lyon_cubic(p)
+                .cubic_intersections_t(&common::lyon_cubic(q))
+                .len()
+        })
         .sum()
 }
 

@@ -1,4 +1,5 @@
-//! What the benches share: one deterministic generator of inputs.
+//! What the benches share: one deterministic generator of inputs, and the cubic of the
+//! comparisons with lyon as lyon_geom's segment.
 
 /// SplitMix64 in [0, 1).
 pub struct Rng(pub u64);
@@ -16,5 +17,18 @@ impl Rng {
     #[allow(dead_code)]
     pub fn point(&mut self) -> [f64; 3] {
         std::array::from_fn(|_| 2.0 * self.unit() - 1.0)
+    }
+}
+
+/// The cubic with control points `c` as lyon_geom's segment (the peer of the intersection
+/// comparisons).
+#[allow(dead_code)]
+pub fn lyon_cubic(c: &[[f64; 2]; 4]) -> lyon_geom::CubicBezierSegment<f64> {
+    let p = |i: usize| lyon_geom::point(c[i][0], c[i][1]);
+    lyon_geom::CubicBezierSegment {
+        from: p(0),
+        ctrl1: p(1),
+        ctrl2: p(2),
+        to: p(3),
     }
 }

@@ -25,16 +25,6 @@ const PAIRS: usize = 10_000;
 const SEED: u64 = 26;
 const PASSES: usize = 21;
 
-fn segment(c: &Cubic) -> lyon_geom::CubicBezierSegment<f64> {
-    let p = |i: usize| lyon_geom::point(c[i][0], c[i][1]);
-    lyon_geom::CubicBezierSegment {
-        from: p(0),
-        ctrl1: p(1),
-        ctrl2: p(2),
-        to: p(3),
-    }
-}
-
 /// One pass of the certified answer: the number of intersections plus the sum of their
 /// parameters.
 fn rounded_pass(pairs: &[(Cubic, Cubic)]) -> f64 {
@@ -102,7 +92,7 @@ pub fn intersection_peers() {
     let pairs: Vec<(Cubic, Cubic)> = (0..PAIRS).map(|_| (cubic(), cubic())).collect();
     let segments: Vec<_> = pairs
         .iter()
-        .map(|(p, q)| (segment(p), segment(q)))
+        .map(|(p, q)| (common::lyon_cubic(p), common::lyon_cubic(q)))
         .collect();
     // The answers agree before they are timed.
     let (mut undecided, mut lyon_differs, mut crossings) = (0, 0, 0);
