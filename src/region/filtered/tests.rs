@@ -92,6 +92,15 @@ fn compare(a: &Region, b: &Region, what: &str) -> usize {
     answered
 }
 
+/// How many times the random tests repeat their corpus (`BLOSSOM_REGION_FUZZ`, default 1): a
+/// longer search for a disagreement, run by hand.
+fn rounds() -> usize {
+    std::env::var("BLOSSOM_REGION_FUZZ")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(1)
+}
+
 fn unit(rng: &mut XorShift) -> f64 {
     (rng.next() >> 11) as f64 / (1u64 << 53) as f64
 }
@@ -100,7 +109,7 @@ fn unit(rng: &mut XorShift) -> f64 {
 fn random_star_pairs_agree_with_the_exact_stages() {
     let mut rng = XorShift(0x5eed_57a2);
     let (mut answered, mut total) = (0, 0);
-    for i in 0..24 {
+    for i in 0..24 * rounds() {
         let n = 4 + 2 * (i % 4);
         let a = star(n, (0.0, 0.0), unit(&mut rng));
         let b = star(
@@ -220,7 +229,7 @@ fn random_triangle(rng: &mut XorShift, corners: [[f64; 2]; 3]) -> Region {
 #[test]
 fn curved_triangle_pairs_take_the_float_path_and_agree() {
     let mut rng = XorShift(0x7e1a_4040);
-    let (mut answered, total) = (0, 60);
+    let (mut answered, total) = (0, 60 * rounds());
     for i in 0..total {
         let t1 = random_triangle(&mut rng, [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]);
         let (dx, dy) = (0.5 * unit(&mut rng), 0.5 * unit(&mut rng));
@@ -280,4 +289,92 @@ fn corner_orientation_agrees_with_the_signed_area() {
     }
     // Smooth outlines (the wavy ones) have no extreme corner: the area decides those.
     assert!(decided * 2 >= total, "corners decided {decided} of {total}");
+}
+
+/// A random loop of `n` cubics around `centre`: vertices at random radii in [0.5, 1] times
+/// `size` at increasing angles, each edge bulging by a random fraction of its length, on
+/// the grid of 2^-12; counter-clockwise unless `reverse`.
+fn random_loop(
+    rng: &mut XorShift,
+    n: usize,
+    centre: [f64; 2],
+    size: f64,
+    reverse: bool,
+) -> Vec<Bezier<f64, 2>> {
+    let snap = |x: f64| (x * 4096.0).round() / 4096.0;
+    let vertices: Vec<[f64; 2]> = (0..n)
+        .map(|k| {
+            let angle = std::f64::consts::TAU * (k as f64 + 0.8 * unit(rng)) / n as f64;
+            let r = size * (0.5 + 0.5 * unit(rng));
+            [
+                snap(centre[0] + r * angle.cos()),
+                snap(centre[1] + r * angle.sin()),
+            ]
+        })
+        .collect();
+    let mut curves: Vec<Vec<[f64; 2]>> = (0..n)
+        .map(|k| {
+            let (p, q) = (vertices[k], vertices[(k + 1) % n]);
+            let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+            let (b1, b2) = (0.4 * (unit(rng) - 0.5), 0.4 * (unit(rng) - 0.5));
+            let c1 = [
+                snap(p[0] + dx / 3.0 + dy * b1),
+                snap(p[1] + dy / 3.0 - dx * b1),
+            ];
+            let c2 = [
+                snap(p[0] + 2.0 * dx / 3.0 + dy * b2),
+                snap(p[1] + 2.0 * dy / 3.0 - dx * b2),
+            ];
+            vec![p, c1, c2, q]
+        })
+        .collect();
+    if reverse {
+        curves.reverse();
+        for c in &mut curves {
+            c.reverse();
+        }
+    }
+    curves
+        .into_iter()
+        .map(|c| Bezier::new(c).unwrap())
+        .collect()
+}
+
+#[test]
+fn random_blobs_with_holes_and_both_fill_rules_agree() {
+    let mut rng = XorShift(0xb10b_5eed);
+    let (mut answered, mut total) = (0, 0);
+    for i in 0..20 * rounds() {
+        let fill = |k: usize| {
+            if k % 2 == 0 {
+                FillRule::NonZero
+            } else {
+                FillRule::EvenOdd
+            }
+        };
+        // A: an outline with, every other time, a hole (reversed) or a nested same-way loop.
+        let mut a = vec![random_loop(&mut rng, 3 + i % 6, [0.0, 0.0], 1.0, false)];
+        if i % 2 == 1 {
+            a.push(random_loop(
+                &mut rng,
+                3 + i % 4,
+                [0.05, 0.0],
+                0.3,
+                i % 4 == 1,
+            ));
+        }
+        let centre = [unit(&mut rng) - 0.5, unit(&mut rng) - 0.5];
+        let b = vec![random_loop(&mut rng, 3 + i % 5, centre, 0.8, i % 3 == 0)];
+        let (a, b) = (
+            Region::from_f64(a, fill(i)).unwrap(),
+            Region::from_f64(b, fill(i / 2)).unwrap(),
+        );
+        answered += compare(&a, &b, &format!("blobs {i}"));
+        total += 4;
+    }
+    // Random bulges can make a loop cross itself (the exact path's case).
+    assert!(
+        answered * 2 >= total,
+        "the float path answered {answered} of {total}"
+    );
 }
