@@ -346,7 +346,7 @@ fn random_blobs_with_holes_and_both_fill_rules_agree() {
     let (mut answered, mut total) = (0, 0);
     for i in 0..20 * rounds() {
         let fill = |k: usize| {
-            if k % 2 == 0 {
+            if k.is_multiple_of(2) {
                 FillRule::NonZero
             } else {
                 FillRule::EvenOdd
