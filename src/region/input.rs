@@ -313,7 +313,7 @@ impl Region {
             ));
         }
         let edges = triangle_edges(degree, &nodes)?;
-        Region::of_doubles(vec![edges.to_vec()], FillRule::NonZero)
+        Region::of_doubles(vec![Vec::from(edges)], FillRule::NonZero)
     }
 
     /// The loops: `loops()[l][c]` is curve c of loop l.

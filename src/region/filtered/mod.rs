@@ -96,7 +96,7 @@ pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Option<RegionResult>
             return None;
         }
     }
-    let arrangement = split::Split::build([doubles[0].as_slice(), doubles[1].as_slice()], true)?;
+    let arrangement = split::Split::build([doubles[0].as_slice(), doubles[1].as_slice()])?;
     let fills = [regions[0].fill(), regions[1].fill()];
     let mut areas = measure::Areas::new(&arrangement);
     let windings = side::loop_windings(&arrangement, &mut areas)?;

@@ -68,20 +68,41 @@ pub(super) fn bbox(points: &[[f64; 2]]) -> [f64; 4] {
 }
 
 /// Whether the loops of one region (`doubles[l][c]`: the control points of curve c of loop
-/// l) are proved simple and pairwise disjoint: each of at least three curves, each curve
-/// one-to-one, consecutive curves meeting only at their join, other curves whose boxes meet
-/// without a common point (module docs of [`super`]).
+/// l) are proved simple and pairwise disjoint: each of at least three curves (a loop of one
+/// or two is left to the exact path), each curve finite and one-to-one, consecutive curves
+/// meeting only at their join, other curves whose boxes meet without a common point (module
+/// docs of [`super`]).
 pub(super) fn simple(doubles: &[Vec<Vec<[f64; 2]>>]) -> bool {
-    Split::build([doubles, &[]], false).is_some()
+    let (mut boxes, mut owner) = (Vec::new(), Vec::new());
+    for (l, curves) in doubles.iter().enumerate() {
+        if curves.len() < 3 {
+            return false;
+        }
+        for (c, points) in curves.iter().enumerate() {
+            if !points.iter().all(|p| p[0].is_finite() && p[1].is_finite())
+                || !one_to_one(points.as_slice())
+            {
+                return false;
+            }
+            boxes.push(bbox(points));
+            owner.push((l, c));
+        }
+    }
+    meeting_boxes(&boxes).into_iter().all(|(i, j)| {
+        let ((li, ci), (lj, cj)) = (owner[i], owner[j]);
+        let (p, q) = (&doubles[li][ci], &doubles[lj][cj]);
+        let len = doubles[li].len();
+        if li == lj && (ci + 1) % len == cj {
+            consecutive_meet_only_at_join(p, q)
+        } else if li == lj && (cj + 1) % len == ci {
+            consecutive_meet_only_at_join(q, p)
+        } else {
+            certified_crossings_f64(p, q).is_some_and(|x| x.is_empty())
+        }
+    })
 }
 
 impl<'a> Split<'a> {
-    /// The curve following `c` in its loop.
-    pub fn next(&self, c: usize) -> usize {
-        let l = &self.loops[self.curves[c].loop_no];
-        l.first + (c - l.first + 1) % l.len
-    }
-
     /// The curve before `c` in its loop.
     pub fn prev(&self, c: usize) -> usize {
         let l = &self.loops[self.curves[c].loop_no];
@@ -89,10 +110,10 @@ impl<'a> Split<'a> {
     }
 
     /// The split of the curves of both regions (`doubles[r][l][c]`: the control points of
-    /// curve c of loop l of region r), or `None` when the configuration is not proved
-    /// generic. With `each_simple`, each region is known to have simple pairwise disjoint
-    /// loops ([`simple`]), and only pairs of curves of different regions are examined.
-    pub fn build(doubles: [&'a [Vec<Vec<[f64; 2]>>]; 2], each_simple: bool) -> Option<Split<'a>> {
+    /// curve c of loop l of region r, each region proved [`simple`]), or `None` when the
+    /// configuration is not proved generic: only pairs of curves of different regions are
+    /// examined.
+    pub fn build(doubles: [&'a [Vec<Vec<[f64; 2]>>]; 2]) -> Option<Split<'a>> {
         let count = |r: &[Vec<Vec<[f64; 2]>>]| r.iter().map(Vec::len).sum::<usize>();
         let curves = count(doubles[0]) + count(doubles[1]);
         let mut split = Split {
@@ -104,11 +125,6 @@ impl<'a> Split<'a> {
         };
         for (region, loops) in doubles.iter().enumerate() {
             for (loop_index, curves) in loops.iter().enumerate() {
-                // A loop of fewer than three curves, or with a curve that is one point, is
-                // not proved simple by the tests below: the exact path takes it.
-                if curves.len() < 3 && !each_simple {
-                    return None;
-                }
                 let loop_no = split.loops.len();
                 split.loops.push(Loop {
                     region,
@@ -116,12 +132,6 @@ impl<'a> Split<'a> {
                     len: curves.len(),
                 });
                 for (curve, points) in curves.iter().enumerate() {
-                    if !each_simple
-                        && (!points.iter().all(|p| p[0].is_finite() && p[1].is_finite())
-                            || !one_to_one(points.as_slice()))
-                    {
-                        return None;
-                    }
                     split.curves.push(Curve {
                         points,
                         id: CurveId {
@@ -138,7 +148,7 @@ impl<'a> Split<'a> {
         split.marks = vec![Vec::new(); split.curves.len()];
         let boxes: Vec<[f64; 4]> = split.curves.iter().map(|c| c.bbox).collect();
         for (i, j) in meeting_boxes(&boxes) {
-            if !(each_simple && split.curves[i].id.region == split.curves[j].id.region) {
+            if split.curves[i].id.region != split.curves[j].id.region {
                 split.pair(i, j)?;
             }
         }
@@ -148,22 +158,13 @@ impl<'a> Split<'a> {
         Some(split)
     }
 
-    /// Records the crossings of curves i < j, or `None` when they are not proved generic.
+    /// Records the crossings of curves i < j of different regions, or `None` when they are
+    /// not proved generic.
     fn pair(&mut self, i: usize, j: usize) -> Option<()> {
         let (p, q) = (self.curves[i].points, self.curves[j].points);
-        if self.next(i) == j {
-            return consecutive_meet_only_at_join(p, q).then_some(());
-        }
-        if self.next(j) == i {
-            return consecutive_meet_only_at_join(q, p).then_some(());
-        }
         let crossings = certified_crossings_f64(p, q)?;
         if crossings.is_empty() {
             return Some(());
-        }
-        // Crossings inside one region (loops crossing themselves or each other): exact path.
-        if self.curves[i].id.region == self.curves[j].id.region {
-            return None;
         }
         let pair = self.pairs.len();
         self.pairs.push([self.curves[i].id, self.curves[j].id]);
