@@ -34,6 +34,8 @@ use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
 mod common;
+#[path = "common/lyon.rs"]
+mod lyon;
 use common::Rng;
 
 /// The number of random cubic pairs.
@@ -68,8 +70,8 @@ fn ours(p: &Cubic, q: &Cubic) -> Vec<(f64, f64)> {
 
 /// lyon_geom's answer, sorted by s then t.
 fn lyon(p: &Cubic, q: &Cubic) -> Vec<(f64, f64)> {
-    let mut st: Vec<(f64, f64)> = common::lyon_cubic(p)
-        .cubic_intersections_t(&common::lyon_cubic(q))
+    let mut st: Vec<(f64, f64)> = lyon::lyon_cubic(p)
+        .cubic_intersections_t(&lyon::lyon_cubic(q))
         .into_iter()
         .collect();
     st.sort_by(|a, b| a.partial_cmp(b).expect("finite parameters"));
@@ -80,16 +82,6 @@ fn pairs(count: usize) -> Vec<(Cubic, Cubic)> {
     let mut rng = Rng(SEED);
     let mut cubic = || -> Cubic { std::array::from_fn(|_| [rng.unit(), rng.unit()]) };
     (0..count).map(|_| (cubic(), cubic())).collect()
-}
-
-/// `$CARGO_TARGET_DIR/intersect` (else `target/intersect` of the workspace), created.
-fn out_dir() -> PathBuf {
-    let target = std::env::var_os("CARGO_TARGET_DIR")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target"));
-    let dir = target.join("intersect");
-    std::fs::create_dir_all(&dir).expect("a writable target directory");
-    dir
 }
 
 fn write_json(path: &PathBuf, value: &serde_json::Value) {
@@ -282,7 +274,7 @@ fn main() {
         .and_then(|v| v.parse().ok())
         .unwrap_or(if quick { 100 } else { PAIRS });
     let pairs = pairs(count);
-    let dir = out_dir();
+    let dir = common::out_dir("intersect");
     let pair_json: Vec<serde_json::Value> = pairs
         .iter()
         .map(|(p, q)| serde_json::json!([p, q]))

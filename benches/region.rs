@@ -21,17 +21,17 @@
 //! Run: `cargo bench -p blossom --bench region`; `cargo bench -p blossom --bench region --
 //! --test` is a quick pass (20 triangle pairs, sizes up to 300).
 
-use blossom::region::{boolean, triangle_intersection, BooleanOp, FillRule, Region};
-use blossom::Bezier;
+use blossom::region::{boolean, triangle_intersection, BooleanOp, Region};
 use criterion::{black_box, Criterion, SamplingMode};
 use std::fmt::Write as _;
-use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
+mod common;
 #[path = "region_peers/src/shapes.rs"]
 #[allow(dead_code)]
 mod shapes;
-use shapes::{Cubic, Triangle};
+use common::median_time;
+use shapes::{region_of, Triangle};
 
 /// The sizes of the scale series (edges per region).
 const SIZES: [usize; 4] = [100, 300, 1000, 3000];
@@ -43,27 +43,9 @@ const CRITERION_LIMIT: Duration = Duration::from_secs(2);
 /// The number of triangle pairs.
 const TRIANGLE_PAIRS: usize = 200;
 
-/// The region of one loop of cubics, nonzero.
-fn region_of(curves: &[Cubic]) -> Region {
-    let loop_ = curves
-        .iter()
-        .map(|c| Bezier::new(c.to_vec()).expect("four points"))
-        .collect();
-    Region::from_f64(vec![loop_], FillRule::NonZero).expect("a closed loop")
-}
-
 /// The region of a quadratic triangle.
 fn triangle_of(t: &Triangle) -> Region {
     Region::triangle_f64(2, t.to_vec()).expect("six finite nodes")
-}
-
-fn out_dir() -> PathBuf {
-    let target = std::env::var_os("CARGO_TARGET_DIR")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target"));
-    let dir = target.join("region");
-    std::fs::create_dir_all(&dir).expect("a writable target directory");
-    dir
 }
 
 fn time_text(seconds: f64) -> String {
@@ -77,18 +59,6 @@ fn time_text(seconds: f64) -> String {
 }
 
 /// The median of `runs` timings of `f`, in seconds.
-fn median_time(runs: usize, mut f: impl FnMut()) -> f64 {
-    let mut times: Vec<f64> = (0..runs)
-        .map(|_| {
-            let start = Instant::now();
-            f();
-            start.elapsed().as_secs_f64()
-        })
-        .collect();
-    times.sort_by(f64::total_cmp);
-    times[runs / 2]
-}
-
 fn main() {
     // `cargo test --benches` passes `--test`: a quick pass.
     let quick = std::env::args().any(|a| a == "--test");
@@ -190,7 +160,7 @@ fn main() {
         })
         .collect();
     std::fs::write(
-        out_dir().join("triangles.json"),
+        common::out_dir("region").join("triangles.json"),
         serde_json::json!({ "degree": 2, "pairs": records, "degenerate": degenerate }).to_string(),
     )
     .expect("a writable target directory");
@@ -262,6 +232,7 @@ fn main() {
         );
     }
     print!("\n{summary}");
-    std::fs::write(out_dir().join("summary.txt"), &summary).expect("a writable target directory");
+    std::fs::write(common::out_dir("region").join("summary.txt"), &summary)
+        .expect("a writable target directory");
     c.final_summary();
 }

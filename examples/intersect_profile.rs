@@ -13,6 +13,8 @@
 
 #[path = "../benches/common/mod.rs"]
 mod common;
+#[path = "../benches/common/lyon.rs"]
+mod lyon;
 
 type Cubic = [[f64; 2]; 4];
 
@@ -35,8 +37,8 @@ fn lyon_pass(pairs: &[(Cubic, Cubic)]) -> usize {
     pairs
         .iter()
         .map(|(p, q)| {
-            common::lyon_cubic(p)
-                .cubic_intersections_t(&common::lyon_cubic(q))
+            lyon::lyon_cubic(p)
+                .cubic_intersections_t(&lyon::lyon_cubic(q))
                 .len()
         })
         .sum()

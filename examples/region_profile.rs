@@ -11,6 +11,8 @@ use blossom::region::{boolean, triangle_intersection, BooleanOp, FillRule, Regio
 use blossom::Bezier;
 use std::time::Instant;
 
+#[path = "../benches/common/mod.rs"]
+mod common;
 #[path = "../benches/region_peers/src/shapes.rs"]
 #[allow(dead_code)]
 mod shapes;

@@ -1,5 +1,6 @@
-//! What the benches share: one deterministic generator of inputs, and the cubic of the
-//! comparisons with lyon as lyon_geom's segment.
+//! What the benches share: one deterministic generator of inputs, the median of timed runs,
+//! and the directory their summaries go to. (The cubic as lyon_geom's segment is in
+//! `lyon.rs`, for the benches that depend on lyon_geom.)
 
 /// SplitMix64 in [0, 1).
 pub struct Rng(pub u64);
@@ -20,15 +21,27 @@ impl Rng {
     }
 }
 
-/// The cubic with control points `c` as lyon_geom's segment (the peer of the intersection
-/// comparisons).
+/// The median over `runs` runs of `f`, in seconds.
 #[allow(dead_code)]
-pub fn lyon_cubic(c: &[[f64; 2]; 4]) -> lyon_geom::CubicBezierSegment<f64> {
-    let p = |i: usize| lyon_geom::point(c[i][0], c[i][1]);
-    lyon_geom::CubicBezierSegment {
-        from: p(0),
-        ctrl1: p(1),
-        ctrl2: p(2),
-        to: p(3),
-    }
+pub fn median_time(runs: usize, mut f: impl FnMut()) -> f64 {
+    let mut times: Vec<f64> = (0..runs)
+        .map(|_| {
+            let start = std::time::Instant::now();
+            f();
+            start.elapsed().as_secs_f64()
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times[runs / 2]
+}
+
+/// `$CARGO_TARGET_DIR/name` (else `target/name` of the root crate), created.
+#[allow(dead_code)]
+pub fn out_dir(name: &str) -> std::path::PathBuf {
+    let target = std::env::var_os("CARGO_TARGET_DIR")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"));
+    let dir = target.join(name);
+    std::fs::create_dir_all(&dir).expect("a writable target directory");
+    dir
 }

@@ -18,6 +18,8 @@ use std::time::Instant;
 
 #[path = "../../common/mod.rs"]
 mod common;
+#[path = "../../common/lyon.rs"]
+mod lyon;
 
 type Cubic = [[f64; 2]; 4];
 
@@ -92,7 +94,7 @@ pub fn intersection_peers() {
     let pairs: Vec<(Cubic, Cubic)> = (0..PAIRS).map(|_| (cubic(), cubic())).collect();
     let segments: Vec<_> = pairs
         .iter()
-        .map(|(p, q)| (common::lyon_cubic(p), common::lyon_cubic(q)))
+        .map(|(p, q)| (lyon::lyon_cubic(p), lyon::lyon_cubic(q)))
         .collect();
     // The answers agree before they are timed.
     let (mut undecided, mut lyon_differs, mut crossings) = (0, 0, 0);

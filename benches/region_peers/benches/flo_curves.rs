@@ -18,25 +18,17 @@
 //! Run: `cd benches/region_peers && CARGO_TARGET_DIR=... cargo bench`. The summary is printed
 //! at the end and written to `$CARGO_TARGET_DIR/region/peers_summary.txt`.
 
-use blossom::region::{boolean, BooleanOp, FillRule, Region};
-use blossom::Bezier;
-use blossom_region_peers::shapes::{self, Cubic, Rng};
+use blossom::region::{boolean, BooleanOp};
+use blossom_region_peers::common::median_time;
+use blossom_region_peers::shapes::{self, region_of, Cubic, Rng};
 use criterion::{black_box, Criterion};
 use flo_curves::bezier::path::{path_add, path_intersect, SimpleBezierPath};
 use flo_curves::Coord2;
 use std::fmt::Write as _;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 /// flo_curves' accuracy argument (its documentation's example value).
 const ACCURACY: f64 = 0.01;
-
-fn region_of(curves: &[Cubic]) -> Region {
-    let loop_ = curves
-        .iter()
-        .map(|c| Bezier::new(c.to_vec()).expect("four points"))
-        .collect();
-    Region::from_f64(vec![loop_], FillRule::NonZero).expect("a closed loop")
-}
 
 fn path_of(curves: &[Cubic]) -> SimpleBezierPath {
     let c = |p: [f64; 2]| Coord2(p[0], p[1]);
@@ -139,18 +131,6 @@ fn flo(a: &SimpleBezierPath, b: &SimpleBezierPath, op: BooleanOp) -> Vec<SimpleB
         BooleanOp::Intersection => path_intersect::<SimpleBezierPath>(&a, &b, ACCURACY),
         _ => path_add::<SimpleBezierPath>(&a, &b, ACCURACY),
     }
-}
-
-fn median_time(runs: usize, mut f: impl FnMut()) -> f64 {
-    let mut times: Vec<f64> = (0..runs)
-        .map(|_| {
-            let start = Instant::now();
-            f();
-            start.elapsed().as_secs_f64()
-        })
-        .collect();
-    times.sort_by(f64::total_cmp);
-    times[runs / 2]
 }
 
 /// A square of straight cubics (handles at thirds), counter-clockwise.

@@ -3,4 +3,6 @@
 //!
 //! Run: `cd benches/region_peers && cargo bench` (see that file for what it prints).
 
+#[path = "../../common/mod.rs"]
+pub mod common;
 pub mod shapes;

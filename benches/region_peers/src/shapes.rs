@@ -8,18 +8,17 @@ use std::f64::consts::PI;
 /// A cubic Bézier curve's four control points.
 pub type Cubic = [[f64; 2]; 4];
 
-/// SplitMix64 in [0, 1).
-pub struct Rng(pub u64);
-
-impl Rng {
-    pub fn unit(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
+/// The region of one loop of cubics, nonzero, for blossom.
+pub fn region_of(curves: &[Cubic]) -> blossom::region::Region {
+    let curves = curves
+        .iter()
+        .map(|c| blossom::Bezier::new(c.to_vec()).expect("four points"))
+        .collect();
+    blossom::region::Region::from_f64(vec![curves], blossom::region::FillRule::NonZero)
+        .expect("a closed loop")
 }
+
+pub use crate::common::Rng;
 
 /// `x` on the grid of 1/4096.
 pub fn snap(x: f64) -> f64 {
