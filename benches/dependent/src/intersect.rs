@@ -16,8 +16,6 @@
 use std::hint::black_box;
 use std::time::Instant;
 
-#[path = "../../common/mod.rs"]
-mod common;
 #[path = "../../common/lyon.rs"]
 mod lyon;
 
@@ -89,7 +87,7 @@ fn median(mut v: Vec<f64>) -> f64 {
 }
 
 pub fn intersection_peers() {
-    let mut rng = common::Rng(SEED);
+    let mut rng = crate::common::Rng(SEED);
     let mut cubic = || -> Cubic { std::array::from_fn(|_| [rng.unit(), rng.unit()]) };
     let pairs: Vec<(Cubic, Cubic)> = (0..PAIRS).map(|_| (cubic(), cubic())).collect();
     let segments: Vec<_> = pairs

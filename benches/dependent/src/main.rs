@@ -10,9 +10,13 @@
 //! * lyon's `CubicBezierSegment::split_range` and kurbo's `ParamCurve::subsegment` (cubic only).
 //!
 //! With the argument `intersect`, only the curve-curve intersections of [`intersect`] run; with
-//! `restrict`, only the restrictions; with none, both.
+//! `region`, only the certified booleans of [`region`]; with `restrict`, only the restrictions;
+//! with none, all three.
 
+#[path = "../../common/mod.rs"]
+mod common;
 mod intersect;
+mod region;
 
 use blossom::{Bezier, BezierCurve};
 use blossom_dependent_bench::{textbook, Rng};
@@ -205,11 +209,16 @@ fn planar_cubic_peers(rng: &mut Rng) {
 
 fn main() {
     let only = std::env::args().nth(1);
-    if only.as_deref() != Some("restrict") {
+    let runs = |part: &str| only.is_none() || only.as_deref() == Some(part);
+    if runs("intersect") {
         intersect::intersection_peers();
         println!();
     }
-    if only.as_deref() == Some("intersect") {
+    if runs("region") {
+        region::region_booleans();
+        println!();
+    }
+    if !runs("restrict") {
         return;
     }
     let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
