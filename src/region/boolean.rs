@@ -89,7 +89,7 @@ pub struct ResultLoop {
 }
 
 /// The regularized result of a boolean as oriented simple loops, with an enclosure of its
-/// area.
+/// area. It keeps (shared handles to) the two input regions its edges are pieces of.
 #[derive(Clone, Debug)]
 pub struct RegionResult {
     /// The loops, in no particular order; none for an empty result.
@@ -98,6 +98,23 @@ pub struct RegionResult {
     /// smallest axis-parallel box holding every input control point (`[0, 0]` for an empty
     /// result).
     pub area: [f64; 2],
+    /// The regions the edges name: `inputs[e.region]`.
+    pub(crate) inputs: [Region; 2],
+}
+
+/// What the stages of a boolean compute: the loops and the area enclosure of
+/// [`RegionResult`], before the inputs are attached.
+pub(crate) struct Outline {
+    pub loops: Vec<ResultLoop>,
+    pub area: [f64; 2],
+}
+
+impl RegionResult {
+    /// The regions whose curves the edges are pieces of: `inputs()[edge.region]` (for
+    /// [`simplify`], the simplified region and the empty region).
+    pub fn inputs(&self) -> &[Region; 2] {
+        &self.inputs
+    }
 }
 
 /// The boolean `op` of the regions `a` and `b`, certified: every decision in it (which pieces
@@ -127,7 +144,44 @@ pub struct RegionResult {
 /// # Errors
 /// None for valid regions today; the `Result` leaves room for limits.
 pub fn boolean(a: &Region, b: &Region, op: BooleanOp) -> Result<RegionResult> {
-    super::pipeline::run(&[a, b], op)
+    let Outline { loops, area } = super::pipeline::run(&[a, b], op)?;
+    Ok(RegionResult {
+        loops,
+        area,
+        inputs: [a.clone(), b.clone()],
+    })
+}
+
+/// The region `a` itself under its own fill rule as regularized simple oriented loops
+/// (overlap removal): overlapping and self-crossing loops merged, the parts whose winding
+/// number the fill rule leaves out removed, parts of zero area dropped. It is the union of
+/// `a` with the empty region, so every edge names `region` 0 and the answer has the form and
+/// the guarantees of [`boolean`].
+///
+/// ```
+/// use blossom::region::{simplify, FillRule, Region};
+/// use blossom::Bezier;
+/// let square = |x: f64, y: f64| -> Vec<Bezier<f64, 2>> {
+///     let c = [[x, y], [x + 2.0, y], [x + 2.0, y + 2.0], [x, y + 2.0]];
+///     (0..4).map(|i| Bezier::new(vec![c[i], c[(i + 1) % 4]]).unwrap()).collect()
+/// };
+/// // Two overlapping squares in one region: one loop of area 7 after overlap removal.
+/// let a = Region::from_f64(vec![square(0.0, 0.0), square(1.0, 1.0)], FillRule::NonZero)?;
+/// let r = simplify(&a)?;
+/// assert_eq!(r.loops.len(), 1);
+/// assert!(r.area[0] <= 7.0 && 7.0 <= r.area[1]);
+/// # Ok::<(), blossom::Error>(())
+/// ```
+///
+/// # Errors
+/// As [`boolean`].
+pub fn simplify(a: &Region) -> Result<RegionResult> {
+    boolean(a, &Region::empty(a.fill()), BooleanOp::Union)
+}
+
+/// The estimated work of [`simplify`], as [`boolean_work`].
+pub fn simplify_work(a: &Region) -> u128 {
+    boolean_work(a, &Region::empty(a.fill()))
 }
 
 /// The intersection of the regions of two planar Bézier triangles (build them with

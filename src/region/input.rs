@@ -64,8 +64,15 @@ impl FillRule {
 /// assert_eq!(square.contains(&inside), Position::Inside);
 /// # Ok::<(), blossom::Error>(())
 /// ```
+///
+/// A `Region` is a shared handle: cloning it is cheap (one reference count), and what is
+/// proved about it once (its loops' simplicity, its exact curves) is kept for every clone.
 #[derive(Clone, Debug)]
-pub struct Region {
+pub struct Region(Arc<RegionData>);
+
+/// The data behind a [`Region`].
+#[derive(Debug)]
+struct RegionData {
     /// The exact curves: given, or made from `doubles` on first use.
     loops: OnceLock<Vec<Vec<Bezier<Rational, 2>>>>,
     fill: FillRule,
@@ -80,7 +87,8 @@ pub struct Region {
 impl PartialEq for Region {
     /// The same loops of the same curves and the same fill rule.
     fn eq(&self, other: &Self) -> bool {
-        self.loops() == other.loops() && self.fill == other.fill
+        Arc::ptr_eq(&self.0, &other.0)
+            || (self.fill() == other.fill() && self.loops() == other.loops())
     }
 }
 
@@ -209,12 +217,12 @@ impl Region {
             .collect();
         validate(&points, show)?;
         let doubles = as_doubles(&loops).map(Arc::new);
-        Ok(Region {
+        Ok(Region(Arc::new(RegionData {
             loops: OnceLock::from(loops),
             fill,
             doubles,
             simple: OnceLock::new(),
-        })
+        })))
     }
 
     /// [`Region::new`] of control points given as doubles, each read exactly.
@@ -251,12 +259,12 @@ impl Region {
             .map(|curves| curves.iter().map(Vec::as_slice).collect())
             .collect();
         validate(&points, |p| show(&[exact_f64(p[0]), exact_f64(p[1])]))?;
-        Ok(Region {
+        Ok(Region(Arc::new(RegionData {
             loops: OnceLock::new(),
             fill,
             doubles: Some(Arc::new(doubles)),
             simple: OnceLock::new(),
-        })
+        })))
     }
 
     /// The region of the planar Bézier triangle of degree `degree` with `nodes` in the spec's
@@ -316,10 +324,26 @@ impl Region {
         Region::of_doubles(vec![Vec::from(edges)], FillRule::NonZero)
     }
 
+    /// The empty region (no loops) under `fill`.
+    ///
+    /// ```
+    /// use blossom::region::{FillRule, Region};
+    /// assert!(Region::empty(FillRule::NonZero).loops().is_empty());
+    /// ```
+    pub fn empty(fill: FillRule) -> Region {
+        Region(Arc::new(RegionData {
+            loops: OnceLock::from(Vec::new()),
+            fill,
+            doubles: Some(Arc::new(Vec::new())),
+            simple: OnceLock::new(),
+        }))
+    }
+
     /// The loops: `loops()[l][c]` is curve c of loop l.
     pub fn loops(&self) -> &[Vec<Bezier<Rational, 2>>] {
-        self.loops.get_or_init(|| {
+        self.0.loops.get_or_init(|| {
             let doubles = self
+                .0
                 .doubles
                 .as_ref()
                 .expect("a region without its exact curves was made from doubles");
@@ -343,19 +367,19 @@ impl Region {
 
     /// The fill rule.
     pub fn fill(&self) -> FillRule {
-        self.fill
+        self.0.fill
     }
 
     /// The control points as doubles, loop by loop and curve by curve, when every input
     /// coordinate is a double exactly.
     pub(crate) fn doubles(&self) -> Option<&Arc<Doubles>> {
-        self.doubles.as_ref()
+        self.0.doubles.as_ref()
     }
 
     /// Whether the float path proved the region's loops simple and pairwise disjoint, by
     /// `prove` on the first call.
     pub(crate) fn proved_simple(&self, prove: impl FnOnce() -> bool) -> bool {
-        *self.simple.get_or_init(prove)
+        *self.0.simple.get_or_init(prove)
     }
 }
 

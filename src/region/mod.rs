@@ -114,7 +114,8 @@ mod tests_curved;
 mod tests_grid;
 
 pub use boolean::{
-    boolean, boolean_work, triangle_intersection, BooleanOp, Edge, RegionResult, ResultLoop,
+    boolean, boolean_work, simplify, simplify_work, triangle_intersection, BooleanOp, Edge,
+    RegionResult, ResultLoop,
 };
 pub use input::{FillRule, Region, MAX_REGION_DEGREE};
 pub use parameter::Parameter;

@@ -3,7 +3,7 @@
 
 use super::area::{loop_terms, refine_sum};
 use super::arrangement::{candidate_pairs, one_to_one, proved_join, Arrangement, CurveId};
-use super::boolean::{BooleanOp, Edge, RegionResult, ResultLoop};
+use super::boolean::{BooleanOp, Edge, Outline, ResultLoop};
 use super::chain::chain;
 use super::classify::boundary_groups;
 use super::curve::{f64_down, f64_up, is_double, Curve};
@@ -68,7 +68,7 @@ fn box_area(regions: &[&Region; 2]) -> Rational {
 
 /// The boolean `op` of the two regions: the float path ([`super::filtered`]) when it
 /// proves the configuration generic, else the exact stages.
-pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Result<RegionResult> {
+pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Result<Outline> {
     match super::filtered::run(regions, op) {
         Some(answer) => Ok(answer),
         None => run_exact(regions, op),
@@ -76,13 +76,13 @@ pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Result<RegionResult>
 }
 
 /// The boolean `op` of the two regions by the exact stages.
-pub(crate) fn run_exact(regions: &[&Region; 2], op: BooleanOp) -> Result<RegionResult> {
+pub(crate) fn run_exact(regions: &[&Region; 2], op: BooleanOp) -> Result<Outline> {
     let (curves, ids, next) = collect(regions);
     let arr = Arrangement::build(curves, ids, &next)?;
     let verdicts = boundary_groups(&arr, [regions[0].fill(), regions[1].fill()], op);
     let loops = chain(&arr, &verdicts);
     if loops.is_empty() {
-        return Ok(RegionResult {
+        return Ok(Outline {
             loops: Vec::new(),
             area: [0.0, 0.0],
         });
@@ -117,7 +117,7 @@ pub(crate) fn run_exact(regions: &[&Region; 2], op: BooleanOp) -> Result<RegionR
     // number not above B in magnitude (the result lies in the box), 2^-52 B.
     let target = box_area(regions) / Rational::from_integer(BigInt::one() << 42);
     let (lo, hi) = refine_sum(&mut all_terms, |lo, hi| hi - lo <= target);
-    Ok(RegionResult {
+    Ok(Outline {
         loops: out,
         area: [f64_down(&lo), f64_up(&hi)],
     })

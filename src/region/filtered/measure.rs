@@ -22,7 +22,7 @@ use super::walk::BoundaryLoop;
 use crate::intersect::interval::{lower, upper, ConvexStep};
 use crate::num::bounded::{BoundedF64, UNIT_ROUNDOFF};
 use crate::num::ring::Ring;
-use crate::region::boolean::{Edge, RegionResult, ResultLoop};
+use crate::region::boolean::{Edge, Outline, ResultLoop};
 use crate::region::input::Doubles;
 use crate::region::input::MAX_REGION_DEGREE;
 use crate::region::parameter::{Crossings, Parameter};
@@ -264,7 +264,7 @@ pub(super) fn answer(
     areas: &mut Areas<'_, '_>,
     loops: Vec<BoundaryLoop>,
     doubles: [&Arc<Doubles>; 2],
-) -> Option<RegionResult> {
+) -> Option<Outline> {
     let split = areas.split;
     let mut all = None;
     let mut total = BoundedF64::exact(0.0);
@@ -288,7 +288,7 @@ pub(super) fn answer(
         out.push(ResultLoop { hole, edges });
     }
     if out.is_empty() {
-        return Some(RegionResult {
+        return Some(Outline {
             loops: out,
             area: [0.0, 0.0],
         });
@@ -307,5 +307,5 @@ pub(super) fn answer(
             ]
         });
     let big_b = (b[2] - b[0]) * (b[3] - b[1]) * (1.0 - 4.0 * UNIT_ROUNDOFF);
-    (area[1] - area[0] <= big_b * 2f64.powi(-40)).then_some(RegionResult { loops: out, area })
+    (area[1] - area[0] <= big_b * 2f64.powi(-40)).then_some(Outline { loops: out, area })
 }

@@ -44,7 +44,7 @@ mod side;
 mod split;
 mod walk;
 
-use super::boolean::{BooleanOp, RegionResult};
+use super::boolean::{BooleanOp, Outline};
 use super::input::Region;
 
 /// The cost of a cross-region pair of curves whose boxes meet, in nanoseconds: the float
@@ -89,7 +89,7 @@ pub(crate) fn work(regions: &[&Region; 2]) -> Option<u128> {
 
 /// The boolean `op` of the two regions when every input number is a double and the
 /// configuration is proved generic (module docs), else `None`.
-pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Option<RegionResult> {
+pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Option<Outline> {
     let doubles = [regions[0].doubles()?, regions[1].doubles()?];
     for (region, d) in regions.iter().zip(doubles) {
         if !region.proved_simple(|| split::simple(d)) {

@@ -4,7 +4,7 @@
 //! fallback).
 
 use super::run;
-use crate::region::boolean::{BooleanOp, RegionResult};
+use crate::region::boolean::{BooleanOp, Outline};
 use crate::region::input::{FillRule, Region};
 use crate::region::pipeline::run_exact;
 use crate::region::tests::{star, wavy};
@@ -23,7 +23,7 @@ const OPS: [BooleanOp; 4] = [
 type Key = (usize, usize, usize, u64, u64);
 
 /// Each loop rotated to start at its least edge, with its hole flag, the loops sorted.
-fn canonical(r: &RegionResult) -> Vec<(bool, Vec<Key>)> {
+fn canonical(r: &Outline) -> Vec<(bool, Vec<Key>)> {
     let mut loops: Vec<(bool, Vec<Key>)> = r
         .loops
         .iter()
@@ -51,7 +51,7 @@ fn canonical(r: &RegionResult) -> Vec<(bool, Vec<Key>)> {
 }
 
 /// Asserts that the two answers are the same answer, parameters compared exactly.
-fn assert_same(fast: &RegionResult, exact: &RegionResult, what: &str) {
+fn assert_same(fast: &Outline, exact: &Outline, what: &str) {
     assert_eq!(canonical(fast), canonical(exact), "{what}: loops differ");
     assert!(
         fast.area[0] <= exact.area[1] && exact.area[0] <= fast.area[1],
