@@ -115,7 +115,7 @@ mod tests_grid;
 
 pub use boolean::{
     boolean, boolean_work, simplify, simplify_work, triangle_intersection, BooleanOp, Edge,
-    RegionResult, ResultLoop,
+    RegionResult, Report, ResultLoop,
 };
 pub use input::{FillRule, Region, MAX_REGION_DEGREE};
 pub use parameter::Parameter;

@@ -80,9 +80,9 @@ pub(super) fn bbox(points: &[[f64; 2]]) -> [f64; 4] {
     b
 }
 
-/// How the contacts were decided: the counts a caller sees in [`super::Report`].
+/// How the contacts were decided (the counts of [`Report`](crate::region::Report)).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct ContactCounts {
+pub(super) struct ContactCounts {
     /// Pairs of curves whose boxes meet.
     pub pairs: usize,
     /// Pairs proved by the float filter (crossings or nothing).
