@@ -100,7 +100,7 @@ fn successor(graph: &Graph<'_>, around: &Around, h: usize) -> usize {
 /// The signed number of pieces of each region in h's group running h's way.
 fn across(graph: &Graph<'_>, h: usize) -> [i64; 2] {
     let m = graph.multiplicity(h / 2);
-    if h % 2 == 0 {
+    if h.is_multiple_of(2) {
         m
     } else {
         [-m[0], -m[1]]

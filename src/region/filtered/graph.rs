@@ -405,7 +405,7 @@ impl Graph<'_> {
     /// Half-edge h as (curve, index of the parameter it leaves, index it runs toward).
     pub fn branch(&self, h: usize) -> (usize, usize, usize) {
         let p = &self.pieces[self.groups[h / 2].rep];
-        if h % 2 == 0 {
+        if h.is_multiple_of(2) {
             (p.curve, p.k, p.k + 1)
         } else {
             (p.curve, p.k + 1, p.k)
