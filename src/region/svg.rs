@@ -477,3 +477,321 @@ impl Region {
         Region::new(parse_svg_path(d, parse_rational)?, fill)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::parse_svg_path;
+    use crate::error::{ErrorKind, Result};
+    use crate::intersect::algebraic::exact_f64;
+    use crate::num::parse::{parse_f64, parse_rational};
+    use crate::num::ring::Rational;
+    use crate::region::{FillRule, Position, Region};
+    use crate::shape::array::Bezier;
+
+    /// A rational from a decimal text (the test's own notation for expected points).
+    fn r(text: &str) -> Rational {
+        parse_rational(text).unwrap()
+    }
+
+    /// Expected curves: each a list of points `"x y"`.
+    fn curves(expected: &[&[&str]]) -> Vec<Bezier<Rational, 2>> {
+        expected
+            .iter()
+            .map(|points| {
+                let points = points
+                    .iter()
+                    .map(|p| {
+                        let (x, y) = p.split_once(' ').unwrap();
+                        [r(x), r(y)]
+                    })
+                    .collect();
+                Bezier::new(points).unwrap()
+            })
+            .collect()
+    }
+
+    fn parse(d: &str) -> Vec<Vec<Bezier<Rational, 2>>> {
+        parse_svg_path(d, parse_rational).unwrap_or_else(|e| panic!("{d}: {e}"))
+    }
+
+    /// The message of the error of `d`, with its kind and an empty field.
+    fn error(d: &str) -> (ErrorKind, String) {
+        let e = parse_svg_path(d, parse_rational).unwrap_err();
+        assert_eq!(e.field, "", "{d}");
+        (e.kind, e.message)
+    }
+
+    #[test]
+    fn every_command_absolute_and_relative() {
+        // M L H V Q T C S Z, each form; the last segment ends at the start (no closing line).
+        let absolute = "M 1 2 L 3 2 H 5 V 4 Q 6 5 5 6 T 3 6 C 2 7 1 7 1 6 S 0 3 1 2 Z";
+        let relative = "m 1 2 l 2 0 h 2 v 2 q 1 1 0 2 t -2 0 c -1 1 -2 1 -2 0 s -1 -3 0 -4 z";
+        let want = curves(&[
+            &["1 2", "3 2"],
+            &["3 2", "5 2"],
+            &["5 2", "5 4"],
+            &["5 4", "6 5", "5 6"],
+            // T reflects Q's control point (6, 5) about (5, 6): (4, 7).
+            &["5 6", "4 7", "3 6"],
+            &["3 6", "2 7", "1 7", "1 6"],
+            // S reflects C's second control point (1, 7) about (1, 6): (1, 5).
+            &["1 6", "1 5", "0 3", "1 2"],
+        ]);
+        assert_eq!(parse(absolute), vec![want.clone()]);
+        assert_eq!(parse(relative), vec![want]);
+    }
+
+    #[test]
+    fn reflections_follow_svg() {
+        // T after T reflects the reflected point; T after L uses the current point.
+        let got = parse("M 0 0 Q 1 1 2 0 T 4 0 T 6 0 L 6 -3 T 0 -3");
+        let want = curves(&[
+            &["0 0", "1 1", "2 0"],
+            &["2 0", "3 -1", "4 0"],
+            &["4 0", "5 1", "6 0"],
+            &["6 0", "6 -3"],
+            &["6 -3", "6 -3", "0 -3"],
+            &["0 -3", "0 0"],
+        ]);
+        assert_eq!(got, vec![want]);
+        // S after S reflects the second control point of the S; S after Q (not a C) and
+        // after M use the current point; T after C uses the current point.
+        let got = parse("M 0 0 S 1 1 2 0 S 3 -2 4 0 Q 5 1 6 0 S 7 -1 8 0 T 9 1 L 0 1");
+        let want = curves(&[
+            &["0 0", "0 0", "1 1", "2 0"],
+            &["2 0", "3 -1", "3 -2", "4 0"],
+            &["4 0", "5 1", "6 0"],
+            &["6 0", "6 0", "7 -1", "8 0"],
+            &["8 0", "8 0", "9 1"],
+            &["9 1", "0 1"],
+            &["0 1", "0 0"],
+        ]);
+        assert_eq!(got, vec![want]);
+        // Relative T and S reflect the same way.
+        let got = parse("m 0 0 q 1 1 2 0 t 2 0 c 1 1 2 1 2 0 s 2 -1 2 0 z");
+        let want = curves(&[
+            &["0 0", "1 1", "2 0"],
+            &["2 0", "3 -1", "4 0"],
+            &["4 0", "5 1", "6 1", "6 0"],
+            &["6 0", "6 -1", "8 -1", "8 0"],
+            &["8 0", "0 0"],
+        ]);
+        assert_eq!(got, vec![want]);
+        // A reflection does not cross a subpath: M and Z reset it.
+        let got = parse("M 0 0 Q 1 1 2 0 Z T 0 -2 L 0 0 M 5 5 C 6 6 7 6 8 5 M 0 0 S 1 1 2 0");
+        assert_eq!(got[1][0], curves(&[&["0 0", "0 0", "0 -2"]])[0]);
+        assert_eq!(got[3][0], curves(&[&["0 0", "0 0", "1 1", "2 0"]])[0]);
+    }
+
+    #[test]
+    fn implicit_repeats_separators_and_numbers() {
+        let square = vec![curves(&[
+            &["0 0", "2 0"],
+            &["2 0", "2 2"],
+            &["2 2", "0 2"],
+            &["0 2", "0 0"],
+        ])];
+        for d in [
+            "M 0 0 L 2 0 L 2 2 L 0 2 Z",
+            "M0,0 2,0 2,2 0,2z",
+            "M0 0L2 0 2 2 0 2",
+            "m 0 0 2 0 0 2 -2 0 z",
+            "M 0 , 0 H 2 V 2 H 0 V 0 Z",
+            "\t\n M0\r\n0h2v2h-2\x0Cz  ",
+            "M0,0h+2v2.h-2e0v-.2e1Z",
+        ] {
+            let got = parse(d);
+            assert_eq!(got, square, "{d}");
+        }
+        // Implicit repeats of H and V.
+        let got = parse("M0 0 h1 1 v1 1 H0");
+        let want = curves(&[
+            &["0 0", "1 0"],
+            &["1 0", "2 0"],
+            &["2 0", "2 1"],
+            &["2 1", "2 2"],
+            &["2 2", "0 2"],
+            &["0 2", "0 0"],
+        ]);
+        assert_eq!(got, vec![want]);
+        // Number boundaries: "-.5.5" is -.5 then .5, "1-2" is 1 then -2, "1e1.5" is 10
+        // then .5, "3e" is not an exponent (e is then a command letter).
+        let got = parse("M-.5.5L1-2 1e1.5 2E-1+3");
+        let want = curves(&[
+            &["-0.5 0.5", "1 -2"],
+            &["1 -2", "10 0.5"],
+            &["10 0.5", "0.2 3"],
+            &["0.2 3", "-0.5 0.5"],
+        ]);
+        assert_eq!(got, vec![want]);
+        let (kind, message) = error("M 3e 1 L 2 2");
+        assert_eq!(
+            (kind, message.as_str()),
+            (
+                ErrorKind::Invalid,
+                "at 3: expected a number ('M' takes 2 per segment), found 'e'"
+            )
+        );
+        // Numbers are read exactly: 0.1 + 0.2 is 3/10, not the sum of doubles.
+        let got = parse("M 0.1 0 l 0.2 0 l 0 1");
+        assert_eq!(got[0][0].points()[1][0], r("0.3"));
+        // As doubles, then added exactly.
+        let doubles =
+            parse_svg_path("M 0.1 0 l 0.2 0 l 0 1", |t| parse_f64(t).map(exact_f64)).unwrap();
+        let sum = exact_f64(0.1) + exact_f64(0.2);
+        assert_eq!(doubles[0][0].points()[1][0], sum);
+        assert_ne!(sum, exact_f64(0.1 + 0.2));
+    }
+
+    #[test]
+    fn subpaths_closing_dropping_and_starting_after_z() {
+        // After Z a relative command starts at the closed subpath's start.
+        let got = parse("M 1 1 L 3 1 L 1 3 Z l 0 -1 l -1 1 z");
+        assert_eq!(got.len(), 2);
+        assert_eq!(
+            got[1],
+            curves(&[&["1 1", "1 0"], &["1 0", "0 1"], &["0 1", "1 1"]])
+        );
+        // After Z, m is relative to the start too.
+        let got = parse("M 1 1 h 1 v 1 z m 2 0 h 1 v 1 z");
+        assert_eq!(got[1][0], curves(&[&["3 1", "4 1"]])[0]);
+        // Unclosed subpaths are closed by a line, before M and at the end.
+        let got = parse("M 0 0 L 1 0 L 0 1 M 5 5 Q 6 6 5 7");
+        assert_eq!(got[0].len(), 3);
+        assert_eq!(got[0][2], curves(&[&["0 1", "0 0"]])[0]);
+        assert_eq!(got[1][1], curves(&[&["5 7", "5 5"]])[0]);
+        // A subpath ending at its start gets no closing line; one going out and back is kept.
+        assert_eq!(parse("M 0 0 L 1 0 L 0 0 Z")[0].len(), 2);
+        assert_eq!(parse("M 0 0 Q 1 1 0 0")[0].len(), 1);
+        // Zero-length subpaths are dropped, zero-length segments in kept ones kept.
+        for d in [
+            "",
+            "  \n",
+            "M 1 2",
+            "M 1 2 Z",
+            "m 1 2 z z",
+            "M 1 2 L 1 2 Z",
+            "M 1 2 C 1 2 1 2 1 2",
+        ] {
+            assert!(parse(d).is_empty(), "{d:?}");
+        }
+        let got = parse("M 9 9 M 0 0 L 0 0 L 1 0 L 0 1 Z M 4 4 Z");
+        assert_eq!(got.len(), 1);
+        assert_eq!(got[0].len(), 4);
+        assert_eq!(got[0][0], curves(&[&["0 0", "0 0"]])[0]);
+        // The empty path is the empty region.
+        assert!(Region::from_svg_path("M 1 1", FillRule::EvenOdd)
+            .unwrap()
+            .loops()
+            .is_empty());
+    }
+
+    #[test]
+    fn regions_of_path_data() {
+        // Two nested squares, the inner one the same way round: evenodd makes it a hole.
+        let d = "M0 0H4V4H0Z M1 1h2v2h-2z";
+        let half = [r("1/2"), r("1/2")];
+        let middle = [r("2"), r("2")];
+        let even = Region::from_svg_path(d, FillRule::EvenOdd).unwrap();
+        let nonzero = Region::from_svg_path(d, FillRule::NonZero).unwrap();
+        assert_eq!(even.fill(), FillRule::EvenOdd);
+        assert_eq!(even.contains(&half), Position::Inside);
+        assert_eq!(even.contains(&middle), Position::Outside);
+        assert_eq!(nonzero.contains(&middle), Position::Inside);
+        assert_eq!(nonzero.winding(&middle), crate::region::Winding::Number(2));
+    }
+
+    #[test]
+    fn errors_name_the_offset() {
+        let cases: [(&str, ErrorKind, &str); 13] = [
+            (
+                "M 0 0 L 1 0 A 1 1 0 0 1 0 0",
+                ErrorKind::Invalid,
+                "at 12: arcs (A) are not polynomial curves; convert them to cubics",
+            ),
+            (
+                "M0 0a1 1 0 0 1 2 2",
+                ErrorKind::Invalid,
+                "at 4: arcs (A) are not polynomial curves; convert them to cubics",
+            ),
+            (
+                "M 0 0 X 1",
+                ErrorKind::UnknownName,
+                "at 6: unknown command 'X'",
+            ),
+            (
+                "M 0 0 L 1 1 é",
+                ErrorKind::UnknownName,
+                "at 12: unknown command 'é'",
+            ),
+            ("B 1 2", ErrorKind::UnknownName, "at 0: unknown command 'B'"),
+            (
+                "  L 1 2",
+                ErrorKind::Invalid,
+                "at 2: path data must start with M or m, found 'L'",
+            ),
+            (
+                "1 2",
+                ErrorKind::Invalid,
+                "at 0: path data must start with M or m, found '1'",
+            ),
+            (
+                "M 0",
+                ErrorKind::Invalid,
+                "at 3: expected a number ('M' takes 2 per segment), found the end of the data",
+            ),
+            (
+                "M 0 0 c 1 1 2 Z",
+                ErrorKind::Invalid,
+                "at 14: expected a number ('c' takes 6 per segment), found 'Z'",
+            ),
+            (
+                "M,0 0",
+                ErrorKind::Invalid,
+                "at 1: expected a number ('M' takes 2 per segment), found ','",
+            ),
+            (
+                "M 0 0 L 1 1, Z",
+                ErrorKind::Invalid,
+                "at 13: expected a number after ',' ('L' takes 2 per segment), found 'Z'",
+            ),
+            (
+                "M 0 0 L 1 1,, 2 2",
+                ErrorKind::Invalid,
+                "at 12: expected a number after ',' ('L' takes 2 per segment), found ','",
+            ),
+            (
+                "M 0 0 H 1 V 1 Z 3",
+                ErrorKind::Invalid,
+                "at 16: expected a command letter, found '3'",
+            ),
+        ];
+        for (d, kind, message) in cases {
+            assert_eq!(error(d), (kind, message.to_string()), "{d}");
+        }
+        // The reader's own errors pass through with the offset.
+        let (kind, message) = error("M 0 0 L 1e999999 0");
+        assert_eq!(kind, ErrorKind::TooLarge);
+        assert!(message.starts_with("at 8: the exponent"), "{message}");
+        let e = parse_svg_path("M 0 0 L 1 x", |t: &str| -> Result<Rational> {
+            parse_rational(t)
+        })
+        .unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "at 10: expected a number ('L' takes 2 per segment), found 'x'"
+        );
+        let e = parse_svg_path("M 0 0 L 7 1", |t: &str| {
+            if t == "7" {
+                Err(crate::Error::of(ErrorKind::Domain, "", "seven"))
+            } else {
+                parse_rational(t)
+            }
+        })
+        .unwrap_err();
+        assert_eq!(
+            (e.kind, e.message.as_str()),
+            (ErrorKind::Domain, "at 8: seven")
+        );
+    }
+}
