@@ -36,7 +36,7 @@ impl Region {
     /// let r = Region::from_bez_path(&path, FillRule::NonZero)?;
     /// assert_eq!(r.loops()[0].len(), 4);
     /// let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
-    /// assert_eq!(r.contains(&[q(5, 2), q(1, 1)]), Position::Inside);
+    /// assert_eq!(r.contains(&[q(9, 4), q(1, 1)]), Position::Inside);
     /// # Ok::<(), blossom::Error>(())
     /// ```
     ///

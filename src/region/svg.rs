@@ -388,7 +388,7 @@ fn draw(
 ///
 /// ```
 /// use blossom::region::parse_svg_path;
-/// use blossom::{parse_rational, Bezier, Rational};
+/// use blossom::{parse_rational, Rational};
 /// let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
 /// let loops = parse_svg_path("M 0 0 h 1 q .5 1 0 1 Z", parse_rational)?;
 /// assert_eq!(loops.len(), 1);
@@ -464,7 +464,8 @@ impl Region {
     /// // A 2 x 2 square with a quadratic bulge on top; 0.1 is read as 1/10 exactly.
     /// let r = Region::from_svg_path("M0,0 2,0 2,2 Q1,3 0,2z", FillRule::NonZero)?;
     /// assert_eq!(r.loops()[0].len(), 4);
-    /// assert_eq!(r.contains(&[q(1, 1), q(5, 2)]), Position::Inside);
+    /// assert_eq!(r.contains(&[q(1, 1), q(9, 4)]), Position::Inside);
+/// assert_eq!(r.contains(&[q(1, 1), q(5, 2)]), Position::Boundary);
     /// assert_eq!(r.contains(&[q(1, 1), q(1, 10)]), Position::Inside);
     /// let e = Region::from_svg_path("M 0 0 A 1 1 0 0 1 2 0", FillRule::NonZero).unwrap_err();
     /// assert_eq!(e.to_string(), "at 6: arcs (A) are not polynomial curves; convert them to cubics");
