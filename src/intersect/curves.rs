@@ -18,6 +18,7 @@ use super::bivariate::BiPoly;
 use super::bivariate::{resultant_t, swap};
 use super::components::{common_component, retracing};
 use super::filter::certified_crossings_f64;
+use super::line::{curve_and_segment, segment_and_curve};
 use super::solve::{solve, Solution};
 use super::upoly::{self, from_rationals, square_free_part};
 use super::zeros::roots_with_multiplicity;
@@ -240,6 +241,28 @@ pub(crate) fn intersect_named(
     if let Some(answer) = single_point_pair(&pp, &qq) {
         return Ok(answer);
     }
+    // A segment: the exact answer without resultants (module `line`).
+    if p.len() == 2 {
+        if let Some((points, overlaps)) = segment_and_curve(p, q, &qq.x, &qq.y) {
+            return Ok(finish(points, overlaps));
+        }
+    } else if q.len() == 2 {
+        if let Some(found) = segment_and_curve(q, p, &pp.x, &pp.y) {
+            let (points, overlaps) = curve_and_segment(found);
+            return Ok(finish(points, overlaps));
+        }
+    }
+    general(p, q, &pp, &qq)
+}
+
+/// The general exact solver of [`intersect_named`] (resultants, overlaps by common
+/// components), for any two curves that are not single points.
+fn general(
+    p: &[[Rational; 2]],
+    q: &[[Rational; 2]],
+    pp: &Power,
+    qq: &Power,
+) -> Result<Intersections> {
     let a = separated(&pp.x, &qq.x);
     let b = separated(&pp.y, &qq.y);
     if let Some(points) = filtered(p, q, &a, &b) {
@@ -250,11 +273,11 @@ pub(crate) fn intersect_named(
         Some(solutions) => {
             let points = solutions
                 .into_iter()
-                .map(|s| point_of(&pp, Some(&qq), s))
+                .map(|s| point_of(pp, Some(qq), s))
                 .collect();
             Ok(finish(points, Vec::new()))
         }
-        None => overlap_case(&pp, &qq),
+        None => overlap_case(pp, qq),
     }
 }
 
@@ -549,4 +572,12 @@ pub(crate) fn self_intersections_named(p: &[[Rational; 2]], name: &str) -> Resul
 /// [`ErrorKind::NotFinite`] on `curve[i][j]`, else as [`self_intersections`].
 pub fn self_intersections_f64(p: &[[f64; 2]]) -> Result<Intersections> {
     self_intersections(&exact_points("curve", p)?)
+}
+
+/// The general solver alone on two curves (no segment shortcut), for the tests of the
+/// shortcut against it.
+#[cfg(test)]
+pub(crate) fn intersect_general(p: &[[Rational; 2]], q: &[[Rational; 2]]) -> Result<Intersections> {
+    let (pp, qq) = (Power::of("p", p)?, Power::of("q", q)?);
+    general(p, q, &pp, &qq)
 }

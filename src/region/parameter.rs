@@ -115,9 +115,17 @@ fn inside(x: &AlgebraicReal, [lo, hi]: [f64; 2]) -> bool {
 impl Parameter {
     /// An exact number.
     pub(crate) fn known(x: AlgebraicReal) -> Parameter {
+        // The correctly rounded double, and the doubles on either side of it (the exact
+        // number is within half an ulp of it), or the double itself when the number is one:
+        // one rounding instead of three.
+        let nearest = x.to_f64();
+        let enclosure = match x.exact() {
+            Some(r) if nearest.is_finite() && &exact_f64(nearest) == r => [nearest, nearest],
+            _ => [nearest.next_down(), nearest.next_up()],
+        };
         Parameter {
-            nearest: x.to_f64(),
-            enclosure: [x.to_f64_down(), x.to_f64_up()],
+            nearest,
+            enclosure,
             exact: OnceLock::from(x),
             source: Source::Known,
         }

@@ -217,6 +217,7 @@ impl<'a> Graph<'a> {
                 }
                 None => {
                     counts.exact += 1;
+
                     exact.push((
                         i,
                         j,
@@ -331,13 +332,19 @@ impl<'a> Graph<'a> {
 }
 
 /// Makes both sides of every overlap split alike: each parameter strictly inside one side's
-/// range is carried to the other side exactly ([`transfer`]) until nothing new appears (the
-/// exact stages do the same on exact numbers).
+/// range is carried to the other side exactly until nothing new appears (the exact stages do
+/// the same on exact numbers). A worklist holds the parameters not yet carried, so each is
+/// carried once per overlap. Between two segments the carried parameter is the affine image
+/// t0 + (s - s0)(t1 - t0)/(s1 - s0) (both trace the common stretch at constant speed), else
+/// [`transfer`] finds it on the curve.
 fn carry_across_overlaps(
     curves: &[Curve<'_>],
     shared: &[Shared],
     params: &mut [Vec<Parameter>],
 ) -> Result<()> {
+    if shared.is_empty() {
+        return Ok(());
+    }
     let strictly_inside = |x: &AlgebraicReal, a: &AlgebraicReal, b: &AlgebraicReal| {
         let (lo, hi) = if a.compare(b) == Ordering::Greater {
             (b, a)
@@ -346,54 +353,89 @@ fn carry_across_overlaps(
         };
         x.compare(lo) == Ordering::Greater && x.compare(hi) == Ordering::Less
     };
-    loop {
-        let mut changed = false;
-        for sh in shared {
+    // Each overlap's range on each side as doubles around it.
+    let span = |r: &[AlgebraicReal; 2]| {
+        let (a, b) = (r[0].to_f64(), r[1].to_f64());
+        [a.min(b).next_down(), a.max(b).next_up()]
+    };
+    let spans: Vec<[[f64; 2]; 2]> = shared
+        .iter()
+        .map(|sh| [span(&sh.overlap.s), span(&sh.overlap.t)])
+        .collect();
+    let mut work: Vec<(usize, Parameter)> = Vec::new();
+    for sh in shared {
+        for c in [sh.p, sh.q] {
+            work.extend(params[c].iter().map(|x| (c, x.clone())));
+        }
+    }
+    while let Some((from, x)) = work.pop() {
+        for (sh, span) in shared.iter().zip(&spans) {
             let o = &sh.overlap;
-            for (from, to, from_range, to_range) in
-                [(sh.p, sh.q, &o.s, &o.t), (sh.q, sh.p, &o.t, &o.s)]
-            {
-                let (lo, hi) = (
-                    from_range[0].to_f64_down().min(from_range[1].to_f64_down()),
-                    from_range[0].to_f64_up().max(from_range[1].to_f64_up()),
-                );
-                let mut inner = Vec::new();
-                for x in &params[from] {
-                    let [a, b] = x.enclosure();
-                    if b < lo || a > hi {
-                        continue;
-                    }
-                    let x = x.algebraic()?;
-                    if strictly_inside(x, &from_range[0], &from_range[1]) {
-                        inner.push(x.clone());
-                    }
+            for (side_from, to, from_range, to_range, [lo, hi]) in [
+                (sh.p, sh.q, &o.s, &o.t, span[0]),
+                (sh.q, sh.p, &o.t, &o.s, span[1]),
+            ] {
+                if side_from != from {
+                    continue;
                 }
-                for x in inner {
-                    let t = transfer(
+                let [a, b] = x.enclosure();
+                if b < lo || a > hi {
+                    continue;
+                }
+                let exact = x.algebraic()?;
+                // Inside by the enclosures alone (lo, hi are outward around the ends).
+                let clearly_inside = a > lo.next_up().next_up() && b < hi.next_down().next_down();
+                if !clearly_inside && !strictly_inside(exact, &from_range[0], &from_range[1]) {
+                    continue;
+                }
+                let t = if curves[from].points.len() == 2 && curves[to].points.len() == 2 {
+                    affine_image(exact, from_range, to_range)
+                } else {
+                    transfer(
                         curves[from].exact(),
-                        &x,
+                        exact,
                         curves[to].exact(),
                         (&to_range[0], &to_range[1]),
-                    );
-                    let t = Parameter::known(t);
-                    let mut failed = None;
-                    let at = params[to].binary_search_by(|p| compare(p, &t, &mut failed));
-                    if let Some(e) = failed {
-                        return Err(e);
-                    }
-                    if let Err(at) = at {
-                        params[to].insert(at, t);
-                        changed = true;
-                    }
+                    )
+                };
+                let t = Parameter::known(t);
+                let mut failed = None;
+                let at = params[to].binary_search_by(|p| compare(p, &t, &mut failed));
+                if let Some(e) = failed {
+                    return Err(e);
+                }
+                if let Err(at) = at {
+                    params[to].insert(at, t.clone());
+                    work.push((to, t));
                 }
             }
         }
-        if !changed {
-            return Ok(());
-        }
     }
+    Ok(())
 }
 
+/// The image of x under the affine map taking `from[0]`, `from[1]` to `to[0]`, `to[1]`
+/// (exact; the overlap ends of two segments are rational).
+fn affine_image(
+    x: &AlgebraicReal,
+    from: &[AlgebraicReal; 2],
+    to: &[AlgebraicReal; 2],
+) -> AlgebraicReal {
+    let ends = [&from[0], &from[1], &to[0], &to[1]].map(|e| e.exact().cloned());
+    match ends {
+        [Some(s0), Some(s1), Some(t0), Some(t1)] => {
+            let slope = (&t1 - &t0) / (&s1 - &s0);
+            match x.exact() {
+                Some(s) => AlgebraicReal::from_rational(&t0 + (s - &s0) * &slope),
+                None => {
+                    let shift = &t0 - &s0 * &slope;
+                    crate::intersect::algebraic::value_at(&[shift, slope], x)
+                }
+            }
+        }
+        _ => unreachable!("the overlap of two segments has rational ends"),
+    }
+}
 /// Half-edges: group g runs along its representative piece as half-edge 2g (from the lower
 /// parameter to the higher) and against it as 2g + 1. Each leaves its *origin* vertex.
 impl Graph<'_> {

@@ -87,11 +87,53 @@ impl Around {
     }
 }
 
-/// The direction of half-edge h in floating point.
+/// The direction of half-edge h in floating point. At a curve's end, and anywhere on a
+/// segment, the derivative is n (p1 - p0) (or n (p_n - p_(n-1))): the signs of its
+/// coordinates, hence its class, come from comparisons of doubles, exactly, when those two
+/// points differ (a zero first derivative is left to the exact order).
 fn direction(graph: &Graph<'_>, h: usize) -> Direction {
     let (c, at, toward) = graph.branch(h);
-    let mut u = tangent(graph.curves[c].points, &graph.params[c][at]);
-    if toward < at {
+    let points = graph.curves[c].points;
+    let param = &graph.params[c][at];
+    let backward = toward < at;
+    let end = match param.curve_end() {
+        Some(one) => Some(one),
+        None if points.len() == 2 => Some(false),
+        None => None,
+    };
+    if let Some(one) = end {
+        let n = points.len() - 1;
+        let (a, b) = if one {
+            (points[n - 1], points[n])
+        } else {
+            (points[0], points[1])
+        };
+        if a != b {
+            let cmp = |x: f64, y: f64| -> i8 {
+                match x.partial_cmp(&y) {
+                    Some(Ordering::Greater) => 1,
+                    Some(Ordering::Less) => -1,
+                    _ => 0,
+                }
+            };
+            let flip = if backward { -1 } else { 1 };
+            let (sx, sy) = (flip * cmp(b[0], a[0]), flip * cmp(b[1], a[1]));
+            let d = |k: usize| {
+                let v = BoundedF64::exact(b[k]).sub(&BoundedF64::exact(a[k]));
+                if backward {
+                    v.neg()
+                } else {
+                    v
+                }
+            };
+            return Direction {
+                class: class_of(sx, sy),
+                u: [d(0), d(1)],
+            };
+        }
+    }
+    let mut u = tangent(points, param);
+    if backward {
         u = [u[0].neg(), u[1].neg()];
     }
     let class = match (sign(&u[0]), sign(&u[1])) {
@@ -139,6 +181,25 @@ fn order(
         }
     }
     *exact += 1;
+    if std::env::var_os("BLOSSOM_TRACE").is_some() {
+        let u = |d: &Direction| {
+            (
+                d.u[0].value(),
+                d.u[0].error_bound(),
+                d.u[1].value(),
+                d.u[1].error_bound(),
+            )
+        };
+        eprintln!(
+            "exact order {:?} {:?} {:?} {:?} {:?} {:?}",
+            da.class,
+            db.class,
+            u(da),
+            u(db),
+            graph.branch(a),
+            graph.branch(b)
+        );
+    }
     let (ba, bb) = (exact_branch(graph, a)?, exact_branch(graph, b)?);
     Ok(compare(
         graph.curves[ba.curve].exact(),
