@@ -152,3 +152,42 @@ pub fn unchanged(answer: &BlossomAnswer, curves: usize) -> bool {
     let edges: usize = answer.result.loops.iter().map(|l| l.edges.len()).sum();
     edges == curves && answer.result.loops.iter().flat_map(|l| &l.edges).all(whole)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::outline::Outline;
+
+    /// Two overlapping squares in one outline, clockwise as TrueType draws them.
+    fn squares() -> Outline {
+        let square = |x: f64, y: f64| -> Vec<Vec<[f64; 2]>> {
+            let c = [[x, y], [x, y + 2.0], [x + 2.0, y + 2.0], [x + 2.0, y]];
+            (0..4).map(|i| vec![c[i], c[(i + 1) % 4]]).collect()
+        };
+        vec![square(0.0, 0.0), square(1.0, 1.0)]
+    }
+
+    #[test]
+    fn a_right_answer_passes() {
+        let a = crate::peers::blossom(&squares(), None).unwrap();
+        assert_eq!(a.result.loops.len(), 1);
+        assert!((a.path_area - 7.0).abs() < 1e-12);
+        well_formed(&a, 9.0, 3.0).unwrap();
+        assert!(!unchanged(&a, 8));
+    }
+
+    #[test]
+    fn broken_answers_fail() {
+        let mut a = crate::peers::blossom(&squares(), None).unwrap();
+        a.result.loops[0].edges.swap(0, 2);
+        assert!(well_formed(&a, 9.0, 3.0).unwrap_err().contains("begins"));
+        let mut a = crate::peers::blossom(&squares(), None).unwrap();
+        a.result.loops[0].hole = true;
+        assert!(well_formed(&a, 9.0, 3.0).unwrap_err().contains("signed area"));
+        let mut a = crate::peers::blossom(&squares(), None).unwrap();
+        a.result.area = [6.0, 6.5];
+        assert!(well_formed(&a, 9.0, 3.0).unwrap_err().contains("enclosure"));
+        a.result.area = [7.5, 7.0];
+        assert!(well_formed(&a, 9.0, 3.0).unwrap_err().contains("interval"));
+    }
+}
