@@ -1,8 +1,9 @@
 //! The checks of a blossom answer, outside the timed calls: its form (what the answer
 //! promises) and its consumed geometry against its own area enclosure.
 
-use crate::peers::{piece, BlossomAnswer, Curves};
+use crate::peers::{piece, segment, BlossomAnswer, Curves};
 use blossom::region::{Edge, Parameter};
+use kurbo::ParamCurveArea;
 
 /// Where the edge starts (`end = false`) or ends (`end = true`) when that is a curve's own
 /// end: the control point, exactly.
@@ -63,26 +64,6 @@ fn joined(curves: &[Curves; 2], e: &Edge, f: &Edge, tol: f64) -> Result<(), Stri
     }
 }
 
-/// The signed area of a piece (x dy integrated by Green's formula on its Bézier form).
-fn piece_area(c: &blossom::Bezier<f64, 2>) -> f64 {
-    let p = c.points();
-    // For a Bézier of degree n, the integral of x dy over [0, 1] is
-    // sum_{i,j} x_i (y_{j+1} - y_j) n C(n-1, j) C(n, i) / ((2n - 1) C(2n - 1, i + j)).
-    let n = p.len() - 1;
-    let binom = |n: usize, k: usize| -> f64 {
-        (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
-    };
-    let mut sum = 0.0;
-    for (i, pi) in p.iter().enumerate() {
-        for j in 0..n {
-            let dy = p[j + 1][1] - p[j][1];
-            sum += pi[0] * dy * n as f64 * binom(n - 1, j) * binom(n, i)
-                / ((2 * n) as f64 * binom(2 * n - 1, i + j));
-        }
-    }
-    sum
-}
-
 /// The checks of one answer. `box_area` and `extent` are the input's box area and larger side.
 pub fn well_formed(answer: &BlossomAnswer, box_area: f64, extent: f64) -> Result<(), String> {
     let r = &answer.result;
@@ -116,7 +97,11 @@ pub fn well_formed(answer: &BlossomAnswer, box_area: f64, extent: f64) -> Result
             let f = &lp.edges[(k + 1) % lp.edges.len()];
             joined(curves, e, f, tol).map_err(|m| format!("loop {l}, edge {k}: {m}"))?;
         }
-        let area: f64 = lp.edges.iter().map(|e| piece_area(&piece(curves, e))).sum();
+        let area: f64 = lp
+            .edges
+            .iter()
+            .map(|e| segment(&piece(curves, e)).signed_area())
+            .sum();
         if area.abs() > tol * extent && (area < 0.0) != lp.hole {
             return Err(format!(
                 "loop {l} (hole: {}) has signed area {area}",
@@ -183,7 +168,9 @@ mod tests {
         assert!(well_formed(&a, 9.0, 3.0).unwrap_err().contains("begins"));
         let mut a = crate::peers::blossom(&squares(), None).unwrap();
         a.result.loops[0].hole = true;
-        assert!(well_formed(&a, 9.0, 3.0).unwrap_err().contains("signed area"));
+        assert!(well_formed(&a, 9.0, 3.0)
+            .unwrap_err()
+            .contains("signed area"));
         let mut a = crate::peers::blossom(&squares(), None).unwrap();
         a.result.area = [6.0, 6.5];
         assert!(well_formed(&a, 9.0, 3.0).unwrap_err().contains("enclosure"));

@@ -209,9 +209,9 @@ fn parse_args() -> Result<Options, String> {
             "--shift" => o.shift = number(value(&mut k, a)?, a)?,
             "--copies" => {
                 let v = value(&mut k, a)?;
-                o.copies = v
-                    .parse()
-                    .map_err(|_| format!("--copies: expected a count, found {v:?}"))?;
+                o.copies = v.parse().ok().filter(|&n| n > 0).ok_or_else(|| {
+                    format!("--copies: expected a count of 1 or more, found {v:?}")
+                })?;
             }
             "--advance" => o.advance = number(value(&mut k, a)?, a)?,
             "--words" => o.words = list(&value(&mut k, a)?),
@@ -267,32 +267,31 @@ fn cases(font: &Font, task: Task, o: &Options) -> Vec<Case> {
             .as_ref()
             .is_none_or(|g| g.iter().any(|n| n == name))
     };
+    let copies = |g: &outline::Glyph| -> Outline {
+        (1..=o.copies)
+            .flat_map(|k| translated(&g.outline, o.shift * k as f64))
+            .collect()
+    };
     match task {
-        Task::Remove => font
-            .glyphs
-            .iter()
-            .filter(|g| wanted(&g.name))
-            .map(|g| Case {
-                name: g.name.clone(),
-                a: g.outline.clone(),
-                b: None,
-            })
-            .collect(),
-        Task::Union => font
-            .glyphs
-            .iter()
-            .filter(|g| wanted(&g.name))
-            .map(|g| Case {
-                name: g.name.clone(),
-                a: g.outline.clone(),
-                b: Some(
-                    (1..=o.copies)
-                        .flat_map(|k| translated(&g.outline, o.shift * k as f64))
-                        .collect(),
-                ),
-            })
-            .filter(|c| c.b.as_ref().is_some_and(|b| !b.is_empty()))
-            .collect(),
+        Task::Remove | Task::Union => {
+            if let Some(names) = &o.glyphs {
+                for n in names
+                    .iter()
+                    .filter(|n| !font.glyphs.iter().any(|g| &g.name == *n))
+                {
+                    eprintln!("{}: no outlined glyph {n:?}", font.name);
+                }
+            }
+            font.glyphs
+                .iter()
+                .filter(|g| wanted(&g.name))
+                .map(|g| Case {
+                    name: g.name.clone(),
+                    a: g.outline.clone(),
+                    b: (task == Task::Union).then(|| copies(g)),
+                })
+                .collect()
+        }
         Task::Text => o
             .words
             .iter()
@@ -410,6 +409,22 @@ fn dump(font: &Font, o: &Options, dir: &std::path::Path) -> Result<(), String> {
     Ok(())
 }
 
+/// The load averages and the CPU model, read from /proc where there is one.
+fn machine() -> String {
+    let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
+    let load: Vec<&str> = load.split_whitespace().take(3).collect();
+    let cpu = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|c| {
+            c.lines()
+                .find(|l| l.starts_with("model name"))
+                .and_then(|l| l.split(':').nth(1))
+                .map(|m| m.trim().to_owned())
+        })
+        .unwrap_or_else(|| "unknown".into());
+    format!("load average {}; CPU {cpu}", load.join(" "))
+}
+
 fn main() {
     if let Err(m) = run() {
         eprintln!("error: {m}");
@@ -419,6 +434,7 @@ fn main() {
 
 fn run() -> Result<(), String> {
     let o = parse_args()?;
+    let before = machine();
     // Fonts are read (and a missing one reported) before anything is timed.
     let fonts: Vec<Font> = o
         .fonts
@@ -470,14 +486,17 @@ fn run() -> Result<(), String> {
         out += &table;
     }
     let named: Vec<(&str, &TaskStats)> = totals.iter().map(|(t, s)| (t.short(), s)).collect();
-    let slowest = report::slowest(&named, o.slowest.max(20));
-    if o.slowest > 0 {
-        print!(
-            "\nblossom's slowest items:\n\n{}",
-            report::slowest(&named, o.slowest)
+    for (task, s) in &named {
+        let n = if o.slowest > 0 { o.slowest } else { 20 };
+        let list = format!(
+            "\nblossom's {n} slowest items, {task}:\n\n{}",
+            report::slowest(&[(task, s)], n)
         );
+        if o.slowest > 0 {
+            print!("{list}");
+        }
+        out += &list;
     }
-    out += &format!("\nblossom's slowest items:\n\n{slowest}");
     for (task, s) in &totals {
         let mut errors: Vec<String> = s
             .errors
@@ -514,8 +533,9 @@ fn run() -> Result<(), String> {
     let dir = common::out_dir("fonts");
     let command: Vec<String> = std::env::args().skip(1).collect();
     let head = format!(
-        "# blossom against linesweeper 0.5 on font outlines\n\narguments: {}\n",
-        command.join(" ")
+        "# blossom against linesweeper 0.5 on font outlines\n\narguments: {}\n\nbefore: {before}\n\nafter: {}\n",
+        command.join(" "),
+        machine()
     );
     std::fs::write(dir.join("summary.md"), head + &out)
         .and_then(|()| std::fs::write(dir.join("times.csv"), report::csv(&named)))

@@ -12,7 +12,7 @@
 use crate::outline::Outline;
 use blossom::region::{boolean, simplify, BooleanOp, FillRule, Region, RegionResult};
 use blossom::Bezier;
-use kurbo::{BezPath, Shape};
+use kurbo::{BezPath, ParamCurve, Shape};
 
 /// The curves of an outline in blossom's form, `[contour][curve]`.
 pub type Curves = Vec<Vec<Bezier<f64, 2>>>;
@@ -64,22 +64,27 @@ pub fn piece(curves: &[Curves; 2], e: &blossom::region::Edge) -> Bezier<f64, 2> 
     curves[e.region][e.loop_index][e.curve].subsegment(e.from.to_f64()..e.to.to_f64())
 }
 
+/// A piece as a kurbo segment of its own degree.
+pub fn segment(c: &Bezier<f64, 2>) -> kurbo::PathSeg {
+    let p: Vec<kurbo::Point> = c.points().iter().map(|q| (q[0], q[1]).into()).collect();
+    match p.len() {
+        2 => kurbo::Line::new(p[0], p[1]).into(),
+        3 => kurbo::QuadBez::new(p[0], p[1], p[2]).into(),
+        4 => kurbo::CubicBez::new(p[0], p[1], p[2], p[3]).into(),
+        n => unreachable!("font curves have 2 to 4 control points, not {n}"),
+    }
+}
+
 /// The answer's loops as one path, each edge's piece appended with its own degree.
 pub fn blossom_path(r: &RegionResult, curves: &[Curves; 2]) -> BezPath {
     let mut path = BezPath::new();
     for l in &r.loops {
         for (k, e) in l.edges.iter().enumerate() {
-            let c = piece(curves, e);
-            let p: Vec<kurbo::Point> = c.points().iter().map(|q| (q[0], q[1]).into()).collect();
+            let s = segment(&piece(curves, e));
             if k == 0 {
-                path.move_to(p[0]);
+                path.move_to(s.start());
             }
-            match p.len() {
-                2 => path.line_to(p[1]),
-                3 => path.quad_to(p[1], p[2]),
-                4 => path.curve_to(p[1], p[2], p[3]),
-                n => unreachable!("font curves have 2 to 4 control points, not {n}"),
-            }
+            path.push(s.as_path_el());
         }
         path.close_path();
     }
