@@ -64,10 +64,15 @@ fn joined(curves: &[Curves; 2], e: &Edge, f: &Edge, tol: f64) -> Result<(), Stri
     }
 }
 
-/// The checks of one answer. `box_area` and `extent` are the input's box area and larger side.
-pub fn well_formed(answer: &BlossomAnswer, box_area: f64, extent: f64) -> Result<(), String> {
+/// The checks of one answer whose inputs have the curves `curves` (`[region][loop][curve]`).
+/// `box_area` and `extent` are the input's box area and larger side.
+pub fn well_formed(
+    answer: &BlossomAnswer,
+    curves: &[Curves; 2],
+    box_area: f64,
+    extent: f64,
+) -> Result<(), String> {
     let r = &answer.result;
-    let curves = &answer.curves;
     let [lo, hi] = r.area;
     if !(lo.is_finite() && hi.is_finite() && lo <= hi) {
         return Err(format!("area enclosure [{lo}, {hi}] is not an interval"));
@@ -109,6 +114,18 @@ pub fn well_formed(answer: &BlossomAnswer, box_area: f64, extent: f64) -> Result
             ));
         }
         total += area;
+    }
+    let geometry = r.geometry();
+    for (l, pieces) in geometry.iter().enumerate() {
+        for (k, p) in pieces.iter().enumerate() {
+            let next = &pieces[(k + 1) % pieces.len()];
+            let (end, start) = (p.points()[p.degree()], next.points()[0]);
+            if end != start {
+                return Err(format!(
+                    "geometry: loop {l}, piece {k} ends at {end:?}, the next begins at {start:?}"
+                ));
+            }
+        }
     }
     let slack = 1e-9 * box_area.max(1.0);
     if total < lo - slack || total > hi + slack {
@@ -152,12 +169,16 @@ mod tests {
         vec![square(0.0, 0.0), square(1.0, 1.0)]
     }
 
+    fn curves() -> [Curves; 2] {
+        [crate::peers::curves_of(&squares()), Vec::new()]
+    }
+
     #[test]
     fn a_right_answer_passes() {
         let a = crate::peers::blossom(&squares(), None).unwrap();
         assert_eq!(a.result.loops.len(), 1);
         assert!((a.path_area - 7.0).abs() < 1e-12);
-        well_formed(&a, 9.0, 3.0).unwrap();
+        well_formed(&a, &curves(), 9.0, 3.0).unwrap();
         assert!(!unchanged(&a, 8));
     }
 
@@ -165,16 +186,22 @@ mod tests {
     fn broken_answers_fail() {
         let mut a = crate::peers::blossom(&squares(), None).unwrap();
         a.result.loops[0].edges.swap(0, 2);
-        assert!(well_formed(&a, 9.0, 3.0).unwrap_err().contains("begins"));
+        assert!(well_formed(&a, &curves(), 9.0, 3.0)
+            .unwrap_err()
+            .contains("begins"));
         let mut a = crate::peers::blossom(&squares(), None).unwrap();
         a.result.loops[0].hole = true;
-        assert!(well_formed(&a, 9.0, 3.0)
+        assert!(well_formed(&a, &curves(), 9.0, 3.0)
             .unwrap_err()
             .contains("signed area"));
         let mut a = crate::peers::blossom(&squares(), None).unwrap();
         a.result.area = [6.0, 6.5];
-        assert!(well_formed(&a, 9.0, 3.0).unwrap_err().contains("enclosure"));
+        assert!(well_formed(&a, &curves(), 9.0, 3.0)
+            .unwrap_err()
+            .contains("enclosure"));
         a.result.area = [7.5, 7.0];
-        assert!(well_formed(&a, 9.0, 3.0).unwrap_err().contains("interval"));
+        assert!(well_formed(&a, &curves(), 9.0, 3.0)
+            .unwrap_err()
+            .contains("interval"));
     }
 }

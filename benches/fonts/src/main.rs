@@ -366,7 +366,11 @@ fn run_task(font: &Font, task: Task, o: &Options) -> TaskStats {
             }
         };
         if o.check {
-            if let Err(m) = check::well_formed(&answer, box_area, extent) {
+            let curves = [
+                peers::curves_of(&c.a),
+                c.b.as_ref().map_or_else(Vec::new, peers::curves_of),
+            ];
+            if let Err(m) = check::well_formed(&answer, &curves, box_area, extent) {
                 note(&mut s.malformed, c, m);
             }
             if let Some((_, Ok(l))) = &ls {

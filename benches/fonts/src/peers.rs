@@ -1,18 +1,19 @@
 //! The two libraries on one task, each from the neutral [`Outline`]s to a consumed answer:
-//! the input converted into the library's own form, the boolean, and the answer walked as a
-//! user reads it, into a kurbo `BezPath` whose area is taken.
+//! a kurbo `BezPath` per outline (the same paths for both), the boolean, and the answer as
+//! kurbo paths whose area is taken (every element walked).
 //!
-//! * blossom: `Region::from_f64` of the curves, then `simplify` (one outline) or `boolean`
-//!   with `Union` (two); each edge of each loop is its input curve cut by `Bezier::subsegment`
-//!   between the edges' parameters (`Parameter::to_f64`), appended to the path.
-//! * linesweeper: a `BezPath` per outline, then `binary_op` with `Union` and `NonZero` (the
-//!   second path empty for one outline, as blossom's `simplify` is a union with the empty
-//!   region); every contour of its answer walked (its area summed).
+//! * blossom (feature `kurbo`): `Region::from_bez_path`, then `simplify` (one outline) or
+//!   `boolean` with `Union` (two), then `RegionResult::to_bez_path` (the pieces of
+//!   `RegionResult::geometry`): what its `binary_op` does, split so that the checks get the
+//!   `RegionResult`.
+//! * linesweeper: `binary_op` with `Union` and `NonZero` (the second path empty for one
+//!   outline, as blossom's `simplify` is a union with the empty region), every contour of its
+//!   answer walked.
 
 use crate::outline::Outline;
 use blossom::region::{boolean, simplify, BooleanOp, FillRule, Region, RegionResult};
 use blossom::Bezier;
-use kurbo::{BezPath, ParamCurve, Shape};
+use kurbo::{BezPath, Shape};
 
 /// The curves of an outline in blossom's form, `[contour][curve]`.
 pub type Curves = Vec<Vec<Bezier<f64, 2>>>;
@@ -29,37 +30,34 @@ pub fn curves_of(outline: &Outline) -> Curves {
         .collect()
 }
 
-/// What blossom answered, with the curves its edges name (kept for the checks).
+/// What blossom answered, with the curves its edges name (for the checks).
 pub struct BlossomAnswer {
     pub result: RegionResult,
-    pub curves: [Curves; 2],
-    /// The area of the consumed answer (from the cut pieces, in doubles).
+    /// The area of the consumed answer (its `BezPath`).
     pub path_area: f64,
 }
 
 /// blossom on `a` alone (`simplify`) or on `a` and `b` (`boolean` with `Union`), the answer
 /// consumed.
 pub fn blossom(a: &Outline, b: Option<&Outline>) -> Result<BlossomAnswer, blossom::Error> {
-    let ca = curves_of(a);
-    let ra = Region::from_f64(ca.clone(), FillRule::NonZero)?;
-    let (result, cb) = match b {
-        None => (simplify(&ra)?, Curves::new()),
+    let ra = Region::from_bez_path(&bez_path(a), FillRule::NonZero)?;
+    let result = match b {
+        None => simplify(&ra)?,
         Some(b) => {
-            let cb = curves_of(b);
-            let rb = Region::from_f64(cb.clone(), FillRule::NonZero)?;
-            (boolean(&ra, &rb, BooleanOp::Union)?, cb)
+            let rb = Region::from_bez_path(&bez_path(b), FillRule::NonZero)?;
+            boolean(&ra, &rb, BooleanOp::Union)?
         }
     };
-    let curves = [ca, cb];
-    let path = blossom_path(&result, &curves);
+    let path = result.to_bez_path()?;
     Ok(BlossomAnswer {
         path_area: path.area(),
         result,
-        curves,
     })
 }
 
-/// The piece of its input curve that `edge` is, as doubles.
+/// The piece of its input curve that `edge` is, cut here from the curves of the outlines
+/// (`curves[e.region]`) at the edge's rounded parameters (the checks' own cut, not the
+/// library's `geometry`).
 pub fn piece(curves: &[Curves; 2], e: &blossom::region::Edge) -> Bezier<f64, 2> {
     curves[e.region][e.loop_index][e.curve].subsegment(e.from.to_f64()..e.to.to_f64())
 }
@@ -73,22 +71,6 @@ pub fn segment(c: &Bezier<f64, 2>) -> kurbo::PathSeg {
         4 => kurbo::CubicBez::new(p[0], p[1], p[2], p[3]).into(),
         n => unreachable!("font curves have 2 to 4 control points, not {n}"),
     }
-}
-
-/// The answer's loops as one path, each edge's piece appended with its own degree.
-pub fn blossom_path(r: &RegionResult, curves: &[Curves; 2]) -> BezPath {
-    let mut path = BezPath::new();
-    for l in &r.loops {
-        for (k, e) in l.edges.iter().enumerate() {
-            let s = segment(&piece(curves, e));
-            if k == 0 {
-                path.move_to(s.start());
-            }
-            path.push(s.as_path_el());
-        }
-        path.close_path();
-    }
-    path
 }
 
 /// An outline as a kurbo path.
