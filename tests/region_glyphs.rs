@@ -10,7 +10,9 @@
 //!   each edge's input curve (`bezier_zeros`, exact), kept when they lie on the edge (compared
 //!   exactly with the edge's `Parameter::algebraic` ends) and right of the point (an exact sign),
 //!   counted half-open as the ray lifted by an infinitesimal. Every point must get 0 or 1: 1 on
-//!   the inside also proves the outer loops counter-clockwise and the holes clockwise;
+//!   the inside also proves the outer loops counter-clockwise and the holes clockwise. The
+//!   answer as a user chains it, `RegionResult::to_region` (its `geometry` pieces, rounded to
+//!   doubles), must wind the same 0 or 1 around every point (`Region::windings` on it);
 //! * **simple loops**: within a loop, two edges meet only where one ends and the next begins
 //!   (every intersection of their input curves, `intersect_curves`, compared exactly with the
 //!   edges' parameters); edges of different loops never cross transversally inside both and
@@ -300,15 +302,19 @@ fn answer_windings(r: &RegionResult, xs: &[Rational], ys: &[Rational]) -> Vec<Ve
         .collect()
 }
 
-/// Checks that a grid point is inside the answer `r` exactly when `inside` says it is inside
-/// the input; returns the number of grid points checked (those off the input's curves).
+/// Checks that a grid point (`points`, row by row over `xs` x `ys`) is inside the answer `r`
+/// (its loops wind once around it, counted from the edges and by `to_region`) exactly when
+/// `inside` (given the point's index) says it is inside the input; returns the number of grid
+/// points checked (those off the input's curves).
 fn check_inside(
     what: &str,
     r: &RegionResult,
     (xs, ys): &(Vec<Rational>, Vec<Rational>),
+    points: &[[Rational; 2]],
     inside: impl Fn(usize) -> Option<bool>,
 ) -> usize {
     let w = answer_windings(r, xs, ys);
+    let chained = r.to_region().unwrap().windings(points);
     let mut checked = 0;
     let mut inner = 0;
     for (j, y) in ys.iter().enumerate() {
@@ -322,6 +328,12 @@ fn check_inside(
                 "{what}: at ({x}, {y}) the answer's loops wind {got} times, the input's fill \
                  rule says {}",
                 if expected { "inside" } else { "outside" }
+            );
+            let k = j * xs.len() + i;
+            assert_eq!(
+                chained[k],
+                Winding::Number(got),
+                "{what}: at ({x}, {y}) to_region winds otherwise"
             );
             checked += 1;
             inner += usize::from(expected);
@@ -612,7 +624,7 @@ fn check(what: &str, r: &RegionResult, inputs: &[&Region], contours: &[&Contours
             .flat_map(|y| g.0.iter().map(move |x| [x.clone(), y.clone()]))
             .collect();
     let windings: Vec<Vec<Winding>> = inputs.iter().map(|r| r.windings(&points)).collect();
-    let checked = check_inside(what, r, &g, |k| {
+    let checked = check_inside(what, r, &g, &points, |k| {
         let mut inside = false;
         for w in &windings {
             match w[k] {
