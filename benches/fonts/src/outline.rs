@@ -90,8 +90,9 @@ impl ttf_parser::OutlineBuilder for Collect {
 }
 
 impl Font {
-    /// Reads the font at `path`: every glyph with a non-empty outline.
-    pub fn load(path: &std::path::Path) -> Result<Font, String> {
+    /// Reads the font at `path`: every glyph with a non-empty outline, or only those named in
+    /// `only` (so that a profile of a few glyphs is not a profile of reading the font).
+    pub fn load(path: &std::path::Path, only: Option<&[String]>) -> Result<Font, String> {
         let data = std::fs::read(path).map_err(|e| {
             format!(
                 "cannot read the font {}: {e} (pass font paths as arguments; the default \
@@ -101,12 +102,22 @@ impl Font {
         })?;
         let face = ttf_parser::Face::parse(&data, 0)
             .map_err(|e| format!("{} is not a font ttf-parser reads: {e}", path.display()))?;
-        let glyphs = (0..face.number_of_glyphs())
+        // A name is found by a walk of the post table: by name for a few glyphs.
+        let ids: Vec<u16> = match only {
+            Some(names) => names
+                .iter()
+                .filter_map(|n| face.glyph_index_by_name(n))
+                .map(|g| g.0)
+                .collect(),
+            None => (0..face.number_of_glyphs()).collect(),
+        };
+        let glyphs = ids
+            .into_iter()
             .filter_map(|id| {
-                let outline = outline_of(&face, ttf_parser::GlyphId(id))?;
                 let name = face
                     .glyph_name(ttf_parser::GlyphId(id))
                     .map_or_else(|| format!("gid{id}"), str::to_owned);
+                let outline = outline_of(&face, ttf_parser::GlyphId(id))?;
                 Some(Glyph { id, name, outline })
             })
             .collect();

@@ -27,6 +27,8 @@ pub struct TaskStats {
     pub area_off: Vec<(String, String, String)>,
     /// (font, item) of the answers that differ from their input (`simplify` tasks).
     pub changed: Vec<(String, String)>,
+    /// Whether the answers were checked (not under `--blossom-only` or `--no-check`).
+    pub checked: bool,
 }
 
 impl TaskStats {
@@ -37,6 +39,7 @@ impl TaskStats {
         self.linesweeper_errors.extend(other.linesweeper_errors);
         self.area_off.extend(other.area_off);
         self.changed.extend(other.changed);
+        self.checked = other.checked;
     }
 }
 
@@ -102,13 +105,20 @@ pub fn row(task: &str, s: &TaskStats) -> String {
         ),
         _ => ("-".into(), "-".into()),
     };
+    let count = |list: &Vec<(String, String, String)>, known: bool| {
+        if known {
+            list.len().to_string()
+        } else {
+            "-".into()
+        }
+    };
     format!(
         "| {task} | {} | {lm} | {bm} / {bt} | {tail} | {ratio} | {} | {} | {} | {} |\n",
         s.items.len(),
         s.errors.len(),
-        s.malformed.len(),
-        s.linesweeper_errors.len(),
-        s.area_off.len(),
+        count(&s.malformed, s.checked),
+        count(&s.linesweeper_errors, l.is_some()),
+        count(&s.area_off, s.checked && l.is_some()),
     )
 }
 
