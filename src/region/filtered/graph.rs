@@ -26,9 +26,10 @@
 //! ([`assemble`]).
 
 use crate::error::Result;
-use crate::intersect::algebraic::{exact_f64, AlgebraicReal};
+use crate::intersect::algebraic::{exact_f64, value_at, AlgebraicReal};
 use crate::intersect::curves::{intersect_curves_f64, self_intersections_f64, Overlap};
 use crate::intersect::filter::certified_crossings_f64;
+use crate::num::ring::Rational;
 use crate::region::arrangement::{
     assemble, meeting_boxes, Assembled, CurveId, Group, Piece, Stretch,
 };
@@ -362,6 +363,18 @@ fn carry_across_overlaps(
         .iter()
         .map(|sh| [span(&sh.overlap.s), span(&sh.overlap.t)])
         .collect();
+    // Between two segments, each direction's affine map, made once.
+    let maps: Vec<[Option<Affine>; 2]> = shared
+        .iter()
+        .map(|sh| {
+            let segments = curves[sh.p].points.len() == 2 && curves[sh.q].points.len() == 2;
+            let o = &sh.overlap;
+            [
+                segments.then(|| Affine::new(&o.s, &o.t)),
+                segments.then(|| Affine::new(&o.t, &o.s)),
+            ]
+        })
+        .collect();
     let mut work: Vec<(usize, Parameter)> = Vec::new();
     for sh in shared {
         for c in [sh.p, sh.q] {
@@ -369,7 +382,7 @@ fn carry_across_overlaps(
         }
     }
     while let Some((from, x)) = work.pop() {
-        for (sh, span) in shared.iter().zip(&spans) {
+        for (k, (sh, span)) in shared.iter().zip(&spans).enumerate() {
             let o = &sh.overlap;
             for (side_from, to, from_range, to_range, [lo, hi]) in [
                 (sh.p, sh.q, &o.s, &o.t, span[0]),
@@ -388,8 +401,8 @@ fn carry_across_overlaps(
                 if !clearly_inside && !strictly_inside(exact, &from_range[0], &from_range[1]) {
                     continue;
                 }
-                let t = if curves[from].points.len() == 2 && curves[to].points.len() == 2 {
-                    affine_image(exact, from_range, to_range)
+                let t = if let Some(map) = &maps[k][usize::from(side_from != sh.p)] {
+                    map.image(exact)
                 } else {
                     transfer(
                         curves[from].exact(),
@@ -414,28 +427,37 @@ fn carry_across_overlaps(
     Ok(())
 }
 
-/// The image of x under the affine map taking `from[0]`, `from[1]` to `to[0]`, `to[1]`
-/// (exact; the overlap ends of two segments are rational).
-fn affine_image(
-    x: &AlgebraicReal,
-    from: &[AlgebraicReal; 2],
-    to: &[AlgebraicReal; 2],
-) -> AlgebraicReal {
-    let ends = [&from[0], &from[1], &to[0], &to[1]].map(|e| e.exact().cloned());
-    match ends {
-        [Some(s0), Some(s1), Some(t0), Some(t1)] => {
-            let slope = (&t1 - &t0) / (&s1 - &s0);
-            match x.exact() {
-                Some(s) => AlgebraicReal::from_rational(&t0 + (s - &s0) * &slope),
-                None => {
-                    let shift = &t0 - &s0 * &slope;
-                    crate::intersect::algebraic::value_at(&[shift, slope], x)
-                }
-            }
+/// The affine map t = shift + slope s taking one overlap's ends on one segment to its ends
+/// on the other (rational: the overlap ends of two segments are).
+struct Affine {
+    shift: Rational,
+    slope: Rational,
+}
+
+impl Affine {
+    fn new(from: &[AlgebraicReal; 2], to: &[AlgebraicReal; 2]) -> Affine {
+        let end = |x: &AlgebraicReal| {
+            x.exact()
+                .cloned()
+                .expect("the overlap of two segments has rational ends")
+        };
+        let (s0, s1, t0, t1) = (end(&from[0]), end(&from[1]), end(&to[0]), end(&to[1]));
+        let slope = (&t1 - &t0) / (&s1 - &s0);
+        Affine {
+            shift: &t0 - &s0 * &slope,
+            slope,
         }
-        _ => unreachable!("the overlap of two segments has rational ends"),
+    }
+
+    /// The image of x, exactly.
+    fn image(&self, x: &AlgebraicReal) -> AlgebraicReal {
+        match x.exact() {
+            Some(s) => AlgebraicReal::from_rational(&self.shift + s * &self.slope),
+            None => value_at(&[self.shift.clone(), self.slope.clone()], x),
+        }
     }
 }
+
 /// Half-edges: group g runs along its representative piece as half-edge 2g (from the lower
 /// parameter to the higher) and against it as 2g + 1. Each leaves its *origin* vertex.
 impl Graph<'_> {

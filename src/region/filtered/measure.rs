@@ -82,6 +82,29 @@ pub(super) fn tangent(points: &[[f64; 2]], t: &Parameter) -> [BoundedF64; 2] {
     evaluate(&h[..len], 2, bounded(t))
 }
 
+/// An enclosure of the second derivative P''(t): the Bernstein coefficients
+/// n (n - 1) (p_(i+2) - 2 p_(i+1) + p_i) evaluated at t (zero for a segment).
+pub(super) fn second_derivative(points: &[[f64; 2]], t: &Parameter) -> [BoundedF64; 2] {
+    let n = points.len() - 1;
+    if n < 2 {
+        return [BoundedF64::exact(0.0), BoundedF64::exact(0.0)];
+    }
+    let mut h = [BoundedF64::default(); LEVEL];
+    let scale = BoundedF64::exact((n * (n - 1)) as f64);
+    let two = BoundedF64::exact(2.0);
+    for (i, w) in points.windows(3).enumerate() {
+        for a in 0..2 {
+            let (p0, p1, p2) = (
+                BoundedF64::exact(w[0][a]),
+                BoundedF64::exact(w[1][a]),
+                BoundedF64::exact(w[2][a]),
+            );
+            h[2 * i + a] = p2.sub(&p1.mul(&two)).add(&p0).mul(&scale);
+        }
+    }
+    evaluate(&h[..2 * (n - 1)], 2, bounded(t))
+}
+
 /// The answer: each boundary loop's edges, whether it is a hole (the sign of its area), and
 /// the enclosure of the total area; `None` when a loop's sign is not proved or the area
 /// enclosure is wider than the promised 2^-40 B.

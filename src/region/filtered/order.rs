@@ -15,7 +15,7 @@
 //! demand. A vertex of two half-edges (a join of two curves) needs no comparison at all.
 
 use super::graph::Graph;
-use super::measure::tangent;
+use super::measure::{second_derivative, tangent};
 use crate::error::Result;
 use crate::num::bounded::BoundedF64;
 use crate::num::ring::Ring;
@@ -159,6 +159,43 @@ pub(super) fn exact_class(graph: &Graph<'_>, h: usize) -> Result<u8> {
     Ok(class(graph.curves[b.curve].exact(), &b).0)
 }
 
+/// Two half-edges leaving a vertex along the same axis direction (the same even class: both
+/// tangents exactly parallel; `axis` is the index of their nonzero coordinate) ordered by their signed curvatures there, when the enclosures decide:
+/// with u = σ P' and a = P'' (σ² = 1), κ = cross(u, a) / |u|³, and near the vertex the branch
+/// of larger κ turns further counter-clockwise, so the smaller κ comes first (the order of
+/// `angle`: branches tangent to one axis direction from the clockwise side up). |u| is the
+/// absolute value of u's one nonzero coordinate, so no square root is needed:
+/// κ_a < κ_b exactly when cross(u_a, a_a) |u_b|³ - cross(u_b, a_b) |u_a|³ < 0.
+fn by_curvature(
+    graph: &Graph<'_>,
+    (a, da): (usize, &Direction),
+    (b, db): (usize, &Direction),
+    axis: usize,
+) -> Option<Ordering> {
+    let second = |h: usize| {
+        let (c, at, _) = graph.branch(h);
+        second_derivative(graph.curves[c].points, &graph.params[c][at])
+    };
+    let (sa, sb) = (second(a), second(b));
+    let cross = |u: &[BoundedF64; 2], w: &[BoundedF64; 2]| u[0].mul(&w[1]).sub(&u[1].mul(&w[0]));
+    let cube = |u: &[BoundedF64; 2]| {
+        let m = if u[axis].value() < 0.0 {
+            u[axis].neg()
+        } else {
+            u[axis]
+        };
+        m.mul(&m).mul(&m)
+    };
+    let d = cross(&da.u, &sa)
+        .mul(&cube(&db.u))
+        .sub(&cross(&db.u, &sb).mul(&cube(&da.u)));
+    match sign(&d) {
+        Some(1) => Some(Ordering::Greater),
+        Some(-1) => Some(Ordering::Less),
+        _ => None,
+    }
+}
+
 /// The counter-clockwise order of half-edges a and b leaving one vertex, in floating point
 /// when it decides, else exactly (`exact` counts those).
 fn order(
@@ -178,6 +215,9 @@ fn order(
                 Some(-1) => return Ok(Ordering::Greater),
                 _ => {}
             }
+        } else if let Some(o) = by_curvature(graph, (a, da), (b, db), usize::from(ca / 2 % 2 == 1))
+        {
+            return Ok(o);
         }
     }
     *exact += 1;

@@ -220,6 +220,33 @@ fn degenerate_inputs_take_the_float_path_and_agree() {
     ] {
         assert_eq!(compare(&square(0.0, 0.0, 1.0), &b, what), 4, "{what}");
     }
+    // A circle of four cubics whose joins touch the square's edges (tangent branches ordered
+    // by curvature), and the same circle moved off the edges.
+    let k = 0.5522847498307936;
+    let circle = |cx: f64, cy: f64| {
+        let p = |x: f64, y: f64| [cx + x, cy + y];
+        let arcs = [
+            [p(1.0, 0.0), p(1.0, k), p(k, 1.0), p(0.0, 1.0)],
+            [p(0.0, 1.0), p(-k, 1.0), p(-1.0, k), p(-1.0, 0.0)],
+            [p(-1.0, 0.0), p(-1.0, -k), p(-k, -1.0), p(0.0, -1.0)],
+            [p(0.0, -1.0), p(k, -1.0), p(1.0, -k), p(1.0, 0.0)],
+        ];
+        let curves = arcs.iter().map(|c| Bezier::new(c.to_vec()).unwrap());
+        Region::from_f64(vec![curves.collect()], FillRule::NonZero).unwrap()
+    };
+    for (c, what) in [
+        (circle(0.0, 0.0), "a circle inscribed in the square"),
+        (
+            circle(1.0, 0.0),
+            "a circle through two corners, tangent at one join",
+        ),
+        (
+            circle(0.0, 2.0),
+            "a circle tangent to the square from outside",
+        ),
+    ] {
+        assert_eq!(compare(&square(-1.0, -1.0, 2.0), &c, what), 4, "{what}");
+    }
 }
 
 /// A quadratic Bézier triangle near the triangle (a, b, c): corners and edge midpoints
