@@ -6,10 +6,13 @@
 //!   op)`), the answer dropped in the loop: what `CurvedRegion.simplify()` or `.union(other)`
 //!   calls;
 //! * `built`: the regions built from the control points (`Region::from_f64`, the points cloned
-//!   in the loop) and then the operation: what a caller holding only the numbers pays.
+//!   in the loop) and then the operation: what a caller holding only the numbers pays;
+//! * `estimate`: the work estimate alone on the kept regions (`simplify_work` or
+//!   `boolean_work`), which the Python call computes before the operation (to refuse work
+//!   over `max_work`) unless the regions hold at most 8 curves of degree <= 4.
 //!
 //! Each figure is the best of 7 rounds of the mean over a round of about 20 ms. Printed, one
-//! line per case: `rust <name> <kept ns> <built ns>`.
+//! line per case: `rust <name> <kept ns> <built ns> <estimate ns>`.
 //!
 //! The file, one token group per line: `case <name> <op> <fill>` (op `simplify`, `union`,
 //! `intersection`, `difference`, `xor`; fill `nonzero` or `evenodd`), then for each of the
@@ -20,7 +23,9 @@
 //! Run: `cargo run --release -p blossom-python --example region_call --features rust-bench --
 //! FILE` (the Python script does it).
 
-use blossom::region::{boolean, simplify, BooleanOp, FillRule, Region, RegionResult};
+use blossom::region::{
+    boolean, boolean_work, simplify, simplify_work, BooleanOp, FillRule, Region, RegionResult,
+};
 use blossom::Bezier;
 use std::hint::black_box;
 use std::time::Instant;
@@ -104,7 +109,9 @@ fn run(case: &Case, regions: &[Region]) -> RegionResult {
 }
 
 fn main() {
-    let path = std::env::args().nth(1).expect("the cases file (region_call.py writes it)");
+    let path = std::env::args()
+        .nth(1)
+        .expect("the cases file (region_call.py writes it)");
     let text = std::fs::read_to_string(&path).expect("a readable file");
     for case in parse(&text) {
         let build = || -> Vec<Region> {
@@ -120,6 +127,12 @@ fn main() {
         let built = time(|| {
             black_box(run(&case, &build()));
         });
-        println!("rust {} {kept:.0} {built:.0}", case.name);
+        let estimate = time(|| {
+            black_box(match case.op {
+                None => simplify_work(&regions[0]),
+                Some(_) => boolean_work(&regions[0], &regions[1]),
+            });
+        });
+        println!("rust {} {kept:.0} {built:.0} {estimate:.0}", case.name);
     }
 }

@@ -7,19 +7,27 @@
 //! exactly). The result's edges are pieces of the input curves between exact parameters; a
 //! piece is an exact Curve when the input curve is exact and both parameters are rational,
 //! else a float64 Curve over the correctly rounded parameters.
+//!
+//! A `BooleanResult` keeps the library's `RegionResult` (which holds shared handles to its two
+//! input regions) and the input curves (shared with the `CurvedRegion`s, not copied): the
+//! Python objects it shows (polygons, edge records with `Algebraic` parameters) are built
+//! when first read and then kept, so a boolean whose caller reads only `area` costs the
+//! library's call and little more.
 
 use crate::curve::{check_work, max_work_arg, Curve, CurveShape};
-use crate::errors::{bad, call, call_detached, from_lib};
+use crate::errors::{bad, call, call_detached, from_lib, name_arg};
 use crate::numbers::{read_array, rounded, Num};
 use crate::records::Algebraic;
 use crate::triangle::{to_bezier_order, CurvedPolygon, Triangle, TriangleShape};
 use blossom::region::{
-    boolean, boolean_work, triangle_intersection, BooleanOp, Edge, FillRule, Region, RegionResult,
-    Winding,
+    boolean, boolean_work, simplify, simplify_work, triangle_intersection, BooleanOp, Edge,
+    FillRule, Region, RegionResult, Winding,
 };
 use blossom::{AlgebraicReal, Bezier, BezierCurve, Rational};
 use pyo3::prelude::*;
+use pyo3::sync::PyOnceLock;
 use pyo3::types::PyList;
+use std::sync::Arc;
 
 /// A planar region bounded by closed loops of Curves (each curve starting exactly where the
 /// previous one ends), filled by the rule `fill_rule`: `"nonzero"` (default) or `"evenodd"`,
@@ -27,9 +35,49 @@ use pyo3::types::PyList;
 #[pyclass(module = "blossom", frozen)]
 #[derive(Clone)]
 pub struct CurvedRegion {
-    region: Region,
-    /// The input curves as given (`loops[l][c]`), for the pieces of a result.
-    curves: Vec<Vec<Curve>>,
+    pub(crate) region: Region,
+    /// The input curves as given (`loops[l][c]`), for the pieces of a result (shared with
+    /// every result of the region).
+    pub(crate) curves: Arc<Vec<Vec<Curve>>>,
+}
+
+/// The region of loops of curves of doubles (`loops[l][c]` the control points of curve c of
+/// loop l), each number read exactly: the library's float path reads them as they are.
+pub fn region_of_f64(loops: Vec<Vec<Vec<[f64; 2]>>>, fill: FillRule) -> PyResult<CurvedRegion> {
+    let mut beziers = Vec::with_capacity(loops.len());
+    let mut curves = Vec::with_capacity(loops.len());
+    for (l, lp) in loops.into_iter().enumerate() {
+        let mut row = Vec::with_capacity(lp.len());
+        let mut row_curves = Vec::with_capacity(lp.len());
+        for (c, points) in lp.into_iter().enumerate() {
+            let coords = points.iter().flatten().copied().collect();
+            let shape = BezierCurve::from_coordinates(2, coords).map_err(|e| {
+                bad(
+                    format!("loops[{l}][{c}]"),
+                    &format!("{:?}", e.kind()),
+                    &e.message,
+                )
+            })?;
+            row_curves.push(Curve {
+                shape: CurveShape::F64(shape),
+            });
+            row.push(Bezier::new(points).map_err(|e| {
+                bad(
+                    format!("loops[{l}][{c}]"),
+                    &format!("{:?}", e.kind()),
+                    &e.message,
+                )
+            })?);
+        }
+        beziers.push(row);
+        curves.push(row_curves);
+    }
+    // The library's paths are relative to the region: `loops[l][c]`, as Python's.
+    let region = call(&[], || Region::from_f64(beziers, fill))?;
+    Ok(CurvedRegion {
+        region,
+        curves: Arc::new(curves),
+    })
 }
 
 /// The exact planar control points of `c`, the argument at `path`.
@@ -53,16 +101,32 @@ fn planar_bezier(c: &Curve, path: &str) -> PyResult<Bezier<Rational, 2>> {
     Bezier::new(points).map_err(|e| bad(path, &format!("{:?}", e.kind()), &e.message))
 }
 
-fn fill_rule(name: &str) -> PyResult<FillRule> {
-    match name {
-        "nonzero" => Ok(FillRule::NonZero),
-        "evenodd" => Ok(FillRule::EvenOdd),
-        other => Err(bad(
-            "fill_rule",
-            "Invalid",
-            format!("expected \"nonzero\" or \"evenodd\", found {other:?}"),
-        )),
+/// The planar control points of a float64 curve (None for an exact curve; the dimension is
+/// checked when the curve is read).
+fn planar_f64(c: &Curve) -> Option<Bezier<f64, 2>> {
+    match &c.shape {
+        CurveShape::F64(x) => {
+            let points = x
+                .coordinates()
+                .chunks_exact(2)
+                .map(|p| [p[0], p[1]])
+                .collect();
+            Bezier::new(points).ok()
+        }
+        CurveShape::Exact(_) => None,
     }
+}
+
+/// The `fill_rule` argument: `"nonzero"` or `"evenodd"` (SVG's names).
+pub fn fill_rule_arg(name: &str) -> PyResult<FillRule> {
+    name_arg(
+        "fill_rule",
+        name,
+        &[
+            ("nonzero", FillRule::NonZero),
+            ("evenodd", FillRule::EvenOdd),
+        ],
+    )
 }
 
 /// A Curve argument, or a `2 x N` nodes array, at `path`.
@@ -132,26 +196,94 @@ fn piece(c: &Curve, e: &Edge) -> Curve {
 /// `Algebraic` parameters on that input curve), and `area` = `(lo, hi)`, a certified
 /// enclosure of the exact area (lo <= area <= hi, hi - lo <= 2^-40 times the area of the box
 /// of every input node; `(0.0, 0.0)` for an empty result).
+///
+/// `polygons` and `edges` are built on first reading, then kept (the same list each time).
 #[pyclass(module = "blossom", frozen)]
 pub struct BooleanResult {
-    #[pyo3(get)]
-    polygons: Py<PyList>,
-    #[pyo3(get)]
-    holes: Vec<bool>,
-    #[pyo3(get)]
-    edges: Py<PyList>,
-    #[pyo3(get)]
-    area: (f64, f64),
+    pub(crate) result: RegionResult,
+    /// The input curves of the two operands, `sources[e.region][e.loop_index][e.curve]`.
+    pub(crate) sources: [Arc<Vec<Vec<Curve>>>; 2],
+    polygons: PyOnceLock<Py<PyList>>,
+    edges: PyOnceLock<Py<PyList>>,
+}
+
+impl BooleanResult {
+    pub(crate) fn new(result: RegionResult, sources: [Arc<Vec<Vec<Curve>>>; 2]) -> Self {
+        BooleanResult {
+            result,
+            sources,
+            polygons: PyOnceLock::new(),
+            edges: PyOnceLock::new(),
+        }
+    }
+
+    fn sources(&self) -> [&[Vec<Curve>]; 2] {
+        [&self.sources[0], &self.sources[1]]
+    }
 }
 
 #[pymethods]
 impl BooleanResult {
+    /// One `CurvedPolygon` per loop.
+    #[getter]
+    fn polygons(&self, py: Python<'_>) -> PyResult<Py<PyList>> {
+        let list = self
+            .polygons
+            .get_or_try_init(py, || -> PyResult<Py<PyList>> {
+                let polygons = self
+                    .result
+                    .loops
+                    .iter()
+                    .map(|l| loop_polygon(py, &l.edges, self.sources()))
+                    .collect::<PyResult<Vec<_>>>()?;
+                Ok(PyList::new(py, polygons)?.unbind())
+            })?;
+        Ok(list.clone_ref(py))
+    }
+
+    /// Whether each loop bounds a hole (runs clockwise).
+    #[getter]
+    fn holes(&self) -> Vec<bool> {
+        self.result.loops.iter().map(|l| l.hole).collect()
+    }
+
+    /// Per loop, the records `(region, loop_index, curve, from, to)` of its edges, the
+    /// parameters exact (`Algebraic`; made exact on this first reading).
+    #[getter]
+    fn edges(&self, py: Python<'_>) -> PyResult<Py<PyList>> {
+        let list = self.edges.get_or_try_init(py, || -> PyResult<Py<PyList>> {
+            let edges = PyList::empty(py);
+            for l in &self.result.loops {
+                let records = PyList::empty(py);
+                for e in &l.edges {
+                    let record = (
+                        e.region,
+                        e.loop_index,
+                        e.curve,
+                        algebraic(py, exact_parameter(&e.from)?)?,
+                        algebraic(py, exact_parameter(&e.to)?)?,
+                    );
+                    records.append(record)?;
+                }
+                edges.append(records)?;
+            }
+            Ok(edges.unbind())
+        })?;
+        Ok(list.clone_ref(py))
+    }
+
+    /// `(lo, hi)`: lo <= the exact area <= hi.
+    #[getter]
+    fn area(&self) -> (f64, f64) {
+        (self.result.area[0], self.result.area[1])
+    }
+
     fn __repr__(&self) -> String {
         format!(
             "<BooleanResult (loops={}, area in [{:e}, {:e}])>",
-            self.holes.len(),
-            self.area.0,
-            self.area.1
+            self.result.loops.len(),
+            self.result.area[0],
+            self.result.area[1]
         )
     }
 }
@@ -173,34 +305,12 @@ fn loop_polygon(
     Py::new(py, CurvedPolygon::of_pieces(pieces))
 }
 
-fn result_of(
-    py: Python<'_>,
-    r: &RegionResult,
-    sources: [&[Vec<Curve>]; 2],
-) -> PyResult<BooleanResult> {
-    let polygons = PyList::empty(py);
-    let edges = PyList::empty(py);
-    for l in &r.loops {
-        polygons.append(loop_polygon(py, &l.edges, sources)?)?;
-        let records = PyList::empty(py);
-        for e in &l.edges {
-            let record = (
-                e.region,
-                e.loop_index,
-                e.curve,
-                algebraic(py, exact_parameter(&e.from)?)?,
-                algebraic(py, exact_parameter(&e.to)?)?,
-            );
-            records.append(record)?;
-        }
-        edges.append(records)?;
-    }
-    Ok(BooleanResult {
-        polygons: polygons.unbind(),
-        holes: r.loops.iter().map(|l| l.hole).collect(),
-        edges: edges.unbind(),
-        area: (r.area[0], r.area[1]),
-    })
+/// The `other` argument of a boolean.
+fn region_arg<'a>(other: &'a Bound<'_, PyAny>) -> PyResult<&'a CurvedRegion> {
+    other
+        .cast::<CurvedRegion>()
+        .map(|r| r.get())
+        .map_err(|_| pyo3::exceptions::PyTypeError::new_err("other: expected a CurvedRegion"))
 }
 
 impl CurvedRegion {
@@ -212,41 +322,103 @@ impl CurvedRegion {
         max_work: Option<f64>,
     ) -> PyResult<BooleanResult> {
         let max_work = max_work_arg(max_work)?;
-        let other = other.cast::<CurvedRegion>().map_err(|_| {
-            pyo3::exceptions::PyTypeError::new_err("other: expected a CurvedRegion")
-        })?;
-        let other = other.get();
-        check_boolean_work(self, other, max_work)?;
+        let other = region_arg(other)?;
         let (a, b) = (&self.region, &other.region);
+        check_region_work(&[self, other], max_work, || boolean_work(a, b))?;
         let r = call_detached(py, &[], || boolean(a, b, op))?;
-        result_of(py, &r, [&self.curves, &other.curves])
+        Ok(BooleanResult::new(
+            r,
+            [self.curves.clone(), other.curves.clone()],
+        ))
+    }
+
+    /// Curve arguments at `loops[l][c]`, read; a curve that is not planar raises there.
+    fn read_loops(loops: &Bound<'_, PyAny>) -> PyResult<Vec<Vec<Curve>>> {
+        let mut curves = Vec::new();
+        for (l, lp) in loops.try_iter()?.enumerate() {
+            let mut row = Vec::new();
+            for (c, obj) in lp?.try_iter()?.enumerate() {
+                let path = format!("loops[{l}][{c}]");
+                let curve = curve_arg(&obj?, &path)?;
+                if curve.dim() != 2 {
+                    return Err(bad(
+                        &path,
+                        "Dimension",
+                        format!(
+                            "regions are planar (dimension 2), found dimension {}",
+                            curve.dim()
+                        ),
+                    ));
+                }
+                row.push(curve);
+            }
+            curves.push(row);
+        }
+        Ok(curves)
     }
 }
 
 #[pymethods]
 impl CurvedRegion {
+    /// The region of `loops` (each a sequence of Curves or `2 x N` node arrays, each curve
+    /// starting exactly where the previous one ends; none for the empty region) under
+    /// `fill_rule`. Float64 curves stay doubles (read exactly by the library); a region with an
+    /// exact curve is exact.
     #[new]
     #[pyo3(signature = (loops, fill_rule = "nonzero"))]
     fn new(loops: &Bound<'_, PyAny>, fill_rule: &str) -> PyResult<Self> {
         let fill = fill_rule_arg(fill_rule)?;
-        let mut curves = Vec::new();
-        let mut exact = Vec::new();
-        for (l, lp) in loops.try_iter()?.enumerate() {
-            let lp = lp?;
-            let mut row = Vec::new();
-            let mut row_exact = Vec::new();
-            for (c, obj) in lp.try_iter()?.enumerate() {
-                let path = format!("loops[{l}][{c}]");
-                let curve = curve_arg(&obj?, &path)?;
-                row_exact.push(planar_bezier(&curve, &path)?);
-                row.push(curve);
-            }
-            curves.push(row);
-            exact.push(row_exact);
-        }
+        let curves = Self::read_loops(loops)?;
+        let doubles: Option<Vec<Vec<Bezier<f64, 2>>>> = curves
+            .iter()
+            .map(|row| row.iter().map(planar_f64).collect())
+            .collect();
         // The library's paths are relative to the region: `loops[l][c]`, as Python's.
-        let region = crate::errors::call(&[], || Region::new(exact, fill))?;
-        Ok(CurvedRegion { region, curves })
+        let region = match doubles {
+            Some(d) => call(&[], || Region::from_f64(d, fill))?,
+            None => {
+                let exact = curves
+                    .iter()
+                    .enumerate()
+                    .map(|(l, row)| {
+                        row.iter()
+                            .enumerate()
+                            .map(|(c, curve)| planar_bezier(curve, &format!("loops[{l}][{c}]")))
+                            .collect::<PyResult<Vec<_>>>()
+                    })
+                    .collect::<PyResult<Vec<_>>>()?;
+                call(&[], || Region::new(exact, fill))?
+            }
+        };
+        Ok(CurvedRegion {
+            region,
+            curves: Arc::new(curves),
+        })
+    }
+
+    /// The fill rule: `"nonzero"` or `"evenodd"`.
+    #[getter]
+    fn fill_rule(&self) -> &'static str {
+        match self.region.fill() {
+            FillRule::NonZero => "nonzero",
+            FillRule::EvenOdd => "evenodd",
+        }
+    }
+
+    /// The region under its own fill rule as simple oriented loops (overlap removal, the
+    /// library's `simplify`): loops that overlap or cross themselves merged, the parts the
+    /// fill rule leaves out removed, parts of zero area dropped. A `BooleanResult` whose
+    /// edges all name region 0 (`self`).
+    #[pyo3(signature = (*, max_work = None))]
+    fn simplify(&self, py: Python<'_>, max_work: Option<f64>) -> PyResult<BooleanResult> {
+        let max_work = max_work_arg(max_work)?;
+        let a = &self.region;
+        check_region_work(&[self], max_work, || simplify_work(a))?;
+        let r = call_detached(py, &[], || simplify(a))?;
+        Ok(BooleanResult::new(
+            r,
+            [self.curves.clone(), Arc::new(Vec::new())],
+        ))
     }
 
     /// The region of a planar `Triangle` (the loop of its three edges, fill nonzero).
@@ -265,7 +437,7 @@ impl CurvedRegion {
     #[getter]
     fn loops<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         let out = PyList::empty(py);
-        for row in &self.curves {
+        for row in self.curves.iter() {
             out.append(crate::curve::curves_tuple(py, row.clone())?)?;
         }
         Ok(out)
@@ -361,21 +533,22 @@ impl CurvedRegion {
 const SMALL_CURVES: usize = 8;
 const SMALL_DEGREE: usize = 4;
 
-/// Refuses a boolean whose estimated work (`boolean_work`) is over `max_work`; small inputs
-/// (bounded by [`SMALL_CURVES`] and [`SMALL_DEGREE`]) are not estimated.
-fn check_boolean_work(a: &CurvedRegion, b: &CurvedRegion, max_work: Option<f64>) -> PyResult<()> {
+/// Refuses a boolean of `regions` whose estimated work (`estimate`: `boolean_work` or
+/// `simplify_work`) is over `max_work`; small inputs (bounded by [`SMALL_CURVES`] and
+/// [`SMALL_DEGREE`]) are not estimated unless `max_work` is given.
+fn check_region_work(
+    regions: &[&CurvedRegion],
+    max_work: Option<f64>,
+    estimate: impl FnOnce() -> u128,
+) -> PyResult<()> {
     // The curves as given (the library's exact curves of a region of doubles are made only
     // when needed).
-    let curves = || a.curves.iter().chain(&b.curves).flatten();
+    let curves = || regions.iter().flat_map(|r| r.curves.iter().flatten());
     let small = curves().count() <= SMALL_CURVES && curves().all(|c| c.degree() <= SMALL_DEGREE);
     if small && max_work.is_none() {
         return Ok(());
     }
-    check_work(boolean_work(&a.region, &b.region), max_work)
-}
-
-fn fill_rule_arg(name: &str) -> PyResult<FillRule> {
-    fill_rule(name)
+    check_work(estimate(), max_work)
 }
 
 /// The region of a planar triangle, the argument `arg`, made once and kept on the triangle.
@@ -424,7 +597,7 @@ fn triangle_region(t: &Triangle, arg: &str) -> PyResult<CurvedRegion> {
     let edges = t.edge_curves();
     Ok(CurvedRegion {
         region,
-        curves: vec![edges],
+        curves: Arc::new(vec![edges]),
     })
 }
 
@@ -441,8 +614,8 @@ pub fn triangle_intersect(
     let max_work = max_work_arg(max_work)?;
     let a = cached_region(t1, "self")?;
     let b = cached_region(t2, "other")?;
-    check_boolean_work(a, b, max_work)?;
     let (ra, rb) = (&a.region, &b.region);
+    check_region_work(&[a, b], max_work, || boolean_work(ra, rb))?;
     // Small pairs (the float path: microseconds) keep the GIL: releasing it costs more.
     let r = if boolean_work(ra, rb) < 100_000 {
         call(&[], || triangle_intersection(ra, rb))?
@@ -456,7 +629,11 @@ pub fn triangle_intersect(
         return Ok(out.unbind());
     }
     for l in &r.loops {
-        out.append(loop_polygon(py, &l.edges, [&a.curves, &b.curves])?)?;
+        out.append(loop_polygon(
+            py,
+            &l.edges,
+            [a.curves.as_slice(), b.curves.as_slice()],
+        )?)?;
     }
     Ok(out.unbind())
 }
