@@ -17,17 +17,15 @@
 //! coefficients f_0 = 0, f_(k+1) = f_k + c_k / (2n), and F(1) = f_(2n). A piece from a to b
 //! contributes F(b) - F(a).
 
-use super::split::{Mark, Split};
-use super::walk::BoundaryLoop;
+use super::graph::Graph;
 use crate::intersect::interval::{lower, upper, ConvexStep};
 use crate::num::bounded::{BoundedF64, UNIT_ROUNDOFF};
 use crate::num::ring::Ring;
 use crate::region::boolean::{Edge, Outline, ResultLoop};
-use crate::region::input::Doubles;
+use crate::region::chain::Run;
 use crate::region::input::MAX_REGION_DEGREE;
-use crate::region::parameter::{Crossings, Parameter};
+use crate::region::parameter::Parameter;
 use crate::shape::flat::curve_pyramid_in_place;
-use std::sync::Arc;
 
 /// The sign of an enclosure: `Some(±1)` when it excludes zero.
 fn sign(x: &BoundedF64) -> Option<i64> {
@@ -70,25 +68,6 @@ fn hodograph(points: &[[f64; 2]], out: &mut [BoundedF64; LEVEL]) -> usize {
         }
     }
     2 * (points.len() - 1)
-}
-
-/// The exact sign of cross(P'(s*), Q'(t*)) at a certified crossing (s* in `s_box` around
-/// `s`, t* in `t_box` around `t`), or `None` when the enclosure of the cross product does
-/// not exclude zero.
-pub(super) fn crossing_sign(
-    p: &[[f64; 2]],
-    q: &[[f64; 2]],
-    s: f64,
-    s_box: [f64; 2],
-    t: f64,
-    t_box: [f64; 2],
-) -> Option<i64> {
-    let mut h = [BoundedF64::default(); LEVEL];
-    let len = hodograph(p, &mut h);
-    let a = evaluate(&h[..len], 2, parameter(s, s_box));
-    let len = hodograph(q, &mut h);
-    let b = evaluate(&h[..len], 2, parameter(t, t_box));
-    sign(&a[0].mul(&b[1]).sub(&a[1].mul(&b[0])))
 }
 
 /// C(n, k) (exact for the degrees taken, n <= 2 * 20).
@@ -161,8 +140,8 @@ fn area_coefficients(points: &[[f64; 2]], o: f64, f: &mut Vec<BoundedF64>) {
 
 /// The area coefficients of the curves the answer needs, one after the other, computed on
 /// first use.
-pub(super) struct Areas<'s, 'a> {
-    split: &'s Split<'a>,
+pub(super) struct Areas<'g, 'a> {
+    graph: &'g Graph<'a>,
     /// Curve c's coefficients are `coefficients[spans[c].0..spans[c].1]` (an empty span:
     /// not computed yet).
     coefficients: Vec<BoundedF64>,
@@ -170,103 +149,63 @@ pub(super) struct Areas<'s, 'a> {
     origin: f64,
 }
 
-impl<'s, 'a> Areas<'s, 'a> {
-    pub(super) fn new(split: &'s Split<'a>) -> Self {
-        let (lo, hi) = split
+impl<'g, 'a> Areas<'g, 'a> {
+    pub(super) fn new(graph: &'g Graph<'a>) -> Self {
+        let (lo, hi) = graph
             .curves
             .iter()
             .fold((f64::MAX, f64::MIN), |(lo, hi), c| {
                 (lo.min(c.bbox[0]), hi.max(c.bbox[2]))
             });
         Areas {
-            split,
+            graph,
             coefficients: Vec::new(),
-            spans: vec![(0, 0); split.curves.len()],
+            spans: vec![(0, 0); graph.curves.len()],
             origin: lo / 2.0 + hi / 2.0,
         }
     }
 
-    /// F_c at position `k` of curve c (0: its start, `marks.len() + 1`: its end, else the
-    /// crossing `marks[k - 1]`).
+    /// F_c at parameter index `k` of curve c.
     fn at(&mut self, c: usize, k: usize) -> BoundedF64 {
         if self.spans[c].0 == self.spans[c].1 {
             let start = self.coefficients.len();
             area_coefficients(
-                self.split.curves[c].points,
+                self.graph.curves[c].points,
                 self.origin,
                 &mut self.coefficients,
             );
             self.spans[c] = (start, self.coefficients.len());
         }
         let f = &self.coefficients[self.spans[c].0..self.spans[c].1];
-        let marks = &self.split.marks[c];
+        let params = &self.graph.params[c];
         if k == 0 {
             return f[0];
         }
-        if k == marks.len() + 1 {
+        if k == params.len() - 1 {
             return f[f.len() - 1];
         }
-        let m: Mark = marks[k - 1];
-        let x = &self.split.crossings[m.crossing];
-        evaluate(f, 1, parameter(x.nearest[m.side], x.enclosures[m.side]))[0]
+        evaluate(f, 1, bounded(&params[k]))[0]
     }
 }
 
-/// The sign of the signed area of loop `l` of the input, or `None` when its enclosure does
-/// not exclude zero.
-pub(super) fn loop_area_sign(areas: &mut Areas<'_, '_>, l: usize) -> Option<i64> {
-    let lp = &areas.split.loops[l];
-    let mut sum = BoundedF64::exact(0.0);
-    for c in lp.first..lp.first + lp.len {
-        let end = areas.split.marks[c].len() + 1;
-        sum = sum.add(&areas.at(c, end));
-    }
-    sign(&sum)
+/// The parameter as its double with the width of its enclosure as the bound.
+fn bounded(p: &Parameter) -> BoundedF64 {
+    parameter(p.to_f64(), p.enclosure())
 }
 
-/// The parameter of position `k` of curve c, as the answer gives it (`all`: the crossings,
-/// made once the answer has any).
-fn parameter_at(
-    split: &Split<'_>,
-    all: &mut Option<Arc<Crossings>>,
-    doubles: [&Arc<Doubles>; 2],
-    c: usize,
-    k: usize,
-) -> Parameter {
-    let marks = &split.marks[c];
-    if k == 0 || k == marks.len() + 1 {
-        return Parameter::end(k != 0);
-    }
-    let m = marks[k - 1];
-    let x = &split.crossings[m.crossing];
-    let all = all
-        .get_or_insert_with(|| {
-            Crossings::new(
-                [doubles[0].clone(), doubles[1].clone()],
-                split.pairs.clone(),
-            )
-        })
-        .clone();
-    Parameter::crossing(
-        all,
-        x.pair,
-        m.side,
-        x.enclosures[0],
-        x.enclosures[1],
-        x.nearest[m.side],
-    )
+/// An enclosure of the derivative P'(t) of the curve with control points `points` at the
+/// parameter t.
+pub(super) fn tangent(points: &[[f64; 2]], t: &Parameter) -> [BoundedF64; 2] {
+    let mut h = [BoundedF64::default(); LEVEL];
+    let len = hodograph(points, &mut h);
+    evaluate(&h[..len], 2, bounded(t))
 }
 
 /// The answer: each boundary loop's edges, whether it is a hole (the sign of its area), and
 /// the enclosure of the total area; `None` when a loop's sign is not proved or the area
 /// enclosure is wider than the promised 2^-40 B.
-pub(super) fn answer(
-    areas: &mut Areas<'_, '_>,
-    loops: Vec<BoundaryLoop>,
-    doubles: [&Arc<Doubles>; 2],
-) -> Option<Outline> {
-    let split = areas.split;
-    let mut all = None;
+pub(super) fn answer(areas: &mut Areas<'_, '_>, loops: Vec<Vec<Run>>) -> Option<Outline> {
+    let graph = areas.graph;
     let mut total = BoundedF64::exact(0.0);
     let mut out = Vec::with_capacity(loops.len());
     for runs in &loops {
@@ -274,13 +213,13 @@ pub(super) fn answer(
         let mut edges = Vec::with_capacity(runs.len());
         for r in runs {
             sum = sum.add(&areas.at(r.curve, r.to).sub(&areas.at(r.curve, r.from)));
-            let id = split.curves[r.curve].id;
+            let id = graph.curves[r.curve].id;
             edges.push(Edge {
                 region: id.region,
                 loop_index: id.loop_index,
                 curve: id.curve,
-                from: parameter_at(split, &mut all, doubles, r.curve, r.from),
-                to: parameter_at(split, &mut all, doubles, r.curve, r.to),
+                from: graph.params[r.curve][r.from].clone(),
+                to: graph.params[r.curve][r.to].clone(),
             });
         }
         let hole = sign(&sum)? < 0;
@@ -295,7 +234,7 @@ pub(super) fn answer(
     }
     let area = [lower(&total), upper(&total)];
     // B, the input box's area, rounded down.
-    let b = split
+    let b = graph
         .curves
         .iter()
         .fold([f64::MAX, f64::MAX, f64::MIN, f64::MIN], |b, c| {
