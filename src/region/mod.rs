@@ -100,9 +100,11 @@ mod crossing;
 mod curve;
 mod filtered;
 mod input;
+mod output;
 mod parameter;
 mod pipeline;
 mod prune;
+mod svg;
 mod transfer;
 mod winding;
 
@@ -113,10 +115,15 @@ mod tests_curved;
 #[cfg(test)]
 mod tests_grid;
 
+#[cfg(feature = "kurbo")]
+pub use crate::interop::kurbo_region::binary_op;
 pub use boolean::{
     boolean, boolean_work, simplify, simplify_work, triangle_intersection, BooleanOp, Edge,
     RegionResult, ResultLoop,
 };
 pub use input::{FillRule, Region, MAX_REGION_DEGREE};
 pub use parameter::Parameter;
+pub use svg::parse_svg_path;
+#[cfg(feature = "kurbo")]
+pub(crate) use svg::Subpaths;
 pub use winding::{Position, Winding};
