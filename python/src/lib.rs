@@ -11,7 +11,8 @@
 //! (`restrict_curves`), `zeros` (`bezier_zeros`), `area` (exact signed areas), `length` (arc
 //! length by quadrature), `validity` (the exact sign of a triangle's Jacobian), `region`
 //! (`CurvedRegion`, `BooleanResult`, `Triangle.intersect`: the library's region booleans),
-//! `pen` (`RegionPen`: a fontTools pen recording an outline into a region).
+//! `pen` (`RegionPen`: a fontTools pen recording an outline into a region), `draw` (a result
+//! as pen calls: `BooleanResult.draw`).
 
 // The pyclasses' methods are called from Python only.
 #![allow(clippy::new_ret_no_self)]
@@ -19,6 +20,7 @@
 mod area;
 mod batch;
 mod curve;
+mod draw;
 mod errors;
 mod length;
 mod numbers;

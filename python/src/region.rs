@@ -15,6 +15,7 @@
 //! library's call and little more.
 
 use crate::curve::{check_work, max_work_arg, Curve, CurveShape};
+use crate::draw::{input_clockwise, is_input_outline, loop_commands, loop_starts, Command, Point};
 use crate::errors::{bad, call, call_detached, from_lib, name_arg};
 use crate::numbers::{read_array, rounded, Num};
 use crate::records::Algebraic;
@@ -26,8 +27,8 @@ use blossom::region::{
 use blossom::{AlgebraicReal, Bezier, BezierCurve, Rational};
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
-use pyo3::types::PyList;
-use std::sync::Arc;
+use pyo3::types::{PyList, PyTuple};
+use std::sync::{Arc, OnceLock};
 
 /// A planar region bounded by closed loops of Curves (each curve starting exactly where the
 /// previous one ends), filled by the rule `fill_rule`: `"nonzero"` (default) or `"evenodd"`,
@@ -41,37 +42,32 @@ pub struct CurvedRegion {
     pub(crate) curves: Arc<Vec<Vec<Curve>>>,
 }
 
-/// The region of loops of curves of doubles (`loops[l][c]` the control points of curve c of
-/// loop l), each number read exactly: the library's float path reads them as they are.
-pub fn region_of_f64(loops: Vec<Vec<Vec<[f64; 2]>>>, fill: FillRule) -> PyResult<CurvedRegion> {
-    let mut beziers = Vec::with_capacity(loops.len());
-    let mut curves = Vec::with_capacity(loops.len());
-    for (l, lp) in loops.into_iter().enumerate() {
-        let mut row = Vec::with_capacity(lp.len());
-        let mut row_curves = Vec::with_capacity(lp.len());
-        for (c, points) in lp.into_iter().enumerate() {
-            let coords = points.iter().flatten().copied().collect();
-            let shape = BezierCurve::from_coordinates(2, coords).map_err(|e| {
-                bad(
-                    format!("loops[{l}][{c}]"),
-                    &format!("{:?}", e.kind()),
-                    &e.message,
-                )
-            })?;
-            row_curves.push(Curve {
-                shape: CurveShape::F64(shape),
-            });
-            row.push(Bezier::new(points).map_err(|e| {
-                bad(
-                    format!("loops[{l}][{c}]"),
-                    &format!("{:?}", e.kind()),
-                    &e.message,
-                )
-            })?);
-        }
-        beziers.push(row);
-        curves.push(row_curves);
+/// A float64 planar Curve of control points.
+fn curve_of_points(points: &[Point]) -> Curve {
+    let coords = points.iter().flatten().copied().collect();
+    Curve {
+        shape: CurveShape::F64(
+            BezierCurve::from_coordinates(2, coords).expect("a curve has a control point"),
+        ),
     }
+}
+
+/// The region of loops of curves of doubles (`loops[l][c]` the control points of curve c of
+/// loop l, at least one point each), each number read exactly: the library's float path reads
+/// them as they are.
+pub fn region_of_f64(loops: Vec<Vec<Vec<Point>>>, fill: FillRule) -> PyResult<CurvedRegion> {
+    let curves: Vec<Vec<Curve>> = loops
+        .iter()
+        .map(|lp| lp.iter().map(|p| curve_of_points(p)).collect())
+        .collect();
+    let beziers = loops
+        .into_iter()
+        .map(|lp| {
+            lp.into_iter()
+                .map(|p| Bezier::new(p).expect("a curve has a control point"))
+                .collect()
+        })
+        .collect();
     // The library's paths are relative to the region: `loops[l][c]`, as Python's.
     let region = call(&[], || Region::from_f64(beziers, fill))?;
     Ok(CurvedRegion {
@@ -205,6 +201,9 @@ pub struct BooleanResult {
     pub(crate) sources: [Arc<Vec<Vec<Curve>>>; 2],
     polygons: PyOnceLock<Py<PyList>>,
     edges: PyOnceLock<Py<PyList>>,
+    /// The library's `geometry()` as control points, made once.
+    pieces: OnceLock<Vec<Vec<Vec<Point>>>>,
+    geometry: PyOnceLock<Py<PyList>>,
 }
 
 impl BooleanResult {
@@ -214,11 +213,71 @@ impl BooleanResult {
             sources,
             polygons: PyOnceLock::new(),
             edges: PyOnceLock::new(),
+            pieces: OnceLock::new(),
+            geometry: PyOnceLock::new(),
         }
     }
 
     fn sources(&self) -> [&[Vec<Curve>]; 2] {
         [&self.sources[0], &self.sources[1]]
+    }
+
+    /// The pieces of every loop (`RegionResult::geometry`), as control points.
+    fn pieces(&self) -> &Vec<Vec<Vec<Point>>> {
+        self.pieces.get_or_init(|| {
+            self.result
+                .geometry()
+                .into_iter()
+                .map(|l| l.into_iter().map(|c| c.points().to_vec()).collect())
+                .collect()
+        })
+    }
+
+    /// Whether the loops are drawn reversed (clockwise outer loops) for `clockwise`, or by the
+    /// input's convention when it is None.
+    fn reversed(&self, clockwise: Option<bool>) -> bool {
+        clockwise.unwrap_or_else(|| input_clockwise(self.sources()))
+    }
+
+    /// The pen calls of the whole result, loops reversed when `reverse`; a piece of degree
+    /// over 3 or with a coordinate that overflowed raises, naming it.
+    fn commands(&self, reverse: bool) -> PyResult<Vec<Command>> {
+        let mut out = Vec::new();
+        let starts = loop_starts(self.sources());
+        for (l, pieces) in self.pieces().iter().enumerate() {
+            for (e, p) in pieces.iter().enumerate() {
+                let path = || format!("geometry[{l}][{e}]");
+                if p.len() > 4 {
+                    return Err(bad(
+                        path(),
+                        "Degree",
+                        format!(
+                            "a piece of degree {} has no pen command (lines, quadratics and \
+                             cubics only)",
+                            p.len() - 1
+                        ),
+                    ));
+                }
+                if p.iter().flatten().any(|x| !x.is_finite()) {
+                    return Err(bad(
+                        path(),
+                        "NotFinite",
+                        "a coordinate overflowed the range of doubles",
+                    ));
+                }
+            }
+            if reverse {
+                let back: Vec<Vec<Point>> = pieces
+                    .iter()
+                    .rev()
+                    .map(|p| p.iter().rev().copied().collect())
+                    .collect();
+                loop_commands(&back, &starts, &mut out);
+            } else {
+                loop_commands(pieces, &starts, &mut out);
+            }
+        }
+        Ok(out)
     }
 }
 
@@ -276,6 +335,87 @@ impl BooleanResult {
     #[getter]
     fn area(&self) -> (f64, f64) {
         (self.result.area[0], self.result.area[1])
+    }
+
+    /// The loops as float64 Curves (the library's `RegionResult::geometry`): `geometry[k][e]`
+    /// is edge e of loop k, the piece of its input curve in the edge's direction, of the
+    /// input curve's degree; each piece starts bit for bit where the previous one ends and
+    /// each loop closes exactly (every coordinate within 17 n 2^-53 M of the exact piece's,
+    /// M the largest input coordinate).
+    #[getter]
+    fn geometry(&self, py: Python<'_>) -> PyResult<Py<PyList>> {
+        let list = self
+            .geometry
+            .get_or_try_init(py, || -> PyResult<Py<PyList>> {
+                let loops = PyList::empty(py);
+                for pieces in self.pieces() {
+                    let curves: Vec<Curve> = pieces.iter().map(|p| curve_of_points(p)).collect();
+                    loops.append(PyList::new(py, curves)?)?;
+                }
+                Ok(loops.unbind())
+            })?;
+        Ok(list.clone_ref(py))
+    }
+
+    /// The result as a `CurvedRegion` (fill nonzero; its loops the `geometry`: outer loops
+    /// counter-clockwise, holes clockwise), so that booleans chain.
+    fn to_region(&self) -> PyResult<CurvedRegion> {
+        region_of_f64(self.pieces().clone(), FillRule::NonZero)
+    }
+
+    /// The result as SVG path data (the library's `RegionResult::svg`: subpath k for loop k,
+    /// `M`, then `L`, `Q`, `C` by the input curves' kinds, `Z`; numbers in the shortest form
+    /// that reads back as the same double), `""` for an empty result, None when a piece has
+    /// degree over 3.
+    #[getter]
+    fn svg(&self) -> Option<String> {
+        self.result.svg()
+    }
+
+    /// Draws the loops into a fontTools pen (`moveTo`, `lineTo`, `qCurveTo`, `curveTo`,
+    /// `closePath`): lines as `lineTo`, cubics as `curveTo`, runs of quadratics as one
+    /// `qCurveTo` with the on-curve points that are exactly the midpoints of their neighbours
+    /// left implied (`qCurveTo(*offcurves, None)` for a loop of only such points); a loop
+    /// starts at an input contour's starting point where it passes one. The outer
+    /// loops run clockwise when `clockwise` is True (TrueType's convention), counter-clockwise
+    /// when False (PostScript's, CFF's), and by the input's convention when None (clockwise
+    /// when the signed area of `self`'s loops, else of `other`'s, is negative).
+    #[pyo3(signature = (pen, *, clockwise = None))]
+    fn draw(&self, pen: &Bound<'_, PyAny>, clockwise: Option<bool>) -> PyResult<()> {
+        let py = pen.py();
+        let point = |p: &Point| (p[0], p[1]);
+        for c in self.commands(self.reversed(clockwise))? {
+            match c {
+                Command::MoveTo(p) => pen.call_method1("moveTo", (point(&p),))?,
+                Command::LineTo(p) => pen.call_method1("lineTo", (point(&p),))?,
+                Command::QCurveTo(ps) => {
+                    let args = PyTuple::new(py, ps.iter().map(point))?;
+                    pen.call_method1("qCurveTo", args)?
+                }
+                Command::QCurveClosed(ps) => {
+                    let mut args: Vec<Bound<'_, PyAny>> = Vec::with_capacity(ps.len() + 1);
+                    for p in &ps {
+                        args.push(point(p).into_pyobject(py)?.into_any());
+                    }
+                    args.push(py.None().into_bound(py));
+                    pen.call_method1("qCurveTo", PyTuple::new(py, args)?)?
+                }
+                Command::CurveTo(ps) => {
+                    pen.call_method1("curveTo", PyTuple::new(py, ps.iter().map(point))?)?
+                }
+                Command::ClosePath => pen.call_method0("closePath")?,
+            };
+        }
+        Ok(())
+    }
+
+    /// Whether drawing the result (`draw(pen, clockwise=clockwise)`) draws `self`'s own
+    /// contours: each loop one whole loop of region 0 (all its curves, whole, in order, the
+    /// input's way round), each of them once (the test `remove_overlaps` makes to keep a
+    /// glyph that has nothing to remove).
+    #[pyo3(signature = (*, clockwise = None))]
+    fn _draws_input(&self, clockwise: Option<bool>) -> bool {
+        is_input_outline(&self.result, &self.sources[0], self.reversed(clockwise))
     }
 
     fn __repr__(&self) -> String {
@@ -394,6 +534,34 @@ impl CurvedRegion {
             region,
             curves: Arc::new(curves),
         })
+    }
+
+    /// `(xmin, ymin, xmax, ymax)`: a box holding every control point (exact for float64
+    /// curves, rounded outward for exact ones), so the region lies in it; None without
+    /// curves. (For quick rejections, such as `remove_overlaps`' test of components.)
+    fn _control_box(&self) -> Option<(f64, f64, f64, f64)> {
+        let mut out: Option<(f64, f64, f64, f64)> = None;
+        for c in self.curves.iter().flatten() {
+            let (coords, widen) = match &c.shape {
+                CurveShape::F64(x) => (x.coordinates().to_vec(), false),
+                CurveShape::Exact(x) => (rounded(x.coordinates()), true),
+            };
+            for p in coords.chunks_exact(2) {
+                let (lo, hi) = if widen {
+                    (
+                        [p[0].next_down(), p[1].next_down()],
+                        [p[0].next_up(), p[1].next_up()],
+                    )
+                } else {
+                    ([p[0], p[1]], [p[0], p[1]])
+                };
+                out = Some(match out {
+                    None => (lo[0], lo[1], hi[0], hi[1]),
+                    Some((a, b, c, d)) => (a.min(lo[0]), b.min(lo[1]), c.max(hi[0]), d.max(hi[1])),
+                });
+            }
+        }
+        out
     }
 
     /// The fill rule: `"nonzero"` or `"evenodd"`.

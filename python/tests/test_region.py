@@ -340,7 +340,7 @@ def test_simplify_of_a_self_crossing_loop_under_both_rules():
     assert len(tips.polygons) == 5
     # A loop traversed clockwise is the same set: simplify gives the same area.
     backwards = loops_region([star[::-1]]).simplify()
-    assert backwards.area == whole.area
+    assert max(backwards.area[0], whole.area[0]) <= min(backwards.area[1], whole.area[1])
 
 
 def test_simplify_drops_a_loop_that_cancels_and_keeps_a_hole():
