@@ -2,6 +2,7 @@
 library's Rust call (benches/python/region_call.rs), on the same numbers, in one run.
 
     python benches/python/region_call.py [--no-rust] [--passes 3] [--font PATH] [--glyphs a,O,...]
+    python benches/python/region_call.py --callgrind [--calls 200]
 
 Cases (each written to a text file that the Rust side reads, numbers as repr of doubles):
   * square_circle: the union of the square [0, 2]^2 (4 lines) and a 4-cubic circle of
@@ -21,6 +22,14 @@ about 20 ms):
 and the ratio Python / Rust is printed for each, with the Rust time of the work estimate
 (simplify_work or boolean_work), which the Python call computes first when the regions hold
 more than 8 curves or a curve of degree over 4 (column "est").
+
+With --callgrind (needs valgrind), each case's operation is instead run `calls` times on kept
+regions in a Python process under callgrind, and the instructions per call are printed (load
+does not change them): the extension's method as Python calls it (pyo3's trampoline, inclusive:
+argument handling, the work estimate, the library call, the BooleanResult), the library call
+inside it (blossom::region::boolean::simplify or ::boolean), and their difference, the
+binding's own cost (the deallocation of each result, which holds the RegionResult whose drop
+the Rust loop pays too, is not in either count).
 
 Needs numpy, fontTools and an installed blossom; cargo for the Rust side
 (`cargo run --release -p blossom-python --example region_call --features rust-bench`).
@@ -184,14 +193,66 @@ def rust_side(path):
     return out
 
 
+CALLGRIND_SCRIPT = """
+import pickle, sys
+import numpy as np
+import blossom
+name, op, regions, calls = pickle.load(open(sys.argv[1], "rb"))
+built = [blossom.CurvedRegion([[np.array(c, dtype=float).T.copy() for c in lp] for lp in loops])
+         for loops in regions]
+run = (lambda: built[0].simplify()) if op == "simplify" else (lambda: getattr(built[0], op)(built[1]))
+run()
+for _ in range(calls):
+    run()
+"""
+
+
+def callgrind(cases_, calls):
+    import pickle
+    import re
+
+    symbols = {
+        "method": r"pyo3::impl_::trampoline::trampoline ",
+        "library": r"blossom::region::boolean::(simplify|boolean) ",
+    }
+    print(f"instructions per call (callgrind, {calls} calls on kept regions after one more)")
+    print(f"{'case':<24} {'method':>11} {'library':>11} {'binding':>9} {'ratio':>6}")
+    with tempfile.TemporaryDirectory() as d:
+        script = os.path.join(d, "run.py")
+        with open(script, "w") as f:
+            f.write(CALLGRIND_SCRIPT)
+        for name, op, regions in cases_:
+            data = os.path.join(d, "case.pickle")
+            with open(data, "wb") as f:
+                pickle.dump((name, op, regions, calls), f)
+            out = os.path.join(d, "callgrind.out")
+            subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}",
+                            sys.executable, script, data], check=True, capture_output=True)
+            text = subprocess.run(["callgrind_annotate", "--inclusive=yes", out], check=True,
+                                  capture_output=True, text=True).stdout
+            counts = {}
+            for key, pattern in symbols.items():
+                for line in text.splitlines():
+                    if re.search(r"[?]+:" + pattern, line):
+                        counts[key] = int(line.split()[0].replace(",", "")) / (calls + 1)
+                        break
+            m, lib = (counts.get(k, float("nan")) for k in ("method", "library"))
+            print(f"{name:<24} {m:11.0f} {lib:11.0f} {m - lib:9.0f} {m / lib:6.3f}")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--no-rust", action="store_true")
     parser.add_argument("--font", default="/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf")
     parser.add_argument("--glyphs", default="a,O,g,ampersand,Aring,B")
     parser.add_argument("--passes", type=int, default=3)
+    parser.add_argument("--callgrind", action="store_true")
+    parser.add_argument("--calls", type=int, default=200)
     args = parser.parse_args()
     cs = cases(args)
+    if args.callgrind:
+        callgrind(cs, args.calls)
+        return
     # The two sides alternate (a Rust pass, a Python pass, ...) and each figure is the best
     # over the passes: on a shared machine the load drifts between the two processes.
     best = lambda old, new: {k: tuple(map(min, zip(old[k], v))) if k in old else v
