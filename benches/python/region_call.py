@@ -200,7 +200,13 @@ import blossom
 name, op, regions, calls = pickle.load(open(sys.argv[1], "rb"))
 built = [blossom.CurvedRegion([[np.array(c, dtype=float).T.copy() for c in lp] for lp in loops])
          for loops in regions]
-run = (lambda: built[0].simplify()) if op == "simplify" else (lambda: getattr(built[0], op)(built[1]))
+if op != "simplify":
+    run = lambda: getattr(built[0], op)(built[1])
+elif hasattr(built[0], "simplify"):
+    run = lambda: built[0].simplify()
+else:  # a blossom before CurvedRegion.simplify: the union with the empty region
+    empty = blossom.CurvedRegion([])
+    run = lambda: built[0].union(empty)
 run()
 for _ in range(calls):
     run()

@@ -1,7 +1,9 @@
 //! The library's region layer (`blossom::region`) for Python: `CurvedRegion` (loops of planar
-//! Curves with a fill rule) with the certified booleans and exact winding numbers,
-//! `BooleanResult` (the result's loops as `CurvedPolygon`s, their exact edge records and the
-//! area enclosure), and `Triangle.intersect` (bezier's return convention).
+//! Curves with a fill rule) with the certified booleans, overlap removal (`simplify`) and
+//! exact winding numbers, `BooleanResult` (the result's loops as `CurvedPolygon`s, their exact
+//! edge records, the area enclosure, the library's geometry with shared ends, the result as a
+//! region again, as SVG path data, and drawn into a fontTools pen: `crate::draw`), and
+//! `Triangle.intersect` (bezier's return convention).
 //!
 //! Every decision is the library's, exact for the input numbers (float64 nodes are read
 //! exactly). The result's edges are pieces of the input curves between exact parameters; a
