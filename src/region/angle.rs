@@ -233,7 +233,7 @@ mod tests {
 
     #[test]
     fn tangent_branches_and_a_cusp_are_ordered_exactly() {
-        let curves = vec![
+        let curves = [
             // 0: y = x^2 from the origin (quadratic (0,0), (1/2,0), (1,1)).
             curve(&[(0, 0, 1), (1, 0, 2), (1, 1, 1)]),
             // 1: y = x^3 from the origin, as a cubic: (0,0), (1/3,0), (2/3,0), (1,1).

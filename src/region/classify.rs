@@ -41,12 +41,12 @@ fn sample(curve: &Curve, a: &crate::AlgebraicReal, b: &crate::AlgebraicReal) -> 
 /// but the piece's own group passes through its inner points; `mult[r]` is the signed number
 /// of the group's pieces of region r (+1 for one running the curve's way), `curves[r]` every
 /// curve of region r (the piece's own curve among them).
-pub(crate) fn sides_of_piece<'c>(
+pub(crate) fn sides_of_piece(
     curve: &Curve,
     a: &crate::AlgebraicReal,
     b: &crate::AlgebraicReal,
     mult: [i64; 2],
-    curves: [Vec<&'c Curve>; 2],
+    curves: [Vec<&Curve>; 2],
 ) -> [[i64; 2]; 2] {
     let m = sample(curve, a, b);
     let x = curve.at(&m);

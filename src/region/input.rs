@@ -79,6 +79,9 @@ struct RegionData {
     /// The control points as doubles when every coordinate is one exactly (the float path
     /// of the booleans reads these).
     doubles: Option<Arc<Doubles>>,
+    /// Whether the float path proved the loops simple and pairwise disjoint (computed by the
+    /// first boolean that asks, then kept: a fact about the region alone).
+    simple: OnceLock<bool>,
 }
 
 impl PartialEq for Region {
@@ -218,6 +221,7 @@ impl Region {
             loops: OnceLock::from(loops),
             fill,
             doubles,
+            simple: OnceLock::new(),
         })))
     }
 
@@ -259,6 +263,7 @@ impl Region {
             loops: OnceLock::new(),
             fill,
             doubles: Some(Arc::new(doubles)),
+            simple: OnceLock::new(),
         })))
     }
 
@@ -330,6 +335,7 @@ impl Region {
             loops: OnceLock::from(Vec::new()),
             fill,
             doubles: Some(Arc::new(Vec::new())),
+            simple: OnceLock::new(),
         }))
     }
 
@@ -368,6 +374,12 @@ impl Region {
     /// coordinate is a double exactly.
     pub(crate) fn doubles(&self) -> Option<&Arc<Doubles>> {
         self.0.doubles.as_ref()
+    }
+
+    /// Whether the float path proved the region's loops simple and pairwise disjoint, by
+    /// `prove` on the first call.
+    pub(crate) fn proved_simple(&self, prove: impl FnOnce() -> bool) -> bool {
+        *self.0.simple.get_or_init(prove)
     }
 }
 

@@ -34,7 +34,7 @@
 //! piece.
 
 use super::boolean::{Edge, RegionResult};
-use super::input::{Doubles, FillRule, Region};
+use super::input::{FillRule, Region};
 use super::parameter::Parameter;
 use crate::error::{Error, ErrorKind, Result};
 use crate::num::ring::rational_to_f64;
@@ -42,33 +42,20 @@ use crate::shape::array::Bezier;
 use crate::shape::flat::curve_subsegment_fixed;
 use std::borrow::Cow;
 
-/// The control points of a region's curves as doubles: its own, or its exact numbers rounded.
-fn doubles_of(region: &Region) -> Cow<'_, Doubles> {
+/// The control points (as doubles) of the input curve an edge is a piece of: the region's own
+/// doubles, or its exact numbers rounded to the nearest double.
+fn curve_of<'a>(inputs: &'a [Region; 2], e: &Edge) -> Cow<'a, [[f64; 2]]> {
+    let region = &inputs[e.region];
     match region.doubles() {
-        Some(d) => Cow::Borrowed(d.as_ref()),
+        Some(d) => Cow::Borrowed(&d[e.loop_index][e.curve]),
         None => Cow::Owned(
-            region
-                .loops()
+            region.loops()[e.loop_index][e.curve]
+                .points()
                 .iter()
-                .map(|curves| {
-                    curves
-                        .iter()
-                        .map(|c| {
-                            c.points()
-                                .iter()
-                                .map(|p| [rational_to_f64(&p[0]), rational_to_f64(&p[1])])
-                                .collect()
-                        })
-                        .collect()
-                })
+                .map(|p| [rational_to_f64(&p[0]), rational_to_f64(&p[1])])
                 .collect(),
         ),
     }
-}
-
-/// The control points (as doubles) of the input curve an edge is a piece of.
-fn curve_of<'a>(curves: &'a [Cow<'_, Doubles>; 2], e: &Edge) -> &'a [[f64; 2]] {
-    &curves[e.region][e.loop_index][e.curve]
 }
 
 /// The input curve's own control point where `p` is its end 0 or 1.
@@ -86,13 +73,14 @@ fn end_point(points: &[[f64; 2]], p: &Parameter) -> Option<[f64; 2]> {
 /// pieces that meet there.
 fn loop_pieces(
     edges: &[Edge],
-    curves: &[Cow<'_, Doubles>; 2],
+    inputs: &[Region; 2],
     scratch: &mut Vec<f64>,
 ) -> Vec<Bezier<f64, 2>> {
+    let curves: Vec<Cow<'_, [[f64; 2]]>> = edges.iter().map(|e| curve_of(inputs, e)).collect();
     let mut pieces: Vec<Vec<[f64; 2]>> = edges
         .iter()
-        .map(|e| {
-            let points = curve_of(curves, e);
+        .zip(&curves)
+        .map(|(e, points)| {
             let mut out = vec![[0.0; 2]; points.len()];
             curve_subsegment_fixed::<f64, 2>(
                 points.as_flattened(),
@@ -107,12 +95,10 @@ fn loop_pieces(
     let k = edges.len();
     for i in 0..k {
         let previous = (i + k - 1) % k;
-        let (incoming, outgoing) = (&edges[previous], &edges[i]);
-        let computed = pieces[previous][pieces[previous].len() - 1];
-        let vertex = end_point(curve_of(curves, outgoing), &outgoing.from)
-            .or_else(|| end_point(curve_of(curves, incoming), &incoming.to))
-            .unwrap_or(computed);
         let last = pieces[previous].len() - 1;
+        let vertex = end_point(&curves[i], &edges[i].from)
+            .or_else(|| end_point(&curves[previous], &edges[previous].to))
+            .unwrap_or(pieces[previous][last]);
         pieces[previous][last] = vertex;
         pieces[i][0] = vertex;
     }
@@ -177,11 +163,10 @@ impl RegionResult {
     /// # Ok::<(), blossom::Error>(())
     /// ```
     pub fn geometry(&self) -> Vec<Vec<Bezier<f64, 2>>> {
-        let curves = [doubles_of(&self.inputs[0]), doubles_of(&self.inputs[1])];
         let mut scratch = Vec::new();
         self.loops
             .iter()
-            .map(|l| loop_pieces(&l.edges, &curves, &mut scratch))
+            .map(|l| loop_pieces(&l.edges, &self.inputs, &mut scratch))
             .collect()
     }
 

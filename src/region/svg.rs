@@ -374,8 +374,8 @@ fn draw(
 ///   it (after M or m they are L or l);
 /// * numbers in SVG's syntax (`1e3`, `.5`, `-.5.5` is two numbers, `1-2` is two numbers),
 ///   separated by white space and at most one comma; `number` gets each number's text
-///   (`parse_rational` reads it exactly, `|t| parse_f64(t).map(exact_f64)` as the nearest
-///   double);
+///   ([`parse_rational`] reads it exactly; [`parse_f64`](crate::parse_f64) then
+///   `Rational::from_float` as the nearest double, relative coordinates then added exactly);
 /// * T reflects the control point of a preceding Q or T, S the second control point of a
 ///   preceding C or S, about the current point, exactly; after any other command the
 ///   reflected point is the current point (so T after L is a quadratic whose control point is
@@ -388,7 +388,7 @@ fn draw(
 ///
 /// ```
 /// use blossom::region::parse_svg_path;
-/// use blossom::{parse_rational, Bezier, Rational};
+/// use blossom::{parse_rational, Rational};
 /// let q = |n: i64, d: i64| Rational::new(n.into(), d.into());
 /// let loops = parse_svg_path("M 0 0 h 1 q .5 1 0 1 Z", parse_rational)?;
 /// assert_eq!(loops.len(), 1);
@@ -464,7 +464,8 @@ impl Region {
     /// // A 2 x 2 square with a quadratic bulge on top; 0.1 is read as 1/10 exactly.
     /// let r = Region::from_svg_path("M0,0 2,0 2,2 Q1,3 0,2z", FillRule::NonZero)?;
     /// assert_eq!(r.loops()[0].len(), 4);
-    /// assert_eq!(r.contains(&[q(1, 1), q(5, 2)]), Position::Inside);
+    /// assert_eq!(r.contains(&[q(1, 1), q(9, 4)]), Position::Inside);
+    /// assert_eq!(r.contains(&[q(1, 1), q(5, 2)]), Position::Boundary);
     /// assert_eq!(r.contains(&[q(1, 1), q(1, 10)]), Position::Inside);
     /// let e = Region::from_svg_path("M 0 0 A 1 1 0 0 1 2 0", FillRule::NonZero).unwrap_err();
     /// assert_eq!(e.to_string(), "at 6: arcs (A) are not polynomial curves; convert them to cubics");

@@ -23,14 +23,25 @@
 //! component whose winding numbers are those of the *other* loops at v, which do not pass
 //! through v: an exact ray count on boxes (`side`). That sector lies just counter-clockwise
 //! of the last half-edge at v whose class precedes -x's. Sides y_lo, x_hi, y_hi likewise.
-//! When no such join decides (no join on a side, or every ray undecided), the exact stages'
-//! own computation seeds the component: exact winding numbers beside one of its pieces by a
-//! ray from a rational point of it (`classify::sides_of_piece`).
+//! When no join lies on a side of the box (the extreme is inside a curve), the component's
+//! *outer* face is found by area: the cycles of a connected plane arrangement bound its
+//! faces, each bounded face's cycle counter-clockwise (positive signed area) and the outer
+//! face's clockwise (negative: minus the area the component encloses), so the one cycle of
+//! the component whose signed area is proved negative (rigorous enclosure, `measure`) is the
+//! outer face; the component winds 0 times around its points near the component, and the
+//! other loops wind around them as around any join of the component (a ray count on boxes).
+//! When that does not decide either (a component of zero area, every ray undecided), the
+//! exact stages' own computation seeds the component: exact winding numbers beside one of its
+//! pieces by a ray from a rational point of it (`classify::sides_of_piece`).
 
+use super::bounds::sign;
 use super::graph::Graph;
+use super::measure::Areas;
 use super::order::{ccw_order, classes_at, Around};
 use super::side::windings_at;
 use crate::error::Result;
+use crate::num::bounded::BoundedF64;
+use crate::num::ring::Ring;
 use crate::region::arrangement::Joins;
 use crate::region::classify::sides_of_piece;
 
@@ -38,8 +49,47 @@ use crate::region::classify::sides_of_piece;
 pub(super) struct Faces {
     pub face: Vec<usize>,
     pub winding: Vec<[i64; 2]>,
-    /// Components seeded by the exact stages' ray (no join decided).
+    /// Components seeded by the sign of a face's area.
+    pub area_seeds: usize,
+    /// Components seeded by the exact stages' ray (nothing cheaper decided).
     pub exact_seeds: usize,
+}
+
+/// How many joins of a component are tried for a ray count on boxes.
+const JOINS_TRIED: usize = 8;
+
+/// The outer face of component `comp` (the cycle of negative signed area) with its winding
+/// numbers, or `None` when no cycle's sign or no ray decides (module docs).
+fn seed_by_area(
+    graph: &Graph<'_>,
+    cycles: &[Vec<usize>],
+    comp_of_curve: &[usize],
+    comp: usize,
+    areas: &mut Areas<'_, '_>,
+) -> Option<(usize, [i64; 2])> {
+    let w = (0..graph.curves.len())
+        .filter(|&c| comp_of_curve[c] == comp)
+        .take(JOINS_TRIED)
+        .find_map(|c| {
+            windings_at(graph, graph.curves[c].points[0], |d| {
+                comp_of_curve[d] == comp
+            })
+        })?;
+    for (f, cycle) in cycles.iter().enumerate() {
+        let (c, _, _) = graph.branch(cycle[0]);
+        if comp_of_curve[c] != comp {
+            continue;
+        }
+        let mut sum = BoundedF64::exact(0.0);
+        for &h in cycle {
+            let (c, at, toward) = graph.branch(h);
+            sum = sum.add(&areas.piece(c, at, toward));
+        }
+        if sign(&sum) == Some(-1) {
+            return Some((f, w));
+        }
+    }
+    None
 }
 
 /// The half-edge after h along the face on h's left.
@@ -50,7 +100,7 @@ fn successor(graph: &Graph<'_>, around: &Around, h: usize) -> usize {
 /// The signed number of pieces of each region in h's group running h's way.
 fn across(graph: &Graph<'_>, h: usize) -> [i64; 2] {
     let m = graph.multiplicity(h / 2);
-    if h % 2 == 0 {
+    if h.is_multiple_of(2) {
         m
     } else {
         [-m[0], -m[1]]
@@ -162,7 +212,11 @@ fn seed_exact(
 }
 
 /// The faces and their winding numbers, or `None` when two routes to a face disagree.
-pub(super) fn faces(graph: &Graph<'_>, around: &Around) -> Result<Option<Faces>> {
+pub(super) fn faces(
+    graph: &Graph<'_>,
+    around: &Around,
+    areas: &mut Areas<'_, '_>,
+) -> Result<Option<Faces>> {
     let n = graph.half_edges();
     let mut face = vec![usize::MAX; n];
     let mut cycles: Vec<Vec<usize>> = Vec::new();
@@ -192,7 +246,7 @@ pub(super) fn faces(graph: &Graph<'_>, around: &Around) -> Result<Option<Faces>>
         .map(|c| joins.find(graph.vertex[c][0]).0)
         .collect();
     let mut winding: Vec<Option<[i64; 2]>> = vec![None; cycles.len()];
-    let mut exact_seeds = 0;
+    let (mut area_seeds, mut exact_seeds) = (0, 0);
     let mut queue = Vec::new();
     let mut seeded = vec![false; graph.vertices];
     for &comp in &comp_of_curve {
@@ -201,10 +255,16 @@ pub(super) fn faces(graph: &Graph<'_>, around: &Around) -> Result<Option<Faces>>
         }
         let (f, w) = match seed_at_join(graph, around, &face, &comp_of_curve, comp)? {
             Some(seed) => seed,
-            None => {
-                exact_seeds += 1;
-                seed_exact(graph, &face, &comp_of_curve, comp)?
-            }
+            None => match seed_by_area(graph, &cycles, &comp_of_curve, comp, areas) {
+                Some(seed) => {
+                    area_seeds += 1;
+                    seed
+                }
+                None => {
+                    exact_seeds += 1;
+                    seed_exact(graph, &face, &comp_of_curve, comp)?
+                }
+            },
         };
         winding[f] = Some(w);
         queue.push(f);
@@ -229,6 +289,7 @@ pub(super) fn faces(graph: &Graph<'_>, around: &Around) -> Result<Option<Faces>>
     Ok(winding.map(|winding| Faces {
         face,
         winding,
+        area_seeds,
         exact_seeds,
     }))
 }

@@ -80,9 +80,9 @@ pub(super) fn bbox(points: &[[f64; 2]]) -> [f64; 4] {
     b
 }
 
-/// How the contacts were decided: the counts a caller sees in [`super::Report`].
+/// How the contacts were decided (the counts of [`Report`](crate::region::Report)).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct ContactCounts {
+pub(super) struct ContactCounts {
     /// Pairs of curves whose boxes meet.
     pub pairs: usize,
     /// Pairs proved by the float filter (crossings or nothing).
@@ -405,7 +405,7 @@ impl Graph<'_> {
     /// Half-edge h as (curve, index of the parameter it leaves, index it runs toward).
     pub fn branch(&self, h: usize) -> (usize, usize, usize) {
         let p = &self.pieces[self.groups[h / 2].rep];
-        if h % 2 == 0 {
+        if h.is_multiple_of(2) {
             (p.curve, p.k, p.k + 1)
         } else {
             (p.curve, p.k + 1, p.k)

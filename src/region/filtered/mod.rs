@@ -43,16 +43,16 @@
 //!
 //! [`Parameter`]: crate::region::Parameter
 
+mod bounds;
 mod faces;
+mod generic;
 mod graph;
 mod measure;
 mod order;
 mod side;
 mod walk;
 
-pub use graph::ContactCounts;
-
-use super::boolean::{BooleanOp, Outline};
+use super::boolean::{BooleanOp, Outline, Report};
 use super::input::Region;
 
 /// The cost of a pair of curves whose boxes meet, decided by the float filter or a proved
@@ -84,15 +84,50 @@ pub(crate) fn work(regions: &[&Region; 2]) -> Option<u128> {
 
 /// The boolean `op` of the two regions when every input number is a double (module docs),
 /// else `None`; `None` too when a consistency check fails, for the exact stages to answer.
-pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Option<Outline> {
-    let doubles = [regions[0].doubles()?, regions[1].doubles()?];
-    let graph = graph::Graph::build(doubles).ok()?;
-    let around = order::around(&graph).ok()?;
-    let faces = faces::faces(&graph, &around).ok()??;
-    let fills = [regions[0].fill(), regions[1].fill()];
-    let loops = walk::boundary(&graph, &around, &faces, fills, op)?;
+pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Result<Outline, &'static str> {
+    let (Some(a), Some(b)) = (regions[0].doubles(), regions[1].doubles()) else {
+        return Err("an input number is not a double");
+    };
+    if let Some(mut answer) = generic::run(regions, op) {
+        answer.report.float_path = true;
+        answer.report.generic = true;
+        return Ok(answer);
+    }
+    general(regions, [a, b], op)
+}
+
+/// The general float path (stages 1 to 5 of the module docs) on regions of doubles `[a, b]`.
+fn general(
+    regions: &[&Region; 2],
+    [a, b]: [&std::sync::Arc<crate::region::input::Doubles>; 2],
+    op: BooleanOp,
+) -> Result<Outline, &'static str> {
+    let graph = graph::Graph::build([a, b]).map_err(|_| "an exact intersection failed")?;
+    let around = order::around(&graph).map_err(|_| "an exact order failed")?;
     let mut areas = measure::Areas::new(&graph);
-    measure::answer(&mut areas, loops)
+    let faces = faces::faces(&graph, &around, &mut areas)
+        .map_err(|_| "an exact seed failed")?
+        .ok_or("the winding numbers of a face disagree")?;
+    let fills = [regions[0].fill(), regions[1].fill()];
+    let loops = walk::boundary(&graph, &around, &faces, fills, op)
+        .ok_or("a boundary walk does not close")?;
+    let mut answer = measure::answer(&mut areas, loops)
+        .ok_or("a loop's area sign or the area enclosure is not decided")?;
+    let c = graph.counts;
+    answer.report = Report {
+        float_path: true,
+        generic: false,
+        reason: None,
+        pairs: c.pairs,
+        joins: c.joins,
+        filtered: c.filtered,
+        exact_pairs: c.exact,
+        exact_self: c.exact_self,
+        exact_orders: around.exact,
+        area_seeds: faces.area_seeds,
+        exact_seeds: faces.exact_seeds,
+    };
+    Ok(answer)
 }
 
 #[cfg(test)]

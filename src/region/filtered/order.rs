@@ -166,22 +166,25 @@ pub(super) fn around(graph: &Graph<'_>) -> Result<Around> {
         fill[v] += 1;
     }
     let mut exact = 0;
-    let mut dirs: Vec<Direction> = Vec::new();
+    let mut dirs: Vec<(usize, Direction)> = Vec::new();
     for v in 0..graph.vertices {
         let list = &mut ccw[start[v]..start[v + 1]];
         if list.len() <= 2 {
             continue;
         }
-        if dirs.is_empty() {
-            dirs = (0..n).map(|h| direction(graph, h)).collect();
-        }
+        // Only the half-edges at vertices of more than two need a direction.
+        dirs.clear();
+        dirs.extend(list.iter().map(|&h| (h, direction(graph, h))));
         let mut failed = None;
-        list.sort_by(|&a, &b| {
-            order(graph, (a, &dirs[a]), (b, &dirs[b]), &mut exact).unwrap_or_else(|e| {
+        dirs.sort_by(|(a, da), (b, db)| {
+            order(graph, (*a, da), (*b, db), &mut exact).unwrap_or_else(|e| {
                 failed.get_or_insert(e);
                 Ordering::Equal
             })
         });
+        for (slot, (h, _)) in list.iter_mut().zip(&dirs) {
+            *slot = *h;
+        }
         if let Some(e) = failed {
             return Err(e);
         }
