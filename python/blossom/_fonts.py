@@ -177,6 +177,10 @@ def remove_overlaps(font, glyph_names=None, remove_hinting=True, *,
     Returns the set of the names of the glyphs that were rewritten. Raises
     ``NotImplementedError`` for a font without glyf, CFF or CFF2 outlines (as fontTools).
     """
+    if not (hasattr(font, "getGlyphSet") and hasattr(font, "getGlyphOrder")):
+        error = Error(f"font: expected a fontTools TTFont, found {type(font).__name__}")
+        error.path, error.kind = "font", "Invalid"
+        raise error
     if not any(tag in font for tag in ("glyf", "GLYF", "CFF ", "CFF2")):
         raise NotImplementedError(
             "No outline data found in the font: missing 'glyf', 'GLYF', 'CFF ', or 'CFF2' table"

@@ -386,7 +386,25 @@ impl BooleanResult {
     fn draw(&self, pen: &Bound<'_, PyAny>, clockwise: Option<bool>) -> PyResult<()> {
         let py = pen.py();
         let point = |p: &Point| (p[0], p[1]);
-        for c in self.commands(self.reversed(clockwise))? {
+        let commands = self.commands(self.reversed(clockwise))?;
+        // The pen's methods, checked before anything is drawn.
+        for c in &commands {
+            let name = match c {
+                Command::MoveTo(_) => "moveTo",
+                Command::LineTo(_) => "lineTo",
+                Command::QCurveTo(_) | Command::QCurveClosed(_) => "qCurveTo",
+                Command::CurveTo(_) => "curveTo",
+                Command::ClosePath => "closePath",
+            };
+            if !pen.hasattr(name)? {
+                return Err(bad(
+                    "pen",
+                    "Invalid",
+                    format!("expected a fontTools pen, found no method {name}"),
+                ));
+            }
+        }
+        for c in commands {
             match c {
                 Command::MoveTo(p) => pen.call_method1("moveTo", (point(&p),))?,
                 Command::LineTo(p) => pen.call_method1("lineTo", (point(&p),))?,

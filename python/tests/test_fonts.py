@@ -325,3 +325,10 @@ def test_remove_overlaps_errors():
     del font["glyf"]
     with pytest.raises(NotImplementedError):
         blossom.remove_overlaps(font)
+    with pytest.raises(blossom.Error) as e:
+        blossom.remove_overlaps({"glyf": None})
+    assert e.value.path == "font"
+    res = region_of(rect(0, 0, 1, 1)).simplify()
+    with pytest.raises(blossom.Error) as e:
+        res.draw(object())
+    assert e.value.path == "pen" and "moveTo" in str(e.value)
