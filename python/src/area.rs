@@ -12,6 +12,8 @@
 //!
 //! Computed in exact rationals (floats read exactly), then rounded once: the float64 answer is
 //! the correctly rounded exact area. Positive for counterclockwise boundaries, as bezier's.
+//! [`edge_area_f64`] evaluates the same sum in doubles (where only a sign or an approximate
+//! value is wanted: the orientation of a font's contours).
 
 use blossom::engine::binomial;
 use blossom::{BezierCurve, Rational};
@@ -40,6 +42,27 @@ pub fn edge_area(edge: &BezierCurve<Rational>) -> Rational {
                 BigInt::from(4) * binomial(2 * n64 - 1, (i + j) as i64),
             );
             sum += weight * cross;
+        }
+    }
+    sum
+}
+
+/// [`edge_area`] of control points given as doubles, evaluated in doubles (not certified: each
+/// term rounded).
+pub fn edge_area_f64(points: &[[f64; 2]]) -> f64 {
+    let n = points.len().saturating_sub(1);
+    let choose = |n: usize, k: usize| -> f64 {
+        (0..k).fold(1.0, |c, i| c * (n - i) as f64 / (i + 1) as f64)
+    };
+    let mut sum = 0.0;
+    for (i, pi) in points.iter().enumerate() {
+        for j in 0..n {
+            let (dx, dy) = (
+                points[j + 1][0] - points[j][0],
+                points[j + 1][1] - points[j][1],
+            );
+            let cross = pi[0] * dy - pi[1] * dx;
+            sum += choose(n, i) * choose(n - 1, j) / (4.0 * choose(2 * n - 1, i + j)) * cross;
         }
     }
     sum

@@ -546,21 +546,15 @@ impl Curve {
     /// of the elevation matrix differs otherwise.
     #[pyo3(signature = (method = "least-squares"))]
     fn reduce_(&self, method: &str) -> PyResult<Curve> {
-        let method = match method {
-            "least-squares" => Reduction::LeastSquares,
-            "least-squares-endpoints" => Reduction::LeastSquaresEndpoints,
-            "interpolating" => Reduction::Interpolating,
-            other => {
-                return Err(bad(
-                    "method",
-                    "UnknownName",
-                    format!(
-                        "expected \"least-squares\", \"least-squares-endpoints\" or \
-                         \"interpolating\", found {other:?}"
-                    ),
-                ))
-            }
-        };
+        let method = crate::errors::name_arg(
+            "method",
+            method,
+            &[
+                ("least-squares", Reduction::LeastSquares),
+                ("least-squares-endpoints", Reduction::LeastSquaresEndpoints),
+                ("interpolating", Reduction::Interpolating),
+            ],
+        )?;
         if self.degree() == 0 {
             return Err(bad(
                 "self",

@@ -128,3 +128,54 @@ pub fn call_detached<T: Send>(
 pub fn bad(path: impl AsRef<str>, kind: &str, message: impl AsRef<str>) -> PyErr {
     error(path.as_ref(), kind, message.as_ref())
 }
+
+/// The edit distance between two names (insertions, deletions, substitutions of characters).
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let next = (diagonal + usize::from(ca != *cb))
+                .min(row[j] + 1)
+                .min(row[j + 1] + 1);
+            diagonal = row[j + 1];
+            row[j + 1] = next;
+        }
+    }
+    row[b.len()]
+}
+
+/// The value named `name` among `accepted` (name, value) pairs, the argument `path`; an
+/// unknown name raises `blossom.Error` (kind `UnknownName`) listing the accepted names and
+/// offering the nearest one (`expected "nonzero" or "evenodd", found "odd" (did you mean
+/// "evenodd"?)`).
+pub fn name_arg<T: Copy>(path: &str, name: &str, accepted: &[(&str, T)]) -> PyResult<T> {
+    if let Some((_, value)) = accepted.iter().find(|(n, _)| *n == name) {
+        return Ok(*value);
+    }
+    let quoted: Vec<String> = accepted.iter().map(|(n, _)| format!("{n:?}")).collect();
+    let list = match quoted.as_slice() {
+        [] => String::new(),
+        [one] => one.clone(),
+        [rest @ .., last] => format!("{} or {last}", rest.join(", ")),
+    };
+    // The accepted name fewest edits away (ignoring case first: "NonZero" is "nonzero").
+    let lower = name.to_lowercase();
+    let nearest = accepted
+        .iter()
+        .map(|(n, _)| (edit_distance(&lower, n), *n))
+        .min();
+    let hint = match nearest {
+        Some((d, n)) if d <= n.len().max(name.len()) / 2 + 1 => {
+            format!(" (did you mean {n:?}?)")
+        }
+        _ => String::new(),
+    };
+    Err(bad(
+        path,
+        "UnknownName",
+        format!("expected {list}, found {name:?}{hint}"),
+    ))
+}

@@ -10,7 +10,9 @@
 //! `records` (the certified answers), `power` (the power-form restrictions), `batch`
 //! (`restrict_curves`), `zeros` (`bezier_zeros`), `area` (exact signed areas), `length` (arc
 //! length by quadrature), `validity` (the exact sign of a triangle's Jacobian), `region`
-//! (`CurvedRegion`, `Triangle.intersect`: the library's region booleans).
+//! (`CurvedRegion`, `BooleanResult`, `Triangle.intersect`: the library's region booleans),
+//! `pen` (`RegionPen`: a fontTools pen recording an outline into a region), `draw` (a result
+//! as pen calls: `BooleanResult.draw`).
 
 // The pyclasses' methods are called from Python only.
 #![allow(clippy::new_ret_no_self)]
@@ -18,9 +20,11 @@
 mod area;
 mod batch;
 mod curve;
+mod draw;
 mod errors;
 mod length;
 mod numbers;
+mod pen;
 mod power;
 mod records;
 mod region;
@@ -40,8 +44,10 @@ fn _panic_for_tests() -> PyResult<()> {
     })
 }
 
-/// The module `blossom`.
+/// The extension module `blossom._blossom` (the package `blossom`, python/blossom/__init__.py,
+/// re-exports it).
 #[pymodule]
+#[pyo3(name = "_blossom")]
 fn blossom(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
     m.add("Error", py.get_type::<errors::Error>())?;
@@ -50,6 +56,7 @@ fn blossom(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<triangle::CurvedPolygon>()?;
     m.add_class::<region::CurvedRegion>()?;
     m.add_class::<region::BooleanResult>()?;
+    m.add_class::<pen::RegionPen>()?;
     m.add_class::<tensor::TensorPatchPy>()?;
     m.add_class::<records::Algebraic>()?;
     m.add_class::<records::IntersectionPoint>()?;
@@ -68,8 +75,8 @@ fn blossom(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(_panic_for_tests, m)?)?;
     m.add("DEFAULT_MAX_WORK", curve::DEFAULT_MAX_WORK)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
-    // Every name above: the wheel's package re-exports the extension with `import *`, which
-    // takes `__all__` (and would otherwise drop `__version__` and `_panic_for_tests`).
+    // Every name above: the package re-exports the extension with `import *`, which takes
+    // `__all__` (and would otherwise drop `__version__` and `_panic_for_tests`).
     let names: Vec<String> = m
         .dict()
         .keys()

@@ -19,17 +19,8 @@ use pyo3::prelude::*;
 pub const MAX_RESTRICTION_OPERATIONS: f64 = 1e10;
 
 fn method_arg(name: &str) -> PyResult<Method> {
-    Method::ALL
-        .into_iter()
-        .find(|m| m.name() == name)
-        .ok_or_else(|| {
-            let names: Vec<&str> = Method::ALL.iter().map(|m| m.name()).collect();
-            bad(
-                "method",
-                "UnknownName",
-                format!("expected one of {names:?}, found {name:?}"),
-            )
-        })
+    let named: Vec<(&str, Method)> = Method::ALL.into_iter().map(|m| (m.name(), m)).collect();
+    crate::errors::name_arg("method", name, &named)
 }
 
 fn check_operations(points: usize, degree: usize, dim: usize) -> PyResult<()> {

@@ -290,3 +290,120 @@ def test_repeated_intersections_with_kept_regions_agree():
         assert F(polygon_area_of(tris[i].intersect(tris[j]))) == area
         # The symmetric operation: the same region (its area summed in another order).
         assert abs(F(polygon_area_of(tris[j].intersect(tris[i]))) - area) <= F(1, 2**40)
+
+
+def square_loop(x, y, s, exact=True):
+    """The counter-clockwise square [x, x + s] x [y, y + s] as a list of corners."""
+    return [(F(x), F(y)), (F(x + s), F(y)), (F(x + s), F(y + s)), (F(x), F(y + s))]
+
+
+def loops_region(polys, fill_rule="nonzero", exact=False):
+    """A CurvedRegion of several straight loops (float64 nodes unless exact)."""
+    dtype = object if exact else float
+    loops = []
+    for poly in polys:
+        n = len(poly)
+        loops.append([np.array([[poly[k][0], poly[(k + 1) % n][0]],
+                                [poly[k][1], poly[(k + 1) % n][1]]], dtype=dtype)
+                      for k in range(n)])
+    return blossom.CurvedRegion(loops, fill_rule=fill_rule)
+
+
+def polygon_areas(res):
+    return sorted(F(p.area) for p in res.polygons)
+
+
+def test_simplify_merges_overlapping_loops_of_one_region():
+    a, b = square_loop(0, 0, 2), square_loop(1, 1, 2)
+    for exact in (False, True):
+        nonzero = loops_region([a, b], exact=exact).simplify()
+        # The union of the squares: 4 + 4 - 1, one loop, every edge from region 0.
+        assert len(nonzero.polygons) == 1 and nonzero.holes == [False]
+        assert F(nonzero.area[0]) <= 7 <= F(nonzero.area[1])
+        assert polygon_areas(nonzero) == [7]
+        assert all(rec[0] == 0 for loop in nonzero.edges for rec in loop)
+        # Even-odd: the overlap is out; two L-shaped loops of area 3 touching at two corners.
+        evenodd = loops_region([a, b], "evenodd", exact=exact).simplify()
+        assert F(evenodd.area[0]) <= 6 <= F(evenodd.area[1])
+        assert polygon_areas(evenodd) == [3, 3]
+
+
+def test_simplify_of_a_self_crossing_loop_under_both_rules():
+    star = [(F(0), F(10)), (F(-6), F(-8)), (F(9), F(3)), (F(-9), F(3)), (F(6), F(-8))]
+    whole = loops_region([star]).simplify()
+    tips = loops_region([star], "evenodd").simplify()
+    # Against the exact winding numbers: the centre (winding 2) is in under nonzero only;
+    # the difference of the two areas is the centre pentagon, one hole-free loop either way.
+    centre = whole.area[0] - tips.area[1]
+    assert centre > 0
+    assert len(whole.polygons) == 1 and not any(whole.holes)
+    assert len(tips.polygons) == 5
+    # A loop traversed clockwise is the same set: simplify gives the same area.
+    backwards = loops_region([star[::-1]]).simplify()
+    assert max(backwards.area[0], whole.area[0]) <= min(backwards.area[1], whole.area[1])
+
+
+def test_simplify_drops_a_loop_that_cancels_and_keeps_a_hole():
+    outer, inner = square_loop(0, 0, 6), square_loop(2, 2, 2)
+    # The inner loop reversed: a hole under both rules.
+    res = loops_region([outer, inner[::-1]]).simplify()
+    assert sorted(res.holes) == [False, True]
+    assert F(res.area[0]) <= 32 <= F(res.area[1])
+    # The inner loop the same way round: winding 2 inside, filled under nonzero.
+    res = loops_region([outer, inner]).simplify()
+    assert res.holes == [False] and F(res.area[0]) <= 36 <= F(res.area[1])
+    # Even-odd: a hole again.
+    res = loops_region([outer, inner], "evenodd").simplify()
+    assert sorted(res.holes) == [False, True]
+
+
+def test_empty_regions_everywhere():
+    empty = blossom.CurvedRegion([])
+    assert empty.num_loops == 0 and empty.loops == [] and empty.fill_rule == "nonzero"
+    sq = loops_region([square_loop(0, 0, 2)])
+    for res in (empty.simplify(), empty.union(empty), empty.intersection(sq), sq.intersection(empty),
+                empty.difference(sq), sq.difference(sq)):
+        assert res.polygons == [] and res.holes == [] and res.edges == [] and res.area == (0.0, 0.0)
+    for res in (empty.union(sq), sq.union(empty), sq.xor(empty), sq.difference(empty), empty.xor(sq)):
+        assert res.area[0] <= 4.0 <= res.area[1] and len(res.polygons) == 1
+    # Edges name the operand they come from.
+    assert {rec[0] for rec in empty.union(sq).edges[0]} == {1}
+    assert empty.winding(np.array([[0.0, 1.0], [0.0, 1.0]])) == [0, 0]
+    assert blossom.CurvedRegion([], fill_rule="evenodd").fill_rule == "evenodd"
+
+
+def test_result_objects_are_built_once_when_read():
+    a = loops_region([square_loop(0, 0, 2)])
+    b = loops_region([square_loop(1, 1, 2)])
+    res = a.union(b)
+    assert res.polygons is res.polygons and res.edges is res.edges
+    # The pieces and the records agree: each polygon edge is the recorded input piece.
+    for poly, records in zip(res.polygons, res.edges):
+        assert poly.num_sides == len(records)
+        for edge, (region, loop_index, curve, s0, s1) in zip(poly.edges, records):
+            source = (a if region == 0 else b).loops[loop_index][curve]
+            assert np.array_equal(edge.nodes[:, 0], source.evaluate(s0.value)[:, 0])
+            assert np.array_equal(edge.nodes[:, -1], source.evaluate(s1.value)[:, 0])
+    # A result outlives its operands (it shares their curves).
+    del a, b
+    assert F(res.area[0]) <= 7 <= F(res.area[1]) and len(res.polygons) == 1
+
+
+def test_fill_rule_names_and_simplify_work_limit():
+    sq = [[np.array([[0.0, 1.0], [0.0, 0.0]]), np.array([[1.0, 0.0], [0.0, 0.0]])]]
+    with pytest.raises(blossom.Error) as e:
+        blossom.CurvedRegion(sq, fill_rule="odd")
+    assert e.value.path == "fill_rule" and e.value.kind == "UnknownName"
+    assert 'did you mean "evenodd"' in str(e.value)
+    with pytest.raises(blossom.Error) as e:
+        blossom.CurvedRegion(sq, fill_rule="NonZero")
+    assert 'did you mean "nonzero"' in str(e.value)
+    with pytest.raises(blossom.Error) as e:
+        blossom.CurvedRegion(sq, fill_rule="winding-number-rule")
+    assert "did you mean" not in str(e.value) and '"nonzero" or "evenodd"' in str(e.value)
+    with pytest.raises(blossom.Error) as e:
+        loops_region([square_loop(0, 0, 2)]).simplify(max_work=1.0)
+    assert e.value.path == "max_work" and e.value.kind == "TooLarge"
+    with pytest.raises(blossom.Error) as e:
+        loops_region([square_loop(0, 0, 2)]).simplify(max_work=-1.0)
+    assert e.value.path == "max_work"
