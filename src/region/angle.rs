@@ -17,8 +17,8 @@
 //! exactly. Branches going left (u_x < 0) are ordered the other way; branches along ±y use
 //! lines y = Y.
 
-use super::curve::{derivative, Curve};
-use crate::intersect::algebraic::{shifted_poly, simplest_between, value_at, AlgebraicReal};
+use super::curve::{derivative, rational_between, Curve};
+use crate::intersect::algebraic::{shifted_poly, value_at, AlgebraicReal};
 use crate::intersect::upoly;
 use crate::intersect::zeros::roots_with_multiplicity;
 use crate::num::ring::Rational;
@@ -86,27 +86,6 @@ pub(crate) fn class(c: &Curve, b: &Branch) -> (u8, [Ordering; 2]) {
         return (class, [sx, sy]);
     }
     unreachable!("the loop returns")
-}
-
-/// A rational strictly between the distinct algebraic numbers `a` and `b`.
-pub(crate) fn rational_between(a: &AlgebraicReal, b: &AlgebraicReal) -> Rational {
-    let (mut lo, mut hi) = if a.compare(b) == Ordering::Less {
-        (a.clone(), b.clone())
-    } else {
-        (b.clone(), a.clone())
-    };
-    loop {
-        let (l, h) = (lo.interval().1.clone(), hi.interval().0.clone());
-        if l < h {
-            let four = Rational::from_integer(4.into());
-            let three = Rational::from_integer(3.into());
-            let x = (&three * &l + &h) / &four;
-            let y = (&l + &three * &h) / &four;
-            return simplest_between(&x, &y);
-        }
-        lo.refine();
-        hi.refine();
-    }
 }
 
 /// The parameter strictly between `from` and `to` closest to `from` where the polynomial

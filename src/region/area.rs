@@ -12,26 +12,9 @@
 
 use super::arrangement::Arrangement;
 use super::chain::Run;
-use super::curve::derivative;
 use crate::intersect::algebraic::{enclose, AlgebraicReal};
 use crate::num::ring::Rational;
 use num_traits::Zero;
-
-/// The antiderivative of x(t) y'(t), vanishing at 0, for the curve's power form.
-pub(crate) fn x_dy(power: &[Vec<Rational>; 2]) -> Vec<Rational> {
-    let dy = derivative(&power[1]);
-    let mut product = vec![Rational::zero(); power[0].len() + dy.len()];
-    for (i, a) in power[0].iter().enumerate() {
-        for (j, b) in dy.iter().enumerate() {
-            product[i + j] += a * b;
-        }
-    }
-    let mut out = vec![Rational::zero()];
-    for (i, c) in product.into_iter().enumerate() {
-        out.push(c / Rational::from_integer(((i + 1) as i64).into()));
-    }
-    out
-}
 
 /// One term ± F(τ) of a sum.
 pub(crate) struct Term<'a> {

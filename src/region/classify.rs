@@ -12,10 +12,9 @@
 //! pieces in the group running P's way and -1 for each running against it, which gives the
 //! other side.
 
-use super::angle::rational_between;
+use super::answer::BooleanOp;
 use super::arrangement::Arrangement;
-use super::boolean::BooleanOp;
-use super::curve::Curve;
+use super::curve::{rational_between, Curve};
 use super::input::FillRule;
 use super::winding::{ray_count, AtStart};
 use crate::num::ring::Rational;

@@ -16,7 +16,7 @@
 //! derivative's Bernstein form proves it has no root inside, and no root is isolated.
 
 use crate::intersect::algebraic::{
-    enclose, exact_f64, over_common_denominator, shifted_poly, AlgebraicReal,
+    enclose, exact_f64, over_common_denominator, shifted_poly, simplest_between, AlgebraicReal,
 };
 use crate::intersect::upoly;
 use crate::intersect::zeros::roots_with_multiplicity;
@@ -189,7 +189,7 @@ impl Curve {
 
     /// The antiderivative of x(t) y'(t) vanishing at 0 (for areas), computed once.
     pub fn x_dy(&self) -> &[Rational] {
-        self.x_dy.get_or_init(|| super::area::x_dy(&self.power))
+        self.x_dy.get_or_init(|| x_dy(&self.power))
     }
 
     /// The parameters in [0, 1] where the curve passes through the rational point `p`, in
@@ -286,7 +286,7 @@ fn monotone_breaks(c: &[Rational]) -> Monotone {
     // point inside tells the direction (it is not zero there, the breaks being its roots).
     let rising: Vec<bool> = params
         .windows(2)
-        .map(|w| eval(&dc, &super::angle::rational_between(&w[0], &w[1])) > Rational::zero())
+        .map(|w| eval(&dc, &rational_between(&w[0], &w[1])) > Rational::zero())
         .collect();
     // Near a break c' vanishes, so an interval of width w encloses c within about w^2 |c"|:
     // 2^-32 is ample for the filters, which only prune or prove a sign. The breaks keep the
@@ -313,6 +313,43 @@ fn monotone_breaks(c: &[Rational]) -> Monotone {
         constant,
         rising,
         bounds,
+    }
+}
+
+/// The antiderivative of x(t) y'(t), vanishing at 0, for the curve's power form.
+fn x_dy(power: &[Vec<Rational>; 2]) -> Vec<Rational> {
+    let dy = derivative(&power[1]);
+    let mut product = vec![Rational::zero(); power[0].len() + dy.len()];
+    for (i, a) in power[0].iter().enumerate() {
+        for (j, b) in dy.iter().enumerate() {
+            product[i + j] += a * b;
+        }
+    }
+    let mut out = vec![Rational::zero()];
+    for (i, c) in product.into_iter().enumerate() {
+        out.push(c / Rational::from_integer(((i + 1) as i64).into()));
+    }
+    out
+}
+
+/// A rational strictly between the distinct algebraic numbers `a` and `b`.
+pub(crate) fn rational_between(a: &AlgebraicReal, b: &AlgebraicReal) -> Rational {
+    let (mut lo, mut hi) = if a.compare(b) == Ordering::Less {
+        (a.clone(), b.clone())
+    } else {
+        (b.clone(), a.clone())
+    };
+    loop {
+        let (l, h) = (lo.interval().1.clone(), hi.interval().0.clone());
+        if l < h {
+            let four = Rational::from_integer(4.into());
+            let three = Rational::from_integer(3.into());
+            let x = (&three * &l + &h) / &four;
+            let y = (&l + &three * &h) / &four;
+            return simplest_between(&x, &y);
+        }
+        lo.refine();
+        hi.refine();
     }
 }
 

@@ -5,7 +5,8 @@
 //! and a [`FillRule`]. [`Region::winding`] gives the exact winding number of a point,
 //! [`boolean`] the regularized result of [`BooleanOp`] on two regions as oriented simple
 //! loops of [`Edge`]s (pieces of input curves between exact [`Parameter`]s) with an
-//! enclosure of its area, [`triangle_intersection`] the same for two [`Region::triangle`]s.
+//! enclosure of its area, [`simplify`] one region's overlap removal in the same form,
+//! [`triangle_intersection`] the same for two [`Region::triangle`]s.
 //!
 //! API notes (for callers that followed the first sketch): the work estimates
 //! [`boolean_work`] and [`Region::winding_work`] return `u128` nanoseconds, like
@@ -28,18 +29,22 @@
 //!
 //! # Two paths, one answer
 //!
-//! Regions whose control points are doubles take the **float path** first (`filtered`):
-//! when it proves the configuration generic (each region's loops simple and pairwise
-//! disjoint, every contact between the regions a transversal crossing strictly inside both
-//! curves, proved by the certified float filter), it decides everything in floating point
-//! with rigorous bounds: winding numbers by one exact ray count per loop and the crossing
-//! signs, chaining from the crossing signs, the area by rigorous running error bounds. The
-//! parameters of its answer are [`Parameter`]s: the filter's correctly rounded doubles and
-//! enclosures at once, the exact algebraic numbers on demand. Every other input (shared
-//! pieces, touching, vertices on edges, self-crossing loops, rationals that are not doubles)
-//! goes through the exact stages below, which handle every configuration. The two give the
-//! same answer (the tests compare them on random and degenerate inputs); the float path is
-//! two orders of magnitude faster.
+//! Regions whose control points are doubles (every font, every SVG path read as doubles,
+//! integers and dyadic rationals) take the **float path** (`filtered`), in any arrangement:
+//! loops crossing themselves and each other, shared vertices, vertices on curves, coincident
+//! pieces, tangencies. It builds the arrangement in floating point with certified tests and
+//! decides each degenerate contact exactly *where it is*: a pair of curves the certified
+//! filter cannot settle is intersected exactly on its own (a segment without resultants,
+//! `intersect::line`), two parameters are compared exactly only where their enclosures meet,
+//! two branches at a vertex only when their tangents and curvatures do not order them. Its
+//! shortcut for the generic configuration (each region's loops simple and disjoint, proved
+//! once per region and kept, every contact a transversal crossing) skips the faces
+//! altogether. [`RegionResult::report`] says which path answered and what took exact
+//! arithmetic. Regions with a rational that is not a double (1/3) go through the exact stages
+//! below, as does the float path's input should one of its consistency checks fail (never
+//! seen: the tests compare both on random, degenerate and real font outlines). The parameters
+//! of the answer are [`Parameter`]s: correctly rounded doubles and enclosures at once, exact
+//! algebraic numbers on demand.
 //!
 //! # The exact stages, one file each
 //!
@@ -107,6 +112,7 @@
 //! any is computed.
 
 mod angle;
+mod answer;
 mod area;
 mod arrangement;
 mod boolean;
@@ -133,10 +139,8 @@ mod tests_grid;
 
 #[cfg(feature = "kurbo")]
 pub use crate::interop::kurbo_region::binary_op;
-pub use boolean::{
-    boolean, boolean_work, simplify, simplify_work, triangle_intersection, BooleanOp, Edge,
-    RegionResult, Report, ResultLoop,
-};
+pub use answer::{BooleanOp, Edge, RegionResult, Report, ResultLoop};
+pub use boolean::{boolean, boolean_work, simplify, simplify_work, triangle_intersection};
 pub use input::{FillRule, Region, MAX_REGION_DEGREE};
 pub use parameter::Parameter;
 pub use svg::parse_svg_path;

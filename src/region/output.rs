@@ -33,7 +33,7 @@
 //! number is touched: the cost is that of the float restrictions, a few dozen nanoseconds a
 //! piece.
 
-use super::boolean::{Edge, RegionResult};
+use super::answer::{Edge, RegionResult};
 use super::input::{FillRule, Region};
 use super::parameter::Parameter;
 use crate::error::{Error, ErrorKind, Result};

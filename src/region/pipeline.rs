@@ -1,9 +1,9 @@
 //! The stages of a boolean run in order (see the module docs of [`crate::region`]), and the
 //! work estimate that goes with them.
 
+use super::answer::{BooleanOp, Edge, Outline, Report, ResultLoop};
 use super::area::{loop_terms, refine_sum};
 use super::arrangement::{candidate_pairs, one_to_one, proved_join, Arrangement, CurveId};
-use super::boolean::{BooleanOp, Edge, Outline, Report, ResultLoop};
 use super::chain::chain;
 use super::classify::boundary_groups;
 use super::curve::{f64_down, f64_up, is_double, Curve};

@@ -7,7 +7,7 @@ use super::graph::Graph;
 use crate::intersect::interval::{lower, upper};
 use crate::num::bounded::{BoundedF64, UNIT_ROUNDOFF};
 use crate::num::ring::Ring;
-use crate::region::boolean::{Edge, Outline, ResultLoop};
+use crate::region::answer::{Edge, Outline, ResultLoop};
 use crate::region::chain::Run;
 use crate::region::parameter::Parameter;
 

@@ -52,7 +52,7 @@ mod order;
 mod side;
 mod walk;
 
-use super::boolean::{BooleanOp, Outline, Report};
+use super::answer::{BooleanOp, Outline, Report};
 use super::input::Region;
 
 /// The cost of a pair of curves whose boxes meet, decided by the float filter or a proved

@@ -4,7 +4,7 @@
 //! fallback).
 
 use super::run;
-use crate::region::boolean::{BooleanOp, Outline};
+use crate::region::answer::{BooleanOp, Outline};
 use crate::region::input::{FillRule, Region};
 use crate::region::pipeline::run_exact;
 use crate::region::tests::{star, wavy};

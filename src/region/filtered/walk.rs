@@ -12,7 +12,7 @@
 use super::faces::Faces;
 use super::graph::Graph;
 use super::order::Around;
-use crate::region::boolean::BooleanOp;
+use crate::region::answer::BooleanOp;
 use crate::region::chain::{close_walks, Run, Step};
 use crate::region::input::FillRule;
 

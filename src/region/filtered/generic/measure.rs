@@ -22,7 +22,7 @@ use super::walk::BoundaryLoop;
 use crate::intersect::interval::{lower, upper};
 use crate::num::bounded::{BoundedF64, UNIT_ROUNDOFF};
 use crate::num::ring::Ring;
-use crate::region::boolean::{Edge, Outline, ResultLoop};
+use crate::region::answer::{Edge, Outline, ResultLoop};
 use crate::region::filtered::bounds::{
     area_coefficients, evaluate, hodograph, parameter, sign, LEVEL,
 };

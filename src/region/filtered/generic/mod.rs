@@ -46,7 +46,7 @@ mod side;
 mod split;
 mod walk;
 
-use crate::region::boolean::{BooleanOp, Outline};
+use crate::region::answer::{BooleanOp, Outline};
 use crate::region::input::Region;
 
 /// The boolean `op` of the two regions when every input number is a double and the

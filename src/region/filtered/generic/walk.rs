@@ -8,7 +8,7 @@
 
 use super::side::LoopWindings;
 use super::split::Split;
-use crate::region::boolean::BooleanOp;
+use crate::region::answer::BooleanOp;
 use crate::region::chain::{close_walks, Run, Step};
 use crate::region::input::FillRule;
 
