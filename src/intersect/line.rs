@@ -220,7 +220,7 @@ mod tests {
     /// gives exactly the general solver's answer.
     #[test]
     fn segments_agree_with_the_general_solver() {
-        let mut rng = XorShift(0x11e5_e9);
+        let mut rng = XorShift(0x0011_e5e9);
         let mut coordinate = || Rational::from_integer(((rng.next() % 5) as i64 - 2).into());
         let mut contacts = 0;
         for i in 0..400 {

@@ -72,9 +72,6 @@ pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Result<Outline> {
     match super::filtered::run(regions, op) {
         Ok(answer) => Ok(answer),
         Err(reason) => {
-            if std::env::var_os("BLOSSOM_TRACE").is_some() {
-                eprintln!("exact stages: {reason}");
-            }
             let mut answer = run_exact(regions, op)?;
             answer.report.reason = Some(reason);
             Ok(answer)

@@ -221,25 +221,6 @@ fn order(
         }
     }
     *exact += 1;
-    if std::env::var_os("BLOSSOM_TRACE").is_some() {
-        let u = |d: &Direction| {
-            (
-                d.u[0].value(),
-                d.u[0].error_bound(),
-                d.u[1].value(),
-                d.u[1].error_bound(),
-            )
-        };
-        eprintln!(
-            "exact order {:?} {:?} {:?} {:?} {:?} {:?}",
-            da.class,
-            db.class,
-            u(da),
-            u(db),
-            graph.branch(a),
-            graph.branch(b)
-        );
-    }
     let (ba, bb) = (exact_branch(graph, a)?, exact_branch(graph, b)?);
     Ok(compare(
         graph.curves[ba.curve].exact(),
