@@ -60,28 +60,7 @@ pub(crate) fn segment_and_curve(
     if f.iter().all(Zero::is_zero) {
         return (q.len() == 2).then(|| collinear_segments(p, &g));
     }
-    // The roots of f in [0, 1] with their multiplicities: one rational root when f is of
-    // degree 1 (or a constant, none), else isolated exactly.
-    let degree = f.iter().rposition(|c| !c.is_zero()).unwrap_or(0);
-    let roots: Vec<(AlgebraicReal, usize)> = if degree <= 1 {
-        match f.get(1).filter(|c| !c.is_zero()) {
-            Some(f1) => {
-                let t = -&f[0] / f1;
-                if t < zero || t > one {
-                    Vec::new()
-                } else {
-                    vec![(AlgebraicReal::from_rational(t), 1)]
-                }
-            }
-            None => Vec::new(),
-        }
-    } else {
-        let z = upoly::positive_multiple(&f);
-        roots_with_multiplicity(&z, &zero, &one)
-            .into_iter()
-            .map(|r| (r.value, r.multiplicity))
-            .collect()
-    };
+    let roots = roots_in_unit_interval(f);
     let mut points = Vec::new();
     for (t, multiplicity) in roots {
         let (s, point) = match t.exact() {
@@ -109,6 +88,59 @@ pub(crate) fn segment_and_curve(
         });
     }
     Some((points, Vec::new()))
+}
+
+/// The roots in [0, 1] of the non-zero rational polynomial f (ascending) with their
+/// multiplicities, in increasing order. Roots at the ends 0 and 1 (a curve's end on the
+/// segment, the common case in outlines) are divided out exactly first; a remaining factor of
+/// degree 1 has its one rational root; only a factor of higher degree is isolated by the
+/// general root finder.
+fn roots_in_unit_interval(mut f: Vec<Rational>) -> Vec<(AlgebraicReal, usize)> {
+    let (zero, one) = (Rational::zero(), Rational::one());
+    let trim = |f: &mut Vec<Rational>| {
+        while f.len() > 1 && f.last().is_some_and(Zero::is_zero) {
+            f.pop();
+        }
+    };
+    trim(&mut f);
+    let mut ends = Vec::new();
+    for end in [zero.clone(), one.clone()] {
+        let mut multiplicity = 0;
+        // f(end) = 0: f = (t - end) q, q from the top: q_(k-1) = f_k + end q_k.
+        while f.len() > 1 && upoly_eval_q(&f, &end).is_zero() {
+            let n = f.len() - 1;
+            let mut q = vec![Rational::zero(); n];
+            q[n - 1] = f[n].clone();
+            for k in (1..n).rev() {
+                q[k - 1] = &f[k] + &end * &q[k];
+            }
+            f = q;
+            multiplicity += 1;
+        }
+        if multiplicity > 0 {
+            ends.push((end, multiplicity));
+        }
+    }
+    let mut roots: Vec<(AlgebraicReal, usize)> = match f.len() {
+        0 | 1 => Vec::new(),
+        2 => {
+            let t = -&f[0] / &f[1];
+            if t > zero && t < one {
+                vec![(AlgebraicReal::from_rational(t), 1)]
+            } else {
+                Vec::new()
+            }
+        }
+        _ => roots_with_multiplicity(&upoly::positive_multiple(&f), &zero, &one)
+            .into_iter()
+            .map(|r| (r.value, r.multiplicity))
+            .collect(),
+    };
+    for (end, multiplicity) in ends {
+        roots.push((AlgebraicReal::from_rational(end), multiplicity));
+    }
+    roots.sort_by(|a, b| a.0.compare(&b.0));
+    roots
 }
 
 /// Two segments on one line: `g` maps the second's parameter t to the first's, s = g(t)
