@@ -56,7 +56,11 @@ pub fn main() {
         let r = boolean(&a, &b, *op).unwrap();
         println!("{name}: {} (exact {want})", summary(&r));
         println!("  svg: {}", r.svg().unwrap());
-        assert!(encloses(r.area, want), "{name}: {:?} against {want}", r.area);
+        assert!(
+            encloses(r.area, want),
+            "{name}: {:?} against {want}",
+            r.area
+        );
         assert!(r.loops.iter().all(|l| !l.hole));
     }
 
@@ -165,12 +169,20 @@ pub fn main() {
     let report = *merged.report();
     println!("plus: {report:?}");
     assert!(report.float_path && !report.generic);
-    assert_eq!(report.exact_pairs + report.exact_orders + report.exact_seeds, 0);
+    assert_eq!(
+        report.exact_pairs + report.exact_orders + report.exact_seeds,
+        0
+    );
     // A and the square [4, 8] x [0, 4], which shares A's right side: the float path still
-    // answers, with that one pair of coincident sides intersected exactly. Union: 32.
+    // answers; the coincident sides, and the sides that meet at the shared corners, are
+    // intersected exactly, pair by pair (7 of the 15 pairs). Union: 32, one loop.
     let beside = Region::from_svg_path("M 4 0 H 8 V 4 H 4 Z", nonzero).unwrap();
     let wide = boolean(&a, &beside, BooleanOp::Union).unwrap();
-    println!("A ∪ (A moved by 4): {}, {:?}", summary(&wide), wide.report());
+    println!(
+        "A ∪ (A moved by 4): {}, {:?}",
+        summary(&wide),
+        wide.report()
+    );
     assert!(encloses(wide.area, &q(32, 1)));
     assert_eq!(wide.loops.len(), 1);
     assert!(wide.report().float_path && wide.report().exact_pairs >= 1);
@@ -178,7 +190,11 @@ pub fn main() {
     // exact stages, which say why. A - [0, 1/10]^2 = 16 - 1/100.
     let tenth = Region::from_svg_path("M 0 0 H 0.1 V 0.1 H 0 Z", nonzero).unwrap();
     let nicked = boolean(&a, &tenth, BooleanOp::Difference).unwrap();
-    println!("A - [0, 0.1]^2: {}, {:?}", summary(&nicked), nicked.report());
+    println!(
+        "A - [0, 0.1]^2: {}, {:?}",
+        summary(&nicked),
+        nicked.report()
+    );
     assert!(encloses(nicked.area, &(q(16, 1) - q(1, 100))));
     assert!(!nicked.report().float_path);
     assert_eq!(

@@ -7,17 +7,22 @@
 //! Each answer is checked against numbers computed by hand in the comments.
 
 use blossom::{
-    intersect_curves, intersect_curves_f64, intersect_curves_f64_rounded, AlgebraicReal,
-    Rational,
+    intersect_curves, intersect_curves_f64, intersect_curves_f64_rounded, AlgebraicReal, Rational,
 };
 use num_bigint::BigInt;
 
 /// `x` with `digits` decimals, truncated towards -∞ (exact: no double involved).
 fn decimals(x: &Rational, digits: u32) -> String {
     let scale = BigInt::from(10).pow(digits);
-    let scaled = (x * Rational::from_integer(scale.clone())).floor().to_integer();
+    let scaled = (x * Rational::from_integer(scale.clone()))
+        .floor()
+        .to_integer();
     let (whole, frac) = (&scaled / &scale, &scaled % &scale);
-    format!("{whole}.{:0>width$}", frac.to_string(), width = digits as usize)
+    format!(
+        "{whole}.{:0>width$}",
+        frac.to_string(),
+        width = digits as usize
+    )
 }
 
 pub fn main() {
@@ -92,7 +97,10 @@ pub fn main() {
     println!("tangent parabolas: {x}");
     assert_eq!(x.points.len(), 1);
     let touch = &x.points[0];
-    assert_eq!((touch.s.exact(), touch.t.exact()), (Some(&q(3, 4)), Some(&q(1, 4))));
+    assert_eq!(
+        (touch.s.exact(), touch.t.exact()),
+        (Some(&q(3, 4)), Some(&q(1, 4)))
+    );
     assert!(touch.tangent);
     assert_eq!(touch.point, [0.5, 0.25]);
     // The float filter proves transversal crossings only: here it declines, and the rounded
