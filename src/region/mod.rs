@@ -28,18 +28,22 @@
 //!
 //! # Two paths, one answer
 //!
-//! Regions whose control points are doubles take the **float path** first (`filtered`):
-//! when it proves the configuration generic (each region's loops simple and pairwise
-//! disjoint, every contact between the regions a transversal crossing strictly inside both
-//! curves, proved by the certified float filter), it decides everything in floating point
-//! with rigorous bounds: winding numbers by one exact ray count per loop and the crossing
-//! signs, chaining from the crossing signs, the area by rigorous running error bounds. The
-//! parameters of its answer are [`Parameter`]s: the filter's correctly rounded doubles and
-//! enclosures at once, the exact algebraic numbers on demand. Every other input (shared
-//! pieces, touching, vertices on edges, self-crossing loops, rationals that are not doubles)
-//! goes through the exact stages below, which handle every configuration. The two give the
-//! same answer (the tests compare them on random and degenerate inputs); the float path is
-//! two orders of magnitude faster.
+//! Regions whose control points are doubles take the **float path** (`filtered`, whose
+//! module docs give its stages and their proof), in any arrangement: it builds the
+//! arrangement of every curve of both regions in floating point with rigorous bounds (the
+//! certified float filter for the contacts, enclosures for the orders of branches at a
+//! vertex and for the areas, ray counts on boxes for the winding numbers) and decides in
+//! exact arithmetic only what those leave undecided, on the curves involved: a contact the
+//! filter cannot decide (an end on a curve, a shared vertex, a tangency, an overlap), two
+//! tangent branches, a component no cheaper seed decides. A shortcut answers the generic
+//! configuration (each region's loops simple and pairwise disjoint, every contact between the
+//! regions a transversal crossing) without building faces. The parameters of its answer are
+//! [`Parameter`]s: the filter's correctly rounded doubles and enclosures at once, the exact
+//! algebraic numbers on demand. Input with a number that is not a double, and the rare
+//! boolean where a check of the float path does not pass, goes through the exact stages
+//! below, which handle every configuration. The two give the same answer (the tests compare
+//! them on random and degenerate inputs); [`RegionResult::report`] says which answered and
+//! what took exact arithmetic.
 //!
 //! # The exact stages, one file each
 //!
@@ -102,9 +106,11 @@
 //!
 //! # Limits
 //!
-//! Curve degrees 1 to [`MAX_REGION_DEGREE`]. The cost is dominated by the exact
-//! intersections of the curve pairs whose boxes meet; [`boolean_work`] estimates it before
-//! any is computed.
+//! Curve degrees 1 to [`MAX_REGION_DEGREE`]. On the exact stages the cost is dominated by
+//! the exact intersections of the curve pairs whose boxes meet, on the float path by the
+//! float filter on those pairs and by the pairs it leaves to exact arithmetic;
+//! [`boolean_work`] estimates it before any is computed (for the float path, without the
+//! exact pairs).
 
 mod angle;
 mod area;
