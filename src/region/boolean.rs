@@ -100,11 +100,11 @@ pub fn triangle_intersection(t1: &Region, t2: &Region) -> Result<RegionResult> {
 
 /// The estimated work of [`boolean`] on `a` and `b`, in nanoseconds of a 2-core x86-64
 /// machine as [`intersection_work`](crate::budget::intersection_work). When both regions
-/// are of doubles with loops proved simple and disjoint (the float path of [`boolean`]; the
-/// proof is made here and kept on each region), a few microseconds per pair of curves of
-/// different regions whose boxes meet and per curve; should the float path then meet a
-/// degenerate contact it leaves the answer to the exact stages, which a caller bounds with
-/// its work meter (the CLI does). Otherwise the exact stages' estimate: the intersections of every
+/// are of doubles (the float path of [`boolean`]), a few microseconds per pair of curves
+/// whose boxes meet and per curve, and a ray on boxes per loop against every curve; the
+/// exact intersections of the pairs the float filter will not decide are not counted, and a
+/// caller bounds them with its work meter (the CLI does). Otherwise the exact stages'
+/// estimate: the intersections of every
 /// pair of curves whose boxes meet ([`curve_pair_work`](crate::budget::curve_pair_work), which runs
 /// the float filter), the self-intersections of every curve
 /// ([`self_intersection_work`](crate::budget::self_intersection_work)), and the classification of the

@@ -107,9 +107,11 @@
 //!
 //! # Limits
 //!
-//! Curve degrees 1 to [`MAX_REGION_DEGREE`]. The cost is dominated by the exact
-//! intersections of the curve pairs whose boxes meet; [`boolean_work`] estimates it before
-//! any is computed.
+//! Curve degrees 1 to [`MAX_REGION_DEGREE`]. On the exact stages the cost is dominated by
+//! the exact intersections of the curve pairs whose boxes meet, on the float path by the
+//! float filter on those pairs and by the pairs it leaves to exact arithmetic;
+//! [`boolean_work`] estimates it before any is computed (for the float path, without the
+//! exact pairs).
 
 mod angle;
 mod answer;

@@ -5,8 +5,8 @@
 //! It answers regions whose control points are doubles, in any arrangement: loops that cross
 //! themselves and each other within one region, under either fill rule, shared vertices,
 //! points of one loop on another's curve, coincident pieces, tangencies. The stages, one file
-//! each, in the order they run (each imports only the ones before it, and the shared exact
-//! procedures of the region layer):
+//! each, in the order they run (each imports only the ones before it, the shared exact
+//! procedures of the region layer, and the enclosures of `bounds` and `measure`):
 //!
 //! 1. `graph`: every pair of curves whose boxes meet is decided by the cheapest proof that
 //!    applies: a separating line at a loop's join (exact, on doubles), else the certified float

@@ -9,10 +9,14 @@
 
 #[path = "../../../examples/batch_of_curves.rs"]
 mod batch_of_curves;
+#[path = "../../../examples/booleans.rs"]
+mod booleans;
 #[path = "../../../examples/bspline_from_pieces.rs"]
 mod bspline_from_pieces;
 #[path = "../../../examples/degree_reduction.rs"]
 mod degree_reduction;
+#[path = "../../../examples/intersections.rs"]
+mod intersections;
 // Its `main` reads the command line and is not called here (see the test).
 #[allow(dead_code)]
 #[path = "../../../examples/restrict_runtime_degree.rs"]
@@ -61,4 +65,14 @@ fn example_batch_of_curves() {
 #[test]
 fn example_symbolic_proof() {
     symbolic_proof::main();
+}
+
+#[test]
+fn example_intersections() {
+    intersections::main();
+}
+
+#[test]
+fn example_booleans() {
+    booleans::main();
 }
