@@ -66,8 +66,9 @@ fn box_area(regions: &[&Region; 2]) -> Rational {
     (&hi[0] - &lo[0]) * (&hi[1] - &lo[1])
 }
 
-/// The boolean `op` of the two regions: the float path ([`super::filtered`]) when it
-/// proves the configuration generic, else the exact stages.
+/// The boolean `op` of the two regions: the float path ([`super::filtered`]) when every
+/// input number is a double (any arrangement), else the exact stages, which also answer
+/// should a check of the float path not pass (the report keeps the reason).
 pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Result<Outline> {
     match super::filtered::run(regions, op) {
         Ok(answer) => Ok(answer),

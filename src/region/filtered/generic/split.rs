@@ -69,7 +69,7 @@ pub(super) fn bbox(points: &[[f64; 2]]) -> [f64; 4] {
 
 /// Whether the loops of one region (`doubles[l][c]`: the control points of curve c of loop
 /// l) are proved simple and pairwise disjoint: each of at least three curves (a loop of one
-/// or two is left to the exact path), each curve finite and one-to-one, consecutive curves
+/// or two is left to the general float path), each curve finite and one-to-one, consecutive curves
 /// meeting only at their join, other curves whose boxes meet without a common point (module
 /// docs of [`super`]).
 pub(super) fn simple(doubles: &[Vec<Vec<[f64; 2]>>]) -> bool {
