@@ -35,7 +35,7 @@
 //! 300 lines, tested per error (`tests` below and `bad_arguments` in `cli/tests/cli/cli_restrict.rs`), and costs no
 //! compile time on a CI budget the test command already fills.
 
-use super::names::{did_you_mean, listed, quoted};
+use crate::names::{did_you_mean, listed, quoted};
 use blossom::Error;
 use blossom::Method;
 use std::ffi::{OsStr, OsString};
@@ -90,7 +90,7 @@ pub struct RestrictOptions {
     /// `--method`, default `bulk` ([`MethodChoice::default`]).
     pub method: MethodChoice,
     /// `--max-work` and `--max-input` ([`super::budget`]).
-    pub limits: super::budget::Limits,
+    pub limits: super::cost::Limits,
 }
 
 /// Options of `blossom intersect`.
@@ -101,7 +101,7 @@ pub struct IntersectOptions {
     /// `--arithmetic`, default exact: how the job's numbers are read.
     pub arithmetic: Arithmetic,
     /// `--max-work` and `--max-input` ([`super::budget`]).
-    pub limits: super::budget::Limits,
+    pub limits: super::cost::Limits,
 }
 
 /// Options of `blossom check`.
@@ -112,7 +112,7 @@ pub struct CheckOptions {
     /// `--per-point`: the error of every control point, besides the largest.
     pub per_point: bool,
     /// `--max-work` and `--max-input` ([`super::budget`]), applied to the job.
-    pub limits: super::budget::Limits,
+    pub limits: super::cost::Limits,
 }
 
 /// The subcommands, in the order the help lists them.
@@ -354,6 +354,48 @@ Options:
 On bad input one line `error: FIELD: ...` on standard error, exit code 2.
 ";
 
+/// Help for `blossom region`.
+pub const REGION_HELP: &str = "\
+blossom region: certified booleans of regions bounded by Bezier curves
+
+Usage: blossom region [--input FILE] [--arithmetic exact|f64] [--max-work UNITS]
+                      [--max-input BYTES]
+
+Reads one job (JSON) and prints its exact answer as one line of JSON; exit code 0.
+  {\"kind\": \"boolean\", \"op\": OP, \"regions\": [A, B]}
+      OP one of \"intersection\", \"union\", \"difference\" (A minus B), \"xor\"
+  {\"kind\": \"triangle-triangle\", \"triangles\": [T1, T2]}
+      the intersection of two planar Bezier triangles
+  {\"kind\": \"winding\", \"region\": A, \"points\": [[x, y], ...]}
+      the exact winding number of each point and where it lies (inside, outside, boundary)
+A region is {\"loops\": [LOOP, ...], \"fill\": \"nonzero\" (default) | \"evenodd\"}; a loop is a
+list of curves [[x0, y0], ..., [xn, yn]], each starting exactly where the previous one ends
+and the last ending where the first starts; loops may cross, touch, overlap and run either
+way. A triangle is {\"degree\": n, \"nodes\": [...]}: (n + 1)(n + 2)/2 nodes by increasing k,
+within it increasing j (p_n00, p_(n-1)10, ..., p_0n0, p_(n-1)01, ..., p_00n); its edges are
+curves 0, 1, 2 (the second triangle's 3, 4, 5). Curve degrees 1 to 20.
+
+The answer of boolean and triangle-triangle: {\"kind\": K, \"loops\": [{\"hole\": bool, \"edges\":
+[EDGE, ...]}, ...], \"area\": [lo, hi]}: the regularized result as simple loops with the
+result on their left (holes clockwise), each edge a piece of one input curve
+{\"region\": r, \"loop\": l, \"curve\": c, \"from\": PARAM, \"to\": PARAM} (triangle-triangle:
+{\"curve\": i, \"from\", \"to\"}); area: doubles enclosing the exact area, hi - lo <= 2^-40 B
+(B the area of the box of every input control point). A PARAM is {\"value\": the correctly
+rounded double, \"exact\": \"p/q\" or null, \"interval\": [lo, hi], \"polynomial\": [...]}.
+
+Options:
+  --input FILE         read the job from FILE (default, or `-`: standard input)
+  --arithmetic exact   read the numbers as written (default; \"1/3\" is one third)
+  --arithmetic f64     round each input number to the nearest double first; the answer
+                       is still the exact one for those doubles
+  --max-work UNITS     refuse a job whose work, estimated before computing, is over twice
+                       UNITS (default 1e9, about a second)
+  --max-input BYTES    the longest input read (default 1048576)
+  -h, --help           print this help
+
+On bad input one line `error: FIELD: ...` on standard error, exit code 2.
+";
+
 /// Help for `blossom check`.
 pub const CHECK_HELP: &str = "\
 blossom check: the exact error of somebody else's f64 answer to a restriction job
@@ -423,7 +465,7 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
         "restrict" => parse_restrict(rest),
         "check" => parse_check(rest),
         "intersect" => parse_certified(rest, "intersect", INTERSECT_HELP, Command::Intersect),
-        "region" => parse_certified(rest, "region", super::region::REGION_HELP, Command::Region),
+        "region" => parse_certified(rest, "region", REGION_HELP, Command::Region),
         "figures" => parse_figures(rest),
         "expand" => parse_expand(rest),
         "help" => Ok(Command::Help(HELP)),
@@ -590,10 +632,10 @@ impl Common {
         Ok(true)
     }
 
-    fn limits(&self) -> super::budget::Limits {
-        super::budget::Limits {
-            max_work: self.max_work.unwrap_or(super::budget::DEFAULT_MAX_WORK),
-            max_input: self.max_input.unwrap_or(super::budget::DEFAULT_MAX_INPUT),
+    fn limits(&self) -> super::cost::Limits {
+        super::cost::Limits {
+            max_work: self.max_work.unwrap_or(super::cost::DEFAULT_MAX_WORK),
+            max_input: self.max_input.unwrap_or(super::cost::DEFAULT_MAX_INPUT),
         }
     }
 }
