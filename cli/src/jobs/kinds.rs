@@ -144,19 +144,29 @@ kinds! {
     Restrict "rational-triangle" => RationalTriangle(restrict::rational_triangle::RationalTriangle<Written<T>>)
         r#"{"kind": "rational-triangle", "numerator": ..., "denominator": ..., "triangle": [...], "degree": N (optional), "total_degree": N (optional: triangular arrays)}"#;
     Intersect "roots" => Roots(intersect::roots::Roots<T>)
-        r#"{"kind": "roots", "control_points": [b0, ..., bn]}"#;
+        "{\"kind\": \"roots\", \"control_points\": [b0, ..., bn]}
+      every distinct zero in [0, 1] of the Bezier function with these coefficients, with
+      its multiplicity (\"identically_zero\": true for the zero function)";
     Intersect "curve-curve" => CurveCurve(intersect::curve_curve::CurveCurve<T>)
-        r#"{"kind": "curve-curve", "curves": [P, Q]}"#;
+        "{\"kind\": \"curve-curve\", \"curves\": [P, Q]}
+      every isolated intersection P(s) = Q(t) with an exact tangency flag, and every
+      overlap (common stretch), of two 2-D Bezier curves over [0, 1]";
     Intersect "self" => SelfIntersections(intersect::self_intersections::SelfIntersections<T>)
-        r#"{"kind": "self", "curve": P}"#;
+        "{\"kind\": \"self\", \"curve\": P}
+      every pair s < t with P(s) = P(t), and the stretches a curve retraces";
     Region "triangle-triangle" => TriangleTriangle(region::triangle_triangle::TriangleTriangle<T>)
-        r#"{"kind": "triangle-triangle", "triangles": [T1, T2]}"#;
+        "{\"kind\": \"triangle-triangle\", \"triangles\": [T1, T2]}
+      the intersection of two planar Bezier triangles";
     Region "boolean" => Boolean(region::boolean::Boolean<T>)
-        r#"{"kind": "boolean", "op": OP, "regions": [A, B]}"#;
+        "{\"kind\": \"boolean\", \"op\": OP, \"regions\": [A, B]}
+      OP one of \"intersection\", \"union\", \"difference\" (A minus B), \"xor\"";
     Region "simplify" => Simplify(region::simplify::Simplify<T>)
-        r#"{"kind": "simplify", "region": A}"#;
+        "{\"kind\": \"simplify\", \"region\": A}
+      A under its own fill rule as simple oriented loops: overlapping and self-crossing
+      loops merged (remove overlaps), answered as a boolean (edges of region 0)";
     Region "winding" => Winding(region::winding::Winding<T>)
-        r#"{"kind": "winding", "region": A, "points": [[x, y], ...]}"#;
+        "{\"kind\": \"winding\", \"region\": A, \"points\": [[x, y], ...]}
+      the exact winding number of each point and where it lies (inside, outside, boundary)";
 }
 
 /// The kinds of `subcommand`.

@@ -102,7 +102,17 @@ fn with_newline(mut text: String) -> String {
 pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
     match args::parse(args) {
         Err(error) => Outcome::failure(&error),
-        Ok(Command::Help(text)) => Outcome::success(text.to_string()),
+        Ok(Command::Help(text)) => Outcome::success(
+            [
+                ("  %RESTRICT%\n", Subcommand::Restrict),
+                ("  %INTERSECT%\n", Subcommand::Intersect),
+                ("  %REGION%\n", Subcommand::Region),
+            ]
+            .iter()
+            .fold(text.to_string(), |text, (mark, sub)| {
+                text.replace(mark, &kinds::help_list(*sub))
+            }),
+        ),
         Ok(Command::Version) => {
             Outcome::success(format!("blossom {}\n", env!("CARGO_PKG_VERSION")))
         }
@@ -144,6 +154,10 @@ pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
                     .map(|path| format!("{}\n", path.display()))
                     .collect(),
             ),
+            Err(error) => Outcome::failure(&error),
+        },
+        Ok(Command::Completions(shell)) => match args::completions(&shell) {
+            Ok(text) => Outcome::success(text),
             Err(error) => Outcome::failure(&error),
         },
         Ok(Command::Expand(words)) => match crate::specialised::expand_command(&words) {

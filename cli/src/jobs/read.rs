@@ -326,9 +326,12 @@ impl<'de> de::SeqAccess<'de> for Elements<'de, '_> {
     ) -> Result<Option<S::Value>, ReadError> {
         match self.items.next() {
             None => Ok(None),
-            Some((i, item)) => seed
-                .deserialize(Reader::at(Some(item), format!("{}[{i}]", self.path)))
-                .map(Some),
+            Some((i, item)) => {
+                let path = format!("{}[{i}]", self.path);
+                seed.deserialize(Reader::at(Some(item), path.clone()))
+                    .map(Some)
+                    .map_err(|e| e.at(&path))
+            }
         }
     }
 
@@ -373,7 +376,9 @@ impl<'de> de::MapAccess<'de> for Fields<'de, '_> {
 
     fn next_value_seed<S: DeserializeSeed<'de>>(&mut self, seed: S) -> Result<S::Value, ReadError> {
         let (name, value) = self.current.take().expect("a key before its value");
-        seed.deserialize(Reader::at(value, joined(self.path, name)))
+        let path = joined(self.path, name);
+        seed.deserialize(Reader::at(value, path.clone()))
+            .map_err(|e| e.at(&path))
     }
 }
 
@@ -577,7 +582,7 @@ pub fn counted<'de, D: Deserializer<'de>, E: Deserialize<'de>>(
 }
 
 /// "1 coordinate", "3 coordinates".
-fn coordinates(d: usize) -> String {
+pub fn coordinates(d: usize) -> String {
     if d == 1 {
         String::from("1 coordinate")
     } else {

@@ -9,7 +9,7 @@ use super::{entries, specialised, Number};
 use crate::jobs::args::MethodChoice;
 use crate::jobs::cost::{len, Calibration, Env};
 use crate::jobs::kinds::{Context, Kind};
-use crate::jobs::read::{Corners, Degree, Point, Reading, MAX_DEGREE};
+use crate::jobs::read::{coordinates, Corners, Degree, Point, Reading, MAX_DEGREE};
 use crate::jobs::write::write;
 use blossom::engine::{triangle_bernstein_to_power, triangle_index, triangle_len};
 use blossom::{bezier_triangle_blossom, restrict_power_triangle};
@@ -76,7 +76,7 @@ fn net<T: Number>(items: Vec<Entry<T>>) -> Result<TriangularPatch<T>, Error> {
         if let Some(d) = dim.filter(|d| *d != point.0.len()) {
             return Err(Error::new(
                 format!("{here}.point"),
-                format!("expected {d} coordinates, found {}", point.0.len()),
+                format!("expected {}, found {}", coordinates(d), point.0.len()),
             ));
         }
         let slot = &mut slots[triangle_index(n, i, j)];

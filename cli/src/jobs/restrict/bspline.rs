@@ -6,7 +6,7 @@
 use super::{exact, exact_points, rounded, Number};
 use crate::jobs::cost::{degree_of, dimension, grown_bits, len, Arith, Env};
 use crate::jobs::kinds::{Context, Kind};
-use crate::jobs::read::{Count, Degree, Numbers, Points, Reading, Written};
+use crate::jobs::read::{coordinates, Count, Degree, Numbers, Points, Reading, Written};
 use crate::jobs::write::{write, Out};
 use blossom::{bspline_from_pieces, Error, Piece, Point, PowerCurve};
 use serde::{Deserialize, Deserializer, Serialize};
@@ -78,7 +78,7 @@ impl<T: Number> Kind for Bspline<Written<T>> {
             if let Some(d) = dim.filter(|d| *d != coefficients[0].len()) {
                 return Err(Error::new(
                     format!("pieces[{i}].coefficients[0]"),
-                    format!("expected {d} coordinates, found {}", coefficients[0].len()),
+                    format!("expected {}, found {}", coordinates(d), coefficients[0].len()),
                 ));
             }
             dim = Some(coefficients[0].len());
