@@ -26,13 +26,36 @@
 //! names are `PathBuf`s, so names that are not UTF-8 are kept intact. The help texts are this
 //! module's own (every limit they state is tested equal to the code's).
 
-use super::cost::{Limits, DEFAULT_MAX_INPUT, DEFAULT_MAX_WORK};
 use crate::names::{did_you_mean, listed, quoted};
 use blossom::{Error, Method};
 use clap::error::{ContextKind, ContextValue, ErrorKind};
 use clap::{Args, CommandFactory, Parser, Subcommand};
 use std::ffi::OsString;
 use std::path::PathBuf;
+
+/// The default limit on a job's work (`--max-work`): 10^9 units, about a second.
+pub const DEFAULT_MAX_WORK: u64 = 1_000_000_000;
+
+/// The default limit on the size of a job's input in bytes (`--max-input`): 1 MiB.
+pub const DEFAULT_MAX_INPUT: u64 = 1 << 20;
+
+/// The limits of one run of `blossom restrict`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Limits {
+    /// The largest estimated work of a job that is computed.
+    pub max_work: u64,
+    /// The largest input, in bytes, that is read.
+    pub max_input: u64,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            max_work: DEFAULT_MAX_WORK,
+            max_input: DEFAULT_MAX_INPUT,
+        }
+    }
+}
 
 /// The arithmetic of `restrict`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

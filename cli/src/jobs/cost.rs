@@ -69,12 +69,10 @@
 //! The jobs that decide exactly (`bspline`, `rational-*`, the matrices of `reduce`) compute in
 //! rationals under both arithmetics, and are estimated so.
 
+pub use super::args::{Limits, DEFAULT_MAX_INPUT, DEFAULT_MAX_WORK};
 use super::args::MethodChoice;
 use blossom::{Error, Method};
 use serde_json::{Map, Value};
-
-/// The default limit on a job's work (`--max-work`): 10^9 units, about a second.
-pub const DEFAULT_MAX_WORK: u64 = 1_000_000_000;
 
 /// A job whose estimate is over this many times the limit is refused before computing (see
 /// the module documentation): the sweep's largest ratio of estimate to measured time, in
@@ -84,9 +82,6 @@ pub const DEFAULT_MAX_WORK: u64 = 1_000_000_000;
 /// this check, bounds the work of what it lets through; the factor only has to keep inputs
 /// whose sizes alone are hopeless (unmetered reading included) from being read at all.
 pub const UP_FRONT_FACTOR: f64 = 100.0;
-
-/// The default limit on the size of a job's input in bytes (`--max-input`): 1 MiB.
-pub const DEFAULT_MAX_INPUT: u64 = 1 << 20;
 
 /// Work units of one ring operation under `f64` (with its error bound).
 pub const F64_OPERATION: f64 = 40.0;
@@ -99,24 +94,6 @@ const LIMB_PAIR: f64 = 8.0;
 
 /// log2(10): bits per decimal digit.
 const BITS_PER_DIGIT: f64 = 3.33;
-
-/// The limits of one run of `blossom restrict`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Limits {
-    /// The largest estimated work of a job that is computed.
-    pub max_work: u64,
-    /// The largest input, in bytes, that is read.
-    pub max_input: u64,
-}
-
-impl Default for Limits {
-    fn default() -> Self {
-        Limits {
-            max_work: DEFAULT_MAX_WORK,
-            max_input: DEFAULT_MAX_INPUT,
-        }
-    }
-}
 
 /// A job's estimated work and the field of the job that drives it.
 #[derive(Clone, Debug, PartialEq)]

@@ -6,51 +6,13 @@
 //! the lists of kinds in the help texts and the docs ([`help_list`]). A new kind is one file
 //! that implements [`Kind`] plus one line here.
 
-use super::args::{Arithmetic, MethodChoice};
-use super::cost::{Env, Limits};
+use super::cost::Env;
+pub use super::kind::{Context, Kind, Subcommand};
 use super::read::{fields_of, read_job, Reading, Written};
 use super::{intersect, region, restrict};
 use crate::names::{did_you_mean, quoted};
 use blossom::Error;
-use serde::de::DeserializeOwned;
 use serde_json::{Map, Value};
-
-/// The subcommand that answers a kind.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Subcommand {
-    /// `blossom restrict` (and `blossom check`).
-    Restrict,
-    /// `blossom intersect`.
-    Intersect,
-    /// `blossom region`.
-    Region,
-}
-
-/// What a job is computed with: the command line's choices.
-#[derive(Clone, Copy, Debug)]
-pub struct Context {
-    /// `--method` (restrict).
-    pub method: MethodChoice,
-    /// `--arithmetic`.
-    pub arithmetic: Arithmetic,
-    /// `--max-work` and `--max-input`.
-    pub limits: Limits,
-}
-
-/// A kind of job: read with serde (its fields, unknown ones refused), estimated, answered.
-pub trait Kind: DeserializeOwned {
-    /// The up-front work estimate of a `restrict` job of this kind from the job as written
-    /// (sizes and number lengths, nothing read): the work units (its measured factor applied,
-    /// the reading of its numbers included) and the field that holds the sizes; `None` for the
-    /// kinds estimated after reading.
-    fn estimate(env: &Env) -> Option<(f64, &'static str)> {
-        let _ = env;
-        None
-    }
-
-    /// The answer as JSON (`error_bound` and the one-line text are added by the caller).
-    fn solve(self, context: &Context) -> Result<Value, Error>;
-}
 
 /// One kind as the list declares it.
 #[derive(Clone, Copy, Debug)]

@@ -24,6 +24,7 @@ pub mod args;
 pub mod budget;
 pub mod cost;
 pub mod intersect;
+pub mod kind;
 pub mod kinds;
 pub mod read;
 pub mod region;

@@ -3,7 +3,7 @@
 
 use super::{at, within_budget, Curve2, Intersect, IntersectionsAnswer};
 use crate::jobs::cost::metered;
-use crate::jobs::kinds::{Context, Kind};
+use crate::jobs::kind::{Context, Kind};
 use crate::jobs::read::{counted, Count, Reading};
 use crate::jobs::restrict::Number;
 use crate::jobs::write::write;

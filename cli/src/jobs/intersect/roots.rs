@@ -2,7 +2,7 @@
 //! multiplicity ([`blossom::bezier_zeros`]).
 
 use super::{at, within_budget, MAX_FUNCTION_DEGREE};
-use crate::jobs::kinds::{Context, Kind};
+use crate::jobs::kind::{Context, Kind};
 use crate::jobs::read::{Num, Reading};
 use crate::jobs::restrict::Number;
 use crate::jobs::write::{write, Param};

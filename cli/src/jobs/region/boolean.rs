@@ -4,7 +4,7 @@
 use super::{at, Name, RegionAnswer, RegionShape, Two};
 use crate::jobs::cost::metered;
 use crate::jobs::intersect::within_budget;
-use crate::jobs::kinds::{Context, Kind};
+use crate::jobs::kind::{Context, Kind};
 use crate::jobs::read::Reading;
 use crate::jobs::restrict::Number;
 use blossom::region::{boolean, boolean_work, BooleanOp};

@@ -4,7 +4,7 @@
 use super::{Points, RegionShape};
 use crate::jobs::cost::metered;
 use crate::jobs::intersect::within_budget;
-use crate::jobs::kinds::{Context, Kind};
+use crate::jobs::kind::{Context, Kind};
 use crate::jobs::read::Reading;
 use crate::jobs::restrict::Number;
 use crate::jobs::write::write;

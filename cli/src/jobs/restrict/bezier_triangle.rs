@@ -8,7 +8,7 @@ use super::triangle::TriangleAnswer;
 use super::{entries, specialised, Number};
 use crate::jobs::args::MethodChoice;
 use crate::jobs::cost::{len, Calibration, Env};
-use crate::jobs::kinds::{Context, Kind};
+use crate::jobs::kind::{Context, Kind};
 use crate::jobs::read::{coordinates, Corners, Degree, Point, Reading, MAX_DEGREE};
 use crate::jobs::write::write;
 use blossom::engine::{triangle_bernstein_to_power, triangle_index, triangle_len};

@@ -5,7 +5,7 @@
 
 use super::{exact, exact_points, rounded, Number};
 use crate::jobs::cost::{degree_of, dimension, grown_bits, len, Arith, Env};
-use crate::jobs::kinds::{Context, Kind};
+use crate::jobs::kind::{Context, Kind};
 use crate::jobs::read::{coordinates, Count, Degree, Numbers, Points, Reading, Written};
 use crate::jobs::write::{write, Out};
 use blossom::{bspline_from_pieces, Error, Piece, Point, PowerCurve};

@@ -3,7 +3,7 @@
 
 use super::Number;
 use crate::jobs::cost::{degree_of, dimension, grown_bits, len, Env};
-use crate::jobs::kinds::{Context, Kind};
+use crate::jobs::kind::{Context, Kind};
 use crate::jobs::read::{Degree, NumberList, Points, Reading};
 use crate::jobs::write::{write, Out};
 use blossom::{BSpline, Error, Point};

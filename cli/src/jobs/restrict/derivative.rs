@@ -3,7 +3,7 @@
 
 use super::{Number, Restricted};
 use crate::jobs::cost::{dimension, grown_bits, len, Env};
-use crate::jobs::kinds::{Context, Kind};
+use crate::jobs::kind::{Context, Kind};
 use crate::jobs::read::{Degree, Points, Reading};
 use crate::jobs::write::{write, Out};
 use blossom::{BezierCurve, Error};

@@ -2,7 +2,7 @@
 
 use super::{Number, Restricted};
 use crate::jobs::cost::{degree_of, dimension, grown_bits, len, Env};
-use crate::jobs::kinds::{Context, Kind};
+use crate::jobs::kind::{Context, Kind};
 use crate::jobs::read::{Degree, Points, Reading};
 use crate::jobs::write::{write, Out};
 use blossom::{elevate, BezierCurve, Error};

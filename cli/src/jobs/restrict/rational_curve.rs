@@ -5,7 +5,7 @@
 use super::{exact, exact_points, rounded, check_rounded_weights, Number, Restricted};
 use crate::jobs::args::MethodChoice;
 use crate::jobs::cost::{curve_operations, degree_of, dimension, grown_bits, len, Arith, Env};
-use crate::jobs::kinds::{Context, Kind};
+use crate::jobs::kind::{Context, Kind};
 use crate::jobs::read::{Degree, NumberList, Numbers, Points, Reading, Written, MAX_DEGREE};
 use crate::jobs::write::{write, Out};
 use blossom::{Error, Method, Point};

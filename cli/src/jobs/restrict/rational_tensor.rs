@@ -7,7 +7,7 @@ use super::{check_rounded_weights, exact, exact_points, rounded, Number};
 use crate::jobs::args::MethodChoice;
 use crate::jobs::cost::{degree_of, dimension, first_len, grown_bits, len, tensor_operations};
 use crate::jobs::cost::{Arith, Env};
-use crate::jobs::kinds::{Context, Kind};
+use crate::jobs::kind::{Context, Kind};
 use crate::jobs::read::{Count, Degree, NumberRows, Numbers, Reading, Rows, Written, MAX_DEGREE};
 use crate::jobs::write::{write, Out};
 use blossom::{Error, Method, Point, Rational, RationalSurface};

@@ -6,7 +6,7 @@ use super::rational_tensor::{estimate, grids, sizes};
 use super::{check_rounded_weights, entries, exact, exact_points, rounded, Number};
 use crate::jobs::args::MethodChoice;
 use crate::jobs::cost::{degree_of, triangle_operations, Env};
-use crate::jobs::kinds::{Context, Kind};
+use crate::jobs::kind::{Context, Kind};
 use crate::jobs::read::{triangular, Corners, Degree, NumberRows, Reading, Rows, Written};
 use crate::jobs::write::write;
 use blossom::{Error, Method, Point, RationalPowerTriangle, RationalSurface, TriangularPatch};

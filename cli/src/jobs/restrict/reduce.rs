@@ -3,7 +3,7 @@
 
 use super::{Number, Restricted};
 use crate::jobs::cost::{degree_of, dimension, grown_bits, len, Arith, Env};
-use crate::jobs::kinds::{Context, Kind};
+use crate::jobs::kind::{Context, Kind};
 use crate::jobs::read::{Degree, Points, Reading, MAX_DEGREE};
 use crate::jobs::write::{write, Out};
 use blossom::{reduce, squared_l2_distance, BezierCurve, Error, Reduction};

@@ -5,7 +5,7 @@ use super::{specialised, Number, Restricted};
 use crate::jobs::args::MethodChoice;
 use crate::jobs::cost::{dimension, first_len, grown_bits, len, polar_bits, tensor_operations};
 use crate::jobs::cost::{Calibration, Env};
-use crate::jobs::kinds::{Context, Kind};
+use crate::jobs::kind::{Context, Kind};
 use crate::jobs::read::{rectangular, Numbers, Reading, Rows};
 use crate::jobs::write::{write, Out};
 use blossom::{restrict_power_surface, Error, PowerSurface};

@@ -6,7 +6,7 @@ use super::{entries, specialised, Number};
 use crate::jobs::args::MethodChoice;
 use crate::jobs::cost::{dimension, first_len, grown_bits, len, polar_bits, triangle_operations};
 use crate::jobs::cost::{Calibration, Env};
-use crate::jobs::kinds::{Context, Kind};
+use crate::jobs::kind::{Context, Kind};
 use crate::jobs::read::{rectangular, triangular, Corners, Degree, Reading, Rows};
 use crate::jobs::write::write;
 use blossom::{restrict_power_surface_to_triangle, restrict_power_triangle, Error};
