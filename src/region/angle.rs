@@ -50,8 +50,7 @@ fn sign_at(p: &[Rational], t: &AlgebraicReal) -> Ordering {
 }
 
 /// The class (0..8, counter-clockwise from +x) of the branch's leading direction.
-fn class(curves: &[Curve], b: &Branch) -> (u8, [Ordering; 2]) {
-    let c = &curves[b.curve];
+pub(crate) fn class(c: &Curve, b: &Branch) -> (u8, [Ordering; 2]) {
     let sigma_negative = !b.forward();
     let mut dx = c.power[0].clone();
     let mut dy = c.power[1].clone();
@@ -137,13 +136,12 @@ fn first_root(g: &[Rational], from: &AlgebraicReal, to: &AlgebraicReal) -> Algeb
 /// The height (coordinate `1 - axis`) where the branch crosses the line coordinate `axis`
 /// = `level`, on its monotone stretch from its vertex to `limit`.
 fn height_at(
-    curves: &[Curve],
+    c: &Curve,
     b: &Branch,
     axis: usize,
     level: &Rational,
     limit: &AlgebraicReal,
 ) -> AlgebraicReal {
-    let c = &curves[b.curve];
     let f = shifted_poly(&c.power[axis], level);
     let forward = b.forward();
     let t = roots_with_multiplicity(&f, &Rational::zero(), &Rational::one())
@@ -163,9 +161,10 @@ fn height_at(
 /// The counter-clockwise order of the leading directions of two branches that leave the
 /// same vertex (angles measured from +x in [0, 2π), branches tangent to +x ordered from the
 /// lowest up): `Less` when `a` comes first. Distinct pieces never compare equal.
-pub(crate) fn compare(curves: &[Curve], a: &Branch, b: &Branch) -> Ordering {
-    let (ca, sa) = class(curves, a);
-    let (cb, _) = class(curves, b);
+/// `curve_a` and `curve_b` are the curves of the branches.
+pub(crate) fn compare(curve_a: &Curve, a: &Branch, curve_b: &Curve, b: &Branch) -> Ordering {
+    let (ca, sa) = class(curve_a, a);
+    let (cb, _) = class(curve_b, b);
     if ca != cb {
         return ca.cmp(&cb);
     }
@@ -175,21 +174,21 @@ pub(crate) fn compare(curves: &[Curve], a: &Branch, b: &Branch) -> Ordering {
     } else {
         (1, sa[1])
     };
-    let ca_ = &curves[a.curve];
+    let ca_ = curve_a;
     let g = derivative(&ca_.power[axis]);
     let rho_a = first_root(&g, &a.at, &a.toward);
-    let gb = derivative(&curves[b.curve].power[axis]);
+    let gb = derivative(&curve_b.power[axis]);
     let rho_b = first_root(&gb, &b.at, &b.toward);
     let v = value_at(&ca_.power[axis], &a.at);
     let ea = value_at(&ca_.power[axis], &rho_a);
-    let eb = value_at(&curves[b.curve].power[axis], &rho_b);
+    let eb = value_at(&curve_b.power[axis], &rho_b);
     let nearer = match (ea.compare(&eb), direction) {
         (Ordering::Less, Ordering::Greater) | (Ordering::Greater, Ordering::Less) => ea,
         _ => eb,
     };
     let level = rational_between(&v, &nearer);
-    let ha = height_at(curves, a, axis, &level, &rho_a);
-    let hb = height_at(curves, b, axis, &level, &rho_b);
+    let ha = height_at(curve_a, a, axis, &level, &rho_a);
+    let hb = height_at(curve_b, b, axis, &level, &rho_b);
     let order = ha.compare(&hb);
     // Moving +x: higher is more counter-clockwise. Moving -x: lower is. Moving +y: the one
     // further left (smaller x) is. Moving -y: the one further right is.
@@ -234,7 +233,7 @@ mod tests {
 
     #[test]
     fn tangent_branches_and_a_cusp_are_ordered_exactly() {
-        let curves = vec![
+        let curves = [
             // 0: y = x^2 from the origin (quadratic (0,0), (1/2,0), (1,1)).
             curve(&[(0, 0, 1), (1, 0, 2), (1, 1, 1)]),
             // 1: y = x^3 from the origin, as a cubic: (0,0), (1/3,0), (2/3,0), (1,1).
@@ -258,7 +257,8 @@ mod tests {
         ];
         // Counter-clockwise from just below +x: y = -x^2, the axis, y = x^3, y = x^2, the
         // cusp y = x^(3/2) (above x^2 near 0), then +y.
-        let ccw = |i: usize, j: usize| compare(&curves, &b[i], &b[j]);
+        let ccw =
+            |i: usize, j: usize| compare(&curves[b[i].curve], &b[i], &curves[b[j].curve], &b[j]);
         assert_eq!(ccw(4, 2), Ordering::Less);
         assert_eq!(ccw(2, 1), Ordering::Less);
         assert_eq!(ccw(1, 0), Ordering::Less);

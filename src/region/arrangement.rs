@@ -76,20 +76,20 @@ pub(crate) struct Arrangement {
 }
 
 /// Union-find with the parity of each element relative to its root.
-struct Joins {
+pub(crate) struct Joins {
     parent: Vec<usize>,
     parity: Vec<bool>,
 }
 
 impl Joins {
-    fn new(n: usize) -> Self {
+    pub(crate) fn new(n: usize) -> Self {
         Joins {
             parent: (0..n).collect(),
             parity: vec![false; n],
         }
     }
 
-    fn find(&mut self, x: usize) -> (usize, bool) {
+    pub(crate) fn find(&mut self, x: usize) -> (usize, bool) {
         let p = self.parent[x];
         if p == x {
             return (x, false);
@@ -101,7 +101,7 @@ impl Joins {
     }
 
     /// Joins x and y with `flip` their relative parity.
-    fn join(&mut self, x: usize, y: usize, flip: bool) {
+    pub(crate) fn join(&mut self, x: usize, y: usize, flip: bool) {
         let (rx, px) = self.find(x);
         let (ry, py) = self.find(y);
         if rx != ry {
@@ -256,105 +256,40 @@ impl Arrangement {
         }
         carry_across_overlaps(&curves, &shared, &mut params);
 
-        // Vertices.
-        let mut offset = Vec::with_capacity(n + 1);
-        let mut total = 0;
-        for p in &params {
-            offset.push(total);
-            total += p.len();
-        }
-        let mut nodes = Joins::new(total);
-        let node = |c: usize, x: &AlgebraicReal, params: &[Vec<AlgebraicReal>]| {
-            offset[c] + index_of(&params[c], x)
-        };
-        for s in &same {
-            let a = node(s.a.0, &s.a.1, &params);
-            let b = node(s.b.0, &s.b.1, &params);
-            nodes.join(a, b, false);
-        }
-        // Pieces, and the pairs of pieces that overlaps make coincident.
-        let mut first = Vec::with_capacity(n);
-        let mut pieces = Vec::new();
-        for (c, p) in params.iter().enumerate() {
-            first.push(pieces.len());
-            for k in 0..p.len() - 1 {
-                pieces.push(Piece {
-                    curve: c,
-                    k,
-                    group: 0,
-                    along: true,
-                });
-            }
-        }
-        let mut groups = Joins::new(pieces.len());
-        for sh in &shared {
-            let o = &sh.overlap;
-            let (i0, i1) = (
-                index_of(&params[sh.p], &o.s[0]),
-                index_of(&params[sh.p], &o.s[1]),
-            );
-            let (j0, j1) = (
-                index_of(&params[sh.q], &o.t[0]),
-                index_of(&params[sh.q], &o.t[1]),
-            );
-            let forward = j0 < j1;
-            debug_assert_eq!(
-                i1 - i0,
-                j0.abs_diff(j1),
-                "both sides of an overlap split alike"
-            );
-            for k in 0..=(i1 - i0) {
-                let j = if forward { j0 + k } else { j0 - k };
-                nodes.join(offset[sh.p] + i0 + k, offset[sh.q] + j, false);
-                if k < i1 - i0 {
-                    let piece_q = if forward { j } else { j - 1 };
-                    groups.join(first[sh.p] + i0 + k, first[sh.q] + piece_q, !forward);
-                }
-            }
-        }
-        // Number the vertices.
-        let mut vertex_of_root = vec![usize::MAX; total];
-        let mut vertices = 0usize;
-        let mut vertex = Vec::with_capacity(n);
-        for (c, p) in params.iter().enumerate() {
-            let mut row = Vec::with_capacity(p.len());
-            for k in 0..p.len() {
-                let (root, _) = nodes.find(offset[c] + k);
-                if vertex_of_root[root] == usize::MAX {
-                    vertex_of_root[root] = vertices;
-                    vertices += 1;
-                }
-                row.push(vertex_of_root[root]);
-            }
-            vertex.push(row);
-        }
-        // Groups: pieces are numbered by curve then parameter, so the first piece met of a
-        // group is its representative (lowest curve, then lowest parameters).
-        let mut group_of_root = vec![usize::MAX; pieces.len()];
-        let mut out: Vec<Group> = Vec::new();
-        let mut rep_parity = Vec::new();
-        for (i, piece) in pieces.iter_mut().enumerate() {
-            let (root, parity) = groups.find(i);
-            if group_of_root[root] == usize::MAX {
-                group_of_root[root] = out.len();
-                out.push(Group {
-                    rep: i,
-                    members: Vec::new(),
-                });
-                rep_parity.push(parity);
-            }
-            let g = group_of_root[root];
-            out[g].members.push(i);
-            piece.group = g;
-            piece.along = parity == rep_parity[g];
-        }
+        let node = |c: usize, x: &AlgebraicReal| (c, index_of(&params[c], x));
+        let joins: Vec<[(usize, usize); 2]> = same
+            .iter()
+            .map(|s| [node(s.a.0, &s.a.1), node(s.b.0, &s.b.1)])
+            .collect();
+        let stretches: Vec<Stretch> = shared
+            .iter()
+            .map(|sh| Stretch {
+                p: sh.p,
+                q: sh.q,
+                s: [
+                    index_of(&params[sh.p], &sh.overlap.s[0]),
+                    index_of(&params[sh.p], &sh.overlap.s[1]),
+                ],
+                t: [
+                    index_of(&params[sh.q], &sh.overlap.t[0]),
+                    index_of(&params[sh.q], &sh.overlap.t[1]),
+                ],
+            })
+            .collect();
+        let lens: Vec<usize> = params.iter().map(Vec::len).collect();
+        let Assembled {
+            vertex,
+            pieces,
+            groups,
+            ..
+        } = assemble(&lens, &joins, &stretches);
         Ok(Arrangement {
             curves,
             ids,
             params,
             vertex,
             pieces,
-            groups: out,
+            groups,
         })
     }
 
@@ -368,6 +303,125 @@ impl Arrangement {
     pub fn end_vertices(&self, i: usize) -> (usize, usize) {
         let p = &self.pieces[i];
         (self.vertex[p.curve][p.k], self.vertex[p.curve][p.k + 1])
+    }
+}
+
+/// An overlap by parameter indices: curve `p` from index `s[0]` to `s[1]` (increasing)
+/// traces the same points as curve `q` from index `t[0]` to `t[1]` (either way), both sides
+/// split alike.
+pub(crate) struct Stretch {
+    pub p: usize,
+    pub q: usize,
+    pub s: [usize; 2],
+    pub t: [usize; 2],
+}
+
+/// The vertices, pieces and groups of an arrangement (see [`assemble`]).
+pub(crate) struct Assembled {
+    /// The vertex of each (curve, parameter index).
+    pub vertex: Vec<Vec<usize>>,
+    /// How many vertices.
+    pub vertices: usize,
+    /// Every piece, by curve then parameter index.
+    pub pieces: Vec<Piece>,
+    /// The groups of coincident pieces.
+    pub groups: Vec<Group>,
+}
+
+/// The vertices, pieces and groups of curves split at `lens[c]` sorted distinct parameters
+/// each: (curve, index) nodes joined by `joins` (two nodes that are one point of the plane)
+/// and by the matching ends inside every overlap `stretches`, whose pieces are paired in
+/// order into groups (union-find with the parity of their directions). Pieces are numbered by
+/// curve then parameter, so the first piece met of a group is its representative (lowest
+/// curve, then lowest parameters). One procedure for the exact stages and the float path,
+/// which differ only in how they find and compare the parameters.
+pub(crate) fn assemble(
+    lens: &[usize],
+    joins: &[[(usize, usize); 2]],
+    stretches: &[Stretch],
+) -> Assembled {
+    let n = lens.len();
+    let mut offset = Vec::with_capacity(n + 1);
+    let mut total = 0;
+    for &len in lens {
+        offset.push(total);
+        total += len;
+    }
+    let mut nodes = Joins::new(total);
+    for [(a, i), (b, j)] in joins {
+        nodes.join(offset[*a] + i, offset[*b] + j, false);
+    }
+    // Pieces, and the pairs of pieces that overlaps make coincident.
+    let mut first = Vec::with_capacity(n);
+    let mut pieces = Vec::new();
+    for (c, &len) in lens.iter().enumerate() {
+        first.push(pieces.len());
+        for k in 0..len - 1 {
+            pieces.push(Piece {
+                curve: c,
+                k,
+                group: 0,
+                along: true,
+            });
+        }
+    }
+    let mut groups = Joins::new(pieces.len());
+    for sh in stretches {
+        let ([i0, i1], [j0, j1]) = (sh.s, sh.t);
+        let forward = j0 < j1;
+        debug_assert_eq!(
+            i1 - i0,
+            j0.abs_diff(j1),
+            "both sides of an overlap split alike"
+        );
+        for k in 0..=(i1 - i0) {
+            let j = if forward { j0 + k } else { j0 - k };
+            nodes.join(offset[sh.p] + i0 + k, offset[sh.q] + j, false);
+            if k < i1 - i0 {
+                let piece_q = if forward { j } else { j - 1 };
+                groups.join(first[sh.p] + i0 + k, first[sh.q] + piece_q, !forward);
+            }
+        }
+    }
+    // Number the vertices.
+    let mut vertex_of_root = vec![usize::MAX; total];
+    let mut vertices = 0usize;
+    let mut vertex = Vec::with_capacity(n);
+    for (c, &len) in lens.iter().enumerate() {
+        let mut row = Vec::with_capacity(len);
+        for k in 0..len {
+            let (root, _) = nodes.find(offset[c] + k);
+            if vertex_of_root[root] == usize::MAX {
+                vertex_of_root[root] = vertices;
+                vertices += 1;
+            }
+            row.push(vertex_of_root[root]);
+        }
+        vertex.push(row);
+    }
+    let mut group_of_root = vec![usize::MAX; pieces.len()];
+    let mut out: Vec<Group> = Vec::new();
+    let mut rep_parity = Vec::new();
+    for (i, piece) in pieces.iter_mut().enumerate() {
+        let (root, parity) = groups.find(i);
+        if group_of_root[root] == usize::MAX {
+            group_of_root[root] = out.len();
+            out.push(Group {
+                rep: i,
+                members: Vec::new(),
+            });
+            rep_parity.push(parity);
+        }
+        let g = group_of_root[root];
+        out[g].members.push(i);
+        piece.group = g;
+        piece.along = parity == rep_parity[g];
+    }
+    Assembled {
+        vertex,
+        vertices,
+        pieces,
+        groups: out,
     }
 }
 

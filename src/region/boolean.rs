@@ -100,6 +100,8 @@ pub struct RegionResult {
     pub area: [f64; 2],
     /// The regions the edges name: `inputs[e.region]`.
     pub(crate) inputs: [Region; 2],
+    /// How it was decided.
+    pub(crate) report: Report,
 }
 
 /// What the stages of a boolean compute: the loops and the area enclosure of
@@ -107,6 +109,43 @@ pub struct RegionResult {
 pub(crate) struct Outline {
     pub loops: Vec<ResultLoop>,
     pub area: [f64; 2],
+    pub report: Report,
+}
+
+/// How a boolean was decided: which path answered and what, if anything, took exact
+/// arithmetic ([`RegionResult::report`]). Every decision is exact either way; this says
+/// where the time went.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Report {
+    /// Whether the float path answered. When it did not, the exact stages did: an input
+    /// number that is not a double (a rational such as 1/3), or a consistency check or an
+    /// area enclosure of the float path that failed (`reason`).
+    pub float_path: bool,
+    /// Whether the float path's shortcut for the generic configuration answered: each
+    /// region's loops simple and pairwise disjoint (proved once per region and kept), every
+    /// contact between the regions a transversal crossing (the counts below are then 0).
+    pub generic: bool,
+    /// Why the exact stages answered, when they did.
+    pub reason: Option<&'static str>,
+    /// Pairs of curves whose boxes meet (each examined).
+    pub pairs: usize,
+    /// Of those, consecutive curves of a loop proved to meet only at their join.
+    pub joins: usize,
+    /// Of those, pairs decided by the certified float filter (transversal crossings or none).
+    pub filtered: usize,
+    /// Of those, pairs intersected exactly: a contact the filter cannot decide (an end on a
+    /// curve, a shared vertex, a tangency, an overlap).
+    pub exact_pairs: usize,
+    /// Curves not proved one-to-one, intersected exactly with themselves.
+    pub exact_self: usize,
+    /// Comparisons of two half-edges at a vertex decided exactly (tangent branches, zero
+    /// derivatives).
+    pub exact_orders: usize,
+    /// Connected components whose winding numbers were seeded from the sign of a face's area
+    /// (no join on a side of the component's box decided).
+    pub area_seeds: usize,
+    /// Connected components seeded by an exact ray (nothing cheaper decided).
+    pub exact_seeds: usize,
 }
 
 impl RegionResult {
@@ -114,6 +153,26 @@ impl RegionResult {
     /// [`simplify`], the simplified region and the empty region).
     pub fn inputs(&self) -> &[Region; 2] {
         &self.inputs
+    }
+
+    /// How the boolean was decided: the float path or the exact stages, and which contacts,
+    /// orders and seeds took exact arithmetic.
+    ///
+    /// ```
+    /// use blossom::region::{boolean, BooleanOp, FillRule, Region};
+    /// use blossom::Bezier;
+    /// let square = |x: f64, y: f64| -> Region {
+    ///     let c = [[x, y], [x + 1.0, y], [x + 1.0, y + 1.0], [x, y + 1.0]];
+    ///     let sides = (0..4).map(|i| Bezier::new(vec![c[i], c[(i + 1) % 4]]).unwrap());
+    ///     Region::from_f64(vec![sides.collect()], FillRule::NonZero).unwrap()
+    /// };
+    /// // Two squares sharing an edge: the float path, the shared edge decided exactly.
+    /// let r = boolean(&square(0.0, 0.0), &square(1.0, 0.0), BooleanOp::Union)?;
+    /// assert!(r.report().float_path && r.report().exact_pairs > 0);
+    /// # Ok::<(), blossom::Error>(())
+    /// ```
+    pub fn report(&self) -> &Report {
+        &self.report
     }
 }
 
@@ -144,11 +203,16 @@ impl RegionResult {
 /// # Errors
 /// None for valid regions today; the `Result` leaves room for limits.
 pub fn boolean(a: &Region, b: &Region, op: BooleanOp) -> Result<RegionResult> {
-    let Outline { loops, area } = super::pipeline::run(&[a, b], op)?;
+    let Outline {
+        loops,
+        area,
+        report,
+    } = super::pipeline::run(&[a, b], op)?;
     Ok(RegionResult {
         loops,
         area,
         inputs: [a.clone(), b.clone()],
+        report,
     })
 }
 

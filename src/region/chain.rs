@@ -181,7 +181,10 @@ fn successors(
             .map(|&o| (edges[o].leaving(arr), true, o))
             .chain(ins.iter().map(|&i| (edges[i].arriving(arr), false, i)))
             .collect();
-        around.sort_by(|a, b| compare(&arr.curves, &a.0, &b.0));
+        around.sort_by(|a, b| {
+            let (ca, cb) = (&arr.curves[a.0.curve], &arr.curves[b.0.curve]);
+            compare(ca, &a.0, cb, &b.0)
+        });
         let n = around.len();
         for k in 0..n {
             if around[k].1 {

@@ -36,6 +36,40 @@ fn sample(curve: &Curve, a: &crate::AlgebraicReal, b: &crate::AlgebraicReal) -> 
     }
 }
 
+/// The exact winding numbers `[left, right][region]` beside the piece of `curve` between the
+/// distinct parameters `a` and `b` (left and right of the curve's direction), where no curve
+/// but the piece's own group passes through its inner points; `mult[r]` is the signed number
+/// of the group's pieces of region r (+1 for one running the curve's way), `curves[r]` every
+/// curve of region r (the piece's own curve among them).
+pub(crate) fn sides_of_piece(
+    curve: &Curve,
+    a: &crate::AlgebraicReal,
+    b: &crate::AlgebraicReal,
+    mult: [i64; 2],
+    curves: [Vec<&Curve>; 2],
+) -> [[i64; 2]; 2] {
+    let m = sample(curve, a, b);
+    let x = curve.at(&m);
+    let t = curve.tangent(&m);
+    let (axis, shifted_is_right) = if !t[1].is_zero() {
+        (0, t[1] > Rational::zero())
+    } else {
+        (1, t[0] < Rational::zero())
+    };
+    let mut sides = [[0; 2]; 2];
+    for (r, region_curves) in curves.into_iter().enumerate() {
+        let count = ray_count(region_curves, &x, axis, AtStart::Skip, Some((curve, &m)));
+        let (left, right) = if shifted_is_right {
+            (count + mult[r], count)
+        } else {
+            (count, count - mult[r])
+        };
+        sides[0][r] = left;
+        sides[1][r] = right;
+    }
+    sides
+}
+
 /// For each group: `None` when it does not bound the result, `Some(true)` when it does with
 /// the result on the left of its representative's direction, `Some(false)` when on the right.
 pub(crate) fn boundary_groups(
@@ -49,39 +83,22 @@ pub(crate) fn boundary_groups(
             let rep = &arr.pieces[g.rep];
             let curve = &arr.curves[rep.curve];
             let (a, b) = arr.ends(g.rep);
-            let m = sample(curve, a, b);
-            let x = curve.at(&m);
-            let t = curve.tangent(&m);
-            let (axis, shifted_is_right) = if !t[1].is_zero() {
-                (0, t[1] > Rational::zero())
-            } else {
-                (1, t[0] < Rational::zero())
-            };
-            let mut sides = [[false; 2]; 2]; // [left, right][region]
-            for (r, fill) in fills.iter().enumerate() {
-                let curves = arr
-                    .curves
+            let mut mult = [0, 0];
+            for &i in &g.members {
+                let piece = &arr.pieces[i];
+                mult[arr.ids[piece.curve].region] += if piece.along { 1 } else { -1 };
+            }
+            let of_region = |r: usize| -> Vec<&Curve> {
+                arr.curves
                     .iter()
                     .zip(&arr.ids)
                     .filter(|(_, id)| id.region == r)
-                    .map(|(c, _)| c);
-                let count = ray_count(curves, &x, axis, AtStart::Skip, Some((curve, &m)));
-                let mult: i64 = g
-                    .members
-                    .iter()
-                    .filter(|&&i| arr.ids[arr.pieces[i].curve].region == r)
-                    .map(|&i| if arr.pieces[i].along { 1 } else { -1 })
-                    .sum();
-                let (left, right) = if shifted_is_right {
-                    (count + mult, count)
-                } else {
-                    (count, count - mult)
-                };
-                sides[0][r] = fill.inside(left);
-                sides[1][r] = fill.inside(right);
-            }
-            let left = op.keeps(sides[0][0], sides[0][1]);
-            let right = op.keeps(sides[1][0], sides[1][1]);
+                    .map(|(c, _)| c)
+                    .collect()
+            };
+            let sides = sides_of_piece(curve, a, b, mult, [of_region(0), of_region(1)]);
+            let keeps = |w: [i64; 2]| op.keeps(fills[0].inside(w[0]), fills[1].inside(w[1]));
+            let (left, right) = (keeps(sides[0]), keeps(sides[1]));
             match left.cmp(&right) {
                 Ordering::Equal => None,
                 Ordering::Greater => Some(true),

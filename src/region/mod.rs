@@ -84,6 +84,22 @@
 //!    algebraic parameters each value is enclosed by interval Horner over the parameter's
 //!    isolating interval, refined until the enclosure meets the width the answer promises.
 //!
+//! # Output
+//!
+//! A [`RegionResult`] names pieces of input curves; it also gives them as geometry.
+//! [`RegionResult::geometry`] cuts each edge's piece out of its input curve in doubles, of the
+//! input curve's degree (a piece of a line is a line, of a quadratic a quadratic, of a cubic a
+//! cubic): consecutive pieces share their end point bit for bit and every loop closes exactly;
+//! a parameter 0 or 1 gives the input's own control point, every other coordinate is within
+//! 17 n 2^-53 M of the exact piece's (n the degree, M the largest absolute input coordinate;
+//! 7 n 2^-53 M for input of doubles up to degree 8), by float restrictions only.
+//! [`RegionResult::to_region`] makes that a [`Region`] (nonzero rule) so that booleans chain,
+//! and [`RegionResult::svg`] writes it as SVG path data (`M`, `L`, `Q`, `C`, `Z`, numbers in
+//! shortest round-trip form). SVG path data comes in through [`Region::from_svg_path`] and
+//! [`parse_svg_path`] (commands M, L, H, V, Q, T, C, S, Z, every number exact). With the
+//! feature `kurbo`, `Region::from_bez_path`, `RegionResult::to_bez_path` and `binary_op`
+//! (linesweeper's one call) do the same for kurbo's `BezPath`.
+//!
 //! # Limits
 //!
 //! Curve degrees 1 to [`MAX_REGION_DEGREE`]. The cost is dominated by the exact
@@ -100,9 +116,11 @@ mod crossing;
 mod curve;
 mod filtered;
 mod input;
+mod output;
 mod parameter;
 mod pipeline;
 mod prune;
+mod svg;
 mod transfer;
 mod winding;
 
@@ -113,10 +131,15 @@ mod tests_curved;
 #[cfg(test)]
 mod tests_grid;
 
+#[cfg(feature = "kurbo")]
+pub use crate::interop::kurbo_region::binary_op;
 pub use boolean::{
     boolean, boolean_work, simplify, simplify_work, triangle_intersection, BooleanOp, Edge,
-    RegionResult, ResultLoop,
+    RegionResult, Report, ResultLoop,
 };
 pub use input::{FillRule, Region, MAX_REGION_DEGREE};
 pub use parameter::Parameter;
+pub use svg::parse_svg_path;
+#[cfg(feature = "kurbo")]
+pub(crate) use svg::Subpaths;
 pub use winding::{Position, Winding};

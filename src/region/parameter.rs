@@ -231,6 +231,9 @@ impl Parameter {
     /// # Errors
     /// Those of [`Parameter::algebraic`].
     pub fn compare(&self, other: &Parameter) -> Result<Ordering> {
+        if self.same_source(other) {
+            return Ok(Ordering::Equal);
+        }
         if self.enclosure[1] < other.enclosure[0] {
             return Ok(Ordering::Less);
         }
@@ -238,6 +241,24 @@ impl Parameter {
             return Ok(Ordering::Greater);
         }
         Ok(self.algebraic()?.compare(other.algebraic()?))
+    }
+}
+
+impl Parameter {
+    /// Whether the two are the same number by construction: the same end of a curve, or the
+    /// same side of the same certified crossing (no exact work).
+    fn same_source(&self, other: &Parameter) -> bool {
+        match (&self.source, &other.source) {
+            (Source::End(a), Source::End(b)) => a == b,
+            (Source::Crossing(a), Source::Crossing(b)) => {
+                Arc::ptr_eq(&a.all, &b.all)
+                    && a.pair == b.pair
+                    && a.side == b.side
+                    && a.s == b.s
+                    && a.t == b.t
+            }
+            _ => false,
+        }
     }
 }
 

@@ -3,7 +3,7 @@
 
 use super::area::{loop_terms, refine_sum};
 use super::arrangement::{candidate_pairs, one_to_one, proved_join, Arrangement, CurveId};
-use super::boolean::{BooleanOp, Edge, Outline, ResultLoop};
+use super::boolean::{BooleanOp, Edge, Outline, Report, ResultLoop};
 use super::chain::chain;
 use super::classify::boundary_groups;
 use super::curve::{f64_down, f64_up, is_double, Curve};
@@ -70,8 +70,12 @@ fn box_area(regions: &[&Region; 2]) -> Rational {
 /// proves the configuration generic, else the exact stages.
 pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Result<Outline> {
     match super::filtered::run(regions, op) {
-        Some(answer) => Ok(answer),
-        None => run_exact(regions, op),
+        Ok(answer) => Ok(answer),
+        Err(reason) => {
+            let mut answer = run_exact(regions, op)?;
+            answer.report.reason = Some(reason);
+            Ok(answer)
+        }
     }
 }
 
@@ -85,6 +89,7 @@ pub(crate) fn run_exact(regions: &[&Region; 2], op: BooleanOp) -> Result<Outline
         return Ok(Outline {
             loops: Vec::new(),
             area: [0.0, 0.0],
+            report: Report::default(),
         });
     }
     let zero = Rational::zero();
@@ -120,6 +125,7 @@ pub(crate) fn run_exact(regions: &[&Region; 2], op: BooleanOp) -> Result<Outline
     Ok(Outline {
         loops: out,
         area: [f64_down(&lo), f64_up(&hi)],
+        report: Report::default(),
     })
 }
 

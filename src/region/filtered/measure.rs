@@ -1,168 +1,20 @@
-//! Rigorous enclosures in floating point: the sign of a crossing, the signed area of a loop
-//! and of the result, and the assembled answer.
-//!
-//! Everything is computed in [`BoundedF64`] (a double with a rigorous bound on its distance
-//! to the exact value of the same operations on the same inputs). A parameter t* known to lie
-//! in an enclosure [lo, hi] of doubles around its correctly rounded double m enters as m with
-//! the bound hi - lo (rounded up), which covers |t* - m|; evaluations by de Casteljau's
-//! pyramid in convex form ([`ConvexStep`]) are then enclosures of the exact values at t*.
-//!
-//! **Area.** The signed area of a closed loop is the sum over its pieces of the integral of
-//! (x - o) dy, for any constant o (the integral of o dy over a closed loop is zero); o is a
-//! double near the middle of the input, which keeps the terms small. For a curve of degree n
-//! with control points (x_i, y_i), the integrand (x(t) - o) y'(t) is a Bernstein polynomial
-//! of degree 2n - 1 with coefficients
-//! c_k = sum over i + j = k of C(n, i) C(n - 1, j) / C(2n - 1, k) (x_i - o) n (y_(j+1) - y_j),
-//! so its antiderivative F(t) from 0 is the Bernstein polynomial of degree 2n with
-//! coefficients f_0 = 0, f_(k+1) = f_k + c_k / (2n), and F(1) = f_(2n). A piece from a to b
-//! contributes F(b) - F(a).
+//! The areas of the general float path: each curve's area polynomial evaluated at its
+//! parameters' enclosures (the bounds of `bounds`), a face's or a loop's signed area, and the
+//! assembled answer.
 
-use super::split::{Mark, Split};
-use super::walk::BoundaryLoop;
-use crate::intersect::interval::{lower, upper, ConvexStep};
+use super::bounds::{area_coefficients, evaluate, hodograph, parameter, sign, LEVEL};
+use super::graph::Graph;
+use crate::intersect::interval::{lower, upper};
 use crate::num::bounded::{BoundedF64, UNIT_ROUNDOFF};
 use crate::num::ring::Ring;
 use crate::region::boolean::{Edge, Outline, ResultLoop};
-use crate::region::input::Doubles;
-use crate::region::input::MAX_REGION_DEGREE;
-use crate::region::parameter::{Crossings, Parameter};
-use crate::shape::flat::curve_pyramid_in_place;
-use std::sync::Arc;
-
-/// The sign of an enclosure: `Some(±1)` when it excludes zero.
-fn sign(x: &BoundedF64) -> Option<i64> {
-    if x.value() - x.error_bound() > 0.0 {
-        Some(1)
-    } else if x.value() + x.error_bound() < 0.0 {
-        Some(-1)
-    } else {
-        None
-    }
-}
-
-/// The parameter t* in `[lo, hi]` as its double `m` with the bound hi - lo.
-fn parameter(m: f64, [lo, hi]: [f64; 2]) -> BoundedF64 {
-    BoundedF64::with_bound(m, (hi - lo).next_up())
-}
-
-/// Room for the de Casteljau pyramid of any curve or area polynomial of the region layer.
-const LEVEL: usize = 2 * (2 * MAX_REGION_DEGREE + 1);
-
-/// An enclosure of the polynomial with Bernstein coefficients `coefficients` (each `dim`
-/// numbers, at most [`LEVEL`] in all) at `t`: the first `dim` entries of the answer.
-fn evaluate(coefficients: &[BoundedF64], dim: usize, t: BoundedF64) -> [BoundedF64; 2] {
-    let mut level = [BoundedF64::default(); LEVEL];
-    let level = &mut level[..coefficients.len()];
-    level.copy_from_slice(coefficients);
-    curve_pyramid_in_place(level, dim, &ConvexStep::new(t));
-    [level[0], if dim > 1 { level[1] } else { level[0] }]
-}
-
-/// The hodograph's control points n (p_(i+1) - p_i), flat (x, y, x, y, ...), in `out`;
-/// returns how many numbers it wrote.
-fn hodograph(points: &[[f64; 2]], out: &mut [BoundedF64; LEVEL]) -> usize {
-    let n = BoundedF64::exact((points.len() - 1) as f64);
-    for (k, w) in points.windows(2).enumerate() {
-        for a in 0..2 {
-            out[2 * k + a] = BoundedF64::exact(w[1][a])
-                .sub(&BoundedF64::exact(w[0][a]))
-                .mul(&n);
-        }
-    }
-    2 * (points.len() - 1)
-}
-
-/// The exact sign of cross(P'(s*), Q'(t*)) at a certified crossing (s* in `s_box` around
-/// `s`, t* in `t_box` around `t`), or `None` when the enclosure of the cross product does
-/// not exclude zero.
-pub(super) fn crossing_sign(
-    p: &[[f64; 2]],
-    q: &[[f64; 2]],
-    s: f64,
-    s_box: [f64; 2],
-    t: f64,
-    t_box: [f64; 2],
-) -> Option<i64> {
-    let mut h = [BoundedF64::default(); LEVEL];
-    let len = hodograph(p, &mut h);
-    let a = evaluate(&h[..len], 2, parameter(s, s_box));
-    let len = hodograph(q, &mut h);
-    let b = evaluate(&h[..len], 2, parameter(t, t_box));
-    sign(&a[0].mul(&b[1]).sub(&a[1].mul(&b[0])))
-}
-
-/// C(n, k) (exact for the degrees taken, n <= 2 * 20).
-fn binomial(n: usize, k: usize) -> i128 {
-    (0..k).fold(1i128, |acc, i| acc * (n - i) as i128 / (i + 1) as i128)
-}
-
-/// The weights C(n, i) C(n - 1, j) / (2 C(2n - 1, i + j)) of the area coefficients, row i,
-/// column j (n columns), for degree n: each the correctly rounded quotient of two integers
-/// below 2^53 (IEEE division), so within u of the exact weight, relatively.
-fn weights(n: usize) -> Vec<f64> {
-    (0..=n)
-        .flat_map(|i| {
-            (0..n).map(move |j| {
-                (binomial(n, i) * binomial(n - 1, j)) as f64
-                    / (2 * binomial(2 * n - 1, i + j)) as f64
-            })
-        })
-        .collect()
-}
-
-/// [`weights`] of every degree up to the region limit, made once.
-fn weight_table(n: usize) -> &'static [f64] {
-    static TABLE: std::sync::OnceLock<Vec<Vec<f64>>> = std::sync::OnceLock::new();
-    &TABLE.get_or_init(|| {
-        (0..=MAX_REGION_DEGREE)
-            .map(|n| if n == 0 { Vec::new() } else { weights(n) })
-            .collect()
-    })[n]
-}
-
-/// Appends the Bernstein coefficients f_0..f_2n of F(t), the integral of (x - o) dy from 0
-/// to t (module docs), to `f`, each with one bound E on its error.
-///
-/// **The bound.** Plain `f64`: each term t = fl(fl(fl(x_i - o) fl(y_(j+1) - y_j)) w_ij) is
-/// the exact term times (1 + δ) with |δ| <= γ_5 (two differences, the weight's conversion,
-/// two products; γ_k = k u / (1 - k u)), up to an absolute η per product for underflow. A
-/// coefficient f_k sums its terms in at most n + 2n additions (the terms of each c_k, then
-/// the running sum), so |f̂_k - f_k| <= γ_(3n+5) S plus the underflow terms, where S is the
-/// sum of |t| over every term of the curve (the exact |t| <= |t̂| (1 + γ_5)). The computed
-/// S' is within a factor (1 + γ_(2n^2+2n)) of the sum of the |t̂|, so
-/// E = (3n + 8) u S' (1 + 2^-20) + 2^-300 covers all of it for n <= 20 (the absolute term
-/// covers any number of underflows of η = 2^-1074 each the run could make). Each f_k is that double with the
-/// bound E (f_0 = 0 exactly, also with E, harmlessly).
-fn area_coefficients(points: &[[f64; 2]], o: f64, f: &mut Vec<BoundedF64>) {
-    const MARGIN: f64 = 1.0 + 1.0 / (1u64 << 20) as f64;
-    const UNDERFLOWS: f64 =
-        1.0 / (1u128 << 100) as f64 / (1u128 << 100) as f64 / (1u128 << 100) as f64;
-    let n = points.len() - 1;
-    let w = &weight_table(n)[..(n + 1) * n];
-    let start = f.len();
-    let (mut running, mut size) = (0.0, 0.0);
-    f.push(BoundedF64::exact(0.0));
-    for k in 0..2 * n {
-        let mut c = 0.0;
-        for i in k.saturating_sub(n - 1)..=k.min(n) {
-            let j = k - i;
-            let t = (points[i][0] - o) * (points[j + 1][1] - points[j][1]) * w[i * n + j];
-            c += t;
-            size += t.abs();
-        }
-        running += c;
-        f.push(BoundedF64::exact(running));
-    }
-    let e = (3 * n + 8) as f64 * UNIT_ROUNDOFF * size * MARGIN + UNDERFLOWS;
-    for v in &mut f[start..] {
-        *v = BoundedF64::with_bound(v.value(), e);
-    }
-}
+use crate::region::chain::Run;
+use crate::region::parameter::Parameter;
 
 /// The area coefficients of the curves the answer needs, one after the other, computed on
 /// first use.
-pub(super) struct Areas<'s, 'a> {
-    split: &'s Split<'a>,
+pub(super) struct Areas<'g, 'a> {
+    graph: &'g Graph<'a>,
     /// Curve c's coefficients are `coefficients[spans[c].0..spans[c].1]` (an empty span:
     /// not computed yet).
     coefficients: Vec<BoundedF64>,
@@ -170,103 +22,71 @@ pub(super) struct Areas<'s, 'a> {
     origin: f64,
 }
 
-impl<'s, 'a> Areas<'s, 'a> {
-    pub(super) fn new(split: &'s Split<'a>) -> Self {
-        let (lo, hi) = split
+impl<'g, 'a> Areas<'g, 'a> {
+    pub(super) fn new(graph: &'g Graph<'a>) -> Self {
+        let (lo, hi) = graph
             .curves
             .iter()
             .fold((f64::MAX, f64::MIN), |(lo, hi), c| {
                 (lo.min(c.bbox[0]), hi.max(c.bbox[2]))
             });
         Areas {
-            split,
+            graph,
             coefficients: Vec::new(),
-            spans: vec![(0, 0); split.curves.len()],
+            spans: vec![(0, 0); graph.curves.len()],
             origin: lo / 2.0 + hi / 2.0,
         }
     }
 
-    /// F_c at position `k` of curve c (0: its start, `marks.len() + 1`: its end, else the
-    /// crossing `marks[k - 1]`).
+    /// F_c at parameter index `k` of curve c.
     fn at(&mut self, c: usize, k: usize) -> BoundedF64 {
         if self.spans[c].0 == self.spans[c].1 {
             let start = self.coefficients.len();
             area_coefficients(
-                self.split.curves[c].points,
+                self.graph.curves[c].points,
                 self.origin,
                 &mut self.coefficients,
             );
             self.spans[c] = (start, self.coefficients.len());
         }
         let f = &self.coefficients[self.spans[c].0..self.spans[c].1];
-        let marks = &self.split.marks[c];
+        let params = &self.graph.params[c];
         if k == 0 {
             return f[0];
         }
-        if k == marks.len() + 1 {
+        if k == params.len() - 1 {
             return f[f.len() - 1];
         }
-        let m: Mark = marks[k - 1];
-        let x = &self.split.crossings[m.crossing];
-        evaluate(f, 1, parameter(x.nearest[m.side], x.enclosures[m.side]))[0]
+        evaluate(f, 1, bounded(&params[k]))[0]
     }
 }
 
-/// The sign of the signed area of loop `l` of the input, or `None` when its enclosure does
-/// not exclude zero.
-pub(super) fn loop_area_sign(areas: &mut Areas<'_, '_>, l: usize) -> Option<i64> {
-    let lp = &areas.split.loops[l];
-    let mut sum = BoundedF64::exact(0.0);
-    for c in lp.first..lp.first + lp.len {
-        let end = areas.split.marks[c].len() + 1;
-        sum = sum.add(&areas.at(c, end));
+impl Areas<'_, '_> {
+    /// An enclosure of the integral of (x - o) dy along curve c from parameter index
+    /// `from` to `to` (either way).
+    pub(super) fn piece(&mut self, c: usize, from: usize, to: usize) -> BoundedF64 {
+        self.at(c, to).sub(&self.at(c, from))
     }
-    sign(&sum)
 }
 
-/// The parameter of position `k` of curve c, as the answer gives it (`all`: the crossings,
-/// made once the answer has any).
-fn parameter_at(
-    split: &Split<'_>,
-    all: &mut Option<Arc<Crossings>>,
-    doubles: [&Arc<Doubles>; 2],
-    c: usize,
-    k: usize,
-) -> Parameter {
-    let marks = &split.marks[c];
-    if k == 0 || k == marks.len() + 1 {
-        return Parameter::end(k != 0);
-    }
-    let m = marks[k - 1];
-    let x = &split.crossings[m.crossing];
-    let all = all
-        .get_or_insert_with(|| {
-            Crossings::new(
-                [doubles[0].clone(), doubles[1].clone()],
-                split.pairs.clone(),
-            )
-        })
-        .clone();
-    Parameter::crossing(
-        all,
-        x.pair,
-        m.side,
-        x.enclosures[0],
-        x.enclosures[1],
-        x.nearest[m.side],
-    )
+/// The parameter as its double with the width of its enclosure as the bound.
+fn bounded(p: &Parameter) -> BoundedF64 {
+    parameter(p.to_f64(), p.enclosure())
+}
+
+/// An enclosure of the derivative P'(t) of the curve with control points `points` at the
+/// parameter t.
+pub(super) fn tangent(points: &[[f64; 2]], t: &Parameter) -> [BoundedF64; 2] {
+    let mut h = [BoundedF64::default(); LEVEL];
+    let len = hodograph(points, &mut h);
+    evaluate(&h[..len], 2, bounded(t))
 }
 
 /// The answer: each boundary loop's edges, whether it is a hole (the sign of its area), and
 /// the enclosure of the total area; `None` when a loop's sign is not proved or the area
 /// enclosure is wider than the promised 2^-40 B.
-pub(super) fn answer(
-    areas: &mut Areas<'_, '_>,
-    loops: Vec<BoundaryLoop>,
-    doubles: [&Arc<Doubles>; 2],
-) -> Option<Outline> {
-    let split = areas.split;
-    let mut all = None;
+pub(super) fn answer(areas: &mut Areas<'_, '_>, loops: Vec<Vec<Run>>) -> Option<Outline> {
+    let graph = areas.graph;
     let mut total = BoundedF64::exact(0.0);
     let mut out = Vec::with_capacity(loops.len());
     for runs in &loops {
@@ -274,13 +94,13 @@ pub(super) fn answer(
         let mut edges = Vec::with_capacity(runs.len());
         for r in runs {
             sum = sum.add(&areas.at(r.curve, r.to).sub(&areas.at(r.curve, r.from)));
-            let id = split.curves[r.curve].id;
+            let id = graph.curves[r.curve].id;
             edges.push(Edge {
                 region: id.region,
                 loop_index: id.loop_index,
                 curve: id.curve,
-                from: parameter_at(split, &mut all, doubles, r.curve, r.from),
-                to: parameter_at(split, &mut all, doubles, r.curve, r.to),
+                from: graph.params[r.curve][r.from].clone(),
+                to: graph.params[r.curve][r.to].clone(),
             });
         }
         let hole = sign(&sum)? < 0;
@@ -291,11 +111,12 @@ pub(super) fn answer(
         return Some(Outline {
             loops: out,
             area: [0.0, 0.0],
+            report: Default::default(),
         });
     }
     let area = [lower(&total), upper(&total)];
     // B, the input box's area, rounded down.
-    let b = split
+    let b = graph
         .curves
         .iter()
         .fold([f64::MAX, f64::MAX, f64::MIN, f64::MIN], |b, c| {
@@ -307,5 +128,9 @@ pub(super) fn answer(
             ]
         });
     let big_b = (b[2] - b[0]) * (b[3] - b[1]) * (1.0 - 4.0 * UNIT_ROUNDOFF);
-    (area[1] - area[0] <= big_b * 2f64.powi(-40)).then_some(Outline { loops: out, area })
+    (area[1] - area[0] <= big_b * 2f64.powi(-40)).then_some(Outline {
+        loops: out,
+        area,
+        report: Default::default(),
+    })
 }

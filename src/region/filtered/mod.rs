@@ -1,85 +1,80 @@
-//! The float path of the booleans: the common configuration decided in floating point with
-//! rigorous bounds, no big numbers; anything else is left to the exact pipeline.
+//! The float path of the booleans: the arrangement of every curve of both regions built and
+//! decided in floating point with rigorous bounds, each degenerate contact decided exactly
+//! where it is and nowhere else.
 //!
-//! It answers only regions whose control points are doubles, and only when it can **prove**
-//! that the configuration is *generic*:
+//! It answers regions whose control points are doubles, in any arrangement: loops that cross
+//! themselves and each other within one region, under either fill rule, shared vertices,
+//! points of one loop on another's curve, coincident pieces, tangencies. The stages, one file
+//! each, in the order they run (each imports only the ones before it, and the shared exact
+//! procedures of the region layer):
 //!
-//! * every loop is simple and the loops of one region are pairwise disjoint: each curve is
-//!   one-to-one, consecutive curves of a loop meet only at their join, and every other pair of
-//!   curves of one region either has disjoint boxes or no common point (the float filter
-//!   [`certified_crossings_f64`] proves the empty answer) (module `split`);
-//! * every common point of a curve of A and a curve of B is a transversal crossing strictly
-//!   inside both curves (the filter's proof, which excludes ends, tangencies and overlaps);
-//!   no point of the plane is then on more than two curves, and the crossings along a curve
-//!   have disjoint enclosures, which orders them.
+//! 1. `graph`: every pair of curves whose boxes meet is decided by the cheapest proof that
+//!    applies: a separating line at a loop's join (exact, on doubles), else the certified float
+//!    filter (transversal crossings strictly inside both curves, correctly rounded parameters
+//!    with enclosures), else the exact intersector **on that pair alone**. Each curve's
+//!    parameters are ordered by their enclosures, exactly where enclosures meet; equal
+//!    parameters (several contacts at one point) are merged; the vertices, pieces and groups
+//!    of coincident pieces follow as in the exact stages.
+//! 2. `order`: the half-edges around each vertex in counter-clockwise order, from the classes
+//!    and cross products of their tangents enclosed in floating point, exactly for the pairs
+//!    that stay undecided (tangent branches, zero derivatives).
+//! 3. `faces` (with `side`): faces are the cycles of the half-edge successor; winding numbers
+//!    of both regions cross each half-edge by the signed count of its group's pieces, from one
+//!    seed per connected component, an exact ray count on boxes at a join on the component's
+//!    box (the exact stages' ray beside a piece when none decides).
+//! 4. `walk`: the half-edges whose left face the operation keeps and whose right face it drops,
+//!    chained into simple loops of maximal runs.
+//! 5. `measure`: the loops' signed areas and the total in plain f64 with an a-priori error
+//!    bound (hole or not from the sign), the parameters of the answer as [`Parameter`]s.
 //!
-//! The first item is a fact about each region alone: it is proved once per [`Region`] and
-//! kept (a region reused in many booleans pays for it once). Where any of this is not
-//! proved, `run` answers `None` and [`super::pipeline`] runs the
-//! exact stages, which handle every configuration; so the answer never depends on which
-//! path gave it (the tests compare the two on the same inputs).
+//! **Why the answer is exact.** Every yes/no question (do two curves meet and where, are two
+//! parameters equal, in which order do branches leave a vertex, what is the winding number of
+//! a face) is answered either by a proof in floating point (an enclosure that excludes zero,
+//! a filter's Krawczyk proof, comparisons of doubles, which are exact) or by exact
+//! arithmetic; a tolerance never answers. Given the same decisions the float path and the
+//! exact stages compute the same arrangement, so they give the same answer (the tests
+//! compare them on random, degenerate and real font outlines). Should a consistency check
+//! fail (which would be a bug) or an area enclosure be too wide, `run` answers `None` and the
+//! exact stages answer.
 //!
-//! In the generic configuration the winding numbers need no ray per piece. The winding
-//! number of region R just left of a loop L of R is the winding number around R's other
-//! loops (constant along L, which meets none of them) plus 1 when L runs counter-clockwise
-//! (its signed area is positive), and just right of it that sum minus 1 when L runs
-//! clockwise. The winding number of the other region R' changes along L only at the
-//! crossings, by the sign of cross(Q', P') where L's curve P crosses Q (moving from the
-//! right of Q to its left adds 1). So one exact ray count per loop, at one of its vertices
-//! (module `side`), and the crossing signs give every piece its four winding numbers
-//! (module `walk`); the fill rules and the operation say which pieces bound the result and
-//! which way. A crossing vertex has exactly four half-pieces around it, in the counter-
-//! clockwise order +P', +Q', -P', -Q' when cross(P', Q') > 0 (else +P', -Q', -P', +Q'),
-//! which is all the angular order the chaining needs.
+//! Integer and dyadic inputs (every font) are doubles, so all of the above applies to them;
+//! the exact work left for their degenerate contacts is the exact intersection of the pair
+//! involved (lines and quadratics with small integer coordinates: small numbers).
 //!
-//! Signed areas and crossing signs are enclosed by [`BoundedF64`](crate::BoundedF64)
-//! (rigorous running error bounds; a parameter known to lie in an enclosure of doubles
-//! enters as its correctly rounded double with that radius) (module `measure`); a sign is
-//! taken only when the enclosure excludes zero. The parameters of the answer are
-//! [`Parameter`](super::Parameter)s: the filter's correctly rounded doubles and enclosures,
-//! made exact on demand.
+//! [`Parameter`]: crate::region::Parameter
 
+mod bounds;
+mod faces;
+mod generic;
+mod graph;
 mod measure;
+mod order;
 mod side;
-mod split;
 mod walk;
 
-use super::boolean::{BooleanOp, Outline};
+use super::boolean::{BooleanOp, Outline, Report};
 use super::input::Region;
 
-/// The cost of a cross-region pair of curves whose boxes meet, in nanoseconds: the float
-/// filter on two cubics takes about 1.5 µs on a 2-core x86-64 machine (benches/intersect.rs),
-/// with the crossing signs, ordering and chaining; counted at 5 µs.
+/// The cost of a pair of curves whose boxes meet, decided by the float filter or a proved
+/// join, in nanoseconds: the filter on two cubics takes about 1.5 µs on a 2-core x86-64
+/// machine (benches/intersect.rs); counted at 5 µs with its share of the later stages.
 const PAIR_WORK: u128 = 5_000;
-/// The cost per curve beyond its pairs (its box, its share of the ray counts, the walk and
-/// the area), in nanoseconds, counted generously.
+/// The cost per curve beyond its pairs (its box, its parameters, the faces, the walk and the
+/// area), in nanoseconds, counted generously.
 const CURVE_WORK: u128 = 2_000;
 
-/// The work estimate of [`run`] in nanoseconds, when both regions are of doubles and proved
-/// simple (see the module docs; the proof is made here if it was not, and kept): the
-/// cross-region pairs of curves whose boxes meet, the curves, one ray count per loop against
-/// every curve. `None` when the float path does not apply. Should the float path meet a
-/// degenerate configuration among the pairs (an end point on a curve, a tangency, an
-/// overlap) it leaves the answer to the exact stages, which the caller's work meter bounds.
+/// The work estimate of [`run`] in nanoseconds when both regions are of doubles, else `None`:
+/// every pair of curves whose boxes meet at [`PAIR_WORK`], every curve at [`CURVE_WORK`], and
+/// one box ray per component against every curve. The pairs the filter cannot decide go to the
+/// exact intersector one by one; the caller's work meter bounds those.
 pub(crate) fn work(regions: &[&Region; 2]) -> Option<u128> {
     let doubles = [regions[0].doubles()?, regions[1].doubles()?];
-    for (region, d) in regions.iter().zip(doubles) {
-        if !region.proved_simple(|| split::simple(d)) {
-            return None;
-        }
-    }
-    let mut boxes = Vec::new();
-    let mut first_of_b = 0;
-    for (r, d) in doubles.iter().enumerate() {
-        if r == 1 {
-            first_of_b = boxes.len();
-        }
-        boxes.extend(d.iter().flatten().map(|c| split::bbox(c)));
-    }
-    let pairs = crate::region::arrangement::meeting_boxes(&boxes)
-        .into_iter()
-        .filter(|&(i, j)| (i < first_of_b) != (j < first_of_b))
-        .count() as u128;
+    let boxes: Vec<[f64; 4]> = doubles
+        .iter()
+        .flat_map(|d| d.iter().flatten())
+        .map(|c| graph::bbox(c))
+        .collect();
+    let pairs = crate::region::arrangement::meeting_boxes(&boxes).len() as u128;
     let (curves, loops) = (
         boxes.len() as u128,
         (doubles[0].len() + doubles[1].len()) as u128,
@@ -87,21 +82,52 @@ pub(crate) fn work(regions: &[&Region; 2]) -> Option<u128> {
     Some(pairs * PAIR_WORK + curves * CURVE_WORK + loops * curves * 50)
 }
 
-/// The boolean `op` of the two regions when every input number is a double and the
-/// configuration is proved generic (module docs), else `None`.
-pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Option<Outline> {
-    let doubles = [regions[0].doubles()?, regions[1].doubles()?];
-    for (region, d) in regions.iter().zip(doubles) {
-        if !region.proved_simple(|| split::simple(d)) {
-            return None;
-        }
+/// The boolean `op` of the two regions when every input number is a double (module docs),
+/// else `None`; `None` too when a consistency check fails, for the exact stages to answer.
+pub(crate) fn run(regions: &[&Region; 2], op: BooleanOp) -> Result<Outline, &'static str> {
+    let (Some(a), Some(b)) = (regions[0].doubles(), regions[1].doubles()) else {
+        return Err("an input number is not a double");
+    };
+    if let Some(mut answer) = generic::run(regions, op) {
+        answer.report.float_path = true;
+        answer.report.generic = true;
+        return Ok(answer);
     }
-    let arrangement = split::Split::build([doubles[0].as_slice(), doubles[1].as_slice()])?;
+    general(regions, [a, b], op)
+}
+
+/// The general float path (stages 1 to 5 of the module docs) on regions of doubles `[a, b]`.
+fn general(
+    regions: &[&Region; 2],
+    [a, b]: [&std::sync::Arc<crate::region::input::Doubles>; 2],
+    op: BooleanOp,
+) -> Result<Outline, &'static str> {
+    let graph = graph::Graph::build([a, b]).map_err(|_| "an exact intersection failed")?;
+    let around = order::around(&graph).map_err(|_| "an exact order failed")?;
+    let mut areas = measure::Areas::new(&graph);
+    let faces = faces::faces(&graph, &around, &mut areas)
+        .map_err(|_| "an exact seed failed")?
+        .ok_or("the winding numbers of a face disagree")?;
     let fills = [regions[0].fill(), regions[1].fill()];
-    let mut areas = measure::Areas::new(&arrangement);
-    let windings = side::loop_windings(&arrangement, &mut areas)?;
-    let loops = walk::boundary(&arrangement, &windings, fills, op)?;
-    measure::answer(&mut areas, loops, doubles)
+    let loops = walk::boundary(&graph, &around, &faces, fills, op)
+        .ok_or("a boundary walk does not close")?;
+    let mut answer = measure::answer(&mut areas, loops)
+        .ok_or("a loop's area sign or the area enclosure is not decided")?;
+    let c = graph.counts;
+    answer.report = Report {
+        float_path: true,
+        generic: false,
+        reason: None,
+        pairs: c.pairs,
+        joins: c.joins,
+        filtered: c.filtered,
+        exact_pairs: c.exact,
+        exact_self: c.exact_self,
+        exact_orders: around.exact,
+        area_seeds: faces.area_seeds,
+        exact_seeds: faces.exact_seeds,
+    };
+    Ok(answer)
 }
 
 #[cfg(test)]

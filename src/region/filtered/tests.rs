@@ -79,13 +79,18 @@ fn assert_same(fast: &Outline, exact: &Outline, what: &str) {
     }
 }
 
-/// Runs both paths on every op; returns how many the float path answered.
+/// Runs the float path, its general stages alone (without the generic shortcut) and the
+/// exact stages on every op; returns how many the general stages answered (the float path
+/// must answer whenever they do).
 fn compare(a: &Region, b: &Region, what: &str) -> usize {
     let mut answered = 0;
+    let doubles = [a.doubles().unwrap(), b.doubles().unwrap()];
     for op in OPS {
         let exact = run_exact(&[a, b], op).expect("exact answer");
-        if let Some(fast) = run(&[a, b], op) {
+        if let Ok(general) = super::general(&[a, b], doubles, op) {
             answered += 1;
+            assert_same(&general, &exact, &format!("{what}, {op:?}, general"));
+            let fast = run(&[a, b], op).expect("the float path answers");
             assert_same(&fast, &exact, &format!("{what}, {op:?}"));
         }
     }
@@ -181,31 +186,40 @@ fn nested_disjoint_holes_and_both_fill_rules() {
     );
 }
 
+/// A unit square (side `s`) at (x, y), counter-clockwise.
+fn square(x: f64, y: f64, s: f64) -> Region {
+    let c = [[x, y], [x + s, y], [x + s, y + s], [x, y + s]];
+    Region::from_f64(
+        vec![(0..4)
+            .map(|i| Bezier::new(vec![c[i], c[(i + 1) % 4]]).unwrap())
+            .collect()],
+        FillRule::NonZero,
+    )
+    .unwrap()
+}
+
 #[test]
-fn degenerate_inputs_are_left_to_the_exact_stages() {
+fn degenerate_inputs_take_the_float_path_and_agree() {
     let a = star(8, (0.0, 0.0), 0.0);
     // The same region: every curve overlaps its copy.
-    assert!(run(&[&a, &a], BooleanOp::Union).is_none());
+    assert_eq!(compare(&a, &a, "a star with itself"), 4);
     // A vertex of B on an edge of A: a square whose corner is A's vertex (1, 0).
     let v = a.doubles().unwrap()[0][0][0];
-    let square = |x: f64, y: f64| {
-        let c = [[x, y], [x + 1.0, y], [x + 1.0, y + 1.0], [x, y + 1.0]];
-        Region::from_f64(
-            vec![(0..4)
-                .map(|i| Bezier::new(vec![c[i], c[(i + 1) % 4]]).unwrap())
-                .collect()],
-            FillRule::NonZero,
-        )
-        .unwrap()
-    };
-    let b = square(v[0], v[1]);
-    assert!(run(&[&a, &b], BooleanOp::Union).is_none());
-    // Squares sharing an edge.
-    assert!(run(&[&square(0.0, 0.0), &square(1.0, 0.0)], BooleanOp::Union).is_none());
-    // Crossing squares: generic.
-    let r = run(&[&square(0.0, 0.0), &square(0.5, 0.25)], BooleanOp::Union)
-        .expect("transversal crossings");
-    assert!(r.area[0] <= 1.625 && 1.625 <= r.area[1]);
+    assert_eq!(
+        compare(&a, &square(v[0], v[1], 1.0), "a corner on a vertex"),
+        4
+    );
+    // Squares sharing an edge, a corner, part of an edge; a square inside another touching it.
+    for (b, what) in [
+        (square(1.0, 0.0, 1.0), "a shared edge"),
+        (square(1.0, 1.0, 1.0), "a shared corner"),
+        (square(1.0, 0.5, 1.0), "part of an edge"),
+        (square(0.25, 0.0, 0.5), "inside, touching"),
+        (square(0.0, 0.0, 1.0), "the same square"),
+        (square(0.5, 0.25, 1.0), "crossing"),
+    ] {
+        assert_eq!(compare(&square(0.0, 0.0, 1.0), &b, what), 4, "{what}");
+    }
 }
 
 /// A quadratic Bézier triangle near the triangle (a, b, c): corners and edge midpoints
@@ -238,7 +252,7 @@ fn curved_triangle_pairs_take_the_float_path_and_agree() {
             [[1.0 + dx, 1.0 + dy], [dx, 1.0 + dy], [1.0 + dx, dy]],
         );
         let exact = run_exact(&[&t1, &t2], BooleanOp::Intersection).unwrap();
-        if let Some(fast) = run(&[&t1, &t2], BooleanOp::Intersection) {
+        if let Ok(fast) = run(&[&t1, &t2], BooleanOp::Intersection) {
             answered += 1;
             assert_same(&fast, &exact, &format!("triangle pair {i}"));
         }
@@ -247,49 +261,6 @@ fn curved_triangle_pairs_take_the_float_path_and_agree() {
         answered * 20 >= total * 19,
         "the float path answered {answered} of {total} triangle pairs"
     );
-}
-
-#[test]
-fn corner_orientation_agrees_with_the_signed_area() {
-    use super::measure::{loop_area_sign, Areas};
-    use super::side::corner_orientation;
-    use super::split::Split;
-    let mut rng = XorShift(0x0123_4567);
-    let (mut decided, mut total) = (0, 0);
-    for i in 0..40 {
-        let mut regions = vec![
-            star(4 + i % 7, (unit(&mut rng), unit(&mut rng)), unit(&mut rng)),
-            wavy(12 + i % 5, (0.0, 0.0), unit(&mut rng)),
-            random_triangle(&mut rng, [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]),
-        ];
-        // The same loops reversed: clockwise.
-        let reversed: Vec<Region> = regions
-            .iter()
-            .map(|r| {
-                let curves = r.doubles().unwrap()[0]
-                    .iter()
-                    .rev()
-                    .map(|c| Bezier::new(c.iter().rev().copied().collect()).unwrap())
-                    .collect();
-                Region::from_f64(vec![curves], FillRule::NonZero).unwrap()
-            })
-            .collect();
-        regions.extend(reversed);
-        for r in &regions {
-            let d = r.doubles().unwrap();
-            assert!(super::split::simple(d), "region {i} is proved simple");
-            let split = Split::build([d.as_slice(), &[]]).unwrap();
-            let mut areas = Areas::new(&split);
-            let by_area = loop_area_sign(&mut areas, 0).unwrap();
-            total += 1;
-            if let Some(by_corner) = corner_orientation(&split, 0) {
-                decided += 1;
-                assert_eq!(by_corner, by_area, "region {i}");
-            }
-        }
-    }
-    // Smooth outlines (the wavy ones) have no extreme corner: the area decides those.
-    assert!(decided * 2 >= total, "corners decided {decided} of {total}");
 }
 
 /// A random loop of `n` cubics around `centre`: vertices at random radii in [0.5, 1] times
