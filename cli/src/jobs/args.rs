@@ -180,236 +180,28 @@ pub enum Command {
 }
 
 /// Help for the whole program.
-pub const HELP: &str = "\
-blossom: exact Bezier subdivision through blossoms
-
-Usage:
-  blossom                      same as `blossom verify`
-  blossom verify [--json] [--verbose]
-                               re-derive the tables and worked examples of the seed papers;
-                               exit 0 when everything is reproduced or explained, 1 otherwise
-                               (see `verify --help`)
-  blossom restrict [OPTIONS]   restrict a curve or surface given as JSON (see `restrict --help`)
-  blossom intersect [OPTIONS]  certified zeros of a Bezier function, intersections of two
-                               curves and self-intersections (see `intersect --help`)
-  blossom region [OPTIONS]     certified booleans of regions bounded by Bezier curves, the
-                               intersection of two Bezier triangles and exact winding
-                               numbers (see `region --help`)
-  blossom check [OPTIONS]      the exact error of another program's f64 answer to a restrict
-                               job (see `check --help`)
-  blossom figures [--out DIR]  draw the papers' figures and examples as SVG files
-                               (see `figures --help`)
-  blossom expand SHAPE DEGREE  print the function the proc-macro generates for a fixed degree
-                               (see `expand --help`)
-  blossom --help | --version
-
-Errors: one line `error: ...` on standard error, exit code 2.
-";
+pub const HELP: &str = include_str!("../../help/blossom.txt");
 
 /// Help for `blossom restrict`.
-pub const RESTRICT_HELP: &str = "\
-blossom restrict: the Bezier form of a polynomial curve or surface on a new domain
-
-Usage: blossom restrict [--input FILE] [--arithmetic exact|f64] [--method METHOD]
-                        [--max-work UNITS] [--max-input BYTES]
-
-Options:
-  --input FILE         read the job from FILE (default, or `-`: standard input)
-  --arithmetic exact   rational numbers, no rounding anywhere (default); numbers in the
-                       answer are strings \"p/q\" or \"p\" in lowest terms
-  --arithmetic f64     IEEE double precision; numbers in the answer are JSON numbers
-  --method METHOD      the algorithm; every method gives the identical exact answer:
-      bulk             the restriction engine, in the input's own basis (default): all
-                       control points at once by halving, with de Casteljau's affine steps
-                       on the control points of Bezier input and the scaled power step
-                       d_i + t d_(i+1) on power coefficients; O(n^2) for a curve, as
-                       accurate under f64 as de Casteljau at every degree
-      taylor-shift     Taylor shift of the power form, then the change to the Bernstein
-                       basis (loses digits under f64 as the degree grows)
-      closed-form      the closed forms (3), (9), (14), one control point at a time
-      definition       the subset-sum definitions (2), (8), (13)
-      pyramid          de Casteljau's pyramid on the blossom, one per control point
-      polarisation     the inverse (polarisation) formula, sampling points only
-      specialised      the evaluator the proc-macro generated at compile time for the
-                       job's degree (exit 2 for a degree this binary does not carry)
-                     Bezier input goes through its exact power form under taylor-shift,
-                     closed-form and definition; power input through its Bernstein form
-                     under pyramid.
-  --max-work UNITS     stop a job whose work passes UNITS (default 1e9, about a second;
-                       see Limits below)
-  --max-input BYTES    refuse an input longer than BYTES (default 1048576, 1 MiB)
-  -h, --help           print this help
-
-Jobs (JSON objects; a field not listed is refused, with the nearest listed name):
-  %RESTRICT%
-Points are arrays of numbers, all of one length D >= 1. A number is a JSON integer or a
-string: \"-7\", \"3/4\", \"0.125\", \"-1e-3\" (JSON numbers such as 0.1 only under f64).
-Under exact arithmetic a decimal exponent is at most 100000 in absolute value (unless the
-digits are all zero). The degree of a list of coefficients is its length minus one, zero
-coefficients included (so a rational curve's default degree is that of its longer list).
-Degrees a job names (degree, to_degree, total_degree, order, the indices of a bezier-triangle
-entry, the grids of the rational jobs) are at most 200. The methods apply to curve, tensor, triangle, bezier-curve, bezier-tensor
-and bezier-triangle; the other jobs have one algorithm each and answer the same under every
-method.
-
-Limits: a job's work is metered as it is computed, every arithmetic operation weighted by the
-length of its numbers, in units of about a nanosecond; a job whose work passes --max-work is
-stopped with `error: FIELD: the job's work passed the limit ...`, and one whose work, estimated
-from its sizes before computing, is far over the limit is refused at once (`error: FIELD: the
-job's work is estimated at ...`). FIELD names the sizes (coefficients, control_points, pieces,
-at, ...) or the field with the longest number when the numbers' length is what makes the job
-expensive. The input is read up to --max-input bytes.
-
-Output: the answer as one line of JSON on standard output, exit code 0; on bad input one line
-`error: FIELD: ...` on standard error, nothing on standard output, exit code 2. Under f64 the
-answer also has \"error_bound\": a rigorous bound on the distance of every number of the
-answer to the exact answer for the same input doubles (null when no finite bound is known).
-";
+pub const RESTRICT_HELP: &str = include_str!("../../help/restrict.txt");
 
 /// Help for `blossom expand`.
-pub const EXPAND_HELP: &str = "\
-blossom expand: the Rust function `blossom::restriction!` generates for one fixed degree
-
-Usage: blossom expand curve N | tensor N M | triangle N M | triangle-total N
-                      | bezier-curve N | bezier-tensor N M | bezier-triangle N
-
-Prints the formatted source of the unrolled closed form (3), (9) or (14) for that degree, as
-`blossom::restriction!(vis = pub, name = restrict_<shape>_<degrees>, shape = .., degree = ..)`
-expands it; it compiles on its own in a crate that depends on `blossom`. The bezier- shapes
-take control points (a Bézier curve over [0, 1], a patch over [0, 1]^2, a triangular patch)
-instead of power coefficients; triangle-total takes a triangular array of total degree N.
-Limits (those of the macro): curves N <= 24, tensor patches N, M <= 10, triangles N + M <= 8
-(triangle-total N <= 8), Bézier triangles N <= 6.
-";
+pub const EXPAND_HELP: &str = include_str!("../../help/expand.txt");
 
 /// Help for `blossom verify`.
-pub const VERIFY_HELP: &str = "\
-blossom verify: re-derive every table and worked example of the seed papers exactly
-
-Usage: blossom verify [--json] [--verbose]
-
-By default the report opens with its verdict and then lists the sections, one line each:
-section, source, entries matched, status. Mismatches and findings are in the full report.
-
-Options:
-  --verbose   the full report: every section with its findings and every entry
-  --json      the full report as JSON
-  -h, --help  print this help
-
-Exit code 0 when every printed value was reproduced or explained, 1 otherwise.
-";
+pub const VERIFY_HELP: &str = include_str!("../../help/verify.txt");
 
 /// Help for `blossom figures`.
-pub const FIGURES_HELP: &str = "\
-blossom figures: the papers' figures and examples drawn from the library's results
-
-Usage: blossom figures [--out DIR]
-
-Writes one SVG file per picture into DIR (default `figures`, created if missing), every
-coordinate computed by the library from the papers' inputs, and prints the path of every file
-written, one per line; exit code 0. A DIR that cannot be created or written: one line
-`error: --out: ...` on standard error, exit code 2.
-
-Options:
-  --out DIR   the directory of the pictures
-  -h, --help  print this help
-";
+pub const FIGURES_HELP: &str = include_str!("../../help/figures.txt");
 
 /// Help for `blossom intersect`.
-pub const INTERSECT_HELP: &str = "\
-blossom intersect: certified zeros and intersections of Bezier curves
-
-Usage: blossom intersect [--input FILE] [--arithmetic exact|f64] [--max-work UNITS]
-                         [--max-input BYTES]
-
-Reads one job (JSON) and prints its exact answer as one line of JSON; exit code 0.
-  %INTERSECT%
-A curve is its control points [[x0, y0], ..., [xn, yn]], 1 <= n <= 40; a Bezier function
-has degree 0 <= n <= 200. Within those limits the work budget decides: a job is refused
-when its estimated work is over twice --max-work, or stopped when its metered work passes
-it. Every parameter is written as {\"value\": the correctly rounded double, \"exact\":
-\"p/q\" or null, \"interval\": an isolating interval [lo, hi], \"polynomial\": a
-square-free integer polynomial it is a root of} (see docs/cli.md).
-
-Options:
-  --input FILE         read the job from FILE (default, or `-`: standard input)
-  --arithmetic exact   read the numbers as written (default; \"1/3\" is one third)
-  --arithmetic f64     round each input number to the nearest double first; the answer
-                       is still the exact one for those doubles
-  --max-work UNITS     the work budget (as for restrict)
-  --max-input BYTES    the longest input read (as for restrict)
-  -h, --help           print this help
-
-On bad input one line `error: FIELD: ...` on standard error, exit code 2.
-";
+pub const INTERSECT_HELP: &str = include_str!("../../help/intersect.txt");
 
 /// Help for `blossom region`.
-pub const REGION_HELP: &str = "\
-blossom region: certified booleans of regions bounded by Bezier curves
-
-Usage: blossom region [--input FILE] [--arithmetic exact|f64] [--max-work UNITS]
-                      [--max-input BYTES]
-
-Reads one job (JSON) and prints its exact answer as one line of JSON; exit code 0.
-  %REGION%
-A region is {\"loops\": [LOOP, ...], \"fill\": \"nonzero\" (default) | \"evenodd\"} ({\"loops\": []}
-is the empty region); a loop is a list of curves [[x0, y0], ..., [xn, yn]], each starting exactly where the previous one ends
-and the last ending where the first starts; loops may cross, touch, overlap and run either
-way. A triangle is {\"degree\": n, \"nodes\": [...]}: (n + 1)(n + 2)/2 nodes by increasing k,
-within it increasing j (p_n00, p_(n-1)10, ..., p_0n0, p_(n-1)01, ..., p_00n); its edges are
-curves 0, 1, 2 (the second triangle's 3, 4, 5). Curve degrees 1 to 20.
-
-Numbers: a JSON integer, or a string holding an integer, a fraction or a decimal (\"-7\",
-\"3/4\", \"2.7\", \"-1e-3\"), read exactly. A JSON number with a fraction part or an exponent
-(2.7) is refused under the default --arithmetic exact, because it is already rounded (write
-\"2.7\"); under --arithmetic f64 every number is read as its nearest double.
-
-The answer of boolean, simplify and triangle-triangle: {\"kind\": K, \"loops\": [{\"hole\": bool, \"edges\":
-[EDGE, ...]}, ...], \"area\": [lo, hi]}: the regularized result as simple loops with the
-result on their left (holes clockwise), each edge a piece of one input curve
-{\"region\": r, \"loop\": l, \"curve\": c, \"from\": PARAM, \"to\": PARAM} (triangle-triangle:
-{\"curve\": i, \"from\", \"to\"}); area: doubles enclosing the exact area, hi - lo <= 2^-40 B
-(B the area of the box of every input control point). A PARAM is {\"value\": the correctly
-rounded double, \"exact\": \"p/q\" or null, \"interval\": [lo, hi], \"polynomial\": [...]}.
-
-Options:
-  --input FILE         read the job from FILE (default, or `-`: standard input)
-  --arithmetic exact   read the numbers as written (default; \"1/3\" is one third)
-  --arithmetic f64     round each input number to the nearest double first; the answer
-                       is still the exact one for those doubles
-  --max-work UNITS     refuse a job whose work, estimated before computing, is over twice
-                       UNITS (default 1e9, about a second)
-  --max-input BYTES    the longest input read (default 1048576)
-  -h, --help           print this help
-
-On bad input one line `error: FIELD: ...` on standard error, exit code 2.
-";
+pub const REGION_HELP: &str = include_str!("../../help/region.txt");
 
 /// Help for `blossom check`.
-pub const CHECK_HELP: &str = "\
-blossom check: the exact error of somebody else's f64 answer to a restriction job
-
-Usage: blossom check [--input FILE] [--per-point] [--max-work UNITS] [--max-input BYTES]
-
-Reads {\"job\": JOB, \"answer\": ANSWER}: JOB is a job of `blossom restrict`, its numbers
-doubles; ANSWER has the job's answer shape (\"control_points\" as `restrict` prints them) in
-doubles. The exact answer for the exact values of the job's doubles is computed (by the
-default method, bulk) and compared with ANSWER; the errors are exact rationals and their
-nearest doubles (see docs/cli.md). A field of the document other than \"job\" and \"answer\",
-or one that the job's kind does not read, is refused; ANSWER's fields other than
-\"control_points\" are ignored.
-
-Output: one line of JSON, {\"points\", \"max_abs_error\", \"max_abs_error_f64\", \"max_abs_at\",
-\"max_rel_error\", \"max_rel_error_f64\", \"max_rel_at\"} and with --per-point \"per_point\";
-exit code 0. On bad input one line `error: FIELD: ...` on standard error, exit code 2.
-
-Options:
-  --input FILE       read from FILE (default, or `-`: standard input)
-  --per-point        also the error of every control point
-  --max-work UNITS   the work budget of the exact job (as for restrict)
-  --max-input BYTES  the longest input read (as for restrict)
-  -h, --help         print this help
-";
+pub const CHECK_HELP: &str = include_str!("../../help/check.txt");
 
 /// The command line as clap reads it (help and version are this module's own flags, so that
 /// their texts are the contract's).

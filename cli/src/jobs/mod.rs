@@ -2,13 +2,17 @@
 //!
 //! * `blossom` and `blossom verify [--json] [--verbose]` print [`crate::verify::run_report`]
 //!   and exit 0 when it is all reproduced or explained, 1 otherwise;
-//! * `blossom intersect` and `blossom region [--input FILE] [--arithmetic exact|f64]
-//!   [--max-work UNITS] [--max-input BYTES]` read one job and print its certified answer
-//!   ([`intersect_jobs`], [`region`]), one line of JSON;
-//! * `blossom restrict [--input FILE] [--arithmetic exact|f64] [--method METHOD]` reads one job
-//!   ([`job`]; a field its kind does not read is refused, [`job::check_fields`]), computes it
-//!   ([`answer`]; by default with `bulk`, [`args::MethodChoice::default`]) and prints the answer
-//!   as **one line** of compact JSON followed by a newline, exit 0.
+//! * `blossom restrict`, `blossom intersect` and `blossom region` read one job and print its
+//!   answer as **one line** of compact JSON followed by a newline, exit 0: the job's kind is
+//!   looked up in the list of kinds ([`kinds`]), the job read into its type ([`read`]; a field
+//!   its kind does not read is refused), computed ([`kind::Kind::solve`], within the budget:
+//!   [`budget`], [`cost`]) and its answer written ([`write`]);
+//! * `blossom check`, `figures`, `expand` and `completions` as [`args`] describes.
+//!
+//! The files import in one direction: this module (the subcommands) and [`budget`] over the
+//! list of kinds ([`kinds`]), over the kinds' files ([`restrict`], [`intersect`], [`region`]),
+//! over what they share: reading ([`read`]), writing ([`write`]), the kind's trait ([`kind`]),
+//! the cost model ([`cost`]) and the command line's types ([`args`]).
 //!
 //! Every failure is one line `error: FIELD: message` on standard error, where FIELD is the
 //! offending argument (`--method`) or the path of the offending JSON field (`coefficients[2]`,
@@ -68,6 +72,10 @@ impl Outcome {
         }
     }
 
+    fn of(result: Result<String, Error>) -> Self {
+        result.map_or_else(|e| Outcome::failure(&e), Outcome::success)
+    }
+
     fn failure(error: &Error) -> Self {
         Outcome {
             code: EXIT_BAD_INPUT,
@@ -125,10 +133,7 @@ pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
                 stderr: String::new(),
             }
         }
-        Ok(Command::Restrict(options)) => match restrict(&options, stdin) {
-            Ok(text) => Outcome::success(text),
-            Err(error) => Outcome::failure(&error),
-        },
+        Ok(Command::Restrict(options)) => Outcome::of(restrict(&options, stdin)),
         Ok(Command::Intersect(options)) => certified(&options, Subcommand::Intersect, stdin),
         Ok(Command::Region(options)) => certified(&options, Subcommand::Region, stdin),
         Ok(Command::Check(options)) => {
@@ -138,33 +143,25 @@ pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
                 limits: options.limits,
             };
             let exact = |job: &Value| solve(job, &context);
-            match read_input(options.input.as_deref(), &options.limits, stdin)
-                .and_then(|bytes| parse_json(&bytes))
-                .and_then(|document| {
-                    crate::check::check_command(&document, options.per_point, &shape, &exact)
-                })
-            {
-                Ok(text) => Outcome::success(with_newline(text)),
-                Err(error) => Outcome::failure(&error),
-            }
+            Outcome::of(
+                read_input(options.input.as_deref(), &options.limits, stdin)
+                    .and_then(|bytes| parse_json(&bytes))
+                    .and_then(|document| {
+                        crate::check::check_command(&document, options.per_point, &shape, &exact)
+                    })
+                    .map(with_newline),
+            )
         }
-        Ok(Command::Figures { out }) => match crate::figures::write_figures(&out) {
-            Ok(written) => Outcome::success(
-                written
-                    .iter()
-                    .map(|path| format!("{}\n", path.display()))
-                    .collect(),
-            ),
-            Err(error) => Outcome::failure(&error),
-        },
-        Ok(Command::Completions(shell)) => match args::completions(&shell) {
-            Ok(text) => Outcome::success(text),
-            Err(error) => Outcome::failure(&error),
-        },
-        Ok(Command::Expand(words)) => match crate::specialised::expand_command(&words) {
-            Ok(text) => Outcome::success(with_newline(text)),
-            Err(error) => Outcome::failure(&error),
-        },
+        Ok(Command::Figures { out }) => Outcome::of(crate::figures::write_figures(&out).map(|written| {
+            written
+                .iter()
+                .map(|path| format!("{}\n", path.display()))
+                .collect()
+        })),
+        Ok(Command::Completions(shell)) => Outcome::of(args::completions(&shell)),
+        Ok(Command::Expand(words)) => {
+            Outcome::of(crate::specialised::expand_command(&words).map(with_newline))
+        }
     }
 }
 
@@ -189,10 +186,7 @@ fn certified(
                 Arithmetic::F64 => Job::<BoundedF64>::read(kind.name, job)?.solve(&context),
             }
         });
-    match answer.and_then(|answer| one_line(&answer)) {
-        Ok(text) => Outcome::success(text),
-        Err(error) => Outcome::failure(&error),
-    }
+    Outcome::of(answer.and_then(|answer| one_line(&answer)))
 }
 
 /// `blossom restrict`: the answer's text, one line of JSON and a newline.

@@ -590,95 +590,33 @@ pub fn coordinates(d: usize) -> String {
     }
 }
 
-/// The seed of a point: an array of at least one number, of `dim` numbers when known.
-#[derive(Clone, Copy)]
-struct PointSeed<T>(Option<usize>, PhantomData<T>);
-
-impl<'de, T: Reading> DeserializeSeed<'de> for PointSeed<T> {
-    type Value = blossom::Point<T>;
-
-    fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<Self::Value, D::Error> {
-        struct V<T>(Option<usize>, PhantomData<T>);
-        impl<'de, T: Reading> Visitor<'de> for V<T> {
-            type Value = blossom::Point<T>;
-            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str("a point (an array of numbers)")
-            }
-            fn visit_seq<A: de::SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
-                let found = seq.size_hint().unwrap_or(0);
-                match self.0 {
-                    Some(d) if d != found => {
-                        return Err(de::Error::custom(format!(
-                            "expected {}, found {found}",
-                            coordinates(d)
-                        )))
-                    }
-                    None if found == 0 => {
-                        return Err(de::Error::custom("expected at least 1 coordinate, found 0"))
-                    }
-                    _ => {}
-                }
-                let mut out = Vec::with_capacity(found);
-                while let Some(Num(x)) = seq.next_element::<Num<T>>()? {
-                    out.push(x);
-                }
-                Ok(out)
-            }
-        }
-        d.deserialize_seq(V(self.0, PhantomData))
-    }
-}
-
 /// A point of any dimension D >= 1.
 #[derive(Clone, Debug)]
 pub struct Point<T>(pub blossom::Point<T>);
 
 impl<'de, T: Reading> Deserialize<'de> for Point<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        PointSeed(None, PhantomData).deserialize(d).map(Point)
+        let xs: Vec<Num<T>> = counted(d, Count::NotEmpty("coordinate"), "a point (an array of numbers)")?;
+        Ok(Point(xs.into_iter().map(|x| x.0).collect()))
     }
 }
 
-/// The seed of a list of points of one dimension (`dim` when known from earlier points).
-struct PointsSeed<T> {
-    dim: Option<usize>,
-    count: Count,
-    expected: &'static str,
-    _t: PhantomData<T>,
-}
-
-impl<'de, T: Reading> DeserializeSeed<'de> for PointsSeed<T> {
-    type Value = Vec<blossom::Point<T>>;
-
-    fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<Self::Value, D::Error> {
-        struct V<T>(PointsSeed<T>);
-        impl<'de, T: Reading> Visitor<'de> for V<T> {
-            type Value = Vec<blossom::Point<T>>;
-            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str(self.0.expected)
+/// Refuses the first point (at `[k]` below the value read, `at(k)`) whose dimension is not
+/// that of the first.
+fn same_dimension<'a, T: 'a, E: de::Error>(
+    points: impl Iterator<Item = (String, &'a blossom::Point<T>)>,
+) -> Result<(), E> {
+    let mut dim = None;
+    for (at, p) in points {
+        match dim {
+            Some(d) if d != p.len() => {
+                let message = format!("expected {}, found {}", coordinates(d), p.len());
+                return Err(below(&Error::new(at, message)));
             }
-            fn visit_seq<A: de::SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
-                let found = seq.size_hint().unwrap_or(0);
-                match self.0.count {
-                    Count::NotEmpty(_) if found == 0 => {
-                        return Err(de::Error::custom("expected at least one point, found none"))
-                    }
-                    Count::Exactly(n, what) if n != found => {
-                        return Err(de::Error::custom(format!("expected {n} {what}, found {found}")))
-                    }
-                    _ => {}
-                }
-                let mut dim = self.0.dim;
-                let mut out = Vec::with_capacity(found);
-                while let Some(p) = seq.next_element_seed(PointSeed::<T>(dim, PhantomData))? {
-                    dim = Some(p.len());
-                    out.push(p);
-                }
-                Ok(out)
-            }
+            _ => dim = Some(p.len()),
         }
-        d.deserialize_seq(V(self))
     }
+    Ok(())
 }
 
 /// A non-empty list of points of one dimension (the coefficients of a curve, control points).
@@ -687,13 +625,10 @@ pub struct Points<T>(pub Vec<blossom::Point<T>>);
 
 impl<'de, T: Reading> Deserialize<'de> for Points<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let seed = PointsSeed {
-            dim: None,
-            count: Count::NotEmpty("point"),
-            expected: "an array of points",
-            _t: PhantomData,
-        };
-        seed.deserialize(d).map(Points)
+        let points: Vec<Point<T>> = counted(d, Count::NotEmpty("point"), "an array of points")?;
+        let points: Vec<_> = points.into_iter().map(|p| p.0).collect();
+        same_dimension(points.iter().enumerate().map(|(k, p)| (format!("[{k}]"), p)))?;
+        Ok(Points(points))
     }
 }
 
@@ -702,33 +637,24 @@ impl<'de, T: Reading> Deserialize<'de> for Points<T> {
 #[derive(Clone, Debug)]
 pub struct Rows<T>(pub Vec<Vec<blossom::Point<T>>>);
 
+/// A row of [`Rows`].
+struct Row<T>(Vec<blossom::Point<T>>);
+
+impl<'de, T: Reading> Deserialize<'de> for Row<T> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let points: Vec<Point<T>> = counted(d, Count::Any, "a row of points (an array)")?;
+        Ok(Row(points.into_iter().map(|p| p.0).collect()))
+    }
+}
+
 impl<'de, T: Reading> Deserialize<'de> for Rows<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        struct V<T>(PhantomData<T>);
-        impl<'de, T: Reading> Visitor<'de> for V<T> {
-            type Value = Rows<T>;
-            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str("an array of rows of points")
-            }
-            fn visit_seq<A: de::SeqAccess<'de>>(self, mut seq: A) -> Result<Rows<T>, A::Error> {
-                let mut dim = None;
-                let mut rows = Vec::new();
-                loop {
-                    let seed = PointsSeed {
-                        dim,
-                        count: Count::Any,
-                        expected: "a row of points (an array)",
-                        _t: PhantomData,
-                    };
-                    let Some(row) = seq.next_element_seed(seed)? else {
-                        return Ok(Rows(rows));
-                    };
-                    dim = row.first().map(Vec::len).or(dim);
-                    rows.push(row);
-                }
-            }
-        }
-        d.deserialize_seq(V(PhantomData))
+        let rows: Vec<Row<T>> = counted(d, Count::Any, "an array of rows of points")?;
+        let rows: Vec<_> = rows.into_iter().map(|r| r.0).collect();
+        same_dimension(rows.iter().enumerate().flat_map(|(i, row)| {
+            row.iter().enumerate().map(move |(j, p)| (format!("[{i}][{j}]"), p))
+        }))?;
+        Ok(Rows(rows))
     }
 }
 

@@ -116,7 +116,7 @@ fn restrict(job: &Value) -> Result<Value, String> {
 #[test]
 fn every_kind_and_field_is_listed_and_read() {
     let jobs = every_kind();
-    assert_eq!(jobs.len(), JOB_FIELDS.len());
+    assert_eq!(jobs.len(), JOB_FIELDS().len());
     for ((kind, fields), job) in JOB_FIELDS().iter().zip(&jobs) {
         assert_eq!(job["kind"], json!(kind));
         let names: Vec<&str> = job
@@ -130,7 +130,7 @@ fn every_kind_and_field_is_listed_and_read() {
         let mut expected = fields.to_vec();
         expected.sort_unstable();
         assert_eq!(sorted, expected, "{kind}: the test job uses every field");
-        assert!(check_fields(job).is_ok(), "{kind}");
+        assert!(shape(job).is_ok(), "{kind}");
         assert!(restrict(job).is_ok(), "{kind}: {:?}", restrict(job));
     }
     let kinds: Vec<&str> = kinds_of(Subcommand::Restrict).map(|k| k.name).collect();
@@ -185,7 +185,7 @@ fn a_misspelt_field_is_named_before_it_is_missed() {
                 "{kind}: {value}"
             );
             // The same through the reader alone.
-            let error = check_fields(&misspelt).unwrap_err();
+            let error = shape(&misspelt).unwrap_err();
             assert_eq!(error.field, typo);
         }
     }

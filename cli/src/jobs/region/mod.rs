@@ -34,7 +34,8 @@ pub mod winding;
 use super::intersect::{over_degree, Curve2, Curves};
 use super::read::{below, counted, Count, Name, Named, Reading};
 use super::write::{write, Double, Param};
-use blossom::region::{BooleanOp, Edge, FillRule, Region, RegionResult, MAX_REGION_DEGREE};
+use blossom::region::{parse_svg_path, BooleanOp, Edge, FillRule, Region, RegionResult};
+use blossom::region::MAX_REGION_DEGREE;
 use blossom::Error;
 use serde::de::{self, Deserializer};
 use serde::{Deserialize, Serialize};
@@ -69,7 +70,8 @@ impl Named for BooleanOp {
 }
 
 /// A REGION: `{"loops": [LOOP, ...], "fill": "nonzero" | "evenodd"}` (no loops: the empty
-/// region).
+/// region), or `{"path": D, "fill": ...}` with D SVG path data ([`parse_svg_path`]; its
+/// numbers read as the arithmetic reads numbers, relative coordinates added exactly).
 #[derive(Clone, Debug)]
 pub struct RegionShape<T>(pub Region, PhantomData<T>);
 
@@ -77,7 +79,8 @@ pub struct RegionShape<T>(pub Region, PhantomData<T>);
 #[derive(Deserialize)]
 #[serde(bound = "T: Reading", expecting = "a region {\"loops\": [...], \"fill\": ...}")]
 struct RegionFields<T> {
-    loops: Vec<Loop<T>>,
+    loops: Option<Vec<Loop<T>>>,
+    path: Option<String>,
     fill: Option<Name<FillRule>>,
 }
 
@@ -93,12 +96,27 @@ impl<'de, T: Reading> Deserialize<'de> for Loop<T> {
 impl<'de, T: Reading> Deserialize<'de> for RegionShape<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let fields = RegionFields::<T>::deserialize(d)?;
-        let loops = fields
-            .loops
-            .into_iter()
-            .map(|l| l.0.into_iter().map(|c| blossom::Bezier::new(c.0)).collect())
-            .collect::<Result<Vec<Vec<_>>, Error>>()
-            .map_err(|e| below(&e))?;
+        let loops = match (fields.loops, fields.path) {
+            (Some(loops), None) => loops
+                .into_iter()
+                .map(|l| l.0.into_iter().map(|c| blossom::Bezier::new(c.0)).collect())
+                .collect::<Result<Vec<Vec<_>>, Error>>(),
+            (None, Some(path)) => parse_svg_path(&path, |text| {
+                T::read(&Value::String(text.to_string()))
+                    .map(|x| x.exact())
+                    .map_err(|message| Error::new("", message))
+            })
+            .map_err(|e| Error::of(e.kind, "path", e.message)),
+            (None, None) => Err(Error::new(
+                "loops",
+                "missing field (a region is {\"loops\": [...]} or {\"path\": SVG path data})",
+            )),
+            (Some(_), Some(_)) => Err(Error::new(
+                "path",
+                "a region has \"loops\" or \"path\", not both",
+            )),
+        }
+        .map_err(|e| below(&e))?;
         let fill = fields.fill.map_or(FillRule::NonZero, |f| f.0);
         Region::new(loops, fill)
             .map(|r| RegionShape(r, PhantomData))
@@ -181,12 +199,14 @@ impl<T> Plural for TriangleShape<T> {
 }
 
 /// The answer of a `boolean`, `simplify` or `triangle-triangle` job: the regularized result as
-/// oriented simple loops of edges, and an enclosure of its area.
+/// oriented simple loops of edges, an enclosure of its area and its SVG path data.
 #[derive(Serialize)]
 pub struct RegionAnswer {
     kind: &'static str,
     loops: Vec<LoopAnswer>,
     area: [Double; 2],
+    /// The result as SVG path data (`null` when an edge has degree over 3).
+    svg: Option<String>,
 }
 
 #[derive(Serialize)]
@@ -234,6 +254,7 @@ impl RegionAnswer {
             kind,
             loops,
             area: [Double(result.area[0]), Double(result.area[1])],
+            svg: result.svg(),
         })
     }
 }
