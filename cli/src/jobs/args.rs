@@ -206,7 +206,11 @@ pub const CHECK_HELP: &str = include_str!("../../help/check.txt");
 /// The command line as clap reads it (help and version are this module's own flags, so that
 /// their texts are the contract's).
 #[derive(Parser, Debug)]
-#[command(name = "blossom", disable_help_flag = true, disable_version_flag = true)]
+#[command(
+    name = "blossom",
+    disable_help_flag = true,
+    disable_version_flag = true
+)]
 #[command(disable_help_subcommand = true, no_binary_name = true)]
 pub struct Cli {
     #[arg(short = 'h', long = "help")]
@@ -351,7 +355,13 @@ fn limit(text: &str) -> Result<u64, String> {
             .bytes()
             .all(|b| b.is_ascii_digit() || matches!(b, b'e' | b'E' | b'.' | b'+'));
     match text.parse::<f64>() {
-        Ok(x) if well_formed && x.is_finite() && x >= 0.0 && x <= u64::MAX as f64 && x.fract() == 0.0 => {
+        Ok(x)
+            if well_formed
+                && x.is_finite()
+                && x >= 0.0
+                && x <= u64::MAX as f64
+                && x.fract() == 0.0 =>
+        {
             Ok(x as u64)
         }
         _ => Err(format!(
@@ -370,13 +380,14 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
     if cli.version {
         return Ok(Command::Version);
     }
-    let restrict_like = |io: &Io, help: &'static str, make: &dyn Fn(Option<PathBuf>, Limits) -> Command| {
-        if io.help {
-            Ok(Command::Help(help))
-        } else {
-            Ok(make(io.input()?, io.limits()))
-        }
-    };
+    let restrict_like =
+        |io: &Io, help: &'static str, make: &dyn Fn(Option<PathBuf>, Limits) -> Command| {
+            if io.help {
+                Ok(Command::Help(help))
+            } else {
+                Ok(make(io.input()?, io.limits()))
+            }
+        };
     match cli.command {
         None => Ok(Command::Verify {
             json: false,
@@ -397,20 +408,12 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
                 limits,
             })
         }),
-        Some(Sub::Intersect { io, arithmetic }) => restrict_like(&io, INTERSECT_HELP, &|input, limits| {
-            Command::Intersect(IntersectOptions {
-                input,
-                arithmetic: arithmetic.unwrap_or(Arithmetic::Exact),
-                limits,
-            })
-        }),
-        Some(Sub::Region { io, arithmetic }) => restrict_like(&io, REGION_HELP, &|input, limits| {
-            Command::Region(IntersectOptions {
-                input,
-                arithmetic: arithmetic.unwrap_or(Arithmetic::Exact),
-                limits,
-            })
-        }),
+        Some(Sub::Intersect { io, arithmetic }) => {
+            certified(io, arithmetic, INTERSECT_HELP, Command::Intersect)
+        }
+        Some(Sub::Region { io, arithmetic }) => {
+            certified(io, arithmetic, REGION_HELP, Command::Region)
+        }
         Some(Sub::Check { io, per_point }) => restrict_like(&io, CHECK_HELP, &|input, limits| {
             Command::Check(CheckOptions {
                 input,
@@ -420,7 +423,9 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
         }),
         Some(Sub::Figures { help: true, .. }) => Ok(Command::Help(FIGURES_HELP)),
         Some(Sub::Figures { out, .. }) => match out {
-            Some(dir) if dir.as_os_str().is_empty() => Err(Error::new("--out", "empty directory name")),
+            Some(dir) if dir.as_os_str().is_empty() => {
+                Err(Error::new("--out", "empty directory name"))
+            }
             out => Ok(Command::Figures {
                 out: out.unwrap_or_else(|| PathBuf::from("figures")),
             }),
@@ -447,6 +452,23 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
     }
 }
 
+/// `intersect` and `region`: the same flags, another help and command.
+fn certified(
+    io: Io,
+    arithmetic: Option<Arithmetic>,
+    help: &'static str,
+    command: fn(IntersectOptions) -> Command,
+) -> Result<Command, Error> {
+    if io.help {
+        return Ok(Command::Help(help));
+    }
+    Ok(command(IntersectOptions {
+        input: io.input()?,
+        arithmetic: arithmetic.unwrap_or(Arithmetic::Exact),
+        limits: io.limits(),
+    }))
+}
+
 /// The clap error `e` of the command line `args` as the contract's one-line error.
 fn refusal(e: &clap::Error, args: &[OsString]) -> Error {
     let context = |kind: ContextKind| match e.get(kind) {
@@ -457,7 +479,11 @@ fn refusal(e: &clap::Error, args: &[OsString]) -> Error {
     };
     // `--input <INPUT>` names the flag `--input`.
     let argument = context(ContextKind::InvalidArg);
-    let flag = argument.split([' ', '=']).next().unwrap_or_default().to_string();
+    let flag = argument
+        .split([' ', '='])
+        .next()
+        .unwrap_or_default()
+        .to_string();
     let subcommand = args
         .first()
         .map(|a| a.to_string_lossy().into_owned())
@@ -468,13 +494,12 @@ fn refusal(e: &clap::Error, args: &[OsString]) -> Error {
             Error::new(flag, "missing value")
         }
         ErrorKind::ValueValidation | ErrorKind::InvalidValue => {
-            let message = std::error::Error::source(e).map_or_else(|| e.to_string(), |s| s.to_string());
+            let message =
+                std::error::Error::source(e).map_or_else(|| e.to_string(), |s| s.to_string());
             Error::new(flag, message)
         }
         ErrorKind::ArgumentConflict => Error::new(flag, "given more than once"),
-        ErrorKind::TooManyValues | ErrorKind::NoEquals => {
-            Error::new(flag, "takes no value")
-        }
+        ErrorKind::TooManyValues | ErrorKind::NoEquals => Error::new(flag, "takes no value"),
         ErrorKind::InvalidSubcommand => {
             let word = context(ContextKind::InvalidSubcommand);
             Error::new(
@@ -514,12 +539,24 @@ fn refusal(e: &clap::Error, args: &[OsString]) -> Error {
                     "verify" => "",
                     _ => " (give the job file as --input FILE)",
                 };
-                Error::new(word.as_str(), format!("unexpected argument for {subcommand}{hint}"))
+                Error::new(
+                    word.as_str(),
+                    format!("unexpected argument for {subcommand}{hint}"),
+                )
             }
         }
         _ => Error::new(
-            if flag.is_empty() { String::from("arguments") } else { flag },
-            e.to_string().lines().next().unwrap_or_default().trim_start_matches("error: ").to_string(),
+            if flag.is_empty() {
+                String::from("arguments")
+            } else {
+                flag
+            },
+            e.to_string()
+                .lines()
+                .next()
+                .unwrap_or_default()
+                .trim_start_matches("error: ")
+                .to_string(),
         ),
     }
 }

@@ -5,11 +5,11 @@
 //! whose module documentation says why the work is metered and how the estimate is made.
 
 use super::args::{Arithmetic, MethodChoice};
-pub use super::cost::{
-    metered, Estimate, Limits, DEFAULT_MAX_INPUT, DEFAULT_MAX_WORK, EXACT_OPERATION,
-    F64_OPERATION, UP_FRONT_FACTOR,
-};
 use super::cost::{degree_of, longest_number_field, Env, Spelling, RAISE_IT};
+pub use super::cost::{
+    metered, Estimate, Limits, DEFAULT_MAX_INPUT, DEFAULT_MAX_WORK, EXACT_OPERATION, F64_OPERATION,
+    UP_FRONT_FACTOR,
+};
 use super::kinds::{job_and_kind, Job, Subcommand};
 use super::read::MAX_DEGREE;
 use blossom::{Error, Rational};

@@ -69,8 +69,8 @@
 //! The jobs that decide exactly (`bspline`, `rational-*`, the matrices of `reduce`) compute in
 //! rationals under both arithmetics, and are estimated so.
 
-pub use super::args::{Limits, DEFAULT_MAX_INPUT, DEFAULT_MAX_WORK};
 use super::args::MethodChoice;
+pub use super::args::{Limits, DEFAULT_MAX_INPUT, DEFAULT_MAX_WORK};
 use blossom::{Error, Method};
 use serde_json::{Map, Value};
 

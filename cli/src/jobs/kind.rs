@@ -44,4 +44,3 @@ pub trait Kind: DeserializeOwned {
     /// The answer as JSON (`error_bound` and the one-line text are added by the caller).
     fn solve(self, context: &Context) -> Result<Value, Error>;
 }
-

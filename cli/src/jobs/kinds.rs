@@ -166,7 +166,10 @@ pub fn job_and_kind(
         Some(other) => {
             return Err(Error::new(
                 "kind",
-                format!("expected a string, found {}", crate::number::json_type(other)),
+                format!(
+                    "expected a string, found {}",
+                    crate::number::json_type(other)
+                ),
             ))
         }
         None => {

@@ -152,12 +152,14 @@ pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
                     .map(with_newline),
             )
         }
-        Ok(Command::Figures { out }) => Outcome::of(crate::figures::write_figures(&out).map(|written| {
-            written
-                .iter()
-                .map(|path| format!("{}\n", path.display()))
-                .collect()
-        })),
+        Ok(Command::Figures { out }) => {
+            Outcome::of(crate::figures::write_figures(&out).map(|written| {
+                written
+                    .iter()
+                    .map(|path| format!("{}\n", path.display()))
+                    .collect()
+            }))
+        }
         Ok(Command::Completions(shell)) => Outcome::of(args::completions(&shell)),
         Ok(Command::Expand(words)) => {
             Outcome::of(crate::specialised::expand_command(&words).map(with_newline))
@@ -212,19 +214,25 @@ fn restrict(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<String, E
 pub fn solve(document: &Value, context: &Context) -> Result<Value, Error> {
     shape(document)?;
     let (job, kind) = job_and_kind(document, Subcommand::Restrict)?;
-    let estimate =
-        budget::up_front(document, context.method, context.arithmetic, &context.limits)?;
-    budget::metered(&context.limits, &estimate.field, || match context.arithmetic {
-        Arithmetic::Exact => Job::<Rational>::read(kind.name, job)?.solve(context),
-        Arithmetic::F64 => {
-            let mut answer = Job::<BoundedF64>::read(kind.name, job)?.solve(context)?;
-            let bound = take_error_bound(&mut answer)
-                .and_then(serde_json::Number::from_f64)
-                .map_or(Value::Null, Value::Number);
-            if let Value::Object(map) = &mut answer {
-                map.insert("error_bound".into(), bound);
+    let estimate = budget::up_front(
+        document,
+        context.method,
+        context.arithmetic,
+        &context.limits,
+    )?;
+    budget::metered(&context.limits, &estimate.field, || {
+        match context.arithmetic {
+            Arithmetic::Exact => Job::<Rational>::read(kind.name, job)?.solve(context),
+            Arithmetic::F64 => {
+                let mut answer = Job::<BoundedF64>::read(kind.name, job)?.solve(context)?;
+                let bound = take_error_bound(&mut answer)
+                    .and_then(serde_json::Number::from_f64)
+                    .map_or(Value::Null, Value::Number);
+                if let Value::Object(map) = &mut answer {
+                    map.insert("error_bound".into(), bound);
+                }
+                Ok(answer)
             }
-            Ok(answer)
         }
     })
 }

@@ -137,7 +137,10 @@ impl std::error::Error for ReadError {}
 impl de::Error for ReadError {
     fn custom<M: fmt::Display>(message: M) -> Self {
         let text = message.to_string();
-        match text.strip_prefix(RELATIVE).and_then(|t| t.split_once(RELATIVE)) {
+        match text
+            .strip_prefix(RELATIVE)
+            .and_then(|t| t.split_once(RELATIVE))
+        {
             Some((field, message)) => ReadError::below(field, ErrorKind::Invalid, message),
             None => ReadError::below("", ErrorKind::Invalid, text),
         }
@@ -152,7 +155,10 @@ const RELATIVE: &str = "\u{0}";
 /// `loops[0][2]`, a triangle's `nodes`), as the error of any deserializer: the reader puts it
 /// under the value's path.
 pub fn below<E: de::Error>(error: &Error) -> E {
-    E::custom(format!("{RELATIVE}{}{RELATIVE}{}", error.field, error.message))
+    E::custom(format!(
+        "{RELATIVE}{}{RELATIVE}{}",
+        error.field, error.message
+    ))
 }
 
 /// `path` and `name` joined: `name` at the top, `path.name` for a field, `path[2]` for an index.
@@ -192,6 +198,15 @@ impl<'a> Reader<'a> {
             format!("expected {expected}, found {found}"),
         )
         .at(&self.path)
+    }
+
+    /// The object being read, or the refusal of what is there instead.
+    fn object<'v, V: Visitor<'v>>(&self, visitor: &V) -> Result<&'a Map<String, Value>, ReadError> {
+        match (self.object, self.value) {
+            (Some(map), _) | (None, Some(Value::Object(map))) => Ok(map),
+            (None, None) => Err(self.missing()),
+            (None, Some(_)) => Err(self.wrong_type(&Expecting(visitor))),
+        }
     }
 
     fn missing(&self) -> ReadError {
@@ -245,15 +260,7 @@ impl<'de> Deserializer<'de> for Reader<'de> {
     }
 
     fn deserialize_map<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, ReadError> {
-        let Some(map) = self.object.or(match self.value {
-            Some(Value::Object(map)) => Some(map),
-            _ => None,
-        }) else {
-            return Err(match self.value {
-                None => self.missing(),
-                Some(_) => self.wrong_type(&Expecting(&visitor)),
-            });
-        };
+        let map = self.object(&visitor)?;
         let entries: Vec<(&str, Option<&Value>)> = map
             .iter()
             .filter(|(k, _)| self.object.is_none() || k.as_str() != "kind")
@@ -272,11 +279,7 @@ impl<'de> Deserializer<'de> for Reader<'de> {
         fields: &'static [&'static str],
         visitor: V,
     ) -> Result<V::Value, ReadError> {
-        let map = match (self.object, self.value) {
-            (Some(map), _) | (None, Some(Value::Object(map))) => map,
-            (None, None) => return Err(self.missing()),
-            (None, Some(_)) => return Err(self.wrong_type(&Expecting(&visitor))),
-        };
+        let map = self.object(&visitor)?;
         let top = self.object.is_some();
         let mut accepted: Vec<&str> = Vec::with_capacity(fields.len() + 1);
         if top {
@@ -370,7 +373,8 @@ impl<'de> de::MapAccess<'de> for Fields<'de, '_> {
             Some((name, _)) => seed
                 .deserialize(name.into_deserializer())
                 .map(Some)
-                .map_err(|e: de::value::Error| de::Error::custom(e)).map_err(|e: ReadError| e.at(&joined(self.path, name))),
+                .map_err(|e: de::value::Error| de::Error::custom(e))
+                .map_err(|e: ReadError| e.at(&joined(self.path, name))),
         }
     }
 
@@ -503,7 +507,9 @@ impl<'de, T: Reading, const N: usize> Deserialize<'de> for Numbers<T, N> {
         let expected = format!("an array of {N} numbers");
         let items = counted::<D, Num<T>>(d, Count::Exactly(N, "numbers"), expected)?;
         let numbers: Vec<T> = items.into_iter().map(|n| n.0).collect();
-        Ok(Numbers(numbers.try_into().unwrap_or_else(|_| unreachable!())))
+        Ok(Numbers(
+            numbers.try_into().unwrap_or_else(|_| unreachable!()),
+        ))
     }
 }
 
@@ -514,9 +520,12 @@ pub struct Corners<T, const D: usize>(pub [[T; D]; 3]);
 
 impl<'de, T: Reading, const D: usize> Deserialize<'de> for Corners<T, D> {
     fn deserialize<D2: Deserializer<'de>>(d: D2) -> Result<Self, D2::Error> {
-        let corners: Vec<Corner<T, D>> = counted(d, Count::Exactly(3, "corners"), "an array of 3 corners")?;
+        let corners: Vec<Corner<T, D>> =
+            counted(d, Count::Exactly(3, "corners"), "an array of 3 corners")?;
         let corners: Vec<[T; D]> = corners.into_iter().map(|c| c.0).collect();
-        Ok(Corners(corners.try_into().unwrap_or_else(|_| unreachable!())))
+        Ok(Corners(
+            corners.try_into().unwrap_or_else(|_| unreachable!()),
+        ))
     }
 }
 
@@ -527,11 +536,16 @@ impl<'de, T: Reading, const D: usize> Deserialize<'de> for Corner<T, D> {
     fn deserialize<D2: Deserializer<'de>>(d: D2) -> Result<Self, D2::Error> {
         let (noun, what) = match D {
             2 => ("coordinates", "a corner (an array of 2 numbers)"),
-            _ => ("barycentric coordinates", "a corner (an array of 3 barycentric coordinates)"),
+            _ => (
+                "barycentric coordinates",
+                "a corner (an array of 3 barycentric coordinates)",
+            ),
         };
         let items: Vec<Num<T>> = counted(d, Count::Exactly(D, noun), what)?;
         let numbers: Vec<T> = items.into_iter().map(|n| n.0).collect();
-        Ok(Corner(numbers.try_into().unwrap_or_else(|_| unreachable!())))
+        Ok(Corner(
+            numbers.try_into().unwrap_or_else(|_| unreachable!()),
+        ))
     }
 }
 
@@ -562,7 +576,9 @@ pub fn counted<'de, D: Deserializer<'de>, E: Deserialize<'de>>(
             let found = seq.size_hint().unwrap_or(0);
             match self.0 {
                 Count::Exactly(n, what) if found != n => {
-                    return Err(de::Error::custom(format!("expected {n} {what}, found {found}")))
+                    return Err(de::Error::custom(format!(
+                        "expected {n} {what}, found {found}"
+                    )))
                 }
                 Count::NotEmpty(what) if found == 0 => {
                     return Err(de::Error::custom(format!(
@@ -596,7 +612,11 @@ pub struct Point<T>(pub blossom::Point<T>);
 
 impl<'de, T: Reading> Deserialize<'de> for Point<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let xs: Vec<Num<T>> = counted(d, Count::NotEmpty("coordinate"), "a point (an array of numbers)")?;
+        let xs: Vec<Num<T>> = counted(
+            d,
+            Count::NotEmpty("coordinate"),
+            "a point (an array of numbers)",
+        )?;
         Ok(Point(xs.into_iter().map(|x| x.0).collect()))
     }
 }
@@ -627,7 +647,12 @@ impl<'de, T: Reading> Deserialize<'de> for Points<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let points: Vec<Point<T>> = counted(d, Count::NotEmpty("point"), "an array of points")?;
         let points: Vec<_> = points.into_iter().map(|p| p.0).collect();
-        same_dimension(points.iter().enumerate().map(|(k, p)| (format!("[{k}]"), p)))?;
+        same_dimension(
+            points
+                .iter()
+                .enumerate()
+                .map(|(k, p)| (format!("[{k}]"), p)),
+        )?;
         Ok(Points(points))
     }
 }
@@ -652,7 +677,9 @@ impl<'de, T: Reading> Deserialize<'de> for Rows<T> {
         let rows: Vec<Row<T>> = counted(d, Count::Any, "an array of rows of points")?;
         let rows: Vec<_> = rows.into_iter().map(|r| r.0).collect();
         same_dimension(rows.iter().enumerate().flat_map(|(i, row)| {
-            row.iter().enumerate().map(move |(j, p)| (format!("[{i}][{j}]"), p))
+            row.iter()
+                .enumerate()
+                .map(move |(j, p)| (format!("[{i}][{j}]"), p))
         }))?;
         Ok(Rows(rows))
     }

@@ -15,7 +15,11 @@ use serde_json::Value;
 pub fn write<A: Serialize>(answer: &A) -> Result<Value, Error> {
     serde_path_to_error::serialize(answer, serde_json::value::Serializer).map_err(|e| {
         let path = e.path().to_string();
-        let field = if path == "." { String::from("internal") } else { path };
+        let field = if path == "." {
+            String::from("internal")
+        } else {
+            path
+        };
         Error::new(field, e.into_inner().to_string())
     })
 }

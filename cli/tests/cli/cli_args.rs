@@ -2,9 +2,9 @@
 //! and values, every error naming its argument, the nearest name for a typing slip, the help
 //! texts against the code's lists.
 
+use blossom::Error;
 use blossom::Method;
 use blossom_cli::jobs::args::*;
-use blossom::Error;
 use std::ffi::OsString;
 use std::path::PathBuf;
 
@@ -104,11 +104,10 @@ fn mistypes_get_the_nearest_name() {
     assert!(message(&["figure"]).contains("did you mean \"figures\"?"));
     assert!(message(&["chek"]).contains("did you mean \"check\"?"));
     assert!(message(&["restrict", "--method", "pyramd"]).contains("did you mean \"pyramid\"?"));
-    assert!(message(&["restrict", "--method", "closed_form"])
-        .contains("did you mean \"closed-form\"?"));
     assert!(
-        message(&["restrict", "--method", "taylor"]).contains("did you mean \"taylor-shift\"?")
+        message(&["restrict", "--method", "closed_form"]).contains("did you mean \"closed-form\"?")
     );
+    assert!(message(&["restrict", "--method", "taylor"]).contains("did you mean \"taylor-shift\"?"));
     assert!(message(&["restrict", "--arithmetic", "F64"]).contains("did you mean \"f64\"?"));
     assert!(message(&["restrict", "--metod", "bulk"]).contains("did you mean \"--method\"?"));
     assert!(message(&["verify", "--jsno"]).contains("did you mean \"--json\"?"));
@@ -172,4 +171,26 @@ fn expand_takes_its_words() {
         parse_strs(&["expand", "--help"]).unwrap(),
         Command::Help(EXPAND_HELP)
     );
+}
+
+#[test]
+fn completions_for_each_shell() {
+    let run = |args: &[&str]| {
+        let args: Vec<OsString> = args.iter().map(OsString::from).collect();
+        blossom_cli::jobs::run(&args, &mut &b""[..])
+    };
+    for shell in ["bash", "zsh", "fish", "elvish", "powershell"] {
+        let out = run(&["completions", shell]);
+        assert_eq!(out.code, 0, "{shell}: {}", out.stderr);
+        assert!(out.stdout.contains("restrict") && out.stdout.contains("--max-work"), "{shell}");
+    }
+    let out = run(&["completions", "bsh"]);
+    assert_eq!(out.code, 2);
+    assert!(
+        out.stderr.starts_with("error: bsh: unknown shell (did you mean \"bash\"?)"),
+        "{}",
+        out.stderr
+    );
+    let out = run(&["completions"]);
+    assert!(out.stderr.starts_with("error: completions: expected one shell"), "{}", out.stderr);
 }

@@ -229,7 +229,10 @@ fn nested_objects_refuse_unknown_fields() {
     );
     // An entry that is not an object is the reader's to refuse, with its own message.
     net["control_points"][2] = json!([1]);
-    assert!(shape(&net).unwrap_err().to_string().starts_with("control_points[2]: expected an object"));
+    assert!(shape(&net)
+        .unwrap_err()
+        .to_string()
+        .starts_with("control_points[2]: expected an object"));
 }
 
 #[test]
@@ -248,7 +251,6 @@ fn a_job_without_its_kind_is_checked_against_every_kind() {
         .unwrap_err()
         .starts_with("error: kind: unknown kind \"curv\" (did you mean \"curve\"?)"));
 }
-
 
 /// `blossom region` on `job`, in process: the error line.
 fn region_error(job: &Value) -> String {
@@ -284,5 +286,8 @@ fn a_triangle_with_too_few_nodes_names_its_nodes() {
     let t = json!({"degree": 1, "nodes": [[0, 0], [1, 0], [0, 1]], "node": 1});
     let job = json!({"kind": "triangle-triangle", "triangles": [t, good]});
     let e = region_error(&job);
-    assert!(e.starts_with("error: triangles[0].node: unknown field"), "{e}");
+    assert!(
+        e.starts_with("error: triangles[0].node: unknown field"),
+        "{e}"
+    );
 }

@@ -13,7 +13,10 @@ fn holds(enclosure: (f64, f64), exact: f64, b: f64) {
         enclosure.0 <= exact && exact <= enclosure.1,
         "{enclosure:?} does not hold {exact}"
     );
-    assert!(enclosure.1 - enclosure.0 <= b * 2f64.powi(-40), "{enclosure:?}");
+    assert!(
+        enclosure.1 - enclosure.0 <= b * 2f64.powi(-40),
+        "{enclosure:?}"
+    );
 }
 
 fn square(x: i64, y: i64, side: i64) -> Value {
@@ -39,7 +42,11 @@ fn the_empty_region_is_a_region_in_every_job() {
         let job = json!({"kind": "boolean", "op": op, "regions": [x, y]});
         let out = check_boolean(&[], &job);
         holds(area(&out), expected, 4.0);
-        assert_eq!(out["loops"].as_array().unwrap().is_empty(), expected == 0.0, "{op}: {out}");
+        assert_eq!(
+            out["loops"].as_array().unwrap().is_empty(),
+            expected == 0.0,
+            "{op}: {out}"
+        );
         if expected == 0.0 {
             assert_eq!(out["area"], json!([0.0, 0.0]), "{op}");
         }
@@ -47,8 +54,14 @@ fn the_empty_region_is_a_region_in_every_job() {
     for fill in ["nonzero", "evenodd"] {
         let empty = json!({"loops": [], "fill": fill});
         let out = answer(&[], &json!({"kind": "simplify", "region": empty}));
-        assert_eq!(out, json!({"kind": "simplify", "loops": [], "area": [0.0, 0.0], "svg": ""}));
-        let out = answer(&[], &json!({"kind": "winding", "region": empty, "points": [[0, 0], ["1/3", 7]]}));
+        assert_eq!(
+            out,
+            json!({"kind": "simplify", "loops": [], "area": [0.0, 0.0], "svg": ""})
+        );
+        let out = answer(
+            &[],
+            &json!({"kind": "winding", "region": empty, "points": [[0, 0], ["1/3", 7]]}),
+        );
         assert_eq!(
             out["points"],
             json!([{"position": "outside", "winding": 0}, {"position": "outside", "winding": 0}])
@@ -95,15 +108,32 @@ fn simplify_of_a_self_crossing_loop_under_both_fill_rules() {
     // upwards), [0, 1] x [2, 3] has 0 (down at x = 1, up at x = 4), the rest of the box
     // [0, 4] x [0, 3] (area 12) has 1, area 12 - 2 - 1 = 9. Shoelace: 9 + 2 * 2 = 13 = 26 / 2.
     // So nonzero keeps 9 + 2 = 11, evenodd 9.
-    let outline = polygon(&[[0, 0], [4, 0], [4, 3], [1, 3], [1, 1], [3, 1], [3, 2], [0, 2]]);
+    let outline = polygon(&[
+        [0, 0],
+        [4, 0],
+        [4, 3],
+        [1, 3],
+        [1, 1],
+        [3, 1],
+        [3, 2],
+        [0, 2],
+    ]);
     for (fill, expected) in [("nonzero", 11.0), ("evenodd", 9.0)] {
         let region = json!({"loops": [outline], "fill": fill});
         let out = simplified(&region);
         holds(area(&out), expected, 12.0);
-        let winding = answer(&[], &json!({"kind": "winding", "region": region,
-            "points": [["3/2", "3/2"], ["1/2", "5/2"], ["1/2", "1/2"]]}));
+        let winding = answer(
+            &[],
+            &json!({"kind": "winding", "region": region,
+            "points": [["3/2", "3/2"], ["1/2", "5/2"], ["1/2", "1/2"]]}),
+        );
         assert_eq!(
-            winding["points"].as_array().unwrap().iter().map(|p| p["winding"].clone()).collect::<Vec<_>>(),
+            winding["points"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|p| p["winding"].clone())
+                .collect::<Vec<_>>(),
             vec![json!(2), json!(0), json!(1)]
         );
     }
@@ -112,18 +142,39 @@ fn simplify_of_a_self_crossing_loop_under_both_fill_rules() {
 #[test]
 fn simplify_refuses_bad_regions_naming_the_field() {
     let open = json!({"loops": [[[[0, 0], [1, 0]], [[1, 0], [1, 1]]]]});
-    let e = error(&[], &json!({"kind": "simplify", "region": open}).to_string());
-    assert!(e.starts_with("error: region.loops[0][0]: starts at (0, 0)"), "{e}");
+    let e = error(
+        &[],
+        &json!({"kind": "simplify", "region": open}).to_string(),
+    );
+    assert!(
+        e.starts_with("error: region.loops[0][0]: starts at (0, 0)"),
+        "{e}"
+    );
     let e = error(&[], &json!({"kind": "simplify", "regions": []}).to_string());
-    assert!(e.starts_with("error: regions: unknown field \"regions\" (did you mean \"region\"?)"), "{e}");
+    assert!(
+        e.starts_with("error: regions: unknown field \"regions\" (did you mean \"region\"?)"),
+        "{e}"
+    );
     let e = error(&[], &json!({"kind": "simplify"}).to_string());
     assert_eq!(e, "error: region: missing field");
-    let e = error(&[], &json!({"kind": "simplify", "region": {"loops": [[[[0, 2.5], [1, 0]]]]}}).to_string());
-    assert!(e.starts_with("error: region.loops[0][0][0][1]: the JSON number 2.5"), "{e}");
+    let e = error(
+        &[],
+        &json!({"kind": "simplify", "region": {"loops": [[[[0, 2.5], [1, 0]]]]}}).to_string(),
+    );
+    assert!(
+        e.starts_with("error: region.loops[0][0][0][1]: the JSON number 2.5"),
+        "{e}"
+    );
     // The budget bounds simplify as it bounds the booleans.
     let region = json!({"loops": [square(0, 0, 2), square(1, 1, 2)]});
-    let e = error(&["--max-work", "10"], &json!({"kind": "simplify", "region": region}).to_string());
-    assert!(e.starts_with("error: region: the job's work is estimated at "), "{e}");
+    let e = error(
+        &["--max-work", "10"],
+        &json!({"kind": "simplify", "region": region}).to_string(),
+    );
+    assert!(
+        e.starts_with("error: region: the job's work is estimated at "),
+        "{e}"
+    );
 }
 
 /// The area of the simplify answer of the region of SVG path data `d` under `args`.
@@ -135,20 +186,36 @@ fn path_area(args: &[&str], d: &str) -> ((f64, f64), Value) {
 #[test]
 fn svg_path_data_reads_every_command() {
     // Areas by hand. A square, absolute and relative, closed or left open (closed by a line).
-    for d in ["M0 0 H2 V2 H0 Z", "m 0 0 h 2 v 2 h -2 z", "M0,0 2,0 2,2 0,2", "M 0 0 L 2 0 L 2 2 L 0 2"] {
+    for d in [
+        "M0 0 H2 V2 H0 Z",
+        "m 0 0 h 2 v 2 h -2 z",
+        "M0,0 2,0 2,2 0,2",
+        "M 0 0 L 2 0 L 2 2 L 0 2",
+    ] {
         holds(path_area(&[], d).0, 4.0, 4.0);
     }
     // A quadratic bulge over the top side, control point 1 above the chord: 2/3 x 2 x 1/2.
-    holds(path_area(&[], "M0,0 2,0 2,2 Q1,3 0,2z").0, 4.0 + 2.0 / 3.0, 6.0);
+    holds(
+        path_area(&[], "M0,0 2,0 2,2 Q1,3 0,2z").0,
+        4.0 + 2.0 / 3.0,
+        6.0,
+    );
     // T reflects the control point (1.5, 3) about (1, 2) to (0.5, 1): a bump of 1/3 out, then
     // one of 1/3 in; without the reflection the area would be 4 + 1/3.
-    holds(path_area(&[], "M0 0 L2 0 L2 2 Q 1.5 3 1 2 T 0 2 Z").0, 4.0, 6.0);
+    holds(
+        path_area(&[], "M0 0 L2 0 L2 2 Q 1.5 3 1 2 T 0 2 Z").0,
+        4.0,
+        6.0,
+    );
     // A cubic whose x runs linearly from 3 to 0 and y = 3 + 3t(1 - t): a bump of
     // integral 3t(1 - t) 3 dt = 3/2 over the 3 x 3 square.
     holds(path_area(&[], "M0 0 H3 V3 C 2 4 1 4 0 3 Z").0, 10.5, 12.0);
     // C then S (the first control point (8, 9) reflected about (6, 6) to (4, 3)): a bump of 9
     // out and one of 9 in over the 12 x 6 rectangle; absolute and relative.
-    for d in ["M0 0 H12 V6 C10 9 8 9 6 6 S2 3 0 6 Z", "m0 0 h12 v6 c-2 3 -4 3 -6 0 s-4 -3 -6 0 z"] {
+    for d in [
+        "M0 0 H12 V6 C10 9 8 9 6 6 S2 3 0 6 Z",
+        "m0 0 h12 v6 c-2 3 -4 3 -6 0 s-4 -3 -6 0 z",
+    ] {
         holds(path_area(&[], d).0, 72.0, 12.0 * 9.0);
     }
     // Subpaths of zero length are dropped; loop l is the l-th kept subpath, curve c its c-th
@@ -178,8 +245,14 @@ fn svg_numbers_follow_the_arithmetic() {
     let job = json!({"kind": "winding", "region": region,
         "points": [["0.30000000000000004", "0.5"], ["0.3", "0.5"]]});
     let f64_answer = answer(&["--arithmetic", "f64"], &job);
-    assert_eq!(f64_answer["points"][0]["position"], "outside", "{f64_answer}");
-    assert_eq!(f64_answer["points"][1]["position"], "inside", "{f64_answer}");
+    assert_eq!(
+        f64_answer["points"][0]["position"], "outside",
+        "{f64_answer}"
+    );
+    assert_eq!(
+        f64_answer["points"][1]["position"], "inside",
+        "{f64_answer}"
+    );
     // Exactly, 0.1 + 0.2 is 3/10: the point 0.3 is on the boundary.
     let exact = answer(&[], &job);
     assert_eq!(exact["points"][1]["position"], "boundary", "{exact}");
@@ -206,15 +279,28 @@ fn bad_svg_path_data_names_the_field_and_the_offset() {
         "regions": [{"loops": []}, {"path": "M0 0 H1 V1 Z", "loops": []}]});
     let e = error(&[], &job.to_string());
     assert!(e.starts_with("error: regions[1].path: "), "{e}");
-    let job = json!({"kind": "boolean", "op": "union", "regions": [{"fill": "evenodd"}, {"loops": []}]});
+    let job =
+        json!({"kind": "boolean", "op": "union", "regions": [{"fill": "evenodd"}, {"loops": []}]});
     let e = error(&[], &job.to_string());
-    assert!(e.starts_with("error: regions[0].loops: missing field"), "{e}");
+    assert!(
+        e.starts_with("error: regions[0].loops: missing field"),
+        "{e}"
+    );
     // A JSON-looking number in path data is read as written, exactly.
     let e = error(&[], &simplify(json!("M 0 0 L 1e999999 0 L 0 1 Z")));
-    assert!(e.starts_with("error: region.path: at 8: ") && e.contains("exponent"), "{e}");
+    assert!(
+        e.starts_with("error: region.path: at 8: ") && e.contains("exponent"),
+        "{e}"
+    );
     // The budget bounds path regions too.
-    let e = error(&["--max-work", "10"], &simplify(json!("M0 0 H2 V2 H0 Z M1 1 H3 V3 H1 Z")));
-    assert!(e.starts_with("error: region: the job's work is estimated at "), "{e}");
+    let e = error(
+        &["--max-work", "10"],
+        &simplify(json!("M0 0 H2 V2 H0 Z M1 1 H3 V3 H1 Z")),
+    );
+    assert!(
+        e.starts_with("error: region: the job's work is estimated at "),
+        "{e}"
+    );
 }
 
 #[test]
@@ -224,27 +310,50 @@ fn every_region_answer_has_svg_that_reads_back() {
     let a = json!({"loops": [square(0, 0, 2)]});
     let b = json!({"loops": [square(1, 1, 2)]});
     for (op, expected) in [("union", 7.0), ("intersection", 1.0), ("xor", 6.0)] {
-        let out = answer(&[], &json!({"kind": "boolean", "op": op, "regions": [a, b]}));
+        let out = answer(
+            &[],
+            &json!({"kind": "boolean", "op": op, "regions": [a, b]}),
+        );
         let svg = out["svg"].as_str().unwrap_or_else(|| panic!("{out}"));
         assert!(svg.starts_with('M') && svg.ends_with('Z'), "{svg}");
-        assert_eq!(svg.matches('M').count(), out["loops"].as_array().unwrap().len(), "{svg}");
+        assert_eq!(
+            svg.matches('M').count(),
+            out["loops"].as_array().unwrap().len(),
+            "{svg}"
+        );
         let (back, _) = path_area(&[], svg);
         holds(back, expected, 9.0);
         holds(area(&out), expected, 9.0);
     }
     // simplify and triangle-triangle have it too; an empty result has the empty string.
-    let out = answer(&[], &json!({"kind": "simplify", "region": {"path": "M0 0 H3 V3 C 2 4 1 4 0 3 Z"}}));
+    let out = answer(
+        &[],
+        &json!({"kind": "simplify", "region": {"path": "M0 0 H3 V3 C 2 4 1 4 0 3 Z"}}),
+    );
     assert!(out["svg"].as_str().unwrap().contains('C'), "{out}");
     let t1 = json!({"degree": 2, "nodes": [[0, 0], [2, 0], [4, 0], [0, 2], [2, 2], [0, 4]]});
     let t2 = json!({"degree": 1, "nodes": [[1, 1], [5, 1], [1, 5]]});
-    let out = answer(&[], &json!({"kind": "triangle-triangle", "triangles": [t1, t2]}));
+    let out = answer(
+        &[],
+        &json!({"kind": "triangle-triangle", "triangles": [t1, t2]}),
+    );
     let svg = out["svg"].as_str().unwrap();
     let (back, exact) = (path_area(&[], svg).0, area(&out));
-    assert!((back.0 - exact.0).abs() < 1e-9 && exact.0 > 1.0, "{back:?} {exact:?}");
+    assert!(
+        (back.0 - exact.0).abs() < 1e-9 && exact.0 > 1.0,
+        "{back:?} {exact:?}"
+    );
     let out = answer(&[], &json!({"kind": "simplify", "region": {"loops": []}}));
     assert_eq!(out["svg"], "");
     // An edge of degree 4 has no SVG command: "svg" is null.
-    let quartic = json!([[[0, 0], [1, -1], [2, 1], [3, -1], [4, 0]], [[4, 0], [0, 4]], [[0, 4], [0, 0]]]);
-    let out = answer(&[], &json!({"kind": "simplify", "region": {"loops": [quartic]}}));
+    let quartic = json!([
+        [[0, 0], [1, -1], [2, 1], [3, -1], [4, 0]],
+        [[4, 0], [0, 4]],
+        [[0, 4], [0, 0]]
+    ]);
+    let out = answer(
+        &[],
+        &json!({"kind": "simplify", "region": {"loops": [quartic]}}),
+    );
     assert!(out["svg"].is_null(), "{out}");
 }

@@ -34,7 +34,11 @@ impl<T: Number> Kind for CurveCurve<T> {
         let [p, q]: [Curve2<T, Intersect>; 2] =
             self.curves.0.try_into().unwrap_or_else(|_| unreachable!());
         let (p, q) = (p.0, q.0);
-        within_budget("curves", blossom::budget::curve_pair_work(&p, &q), context.limits.max_work)?;
+        within_budget(
+            "curves",
+            blossom::budget::curve_pair_work(&p, &q),
+            context.limits.max_work,
+        )?;
         metered(&context.limits, "curves", || {
             let found = blossom::intersect_curves(&p, &q).map_err(|e| {
                 let path = match e.path() {

@@ -59,8 +59,7 @@ pub fn within_budget(path: &str, work: u128, max_work: u64) -> Result<(), Error>
         format!(
             "the job's work is estimated at {:.1e} units, over the limit of {:.1e} units \
              (about a nanosecond each; raise it with --max-work if you mean it)",
-            work as f64,
-            max_work as f64
+            work as f64, max_work as f64
         ),
     ))
 }

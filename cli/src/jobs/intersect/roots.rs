@@ -2,11 +2,11 @@
 //! multiplicity ([`blossom::bezier_zeros`]).
 
 use super::{at, within_budget, MAX_FUNCTION_DEGREE};
+use crate::jobs::cost::metered;
 use crate::jobs::kind::{Context, Kind};
 use crate::jobs::read::{Num, Reading};
 use crate::jobs::restrict::Number;
 use crate::jobs::write::{write, Param};
-use crate::jobs::cost::metered;
 use blossom::{Error, Rational};
 use serde::de::{self, SeqAccess, Visitor};
 use serde::{Deserialize, Deserializer, Serialize};
@@ -79,7 +79,8 @@ impl<T: Number> Kind for Roots<T> {
         let work = blossom::budget::bezier_zeros_work(&coefficients);
         within_budget("control_points", work, context.limits.max_work)?;
         metered(&context.limits, "control_points", || {
-            let zeros = blossom::bezier_zeros(&coefficients).map_err(|e| at("control_points", e))?;
+            let zeros =
+                blossom::bezier_zeros(&coefficients).map_err(|e| at("control_points", e))?;
             write(&Answer {
                 kind: "roots",
                 identically_zero: zeros.identically_zero,

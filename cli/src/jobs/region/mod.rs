@@ -34,8 +34,8 @@ pub mod winding;
 use super::intersect::{over_degree, Curve2, Curves};
 use super::read::{below, counted, Count, Name, Named, Reading};
 use super::write::{write, Double, Param};
-use blossom::region::{parse_svg_path, BooleanOp, Edge, FillRule, Region, RegionResult};
 use blossom::region::MAX_REGION_DEGREE;
+use blossom::region::{parse_svg_path, BooleanOp, Edge, FillRule, Region, RegionResult};
 use blossom::Error;
 use serde::de::{self, Deserializer};
 use serde::{Deserialize, Serialize};
@@ -55,8 +55,10 @@ impl Curves for RegionCurves {
 
 impl Named for FillRule {
     const WHAT: &'static str = "fill rule";
-    const NAMES: &'static [(&'static str, Self)] =
-        &[("nonzero", FillRule::NonZero), ("evenodd", FillRule::EvenOdd)];
+    const NAMES: &'static [(&'static str, Self)] = &[
+        ("nonzero", FillRule::NonZero),
+        ("evenodd", FillRule::EvenOdd),
+    ];
 }
 
 impl Named for BooleanOp {
@@ -77,7 +79,10 @@ pub struct RegionShape<T>(pub Region, PhantomData<T>);
 
 /// The fields of a REGION.
 #[derive(Deserialize)]
-#[serde(bound = "T: Reading", expecting = "a region {\"loops\": [...], \"fill\": ...}")]
+#[serde(
+    bound = "T: Reading",
+    expecting = "a region {\"loops\": [...], \"fill\": ...}"
+)]
 struct RegionFields<T> {
     loops: Option<Vec<Loop<T>>>,
     path: Option<String>,
@@ -131,7 +136,10 @@ pub struct TriangleShape<T>(pub Region, PhantomData<T>);
 
 /// The fields of a TRIANGLE.
 #[derive(Deserialize)]
-#[serde(bound = "T: Reading", expecting = "a triangle {\"degree\": n, \"nodes\": [...]}")]
+#[serde(
+    bound = "T: Reading",
+    expecting = "a triangle {\"degree\": n, \"nodes\": [...]}"
+)]
 struct TriangleFields<T> {
     degree: TriangleDegree,
     nodes: Vec<super::intersect::Point2<T, RegionCurves>>,
@@ -231,13 +239,29 @@ struct EdgeAnswer {
 impl RegionAnswer {
     /// The answer of the job `kind` (`triangle_edges`: edges numbered as a
     /// `triangle-triangle` answer numbers them) as JSON.
-    pub fn write(kind: &'static str, result: &RegionResult, triangle_edges: bool) -> Result<Value, Error> {
+    pub fn write(
+        kind: &'static str,
+        result: &RegionResult,
+        triangle_edges: bool,
+    ) -> Result<Value, Error> {
         let edge = |e: &Edge| -> Result<EdgeAnswer, Error> {
             let (from, to) = (Param::of(e.from.algebraic()?), Param::of(e.to.algebraic()?));
             Ok(if triangle_edges {
-                EdgeAnswer { region: None, loop_index: None, curve: e.triangle_edge(), from, to }
+                EdgeAnswer {
+                    region: None,
+                    loop_index: None,
+                    curve: e.triangle_edge(),
+                    from,
+                    to,
+                }
             } else {
-                EdgeAnswer { region: Some(e.region), loop_index: Some(e.loop_index), curve: e.curve, from, to }
+                EdgeAnswer {
+                    region: Some(e.region),
+                    loop_index: Some(e.loop_index),
+                    curve: e.curve,
+                    from,
+                    to,
+                }
             })
         };
         let loops = result
@@ -267,4 +291,3 @@ pub fn at(path: &str, error: Error) -> Error {
 
 /// The points of a `winding` job.
 pub type Points<T> = Vec<super::intersect::Point2<T, RegionCurves>>;
-

@@ -40,21 +40,31 @@ impl<T: Number> Kind for Winding<T> {
     fn solve(self, context: &Context) -> Result<Value, Error> {
         let region = self.region.0;
         let points: Vec<_> = self.points.into_iter().map(|p| p.0).collect();
-        within_budget("points", region.winding_work(points.len()), context.limits.max_work)?;
+        within_budget(
+            "points",
+            region.winding_work(points.len()),
+            context.limits.max_work,
+        )?;
         let fill = region.fill();
         metered(&context.limits, "points", || {
             let points = region
                 .windings(&points)
                 .into_iter()
                 .map(|w| match w {
-                    Found::Boundary => Position { position: "boundary", winding: None },
+                    Found::Boundary => Position {
+                        position: "boundary",
+                        winding: None,
+                    },
                     Found::Number(k) => Position {
                         position: if fill.inside(k) { "inside" } else { "outside" },
                         winding: Some(k),
                     },
                 })
                 .collect();
-            write(&Answer { kind: "winding", points })
+            write(&Answer {
+                kind: "winding",
+                points,
+            })
         })
     }
 }

@@ -62,7 +62,9 @@ impl<T: Number> Kind for BezierTensor<T> {
             MethodChoice::Library(Method::Polarisation) => {
                 tensor_control_points_from_samples((n, m), rect, &|u, v| patch.eval(u, v))
             }
-            MethodChoice::Specialised => specialised::bezier_tensor(&patch, rect)?.into_control_points(),
+            MethodChoice::Specialised => {
+                specialised::bezier_tensor(&patch, rect)?.into_control_points()
+            }
             MethodChoice::Library(method) => {
                 restrict_power_surface(&tensor_bernstein_to_power(&patch), rect, method)
                     .into_control_points()

@@ -29,7 +29,10 @@ pub struct BezierTriangle<T> {
 
 /// One control point of the job.
 #[derive(Debug, Deserialize)]
-#[serde(bound = "T: Reading", expecting = "an object {\"a\", \"b\", \"c\", \"point\"}")]
+#[serde(
+    bound = "T: Reading",
+    expecting = "an object {\"a\", \"b\", \"c\", \"point\"}"
+)]
 struct Entry<T> {
     a: Degree,
     b: Degree,
@@ -46,7 +49,10 @@ const CALIBRATION: Calibration = [[2.4, 6.3], [5.7, 2.9], [6.2, 0.43], [3.7, 3.0
 fn net<T: Number>(items: Vec<Entry<T>>) -> Result<TriangularPatch<T>, Error> {
     let path = "control_points";
     if items.is_empty() {
-        return Err(Error::new(path, "expected at least one control point, found none"));
+        return Err(Error::new(
+            path,
+            "expected at least one control point, found none",
+        ));
     }
     let n = items[0].a.0 + items[0].b.0 + items[0].c.0;
     let mut slots: Vec<Option<(usize, Vec<T>)>> = Vec::new();
@@ -122,12 +128,19 @@ fn barycentric<T: Number>(corners: [[T; 3]; 3]) -> Result<[[T; 3]; 3], Error> {
         let sum = r.add(&s).add(&t);
         let off = sum.sub(&T::one());
         let distance = if off < T::zero() { off.neg() } else { off };
-        if !matches!(distance.partial_cmp(&tolerance), Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)) {
+        if !matches!(
+            distance.partial_cmp(&tolerance),
+            Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)
+        ) {
             return Err(Error::new(
                 format!("triangle[{k}]"),
                 format!(
                     "barycentric coordinates must add up to 1 ({}), they add up to {sum}",
-                    if <T as Reading>::EXACT { "exactly" } else { "within 1e-9" },
+                    if <T as Reading>::EXACT {
+                        "exactly"
+                    } else {
+                        "within 1e-9"
+                    },
                 ),
             ));
         }

@@ -78,12 +78,18 @@ impl<T: Number> Kind for Bspline<Written<T>> {
             if let Some(d) = dim.filter(|d| *d != coefficients[0].len()) {
                 return Err(Error::new(
                     format!("pieces[{i}].coefficients[0]"),
-                    format!("expected {}, found {}", coordinates(d), coefficients[0].len()),
+                    format!(
+                        "expected {}, found {}",
+                        coordinates(d),
+                        coefficients[0].len()
+                    ),
                 ));
             }
             dim = Some(coefficients[0].len());
             pieces.push(Piece {
-                interval: exact(&piece.interval.0).try_into().unwrap_or_else(|_| unreachable!()),
+                interval: exact(&piece.interval.0)
+                    .try_into()
+                    .unwrap_or_else(|_| unreachable!()),
                 curve: PowerCurve::new(coefficients)?,
             });
         }

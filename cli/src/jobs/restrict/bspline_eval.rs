@@ -34,7 +34,11 @@ struct Answer<T: crate::jobs::write::Write> {
 
 impl<T: Number> Kind for BsplineEval<T> {
     fn estimate(env: &Env) -> Option<(f64, &'static str)> {
-        let (k, c, t) = (env.numbers("knots"), env.numbers("control_points"), env.numbers("at"));
+        let (k, c, t) = (
+            env.numbers("knots"),
+            env.numbers("control_points"),
+            env.numbers("at"),
+        );
         let p = degree_of(env.get("degree"));
         let d = dimension(env.get("control_points"));
         let (at, knots) = (len(env.get("at")), len(env.get("knots")));
@@ -43,7 +47,10 @@ impl<T: Number> Kind for BsplineEval<T> {
         let ops = at * (2.0 * q * q * (d + 1.0) + knots.log2().max(1.0))
             + 4.0 * (knots + len(env.get("control_points")) * d);
         let field = if at > q { "at" } else { "degree" };
-        Some((ops * env.arith().operation(bits) + k.and(c).and(t).reading, field))
+        Some((
+            ops * env.arith().operation(bits) + k.and(c).and(t).reading,
+            field,
+        ))
     }
 
     fn solve(self, _: &Context) -> Result<Value, Error> {
@@ -53,7 +60,10 @@ impl<T: Number> Kind for BsplineEval<T> {
             .0
             .iter()
             .enumerate()
-            .map(|(i, t)| f.eval(t).map_err(|e| Error::new(format!("at[{i}]"), e.message)))
+            .map(|(i, t)| {
+                f.eval(t)
+                    .map_err(|e| Error::new(format!("at[{i}]"), e.message))
+            })
             .collect::<Result<Vec<Point<T>>, Error>>()?;
         write(&Answer {
             kind: "bspline-eval",

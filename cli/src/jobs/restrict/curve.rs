@@ -2,7 +2,9 @@
 
 use super::{specialised, Number, Restricted};
 use crate::jobs::args::MethodChoice;
-use crate::jobs::cost::{curve_operations, dimension, grown_bits, len, polar_bits, Calibration, Env};
+use crate::jobs::cost::{
+    curve_operations, dimension, grown_bits, len, polar_bits, Calibration, Env,
+};
 use crate::jobs::kind::{Context, Kind};
 use crate::jobs::read::{Numbers, Points, Reading};
 use crate::jobs::write::{write, Out};

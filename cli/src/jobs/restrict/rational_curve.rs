@@ -2,7 +2,7 @@
 //! rational Bézier form, from the blossoms of the homogeneous curve (the inverse formula (22) of
 //! seed 004), computed exactly (a weight that is exactly zero is refused) and rounded once.
 
-use super::{exact, exact_points, rounded, check_rounded_weights, Number, Restricted};
+use super::{check_rounded_weights, exact, exact_points, rounded, Number, Restricted};
 use crate::jobs::args::MethodChoice;
 use crate::jobs::cost::{curve_operations, degree_of, dimension, grown_bits, len, Arith, Env};
 use crate::jobs::kind::{Context, Kind};
@@ -38,7 +38,11 @@ struct Answer<T: crate::jobs::write::Write> {
 impl<T: Number> Kind for RationalCurve<Written<T>> {
     fn estimate(env: &Env) -> Option<(f64, &'static str)> {
         let env = env.deciding_exactly();
-        let (nu, de, i) = (env.numbers("numerator"), env.numbers("denominator"), env.numbers("interval"));
+        let (nu, de, i) = (
+            env.numbers("numerator"),
+            env.numbers("denominator"),
+            env.numbers("interval"),
+        );
         let longest = len(env.get("numerator")).max(len(env.get("denominator")));
         let n = degree_of(env.get("degree")).max((longest - 1.0).max(0.0));
         let d = dimension(env.get("numerator")) + 1.0;
@@ -67,7 +71,12 @@ impl<T: Number> Kind for RationalCurve<Written<T>> {
         let weights = rounded::<T>(bezier.weights());
         // The weights are non-zero exactly (checked before); one that rounds to zero would make
         // its rounded control point meaningless (checked first: that point may overflow).
-        check_rounded_weights(weights.iter().enumerate().map(|(k, w)| (format!("weights[{k}]"), w)))?;
+        check_rounded_weights(
+            weights
+                .iter()
+                .enumerate()
+                .map(|(k, w)| (format!("weights[{k}]"), w)),
+        )?;
         write(&Answer {
             curve: Restricted {
                 kind: "rational-curve",

@@ -91,8 +91,18 @@ pub fn grids<T: Reading>(
 }
 
 /// The estimate of a rational surface of degree `degree` in `ops` operations.
-pub fn estimate(env: &Env, domain: &str, degree: f64, ops: f64, factor: [f64; 2]) -> (f64, &'static str) {
-    let (nu, de, dom) = (env.numbers("numerator"), env.numbers("denominator"), env.numbers(domain));
+pub fn estimate(
+    env: &Env,
+    domain: &str,
+    degree: f64,
+    ops: f64,
+    factor: [f64; 2],
+) -> (f64, &'static str) {
+    let (nu, de, dom) = (
+        env.numbers("numerator"),
+        env.numbers("denominator"),
+        env.numbers(domain),
+    );
     let bits = grown_bits(nu.max_bits.max(de.max_bits), dom.max_bits, degree);
     let work = ops * Arith { exact: true }.operation(bits) * env.factor(factor);
     (work + nu.and(de).and(dom).reading, "numerator")
@@ -101,7 +111,11 @@ pub fn estimate(env: &Env, domain: &str, degree: f64, ops: f64, factor: [f64; 2]
 /// The grids' sizes: the rows, the columns, and the dimension of the homogeneous points.
 pub fn sizes(env: &Env) -> (f64, f64, f64) {
     let (p, w) = (env.get("numerator"), env.get("denominator"));
-    (len(p).max(len(w)), first_len(p).max(first_len(w)), dimension(p) + 1.0)
+    (
+        len(p).max(len(w)),
+        first_len(p).max(first_len(w)),
+        dimension(p) + 1.0,
+    )
 }
 
 impl<T: Number> Kind for RationalTensor<Written<T>> {
@@ -122,18 +136,25 @@ impl<T: Number> Kind for RationalTensor<Written<T>> {
 
     fn solve(self, _: &Context) -> Result<Value, Error> {
         let (p, w) = grids(&self.numerator.0, &self.denominator.0)?;
-        let rect = exact(&self.rectangle.0).try_into().unwrap_or_else(|_| unreachable!());
+        let rect = exact(&self.rectangle.0)
+            .try_into()
+            .unwrap_or_else(|_| unreachable!());
         let surface = RationalSurface::new(&p, &w)?;
         let degree = self.degree.map_or(surface.degree(), |d| (d.0, d.1));
         let patch = surface.tensor(&rect, Some(degree))?;
         let weights: Vec<Vec<T>> = patch.weight_rows().map(|row| rounded(row)).collect();
         check_rounded_weights(weights.iter().enumerate().flat_map(|(i, row)| {
-            row.iter().enumerate().map(move |(j, w)| (format!("weights[{i}][{j}]"), w))
+            row.iter()
+                .enumerate()
+                .map(move |(j, w)| (format!("weights[{i}][{j}]"), w))
         }))?;
         write(&Answer {
             kind: "rational-tensor",
             degree: [degree.0, degree.1],
-            control_points: Out(patch.rows().map(|row| row.iter().map(|p| rounded(p)).collect()).collect()),
+            control_points: Out(patch
+                .rows()
+                .map(|row| row.iter().map(|p| rounded(p)).collect())
+                .collect()),
             weights: Out(weights),
         })
     }

@@ -34,7 +34,11 @@ impl<T: Number> Kind for RationalTriangle<Written<T>> {
         let env = env.deciding_exactly();
         let (rows, columns, d) = sizes(&env);
         let (n, m) = ((rows - 1.0).max(0.0), (columns - 1.0).max(0.0));
-        let total = if env.get("total_degree").is_some_and(|v| !v.is_null()) { n } else { n + m };
+        let total = if env.get("total_degree").is_some_and(|v| !v.is_null()) {
+            n
+        } else {
+            n + m
+        };
         let big_n = degree_of(env.get("degree")).max(total);
         let polarisation = MethodChoice::Library(Method::Polarisation);
         let ops = triangle_operations(polarisation, big_n, rows * columns.max(1.0), d);
@@ -46,7 +50,8 @@ impl<T: Number> Kind for RationalTriangle<Written<T>> {
             Some(Degree(big_n)) => {
                 triangular(&self.numerator.0, "numerator", big_n, "point")?;
                 triangular(&self.denominator.0, "denominator", big_n, "number")?;
-                let p: Vec<Vec<Point<_>>> = self.numerator.0.iter().map(|r| exact_points(r)).collect();
+                let p: Vec<Vec<Point<_>>> =
+                    self.numerator.0.iter().map(|r| exact_points(r)).collect();
                 let w: Vec<Vec<_>> = self.denominator.0.iter().map(|r| exact(r)).collect();
                 RationalPowerTriangle::new(&p, &w)?
             }
@@ -60,7 +65,10 @@ impl<T: Number> Kind for RationalTriangle<Written<T>> {
         let points: Vec<Point<T>> = patch.points().iter().map(|p| rounded(p)).collect();
         let weights: Vec<T> = rounded(patch.weights());
         check_rounded_weights(
-            weights.iter().enumerate().map(|(k, w)| (format!("control_points[{k}].weight"), w)),
+            weights
+                .iter()
+                .enumerate()
+                .map(|(k, w)| (format!("control_points[{k}].weight"), w)),
         )?;
         let net = TriangularPatch::new(patch.degree(), points)?;
         write(&super::triangle::TriangleAnswer {

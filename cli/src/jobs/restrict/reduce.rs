@@ -41,7 +41,8 @@ impl<T: Number> Kind for Reduce<T> {
         // about 4 n log2 n bits.
         let exact = Arith { exact: true };
         let (k, l) = (n + 1.0, m + 1.0);
-        let matrices = 4.0 * (k * k * k + l * l * l) * exact.operation(grown_bits(0.0, 0.0, 4.0 * n));
+        let matrices =
+            4.0 * (k * k * k + l * l * l) * exact.operation(grown_bits(0.0, 0.0, 4.0 * n));
         let bits = grown_bits(c.max_bits, 0.0, 4.0 * n);
         let application = 8.0 * k * l * d * env.arith().operation(bits);
         let work = (matrices + application) * env.factor([1.7, 0.35]);
@@ -65,7 +66,10 @@ impl<T: Number> Kind for Reduce<T> {
             other => {
                 return Err(Error::new(
                     "method",
-                    format!("expected a string, found {}", crate::number::json_type(other)),
+                    format!(
+                        "expected a string, found {}",
+                        crate::number::json_type(other)
+                    ),
                 ))
             }
         };

@@ -4,8 +4,8 @@
 //! none: [`BUILT_IN`] is then `false` and `blossom restrict` refuses `--method specialised`
 //! (exit 2, before reading any input) with [`NOT_BUILT_IN`].
 
-use blossom::{BezierCurve, Error, PowerCurve, PowerSurface, PowerTriangle, TensorPatch};
 use blossom::TriangularPatch;
+use blossom::{BezierCurve, Error, PowerCurve, PowerSurface, PowerTriangle, TensorPatch};
 
 /// Whether this binary carries specialised evaluators at all.
 pub const BUILT_IN: bool = cfg!(feature = "carried-grid");
