@@ -50,12 +50,15 @@ struct Answer<T: crate::jobs::write::Write> {
     weights: Out<Vec<Vec<T>>>,
 }
 
+/// The exact grids of a rational surface: the numerator's points and the denominator's numbers.
+pub type Grids = (Vec<Vec<Point<Rational>>>, Vec<Vec<Rational>>);
+
 /// The numerator's and denominator's grids of a rational surface, exactly, padded with zeros
 /// to one shape (the larger size in each variable), after checking their shapes.
 pub fn grids<T: Reading>(
     numerator: &[Vec<Point<T>>],
     denominator: &[Vec<T>],
-) -> Result<(Vec<Vec<Point<Rational>>>, Vec<Vec<Rational>>), Error> {
+) -> Result<Grids, Error> {
     crate::jobs::read::rectangular(numerator, "numerator", "point")?;
     crate::jobs::read::rectangular(denominator, "denominator", "number")?;
     let rows = numerator.len().max(denominator.len());
