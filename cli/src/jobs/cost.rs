@@ -18,7 +18,7 @@
 //!
 //! # The two checks
 //!
-//! 1. **Up front** ([`up_front`]), from the sizes only, before the numbers are read: the
+//! 1. **Up front** ([`up_front`](super::budget::up_front)), from the sizes only, before the numbers are read: the
 //!    estimate below, refused when it is over [`UP_FRONT_FACTOR`] times the limit. The factor
 //!    is calibrated with the sweep (`cli_budget::budget_sweep`, which records the largest ratio
 //!    of estimate to measured time) so that no job of 0.5 s or less is refused by it, while

@@ -6,12 +6,12 @@
 //!   answer as **one line** of compact JSON followed by a newline, exit 0: the job's kind is
 //!   looked up in the list of kinds ([`kinds`]), the job read into its type ([`read`]; a field
 //!   its kind does not read is refused), computed ([`kind::Kind::solve`], within the budget:
-//!   [`budget`], [`cost`]) and its answer written ([`write`]);
+//!   [`budget`], [`cost`]) and its answer written ([`write`](mod@write));
 //! * `blossom check`, `figures`, `expand` and `completions` as [`args`] describes.
 //!
 //! The files import in one direction: this module (the subcommands) and [`budget`] over the
 //! list of kinds ([`kinds`]), over the kinds' files ([`restrict`], [`intersect`], [`region`]),
-//! over what they share: reading ([`read`]), writing ([`write`]), the kind's trait ([`kind`]),
+//! over what they share: reading ([`read`]), writing ([`write`](mod@write)), the kind's trait ([`kind`]),
 //! the cost model ([`cost`]) and the command line's types ([`args`]).
 //!
 //! Every failure is one line `error: FIELD: message` on standard error, where FIELD is the

@@ -1,5 +1,5 @@
 //! Writing answers: every answer is a struct deriving `Serialize`, turned into JSON by
-//! [`write`], which names the path of a number that cannot be written (`control_points[2][0]:
+//! [`write()`], which names the path of a number that cannot be written (`control_points[2][0]:
 //! the result inf is not finite ...`, `serde_path_to_error`). Numbers of the arithmetic go
 //! through [`Out`] ([`Write`]: exact numbers as strings in lowest terms, doubles as JSON
 //! numbers, bounded doubles marked for the answer's `"error_bound"`); certified parameters are

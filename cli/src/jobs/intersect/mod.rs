@@ -4,7 +4,7 @@
 //! methods. The arithmetic names only how the input numbers are read: under `exact` as
 //! written, under `f64` each rounded to the nearest double first; either way the answer is the
 //! exact one for the numbers so read, every parameter written as a PARAM
-//! ([`Param`](super::write::Param)).
+//! ([`super::write::Param`]).
 //!
 //! # Limits
 //!

@@ -1,5 +1,5 @@
 //! `"kind": "bezier-tensor"`: the Bézier patch over [0, 1]^2 restricted to [a, b] x [c, d],
-//! Q[nu][mu] = b[a^(n-nu), b^nu; c^(m-mu), d^mu]. The methods as for `bezier-curve`: `bulk` on
+//! Q\[nu\]\[mu\] = b\[a^(n-nu), b^nu; c^(m-mu), d^mu\]. The methods as for `bezier-curve`: `bulk` on
 //! the net, `pyramid` on its blossom, `polarisation` from samples (two passes of (22) of seed
 //! 004), `specialised` carried, the others through the exact power form.
 
