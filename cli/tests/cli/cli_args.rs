@@ -182,15 +182,24 @@ fn completions_for_each_shell() {
     for shell in ["bash", "zsh", "fish", "elvish", "powershell"] {
         let out = run(&["completions", shell]);
         assert_eq!(out.code, 0, "{shell}: {}", out.stderr);
-        assert!(out.stdout.contains("restrict") && out.stdout.contains("--max-work"), "{shell}");
+        assert!(
+            out.stdout.contains("restrict") && out.stdout.contains("max-work"),
+            "{shell}"
+        );
     }
     let out = run(&["completions", "bsh"]);
     assert_eq!(out.code, 2);
     assert!(
-        out.stderr.starts_with("error: bsh: unknown shell (did you mean \"bash\"?)"),
+        out.stderr
+            .starts_with("error: bsh: unknown shell (did you mean \"bash\"?)"),
         "{}",
         out.stderr
     );
     let out = run(&["completions"]);
-    assert!(out.stderr.starts_with("error: completions: expected one shell"), "{}", out.stderr);
+    assert!(
+        out.stderr
+            .starts_with("error: completions: expected one shell"),
+        "{}",
+        out.stderr
+    );
 }

@@ -357,3 +357,29 @@ fn every_region_answer_has_svg_that_reads_back() {
     );
     assert!(out["svg"].is_null(), "{out}");
 }
+
+#[test]
+fn region_help_says_how_numbers_are_read_and_lists_the_new_forms() {
+    let help = super::binary::run_binary(&["region", "--help"], b"").stdout;
+    let help = help.split_whitespace().collect::<Vec<_>>().join(" ");
+    for needle in [
+        "A JSON number with a fraction part or an exponent (2.7) is refused under the default --arithmetic exact",
+        "\"kind\": \"simplify\"",
+        "{\"loops\": []} is the empty region",
+        "{\"path\":",
+        "\"svg\"",
+    ] {
+        assert!(help.contains(needle), "{needle}: {help}");
+    }
+    // And it is so: 2.7 refused, "2.7" read.
+    let job = |x: Value| json!({"kind": "winding", "region": {"loops": [square(0, 0, 3)]}, "points": [[x, 1]]});
+    let e = error(&[], &job(json!(2.7)).to_string());
+    assert!(
+        e.starts_with("error: points[0][0]: the JSON number 2.7"),
+        "{e}"
+    );
+    assert_eq!(
+        answer(&[], &job(json!("2.7")))["points"][0]["position"],
+        "inside"
+    );
+}
