@@ -4,27 +4,33 @@
 //! The input is `{"job": JOB, "answer": ANSWER}`. The reference is the exact answer for the
 //! doubles the other program had: every number of JOB is read as its nearest double (the
 //! reading of `--arithmetic f64`, [`f64_from_json`]) and that double is then taken exactly
-//! ([`exact_doubles`]); the job so rewritten goes through the work budget (`budget::budgeted`)
-//! and the exact solver of `blossom restrict` (`jobs::solve` in [`Rational`], its default
-//! method `bulk`). The
+//! ([`exact_doubles`]); the job so rewritten goes through the work budget and the exact solver
+//! of `blossom restrict` (`jobs::solve` in [`Rational`], its default method `bulk`). The
 //! answer's `control_points` are walked against the exact ones (`walk`) and the points
 //! compared by [`blossom::exact_error`], whose definitions the output follows.
 //!
-//! A field of the document other than `job` and `answer`, or one that JOB's kind does not read
-//! ([`check_fields`]), is refused before anything else is read; the fields of ANSWER other than
+//! A field of the document other than `job` and `answer`, or one that JOB's kind does not read,
+//! is refused before anything else is read; the fields of ANSWER other than
 //! `control_points` (and those of a triangle's entries other than `a`, `b`, `c`, `point`) are
 //! ignored, as the contract says: an answer is another program's output and may carry more.
 
-use crate::jobs::args::{Arithmetic, CheckOptions, MethodChoice};
-use crate::jobs::job::{check_fields, expect_fields};
-use crate::jobs::{budget, solve};
+use crate::names::expect_fields;
 use crate::number::{f64_from_json, f64_to_json, format_rational, json_type, rational_from_json};
 use blossom::{exact_error, rational_to_f64, Error, Point, Rational};
 use serde_json::{json, Map, Value};
 
 /// The report of `blossom check` on `document` (`{"job": ..., "answer": ...}`): one line of
 /// JSON, without the newline.
-pub fn check_command(document: &Value, options: &CheckOptions) -> Result<String, Error> {
+///
+/// `shape` checks a job's kind and fields (the names of all of them first) without reading its
+/// numbers; `exact` computes its exact answer within the work budget (both are `blossom
+/// restrict`'s, passed in by the command line).
+pub fn check_command(
+    document: &Value,
+    per_point: bool,
+    shape: &dyn Fn(&Value) -> Result<(), Error>,
+    exact: &dyn Fn(&Value) -> Result<Value, Error>,
+) -> Result<String, Error> {
     let Value::Object(top) = document else {
         return Err(Error::new(
             "input",
@@ -38,7 +44,7 @@ pub fn check_command(document: &Value, options: &CheckOptions) -> Result<String,
     let job = top
         .get("job")
         .ok_or_else(|| Error::new("job", "missing field"))?;
-    check_fields(job).map_err(in_job)?;
+    shape(job).map_err(in_job)?;
     let answer = top
         .get("answer")
         .ok_or_else(|| Error::new("answer", "missing field"))?;
@@ -56,13 +62,7 @@ pub fn check_command(document: &Value, options: &CheckOptions) -> Result<String,
         .ok_or_else(|| Error::new("answer.control_points", "missing field"))?;
 
     let job = exact_doubles(job, "job")?;
-    // The exact reference by the default method of `blossom restrict`, the engine (every method
-    // gives the identical exact answer).
-    let method = MethodChoice::default();
-    let exact = budget::budgeted(&job, method, Arithmetic::Exact, &options.limits, || {
-        solve::<Rational>(&job, method)
-    })
-    .map_err(in_job)?;
+    let exact = exact(&job).map_err(in_job)?;
     let Some(exact_points) = exact.get("control_points") else {
         return Err(Error::new(
             "job.kind",
@@ -92,7 +92,7 @@ pub fn check_command(document: &Value, options: &CheckOptions) -> Result<String,
     out.insert("max_rel_error".into(), exact_json(&error.max_rel)?);
     out.insert("max_rel_error_f64".into(), nearest_json(&error.max_rel));
     out.insert("max_rel_at".into(), at(error.max_rel_at));
-    if options.per_point {
+    if per_point {
         let per_point = error
             .per_point
             .iter()

@@ -5,6 +5,7 @@
 //! * [`fuzzing`]: the fuzz targets of `fuzz/` as functions of bytes, replayed by the tests;
 //! * [`jobs`]: the command line and the JSON restriction jobs of the CLI contract
 //!   (`docs/cli.md`);
+//! * [`names`]: the nearest accepted name to a typing slip, lists of names, unknown fields;
 //! * [`number`]: the JSON number layer (exact reading of decimals and fractions, output);
 //! * [`verify`]: `blossom verify`, the report that re-derives the papers' tables and examples;
 //! * [`proofs`]: symbolic proofs that the library's restriction methods agree, as tables;
@@ -16,6 +17,7 @@ pub mod check;
 pub mod figures;
 pub mod fuzzing;
 pub mod jobs;
+pub mod names;
 pub mod number;
 pub mod proofs;
 pub mod specialised;

@@ -2,13 +2,17 @@
 //!
 //! * `blossom` and `blossom verify [--json] [--verbose]` print [`crate::verify::run_report`]
 //!   and exit 0 when it is all reproduced or explained, 1 otherwise;
-//! * `blossom intersect` and `blossom region [--input FILE] [--arithmetic exact|f64]
-//!   [--max-work UNITS] [--max-input BYTES]` read one job and print its certified answer
-//!   ([`intersect_jobs`], [`region`]), one line of JSON;
-//! * `blossom restrict [--input FILE] [--arithmetic exact|f64] [--method METHOD]` reads one job
-//!   ([`job`]; a field its kind does not read is refused, [`job::check_fields`]), computes it
-//!   ([`answer`]; by default with `bulk`, [`args::MethodChoice::default`]) and prints the answer
-//!   as **one line** of compact JSON followed by a newline, exit 0.
+//! * `blossom restrict`, `blossom intersect` and `blossom region` read one job and print its
+//!   answer as **one line** of compact JSON followed by a newline, exit 0: the job's kind is
+//!   looked up in the list of kinds ([`kinds`]), the job read into its type ([`read`]; a field
+//!   its kind does not read is refused), computed ([`kind::Kind::solve`], within the budget:
+//!   [`budget`], [`cost`]) and its answer written ([`write`](mod@write));
+//! * `blossom check`, `figures`, `expand` and `completions` as [`args`] describes.
+//!
+//! The files import in one direction: this module (the subcommands) and [`budget`] over the
+//! list of kinds ([`kinds`]), over the kinds' files ([`restrict`], [`intersect`], [`region`]),
+//! over what they share: reading ([`read`]), writing ([`write`](mod@write)), the kind's trait ([`kind`]),
+//! the cost model ([`cost`]) and the command line's types ([`args`]).
 //!
 //! Every failure is one line `error: FIELD: message` on standard error, where FIELD is the
 //! offending argument (`--method`) or the path of the offending JSON field (`coefficients[2]`,
@@ -20,22 +24,26 @@
 //! [`main`] runs everything under [`std::panic::catch_unwind`] with a silent panic hook and
 //! turns a panic into `error: internal: ...` with exit code 2.
 
-pub mod answer;
 pub mod args;
 pub mod budget;
-pub mod intersect_jobs;
-pub mod job;
-pub mod names;
-pub mod patch_jobs;
+pub mod cost;
+pub mod intersect;
+pub mod kind;
+pub mod kinds;
+pub mod read;
 pub mod region;
-pub mod region_answer;
-pub mod region_shapes;
-pub mod specialised;
-pub mod spline_jobs;
+pub mod restrict;
+pub mod write;
 
-use crate::number::JsonNumber;
+/// The jobs of `blossom intersect` under their former name.
+pub use intersect as intersect_jobs;
+
+use crate::number::take_error_bound;
 use args::{Arithmetic, Command, MethodChoice, RestrictOptions};
 use blossom::{BoundedF64, Error, Rational};
+use kinds::{job_and_kind, Context, Job, Subcommand};
+use read::Text;
+use restrict::specialised;
 use serde_json::Value;
 use std::ffi::OsString;
 use std::io::{Read, Write};
@@ -64,17 +72,21 @@ impl Outcome {
         }
     }
 
+    fn of(result: Result<String, Error>) -> Self {
+        result.map_or_else(|e| Outcome::failure(&e), Outcome::success)
+    }
+
     fn failure(error: &Error) -> Self {
         Outcome {
             code: EXIT_BAD_INPUT,
             stdout: String::new(),
-            stderr: format!("error: {}\n", one_line(&error.to_string())),
+            stderr: format!("error: {}\n", escaped(&error.to_string())),
         }
     }
 }
 
 /// `text` with control characters escaped (`\n`, `\u{1b}`), so that it prints as one line.
-fn one_line(text: &str) -> String {
+fn escaped(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
         if c.is_control() {
@@ -99,7 +111,17 @@ fn with_newline(mut text: String) -> String {
 pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
     match args::parse(args) {
         Err(error) => Outcome::failure(&error),
-        Ok(Command::Help(text)) => Outcome::success(text.to_string()),
+        Ok(Command::Help(text)) => Outcome::success(
+            [
+                ("  %RESTRICT%\n", Subcommand::Restrict),
+                ("  %INTERSECT%\n", Subcommand::Intersect),
+                ("  %REGION%\n", Subcommand::Region),
+            ]
+            .iter()
+            .fold(text.to_string(), |text, (mark, sub)| {
+                text.replace(mark, &kinds::help_list(*sub))
+            }),
+        ),
         Ok(Command::Version) => {
             Outcome::success(format!("blossom {}\n", env!("CARGO_PKG_VERSION")))
         }
@@ -111,54 +133,62 @@ pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
                 stderr: String::new(),
             }
         }
-        Ok(Command::Restrict(options)) => match restrict(&options, stdin) {
-            Ok(text) => Outcome::success(text),
-            Err(error) => Outcome::failure(&error),
-        },
-        Ok(Command::Intersect(options)) => certified(&options, stdin, intersect_jobs::answer),
-        Ok(Command::Region(options)) => certified(&options, stdin, region::answer),
+        Ok(Command::Restrict(options)) => Outcome::of(restrict(&options, stdin)),
+        Ok(Command::Intersect(options)) => certified(&options, Subcommand::Intersect, stdin),
+        Ok(Command::Region(options)) => certified(&options, Subcommand::Region, stdin),
         Ok(Command::Check(options)) => {
-            match read_input(options.input.as_deref(), &options.limits, stdin)
-                .and_then(|bytes| parse_json(&bytes))
-                .and_then(|document| crate::check::check_command(&document, &options))
-            {
-                Ok(text) => Outcome::success(with_newline(text)),
-                Err(error) => Outcome::failure(&error),
-            }
+            let context = Context {
+                method: MethodChoice::default(),
+                arithmetic: Arithmetic::Exact,
+                limits: options.limits,
+            };
+            let exact = |job: &Value| solve(job, &context);
+            Outcome::of(
+                read_input(options.input.as_deref(), &options.limits, stdin)
+                    .and_then(|bytes| parse_json(&bytes))
+                    .and_then(|document| {
+                        crate::check::check_command(&document, options.per_point, &shape, &exact)
+                    })
+                    .map(with_newline),
+            )
         }
-        Ok(Command::Figures { out }) => match crate::figures::write_figures(&out) {
-            Ok(written) => Outcome::success(
+        Ok(Command::Figures { out }) => {
+            Outcome::of(crate::figures::write_figures(&out).map(|written| {
                 written
                     .iter()
                     .map(|path| format!("{}\n", path.display()))
-                    .collect(),
-            ),
-            Err(error) => Outcome::failure(&error),
-        },
-        Ok(Command::Expand(words)) => match crate::specialised::expand_command(&words) {
-            Ok(text) => Outcome::success(with_newline(text)),
-            Err(error) => Outcome::failure(&error),
-        },
+                    .collect()
+            }))
+        }
+        Ok(Command::Completions(shell)) => Outcome::of(args::completions(&shell)),
+        Ok(Command::Expand(words)) => {
+            Outcome::of(crate::specialised::expand_command(&words).map(with_newline))
+        }
     }
 }
 
-/// The answer of a job of `blossom intersect` or `blossom region` (`answer` reads and
-/// computes one job), as one line of JSON, or the failure.
+/// The answer of a job of `blossom intersect` or `blossom region`, as one line of JSON, or the
+/// failure.
 fn certified(
     options: &args::IntersectOptions,
+    subcommand: Subcommand,
     stdin: &mut dyn Read,
-    answer: fn(&Value, Arithmetic, &budget::Limits) -> Result<Value, Error>,
 ) -> Outcome {
-    match read_input(options.input.as_deref(), &options.limits, stdin)
+    let context = Context {
+        method: MethodChoice::default(),
+        arithmetic: options.arithmetic,
+        limits: options.limits,
+    };
+    let answer = read_input(options.input.as_deref(), &options.limits, stdin)
         .and_then(|bytes| parse_json(&bytes))
-        .and_then(|document| answer(&document, options.arithmetic, &options.limits))
-        .and_then(|answer| {
-            serde_json::to_string(&answer)
-                .map_err(|e| Error::new("internal", format!("cannot write the answer: {e}")))
-        }) {
-        Ok(text) => Outcome::success(with_newline(text)),
-        Err(error) => Outcome::failure(&error),
-    }
+        .and_then(|document| {
+            let (job, kind) = job_and_kind(&document, subcommand)?;
+            match options.arithmetic {
+                Arithmetic::Exact => Job::<Rational>::read(kind.name, job)?.solve(&context),
+                Arithmetic::F64 => Job::<BoundedF64>::read(kind.name, job)?.solve(&context),
+            }
+        });
+    Outcome::of(answer.and_then(|answer| one_line(&answer)))
 }
 
 /// `blossom restrict`: the answer's text, one line of JSON and a newline.
@@ -168,42 +198,64 @@ fn restrict(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<String, E
     }
     let bytes = read_input(options.input.as_deref(), &options.limits, stdin)?;
     let document = parse_json(&bytes)?;
-    job::check_fields(&document)?;
-    let answer = budget::budgeted(
-        &document,
-        options.method,
-        options.arithmetic,
-        &options.limits,
-        || match options.arithmetic {
-            Arithmetic::Exact => solve::<Rational>(&document, options.method),
-            Arithmetic::F64 => solve::<BoundedF64>(&document, options.method).map(with_error_bound),
-        },
-    )?;
-    let mut text = serde_json::to_string(&answer)
-        .map_err(|e| Error::new("internal", format!("cannot write the answer: {e}")))?;
-    text.push('\n');
-    Ok(text)
+    let context = Context {
+        method: options.method,
+        arithmetic: options.arithmetic,
+        limits: options.limits,
+    };
+    one_line(&solve(&document, &context)?)
 }
 
-/// An `f64` answer computed in [`BoundedF64`] as plain JSON numbers, with the field
-/// `"error_bound"`: the largest bound over the answer's numbers on their distance to the exact
-/// answer for the same input doubles (`null` when some number has no finite bound).
-fn with_error_bound(mut answer: Value) -> Value {
-    let bound = crate::number::take_error_bound(&mut answer);
-    if let Value::Object(map) = &mut answer {
-        let bound = bound
-            .and_then(serde_json::Number::from_f64)
-            .map_or(Value::Null, Value::Number);
-        map.insert("error_bound".into(), bound);
-    }
-    answer
+/// The answer of the `restrict` job `document` within the budget: its shape and fields are
+/// checked first (its numbers not yet read), then its estimate ([`budget::up_front`]), then it
+/// is read and computed under the meter. Under `f64` the answer has `"error_bound"`: the
+/// largest bound over its numbers on their distance to the exact answer for the same input
+/// doubles (`null` when some number has no finite bound).
+pub fn solve(document: &Value, context: &Context) -> Result<Value, Error> {
+    shape(document)?;
+    let (job, kind) = job_and_kind(document, Subcommand::Restrict)?;
+    let estimate = budget::up_front(
+        document,
+        context.method,
+        context.arithmetic,
+        &context.limits,
+    )?;
+    budget::metered(&context.limits, &estimate.field, || {
+        match context.arithmetic {
+            Arithmetic::Exact => Job::<Rational>::read(kind.name, job)?.solve(context),
+            Arithmetic::F64 => {
+                let mut answer = Job::<BoundedF64>::read(kind.name, job)?.solve(context)?;
+                let bound = take_error_bound(&mut answer)
+                    .and_then(serde_json::Number::from_f64)
+                    .map_or(Value::Null, Value::Number);
+                if let Value::Object(map) = &mut answer {
+                    map.insert("error_bound".into(), bound);
+                }
+                Ok(answer)
+            }
+        }
+    })
+}
+
+/// Checks the kind and the fields of the `restrict` job `document` (the names of all of them
+/// first), its numbers not yet read.
+pub fn shape(document: &Value) -> Result<(), Error> {
+    let (job, kind) = job_and_kind(document, Subcommand::Restrict)?;
+    Job::<Text>::read(kind.name, job).map(drop)
+}
+
+/// `answer` as one line of JSON and a newline.
+fn one_line(answer: &Value) -> Result<String, Error> {
+    serde_json::to_string(answer)
+        .map(|text| text + "\n")
+        .map_err(|e| Error::new("internal", format!("cannot write the answer: {e}")))
 }
 
 /// The bytes of the job: the `--input` file, or standard input when `input` is `None`, at most
 /// `limits.max_input` of them (a longer input is refused, never truncated).
 pub(crate) fn read_input(
     input: Option<&std::path::Path>,
-    limits: &budget::Limits,
+    limits: &cost::Limits,
     stdin: &mut dyn Read,
 ) -> Result<Vec<u8>, Error> {
     let limit = limits.max_input;
@@ -258,29 +310,6 @@ pub(crate) fn parse_json(bytes: &[u8]) -> Result<Value, Error> {
             ),
         )
     })
-}
-
-/// Reads, computes and writes the job in `document` in the arithmetic `T`. The callers refuse
-/// unknown fields first ([`job::check_fields`]), before the budget.
-pub(crate) fn solve<T: JsonNumber + blossom::Field>(
-    document: &Value,
-    method: MethodChoice,
-) -> Result<Value, Error> {
-    if let Some((job, kind)) = spline_jobs::recognise(document) {
-        return spline_jobs::solve::<T>(job, kind, method);
-    }
-    if let Some((job, kind)) = patch_jobs::recognise(document) {
-        return patch_jobs::solve::<T>(job, kind, method);
-    }
-    let job = job::parse_job::<T>(document)?;
-    let answer = match method {
-        MethodChoice::Library(method) => answer::compute(&job, method),
-        MethodChoice::Specialised => match specialised::specialised(&job) {
-            Some(result) => result?,
-            None => return Err(Error::new("--method", specialised::NOT_BUILT_IN)),
-        },
-    };
-    answer::to_json(&answer)
 }
 
 /// Where the panic hook leaves the message of a panic for [`main`].
@@ -347,7 +376,7 @@ mod tests {
         assert_eq!(out.code, 2);
         assert!(out.stdout.is_empty());
         assert_eq!(out.stderr.lines().count(), 1, "{}", out.stderr);
-        assert_eq!(one_line("a\nb\u{1b}"), "a\\nb\\u{1b}");
+        assert_eq!(escaped("a\nb\u{1b}"), "a\\nb\\u{1b}");
     }
 
     #[test]

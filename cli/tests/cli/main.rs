@@ -6,12 +6,15 @@ mod binary;
 #[path = "../../../tests/common/mod.rs"]
 mod common;
 
+mod cli_args;
 mod cli_budget;
 mod cli_check;
 mod cli_error_bounds;
 mod cli_intersect;
+mod cli_jobs;
 mod cli_patch_jobs;
 mod cli_region;
+mod cli_region_forms;
 mod cli_restrict;
 mod cli_spline_jobs;
 mod figures;

@@ -1,8 +1,39 @@
 //! Names a user types and the messages that answer a wrong one: the accepted name nearest to a
 //! typing slip (`did you mean "restrict"?`), lists of names (`a, b or c`) and quoting.
 //!
-//! One home for the command line ([`super::args`]: subcommands, options, methods, arithmetic)
-//! and the JSON jobs ([`super::job`]: kinds and field names).
+//! One home for the command line (`jobs::args`: subcommands, options, methods, arithmetic),
+//! the JSON jobs (`jobs::read`: kinds and field names) and `blossom check`.
+
+use blossom::Error;
+use serde_json::{Map, Value};
+
+/// Refuses a field of `object` (the object at `path`, `""` for the top level) that is not one
+/// of `accepted`: `error: PATH.NAME: unknown field "NAME" (did you mean "..."?)`, or with the
+/// accepted names listed when none is near. Fields are checked in the object's order.
+pub fn expect_fields(
+    object: &Map<String, Value>,
+    path: &str,
+    accepted: &[&str],
+) -> Result<(), Error> {
+    let Some(name) = object.keys().find(|k| !accepted.contains(&k.as_str())) else {
+        return Ok(());
+    };
+    let at = if path.is_empty() {
+        name.clone()
+    } else {
+        format!("{path}.{name}")
+    };
+    Err(Error::new(at, unknown_field(name, accepted)))
+}
+
+/// `unknown field "NAME" (did you mean "..."?)`, or with the accepted names listed.
+pub fn unknown_field(name: &str, accepted: &[&str]) -> String {
+    let hint = match did_you_mean(name, accepted) {
+        near if !near.is_empty() => near,
+        _ => format!(" (expected {})", listed(accepted)),
+    };
+    format!("unknown field {}{hint}", quoted(name))
+}
 
 /// `names` as `a, b or c`.
 pub fn listed(names: &[&str]) -> String {
@@ -85,6 +116,22 @@ mod tests {
         assert_eq!(edit_distance("pyramd", "pyramid"), 1);
         assert_eq!(edit_distance("pyarmid", "pyramid"), 1);
         assert_eq!(edit_distance("kitten", "sitting"), 3);
+    }
+
+    #[test]
+    fn expect_fields_names_the_path() {
+        let object = serde_json::json!({"s": 1, "tt": 2});
+        let Value::Object(object) = object else {
+            unreachable!()
+        };
+        assert!(expect_fields(&object, "x", &["s", "tt"]).is_ok());
+        let error = expect_fields(&object, "points[3]", &["s", "t"]).unwrap_err();
+        assert_eq!(
+            error.to_string(),
+            "points[3].tt: unknown field \"tt\" (did you mean \"t\"?)"
+        );
+        let error = expect_fields(&object, "", &["s"]).unwrap_err();
+        assert_eq!(error.to_string(), "tt: unknown field \"tt\" (expected s)");
     }
 
     #[test]

@@ -1,0 +1,196 @@
+//! The jobs of `blossom intersect` (the contract's section "Intersections and zeros"): zeros of
+//! a Bézier function ([`roots`]), the intersections of two curves ([`curve_curve`]) and of a
+//! curve with itself ([`self_intersections`]), every answer certified by the library's exact
+//! methods. The arithmetic names only how the input numbers are read: under `exact` as
+//! written, under `f64` each rounded to the nearest double first; either way the answer is the
+//! exact one for the numbers so read, every parameter written as a PARAM
+//! ([`super::write::Param`]).
+//!
+//! # Limits
+//!
+//! Exact intersection costs grow with the product of the degrees (the resultant of two curves
+//! of degrees n and m has degree n m) and with the bit length of the integers the exact
+//! methods compute with, so a job is refused when a curve's degree is over
+//! [`MAX_CURVE_DEGREE`] or a Bézier function's over [`MAX_FUNCTION_DEGREE`] (naming the
+//! field, before its numbers are read); then twice, as for `restrict`:
+//! 1. before computing, when its estimated work ([`blossom::budget::bezier_zeros_work`],
+//!    [`blossom::budget::curve_pair_work`]: the float filter runs first, and when it decides
+//!    only the two resultants and one Descartes test per crossing remain;
+//!    [`blossom::budget::self_intersection_work`]) is over [`UP_FRONT_FACTOR`] times
+//!    `--max-work` ([`within_budget`]), naming `control_points`, `curves` or `curve`;
+//! 2. while computing, under the work meter ([`super::cost::metered`]), which the exact
+//!    methods charge as they go.
+
+pub mod curve_curve;
+pub mod roots;
+pub mod self_intersections;
+
+use super::read::{counted, Count, Num, Reading};
+use super::write::{Double, Param};
+use blossom::{Error, Intersections, Rational};
+use serde::de::{self, SeqAccess, Visitor};
+use serde::{Deserialize, Deserializer, Serialize};
+use std::fmt;
+use std::marker::PhantomData;
+
+/// The largest degree of a curve of a `curve-curve` or `self` job. Below it the work budget
+/// decides: under the default `--max-work`, degree-20 pairs and loops are answered (the
+/// spec's minimum), higher degrees when their estimate and their metered work allow, and a
+/// curve of degree 41 or more is refused whatever the budget.
+pub const MAX_CURVE_DEGREE: usize = 40;
+
+/// The largest degree of the Bézier function of a `roots` job (then the work budget decides).
+pub const MAX_FUNCTION_DEGREE: usize = 200;
+
+/// A job whose estimated work is over this many times `--max-work` is refused before
+/// computing. The estimates are at most about twice the measured time where the limit lets
+/// jobs through (see [`blossom::budget`]), so no job of 0.5 s is refused by it under the
+/// default limit; the meter stops the ones it lets through that run longer.
+pub const UP_FRONT_FACTOR: u128 = 2;
+
+/// Refuses a job whose estimated work (units of about a nanosecond of a 2-core machine, see
+/// [`blossom::budget`]) is over [`UP_FRONT_FACTOR`] times the limit, naming `path`.
+pub fn within_budget(path: &str, work: u128, max_work: u64) -> Result<(), Error> {
+    if work <= UP_FRONT_FACTOR * u128::from(max_work) {
+        return Ok(());
+    }
+    Err(Error::new(
+        path,
+        format!(
+            "the job's work is estimated at {:.1e} units, over the limit of {:.1e} units \
+             (about a nanosecond each; raise it with --max-work if you mean it)",
+            work as f64, max_work as f64
+        ),
+    ))
+}
+
+/// `error` re-addressed to `path` (the library names its own arguments).
+pub fn at(path: &str, error: Error) -> Error {
+    Error::of(error.kind, path, error.message)
+}
+
+/// Which subcommand's curves: the degree limit and the words of its messages.
+pub trait Curves {
+    /// The largest degree.
+    const MAX: usize;
+    /// The subcommand, in messages (`blossom intersect`).
+    const SUBCOMMAND: &'static str;
+    /// What its shapes are (`curves are 2-D`).
+    const PLANAR: &'static str;
+    /// Whether fewer than 2 control points are refused here (else by the library).
+    const AT_LEAST_TWO: bool;
+}
+
+/// The curves of `blossom intersect`.
+#[derive(Clone, Copy, Debug)]
+pub struct Intersect;
+
+impl Curves for Intersect {
+    const MAX: usize = MAX_CURVE_DEGREE;
+    const SUBCOMMAND: &'static str = "blossom intersect";
+    const PLANAR: &'static str = "coordinates (curves are 2-D)";
+    const AT_LEAST_TWO: bool = true;
+}
+
+/// A point `[x, y]`, read exactly as the arithmetic `T` reads it (`C`: whose shapes).
+#[derive(Clone, Debug)]
+pub struct Point2<T, C>(pub [Rational; 2], PhantomData<(T, C)>);
+
+impl<'de, T: Reading, C: Curves> Deserialize<'de> for Point2<T, C> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let xy: Vec<Num<T>> = counted(d, Count::Exactly(2, C::PLANAR), "a point [x, y]")?;
+        Ok(Point2([xy[0].0.exact(), xy[1].0.exact()], PhantomData))
+    }
+}
+
+/// The control points of a 2-D curve of degree at most `C::MAX`, its number of points checked
+/// before its numbers are read.
+#[derive(Clone, Debug)]
+pub struct Curve2<T, C>(pub Vec<[Rational; 2]>, PhantomData<(T, C)>);
+
+impl<'de, T: Reading, C: Curves> Deserialize<'de> for Curve2<T, C> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V<T, C>(PhantomData<(T, C)>);
+        impl<'de, T: Reading, C: Curves> Visitor<'de> for V<T, C> {
+            type Value = Curve2<T, C>;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a curve (an array of 2-D control points)")
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
+                let found = seq.size_hint().unwrap_or(0);
+                if C::AT_LEAST_TWO && found < 2 {
+                    return Err(de::Error::custom(format!(
+                        "expected at least 2 control points (a curve of degree n >= 1 has n + 1), found {found}"
+                    )));
+                }
+                if found > C::MAX + 1 {
+                    return Err(de::Error::custom(over_degree::<C>(found - 1)));
+                }
+                let mut points = Vec::with_capacity(found);
+                while let Some(p) = seq.next_element::<Point2<T, C>>()? {
+                    points.push(p.0);
+                }
+                Ok(Curve2(points, PhantomData))
+            }
+        }
+        d.deserialize_seq(V(PhantomData))
+    }
+}
+
+/// `degree N is over the limit of MAX of SUBCOMMAND`.
+pub fn over_degree<C: Curves>(degree: usize) -> String {
+    format!(
+        "degree {degree} is over the limit of {} of {}",
+        C::MAX,
+        C::SUBCOMMAND
+    )
+}
+
+/// The answer of a `curve-curve` or `self` job.
+#[derive(Serialize)]
+pub struct IntersectionsAnswer {
+    kind: &'static str,
+    points: Vec<PointAnswer>,
+    overlaps: Vec<OverlapAnswer>,
+}
+
+#[derive(Serialize)]
+struct PointAnswer {
+    s: Param,
+    t: Param,
+    tangent: bool,
+    point: [Double; 2],
+}
+
+#[derive(Serialize)]
+struct OverlapAnswer {
+    s: [Param; 2],
+    t: [Param; 2],
+}
+
+impl IntersectionsAnswer {
+    /// The answer of the job `kind` that found `found`.
+    pub fn of(kind: &'static str, found: &Intersections) -> Self {
+        IntersectionsAnswer {
+            kind,
+            points: found
+                .points
+                .iter()
+                .map(|p| PointAnswer {
+                    s: Param::of(&p.s),
+                    t: Param::of(&p.t),
+                    tangent: p.tangent,
+                    point: [Double(p.point[0]), Double(p.point[1])],
+                })
+                .collect(),
+            overlaps: found
+                .overlaps
+                .iter()
+                .map(|o| OverlapAnswer {
+                    s: [Param::of(&o.s[0]), Param::of(&o.s[1])],
+                    t: [Param::of(&o.t[0]), Param::of(&o.t[1])],
+                })
+                .collect(),
+        }
+    }
+}

@@ -1,0 +1,104 @@
+//! `"kind": "bspline"`: consecutive polynomial pieces as a B-spline (Curry-Schoenberg, Theorem
+//! 2.4 of seed 002), the de Boor points as blossoms of the pieces, each interior knot's
+//! multiplicity p - r from the continuity r that holds exactly there (so computed exactly, and
+//! rounded once under `f64`).
+
+use super::{exact, exact_points, rounded, Number};
+use crate::jobs::cost::{degree_of, dimension, grown_bits, len, Arith, Env};
+use crate::jobs::kind::{Context, Kind};
+use crate::jobs::read::{coordinates, Count, Degree, Numbers, Points, Reading, Written};
+use crate::jobs::write::{write, Out};
+use blossom::{bspline_from_pieces, Error, Piece, Point, PowerCurve};
+use serde::{Deserialize, Deserializer, Serialize};
+use serde_json::Value;
+
+/// The job.
+#[derive(Debug, Deserialize)]
+#[serde(bound = "T: Reading")]
+pub struct Bspline<T> {
+    /// p.
+    degree: Degree,
+    /// The pieces, in order.
+    pieces: Pieces<T>,
+}
+
+/// At least one piece.
+#[derive(Debug)]
+struct Pieces<T>(Vec<PieceJob<T>>);
+
+impl<'de, T: Reading> Deserialize<'de> for Pieces<T> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        crate::jobs::read::counted(d, Count::NotEmpty("piece"), "an array of pieces").map(Pieces)
+    }
+}
+
+/// One piece: its interval and its coefficients in the power basis of the global parameter.
+#[derive(Debug, Deserialize)]
+#[serde(bound = "T: Reading", expecting = "an object")]
+struct PieceJob<T> {
+    interval: Numbers<T, 2>,
+    coefficients: Points<T>,
+}
+
+/// The answer.
+#[derive(Serialize)]
+#[serde(bound = "T: crate::jobs::write::Write")]
+struct Answer<T: crate::jobs::write::Write> {
+    kind: &'static str,
+    degree: usize,
+    knots: Out<Vec<T>>,
+    control_points: Out<Vec<Point<T>>>,
+}
+
+impl<T: Number> Kind for Bspline<Written<T>> {
+    fn estimate(env: &Env) -> Option<(f64, &'static str)> {
+        let env = env.deciding_exactly();
+        let pieces = env.get("pieces");
+        let p = degree_of(env.get("degree"));
+        let c = env.numbers("pieces");
+        let d = match pieces {
+            Some(Value::Array(items)) => match items.first() {
+                Some(Value::Object(piece)) => dimension(piece.get("coefficients")),
+                _ => 1.0,
+            },
+            _ => 1.0,
+        };
+        let q = p + 1.0;
+        let ops = 4.0 * len(pieces) * q * q * (q + d);
+        let bits = grown_bits(c.max_bits, c.max_bits, p);
+        let work = ops * Arith { exact: true }.operation(bits) * env.factor([0.58, 0.81]);
+        Some((work + c.reading, "pieces"))
+    }
+
+    fn solve(self, _: &Context) -> Result<Value, Error> {
+        let mut pieces = Vec::with_capacity(self.pieces.0.len());
+        let mut dim = None;
+        for (i, piece) in self.pieces.0.into_iter().enumerate() {
+            let coefficients = exact_points(&piece.coefficients.0);
+            if let Some(d) = dim.filter(|d| *d != coefficients[0].len()) {
+                return Err(Error::new(
+                    format!("pieces[{i}].coefficients[0]"),
+                    format!(
+                        "expected {}, found {}",
+                        coordinates(d),
+                        coefficients[0].len()
+                    ),
+                ));
+            }
+            dim = Some(coefficients[0].len());
+            pieces.push(Piece {
+                interval: exact(&piece.interval.0)
+                    .try_into()
+                    .unwrap_or_else(|_| unreachable!()),
+                curve: PowerCurve::new(coefficients)?,
+            });
+        }
+        let f = bspline_from_pieces(self.degree.0, &pieces)?;
+        write(&Answer {
+            kind: "bspline",
+            degree: f.degree(),
+            knots: Out(rounded::<T>(f.knots())),
+            control_points: Out(f.control_points().iter().map(|p| rounded(p)).collect()),
+        })
+    }
+}

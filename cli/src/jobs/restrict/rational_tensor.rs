@@ -1,0 +1,164 @@
+//! `"kind": "rational-tensor"`: x(u, v) = (sum p_ij u^i v^j) / (sum w_ij u^i v^j) on
+//! [a, b] x [c, d] as a rational tensor patch: the blossoms of the denominator (the weights)
+//! and of the numerator divided by them, computed exactly and rounded once; a zero weight is
+//! an error.
+
+use super::{check_rounded_weights, exact, exact_points, rounded, Number};
+use crate::jobs::args::MethodChoice;
+use crate::jobs::cost::{degree_of, dimension, first_len, grown_bits, len, tensor_operations};
+use crate::jobs::cost::{Arith, Env};
+use crate::jobs::kind::{Context, Kind};
+use crate::jobs::read::{Count, Degree, NumberRows, Numbers, Reading, Rows, Written, MAX_DEGREE};
+use crate::jobs::write::{write, Out};
+use blossom::{Error, Method, Point, Rational, RationalSurface};
+use serde::{Deserialize, Deserializer, Serialize};
+use serde_json::Value;
+
+/// The job.
+#[derive(Debug, Deserialize)]
+#[serde(bound = "T: Reading")]
+pub struct RationalTensor<T> {
+    /// `numerator[i][j]` = p_ij.
+    numerator: Rows<T>,
+    /// `denominator[i][j]` = w_ij.
+    denominator: NumberRows<T>,
+    /// [a, b, c, d].
+    rectangle: Numbers<T, 4>,
+    /// [n, m], by default the grids' sizes.
+    degree: Option<DegreePair>,
+}
+
+/// `"degree": [n, m]`.
+#[derive(Debug)]
+struct DegreePair(usize, usize);
+
+impl<'de> Deserialize<'de> for DegreePair {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let pair: Vec<Degree> =
+            crate::jobs::read::counted(d, Count::Exactly(2, "degrees"), "an array of 2 degrees")?;
+        Ok(DegreePair(pair[0].0, pair[1].0))
+    }
+}
+
+/// The answer.
+#[derive(Serialize)]
+#[serde(bound = "T: crate::jobs::write::Write")]
+struct Answer<T: crate::jobs::write::Write> {
+    kind: &'static str,
+    degree: [usize; 2],
+    control_points: Out<Vec<Vec<Point<T>>>>,
+    weights: Out<Vec<Vec<T>>>,
+}
+
+/// The exact grids of a rational surface: the numerator's points and the denominator's numbers.
+pub type Grids = (Vec<Vec<Point<Rational>>>, Vec<Vec<Rational>>);
+
+/// The numerator's and denominator's grids of a rational surface, exactly, padded with zeros
+/// to one shape (the larger size in each variable), after checking their shapes.
+pub fn grids<T: Reading>(
+    numerator: &[Vec<Point<T>>],
+    denominator: &[Vec<T>],
+) -> Result<Grids, Error> {
+    crate::jobs::read::rectangular(numerator, "numerator", "point")?;
+    crate::jobs::read::rectangular(denominator, "denominator", "number")?;
+    let rows = numerator.len().max(denominator.len());
+    let cols = numerator[0].len().max(denominator[0].len());
+    if rows > MAX_DEGREE + 1 || cols > MAX_DEGREE + 1 {
+        return Err(Error::new(
+            "numerator",
+            format!(
+                "expected a degree of at most {MAX_DEGREE} in each variable (at most {} rows and \
+                 columns)",
+                MAX_DEGREE + 1
+            ),
+        ));
+    }
+    let zero = vec![Rational::default(); numerator[0][0].len()];
+    let pad = |row: Vec<Point<Rational>>| {
+        let mut row = row;
+        row.resize(cols, zero.clone());
+        row
+    };
+    let mut p: Vec<Vec<Point<Rational>>> = numerator.iter().map(|r| pad(exact_points(r))).collect();
+    p.resize(rows, vec![zero.clone(); cols]);
+    let mut w: Vec<Vec<Rational>> = denominator
+        .iter()
+        .map(|r| {
+            let mut r = exact(r);
+            r.resize(cols, Rational::default());
+            r
+        })
+        .collect();
+    w.resize(rows, vec![Rational::default(); cols]);
+    Ok((p, w))
+}
+
+/// The estimate of a rational surface of degree `degree` in `ops` operations.
+pub fn estimate(
+    env: &Env,
+    domain: &str,
+    degree: f64,
+    ops: f64,
+    factor: [f64; 2],
+) -> (f64, &'static str) {
+    let (nu, de, dom) = (
+        env.numbers("numerator"),
+        env.numbers("denominator"),
+        env.numbers(domain),
+    );
+    let bits = grown_bits(nu.max_bits.max(de.max_bits), dom.max_bits, degree);
+    let work = ops * Arith { exact: true }.operation(bits) * env.factor(factor);
+    (work + nu.and(de).and(dom).reading, "numerator")
+}
+
+/// The grids' sizes: the rows, the columns, and the dimension of the homogeneous points.
+pub fn sizes(env: &Env) -> (f64, f64, f64) {
+    let (p, w) = (env.get("numerator"), env.get("denominator"));
+    (
+        len(p).max(len(w)),
+        first_len(p).max(first_len(w)),
+        dimension(p) + 1.0,
+    )
+}
+
+impl<T: Number> Kind for RationalTensor<Written<T>> {
+    fn estimate(env: &Env) -> Option<(f64, &'static str)> {
+        let env = env.deciding_exactly();
+        let (rows, columns, d) = sizes(&env);
+        let (n, m) = match env.get("degree") {
+            Some(Value::Array(items)) => (
+                degree_of(items.first()).max(rows - 1.0),
+                degree_of(items.get(1)).max(columns - 1.0),
+            ),
+            _ => (rows - 1.0, columns - 1.0),
+        };
+        let (n, m) = (n.max(0.0), m.max(0.0));
+        let ops = tensor_operations(MethodChoice::Library(Method::Polarisation), n, m, d);
+        Some(estimate(&env, "rectangle", n + m, ops, [5.8, 5.6]))
+    }
+
+    fn solve(self, _: &Context) -> Result<Value, Error> {
+        let (p, w) = grids(&self.numerator.0, &self.denominator.0)?;
+        let rect = exact(&self.rectangle.0)
+            .try_into()
+            .unwrap_or_else(|_| unreachable!());
+        let surface = RationalSurface::new(&p, &w)?;
+        let degree = self.degree.map_or(surface.degree(), |d| (d.0, d.1));
+        let patch = surface.tensor(&rect, Some(degree))?;
+        let weights: Vec<Vec<T>> = patch.weight_rows().map(|row| rounded(row)).collect();
+        check_rounded_weights(weights.iter().enumerate().flat_map(|(i, row)| {
+            row.iter()
+                .enumerate()
+                .map(move |(j, w)| (format!("weights[{i}][{j}]"), w))
+        }))?;
+        write(&Answer {
+            kind: "rational-tensor",
+            degree: [degree.0, degree.1],
+            control_points: Out(patch
+                .rows()
+                .map(|row| row.iter().map(|p| rounded(p)).collect())
+                .collect()),
+            weights: Out(weights),
+        })
+    }
+}
