@@ -38,7 +38,7 @@ impl BooleanOp {
 /// One edge of a result loop: the input curve `curve` of loop `loop_index` of region `region`
 /// (0 for A, 1 for B) between the parameters `from` and `to`, traversed from `from` to `to`
 /// (`from > to` when it runs against the curve's direction). For
-/// [`triangle_intersection`] the regions are the two triangles, `loop_index` is 0 and
+/// [`triangle_intersection`](super::triangle_intersection) the regions are the two triangles, `loop_index` is 0 and
 /// `curve` the edge number 0, 1, 2 of that triangle (the spec's edge `3 * region + curve`).
 #[derive(Clone, Debug)]
 pub struct Edge {
@@ -56,7 +56,7 @@ pub struct Edge {
 }
 
 impl Edge {
-    /// The spec's edge number for [`triangle_intersection`]: 0, 1, 2 for the first
+    /// The spec's edge number for [`triangle_intersection`](super::triangle_intersection): 0, 1, 2 for the first
     /// triangle's edges, 3, 4, 5 for the second's (`3 * region + curve`).
     ///
     /// ```
@@ -150,7 +150,7 @@ pub struct Report {
 
 impl RegionResult {
     /// The regions whose curves the edges are pieces of: `inputs()[edge.region]` (for
-    /// [`simplify`], the simplified region and the empty region).
+    /// [`simplify`](super::simplify), the simplified region and the empty region).
     pub fn inputs(&self) -> &[Region; 2] {
         &self.inputs
     }
