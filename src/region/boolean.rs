@@ -1,8 +1,8 @@
 //! The public front of the booleans: the operations on regions and their work estimates.
 
-use super::answer::{BooleanOp, Outline, RegionResult};
 #[cfg(doc)]
 use super::answer::Edge;
+use super::answer::{BooleanOp, Outline, RegionResult};
 use super::input::Region;
 use crate::error::Result;
 
