@@ -425,6 +425,16 @@ pub(crate) fn assemble(
     }
 }
 
+/// Whether x lies strictly between a and b (in either order), exactly.
+pub(crate) fn strictly_between(x: &AlgebraicReal, a: &AlgebraicReal, b: &AlgebraicReal) -> bool {
+    let (lo, hi) = if a.compare(b) == Ordering::Greater {
+        (b, a)
+    } else {
+        (a, b)
+    };
+    x.compare(lo) == Ordering::Greater && x.compare(hi) == Ordering::Less
+}
+
 /// Sorts exactly and removes duplicates.
 fn sort_distinct(p: &mut Vec<AlgebraicReal>) {
     p.sort_by(|a, b| a.compare(b));
@@ -449,14 +459,6 @@ fn insert(p: &mut Vec<AlgebraicReal>, x: AlgebraicReal) -> bool {
 /// of a curve's other pass with the stretch, which [`intersect_curves`] does not list inside
 /// an overlap's range.
 fn carry_across_overlaps(curves: &[Curve], shared: &[Shared], params: &mut [Vec<AlgebraicReal>]) {
-    let strictly_inside = |x: &AlgebraicReal, a: &AlgebraicReal, b: &AlgebraicReal| {
-        let (lo, hi) = if a.compare(b) == Ordering::Greater {
-            (b, a)
-        } else {
-            (a, b)
-        };
-        x.compare(lo) == Ordering::Greater && x.compare(hi) == Ordering::Less
-    };
     loop {
         let mut changed = false;
         for sh in shared {
@@ -466,7 +468,7 @@ fn carry_across_overlaps(curves: &[Curve], shared: &[Shared], params: &mut [Vec<
             {
                 let inner: Vec<AlgebraicReal> = params[from]
                     .iter()
-                    .filter(|x| strictly_inside(x, &from_range[0], &from_range[1]))
+                    .filter(|x| strictly_between(x, &from_range[0], &from_range[1]))
                     .cloned()
                     .collect();
                 for x in inner {

@@ -31,7 +31,7 @@ use crate::intersect::curves::{intersect_curves_f64, self_intersections_f64, Ove
 use crate::intersect::filter::certified_crossings_f64;
 use crate::num::ring::Rational;
 use crate::region::arrangement::{
-    assemble, meeting_boxes, Assembled, CurveId, Group, Piece, Stretch,
+    assemble, meeting_boxes, strictly_between, Assembled, CurveId, Group, Piece, Stretch,
 };
 use crate::region::curve::Curve as ExactCurve;
 use crate::region::input::Doubles;
@@ -346,14 +346,6 @@ fn carry_across_overlaps(
     if shared.is_empty() {
         return Ok(());
     }
-    let strictly_inside = |x: &AlgebraicReal, a: &AlgebraicReal, b: &AlgebraicReal| {
-        let (lo, hi) = if a.compare(b) == Ordering::Greater {
-            (b, a)
-        } else {
-            (a, b)
-        };
-        x.compare(lo) == Ordering::Greater && x.compare(hi) == Ordering::Less
-    };
     // Each overlap's range on each side as doubles around it.
     let span = |r: &[AlgebraicReal; 2]| {
         let (a, b) = (r[0].to_f64(), r[1].to_f64());
@@ -398,7 +390,7 @@ fn carry_across_overlaps(
                 let exact = x.algebraic()?;
                 // Inside by the enclosures alone (lo, hi are outward around the ends).
                 let clearly_inside = a > lo.next_up().next_up() && b < hi.next_down().next_down();
-                if !clearly_inside && !strictly_inside(exact, &from_range[0], &from_range[1]) {
+                if !clearly_inside && !strictly_between(exact, &from_range[0], &from_range[1]) {
                     continue;
                 }
                 let t = if let Some(map) = &maps[k][usize::from(side_from != sh.p)] {

@@ -31,7 +31,12 @@ fn turn(p: [f64; 2], d: usize) -> [f64; 2] {
 /// or `None` when the control points do not decide it (module docs). The tests on every
 /// control point are tests on the sides of their box `bbox` (`[x_lo, y_lo, x_hi, y_hi]`),
 /// turned with the plane.
-fn ray_passages(x: [f64; 2], points: &[[f64; 2]], bbox: &[f64; 4], d: usize) -> Option<i64> {
+pub(super) fn ray_passages(
+    x: [f64; 2],
+    points: &[[f64; 2]],
+    bbox: &[f64; 4],
+    d: usize,
+) -> Option<i64> {
     // The turned box: the least and largest turned coordinates.
     let (lo, hi) = {
         let (a, b) = (turn([bbox[0], bbox[1]], d), turn([bbox[2], bbox[3]], d));

@@ -19,6 +19,7 @@ use super::split::Split;
 use crate::intersect::algebraic::exact_f64;
 use crate::num::bounded::UNIT_ROUNDOFF;
 use crate::num::ring::Rational;
+use crate::region::filtered::side::ray_passages;
 use num_traits::Zero;
 use std::cmp::Ordering;
 
@@ -28,41 +29,6 @@ pub(super) struct LoopWindings {
     pub own: [i64; 2],
     pub other: i64,
     pub start: usize,
-}
-
-/// The point p turned so that the ray along direction `d` (0: +x, 1: +y, 2: -x, 3: -y) runs
-/// along +x.
-fn turn(p: [f64; 2], d: usize) -> [f64; 2] {
-    match d {
-        0 => p,
-        1 => [p[1], -p[0]],
-        2 => [-p[0], -p[1]],
-        _ => [-p[1], p[0]],
-    }
-}
-
-/// The signed number of passages of the curve across the ray from x along direction `d`,
-/// or `None` when the control points do not decide it (module docs). The tests on every
-/// control point are tests on the sides of their box `bbox` (`[x_lo, y_lo, x_hi, y_hi]`),
-/// turned with the plane.
-fn ray_passages(x: [f64; 2], points: &[[f64; 2]], bbox: &[f64; 4], d: usize) -> Option<i64> {
-    // The turned box: the least and largest turned coordinates.
-    let (lo, hi) = {
-        let (a, b) = (turn([bbox[0], bbox[1]], d), turn([bbox[2], bbox[3]], d));
-        (
-            [a[0].min(b[0]), a[1].min(b[1])],
-            [a[0].max(b[0]), a[1].max(b[1])],
-        )
-    };
-    let x = turn(x, d);
-    if lo[1] >= x[1] || hi[1] < x[1] || hi[0] < x[0] {
-        return Some(0);
-    }
-    if lo[0] > x[0] {
-        let up = |p: [f64; 2]| i64::from(turn(p, d)[1] >= x[1]);
-        return Some(up(points[points.len() - 1]) - up(points[0]));
-    }
-    None
 }
 
 /// The winding numbers of both regions at `x` around every loop but `skip`, or `None` when

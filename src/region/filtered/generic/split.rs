@@ -4,6 +4,7 @@
 use super::measure::crossing_sign;
 use crate::intersect::filter::certified_crossings_f64;
 use crate::region::arrangement::{meeting_boxes, CurveId};
+pub(super) use crate::region::filtered::graph::bbox;
 use crate::region::prune::{consecutive_meet_only_at_join, one_to_one};
 
 /// One input curve.
@@ -51,20 +52,6 @@ pub(super) struct Split<'a> {
     pub marks: Vec<Vec<Mark>>,
     /// The pairs of curves that cross.
     pub pairs: Vec<[CurveId; 2]>,
-}
-
-/// `[x_lo, y_lo, x_hi, y_hi]` of the control points.
-pub(super) fn bbox(points: &[[f64; 2]]) -> [f64; 4] {
-    let mut b = [points[0][0], points[0][1], points[0][0], points[0][1]];
-    for p in points {
-        b = [
-            b[0].min(p[0]),
-            b[1].min(p[1]),
-            b[2].max(p[0]),
-            b[3].max(p[1]),
-        ];
-    }
-    b
 }
 
 /// Whether the loops of one region (`doubles[l][c]`: the control points of curve c of loop
