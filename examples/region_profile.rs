@@ -6,6 +6,9 @@
 //! `target/release/examples/region_profile fresh 100` (the same, each triangle's region built
 //! from its nodes inside the timed loop: construction and first boolean) or
 //! `target/release/examples/region_profile stars 10000`. Prints the time per boolean.
+//! `target/release/examples/region_profile circle 200`: issue 45's degenerate placement, a
+//! square and a 4-cubic circle whose joins lie on the square's edges, against the same circle
+//! moved off them, the union's time and report for each.
 
 use blossom::region::{boolean, triangle_intersection, BooleanOp, FillRule, Region};
 use blossom::Bezier;
@@ -17,10 +20,52 @@ mod common;
 #[allow(dead_code)]
 mod shapes;
 
+/// A region of one loop of curves of doubles.
+fn loop_region(curves: Vec<Vec<[f64; 2]>>) -> Region {
+    let curves = curves.into_iter().map(|c| Bezier::new(c).expect("points"));
+    Region::from_f64(vec![curves.collect()], FillRule::NonZero).expect("a loop")
+}
+
+/// The square [-1, 1]^2 and the unit circle of four cubics centred at `centre`: its joins
+/// (±1, 0), (0, ±1) lie on the square's edges when the centre is the origin.
+fn square_and_circle(centre: [f64; 2]) -> (Region, Region) {
+    let c = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]];
+    let square = loop_region((0..4).map(|i| vec![c[i], c[(i + 1) % 4]]).collect());
+    let k = 0.5522847498307936;
+    let p = |x: f64, y: f64| [centre[0] + x, centre[1] + y];
+    let circle = loop_region(vec![
+        vec![p(1.0, 0.0), p(1.0, k), p(k, 1.0), p(0.0, 1.0)],
+        vec![p(0.0, 1.0), p(-k, 1.0), p(-1.0, k), p(-1.0, 0.0)],
+        vec![p(-1.0, 0.0), p(-1.0, -k), p(-k, -1.0), p(0.0, -1.0)],
+        vec![p(0.0, -1.0), p(k, -1.0), p(1.0, -k), p(1.0, 0.0)],
+    ]);
+    (square, circle)
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let what = args.get(1).map_or("triangles", String::as_str);
     let passes: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(100);
+    if what == "circle" {
+        for (name, centre) in [
+            ("joins on the edges", [0.0, 0.0]),
+            ("general position", [0.1234, 0.0567]),
+        ] {
+            let (square, circle) = square_and_circle(centre);
+            let report = *boolean(&square, &circle, BooleanOp::Union)
+                .expect("answered")
+                .report();
+            let start = Instant::now();
+            for _ in 0..passes {
+                std::hint::black_box(
+                    boolean(&square, &circle, BooleanOp::Union).expect("answered"),
+                );
+            }
+            let each = start.elapsed().as_secs_f64() / passes as f64;
+            println!("circle, {name}: {:.1} us per union; {report:?}", each * 1e6);
+        }
+        return;
+    }
     let pairs: Vec<(Region, Region, BooleanOp)> = if what == "stars" {
         let [a, b] = shapes::star_pair();
         let region = |curves: &[shapes::Cubic]| {

@@ -108,7 +108,7 @@ fn weight_table(n: usize) -> &'static [f64] {
 /// E = (3n + 8) u S' (1 + 2^-20) + 2^-300 covers all of it for n <= 20 (the absolute term
 /// covers any number of underflows of η = 2^-1074 each the run could make). Each f_k is that double with the
 /// bound E (f_0 = 0 exactly, also with E, harmlessly).
-pub(super) fn area_coefficients(points: &[[f64; 2]], o: f64, f: &mut Vec<BoundedF64>) {
+fn area_coefficients(points: &[[f64; 2]], o: f64, f: &mut Vec<BoundedF64>) {
     const MARGIN: f64 = 1.0 + 1.0 / (1u64 << 20) as f64;
     const UNDERFLOWS: f64 =
         1.0 / (1u128 << 100) as f64 / (1u128 << 100) as f64 / (1u128 << 100) as f64;
@@ -131,5 +131,39 @@ pub(super) fn area_coefficients(points: &[[f64; 2]], o: f64, f: &mut Vec<Bounded
     let e = (3 * n + 8) as f64 * UNIT_ROUNDOFF * size * MARGIN + UNDERFLOWS;
     for v in &mut f[start..] {
         *v = BoundedF64::with_bound(v.value(), e);
+    }
+}
+
+/// The area polynomials F (module docs of `measure`) of a boolean's curves, each made on
+/// first use, all about one origin o (the middle of the curves' x range, which keeps the
+/// terms small): curve c's coefficients are `coefficients[spans[c].0..spans[c].1]`, an
+/// empty span when not made yet. Both float paths keep theirs in one.
+pub(super) struct AreaPolynomials {
+    coefficients: Vec<BoundedF64>,
+    spans: Vec<(usize, usize)>,
+    origin: f64,
+}
+
+impl AreaPolynomials {
+    /// Room for `curves` curves whose boxes `[x_lo, y_lo, x_hi, y_hi]` are `boxes`.
+    pub(super) fn new<'b>(curves: usize, boxes: impl Iterator<Item = &'b [f64; 4]>) -> Self {
+        let (lo, hi) = boxes.fold((f64::MAX, f64::MIN), |(lo, hi), b| {
+            (lo.min(b[0]), hi.max(b[2]))
+        });
+        AreaPolynomials {
+            coefficients: Vec::new(),
+            spans: vec![(0, 0); curves],
+            origin: lo / 2.0 + hi / 2.0,
+        }
+    }
+
+    /// The Bernstein coefficients of F for curve c with control points `points`.
+    pub(super) fn of(&mut self, c: usize, points: &[[f64; 2]]) -> &[BoundedF64] {
+        if self.spans[c].0 == self.spans[c].1 {
+            let start = self.coefficients.len();
+            area_coefficients(points, self.origin, &mut self.coefficients);
+            self.spans[c] = (start, self.coefficients.len());
+        }
+        &self.coefficients[self.spans[c].0..self.spans[c].1]
     }
 }

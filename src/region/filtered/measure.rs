@@ -2,7 +2,7 @@
 //! parameters' enclosures (the bounds of `bounds`), a face's or a loop's signed area, and the
 //! assembled answer.
 
-use super::bounds::{area_coefficients, evaluate, hodograph, parameter, sign, LEVEL};
+use super::bounds::{evaluate, hodograph, parameter, sign, AreaPolynomials, LEVEL};
 use super::graph::Graph;
 use crate::intersect::interval::{lower, upper};
 use crate::num::bounded::{BoundedF64, UNIT_ROUNDOFF};
@@ -11,45 +11,24 @@ use crate::region::answer::{Edge, Outline, ResultLoop};
 use crate::region::chain::Run;
 use crate::region::parameter::Parameter;
 
-/// The area coefficients of the curves the answer needs, one after the other, computed on
-/// first use.
+/// The area polynomials of the curves, evaluated at their parameters.
 pub(super) struct Areas<'g, 'a> {
     graph: &'g Graph<'a>,
-    /// Curve c's coefficients are `coefficients[spans[c].0..spans[c].1]` (an empty span:
-    /// not computed yet).
-    coefficients: Vec<BoundedF64>,
-    spans: Vec<(usize, usize)>,
-    origin: f64,
+    polynomials: AreaPolynomials,
 }
 
 impl<'g, 'a> Areas<'g, 'a> {
     pub(super) fn new(graph: &'g Graph<'a>) -> Self {
-        let (lo, hi) = graph
-            .curves
-            .iter()
-            .fold((f64::MAX, f64::MIN), |(lo, hi), c| {
-                (lo.min(c.bbox[0]), hi.max(c.bbox[2]))
-            });
+        let boxes = graph.curves.iter().map(|c| &c.bbox);
         Areas {
             graph,
-            coefficients: Vec::new(),
-            spans: vec![(0, 0); graph.curves.len()],
-            origin: lo / 2.0 + hi / 2.0,
+            polynomials: AreaPolynomials::new(graph.curves.len(), boxes),
         }
     }
 
     /// F_c at parameter index `k` of curve c.
     fn at(&mut self, c: usize, k: usize) -> BoundedF64 {
-        if self.spans[c].0 == self.spans[c].1 {
-            let start = self.coefficients.len();
-            area_coefficients(
-                self.graph.curves[c].points,
-                self.origin,
-                &mut self.coefficients,
-            );
-            self.spans[c] = (start, self.coefficients.len());
-        }
-        let f = &self.coefficients[self.spans[c].0..self.spans[c].1];
+        let f = self.polynomials.of(c, self.graph.curves[c].points);
         let params = &self.graph.params[c];
         if k == 0 {
             return f[0];

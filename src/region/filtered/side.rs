@@ -31,12 +31,7 @@ fn turn(p: [f64; 2], d: usize) -> [f64; 2] {
 /// or `None` when the control points do not decide it (module docs). The tests on every
 /// control point are tests on the sides of their box `bbox` (`[x_lo, y_lo, x_hi, y_hi]`),
 /// turned with the plane.
-pub(super) fn ray_passages(
-    x: [f64; 2],
-    points: &[[f64; 2]],
-    bbox: &[f64; 4],
-    d: usize,
-) -> Option<i64> {
+fn ray_passages(x: [f64; 2], points: &[[f64; 2]], bbox: &[f64; 4], d: usize) -> Option<i64> {
     // The turned box: the least and largest turned coordinates.
     let (lo, hi) = {
         let (a, b) = (turn([bbox[0], bbox[1]], d), turn([bbox[2], bbox[3]], d));
@@ -56,25 +51,38 @@ pub(super) fn ray_passages(
     None
 }
 
-/// The winding numbers of both regions at `x` around every curve but those `skip` names
-/// (which must not pass through x), or `None` when no direction decides every curve.
-pub(super) fn windings_at(
-    graph: &Graph<'_>,
-    x: [f64; 2],
-    skip: impl Fn(usize) -> bool,
-) -> Option<[i64; 2]> {
+/// The winding numbers of both regions at `x` around the curves `curves()` yields (as
+/// control points, box and region; together whole loops, none through x), or `None` when no
+/// direction decides every curve.
+pub(super) fn windings_among<'c, I>(x: [f64; 2], curves: impl Fn() -> I) -> Option<[i64; 2]>
+where
+    I: Iterator<Item = (&'c [[f64; 2]], &'c [f64; 4], usize)>,
+{
     'directions: for d in 0..4 {
         let mut w = [0, 0];
-        for (i, c) in graph.curves.iter().enumerate() {
-            if skip(i) {
-                continue;
-            }
-            match ray_passages(x, c.points, &c.bbox, d) {
-                Some(k) => w[c.id.region] += k,
+        for (points, bbox, region) in curves() {
+            match ray_passages(x, points, bbox, d) {
+                Some(k) => w[region] += k,
                 None => continue 'directions,
             }
         }
         return Some(w);
     }
     None
+}
+
+/// [`windings_among`] every curve of the graph but those `skip` names.
+pub(super) fn windings_at(
+    graph: &Graph<'_>,
+    x: [f64; 2],
+    skip: impl Fn(usize) -> bool,
+) -> Option<[i64; 2]> {
+    windings_among(x, || {
+        graph
+            .curves
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| !skip(*i))
+            .map(|(_, c)| (c.points, &c.bbox, c.id.region))
+    })
 }

@@ -24,7 +24,7 @@ use crate::num::bounded::{BoundedF64, UNIT_ROUNDOFF};
 use crate::num::ring::Ring;
 use crate::region::answer::{Edge, Outline, ResultLoop};
 use crate::region::filtered::bounds::{
-    area_coefficients, evaluate, hodograph, parameter, sign, LEVEL,
+    evaluate, hodograph, parameter, sign, AreaPolynomials, LEVEL,
 };
 use crate::region::input::Doubles;
 use crate::region::parameter::{Crossings, Parameter};
@@ -49,46 +49,25 @@ pub(super) fn crossing_sign(
     sign(&a[0].mul(&b[1]).sub(&a[1].mul(&b[0])))
 }
 
-/// The area coefficients of the curves the answer needs, one after the other, computed on
-/// first use.
+/// The area polynomials of the curves, evaluated at their positions.
 pub(super) struct Areas<'s, 'a> {
     split: &'s Split<'a>,
-    /// Curve c's coefficients are `coefficients[spans[c].0..spans[c].1]` (an empty span:
-    /// not computed yet).
-    coefficients: Vec<BoundedF64>,
-    spans: Vec<(usize, usize)>,
-    origin: f64,
+    polynomials: AreaPolynomials,
 }
 
 impl<'s, 'a> Areas<'s, 'a> {
     pub(super) fn new(split: &'s Split<'a>) -> Self {
-        let (lo, hi) = split
-            .curves
-            .iter()
-            .fold((f64::MAX, f64::MIN), |(lo, hi), c| {
-                (lo.min(c.bbox[0]), hi.max(c.bbox[2]))
-            });
+        let boxes = split.curves.iter().map(|c| &c.bbox);
         Areas {
             split,
-            coefficients: Vec::new(),
-            spans: vec![(0, 0); split.curves.len()],
-            origin: lo / 2.0 + hi / 2.0,
+            polynomials: AreaPolynomials::new(split.curves.len(), boxes),
         }
     }
 
     /// F_c at position `k` of curve c (0: its start, `marks.len() + 1`: its end, else the
     /// crossing `marks[k - 1]`).
     fn at(&mut self, c: usize, k: usize) -> BoundedF64 {
-        if self.spans[c].0 == self.spans[c].1 {
-            let start = self.coefficients.len();
-            area_coefficients(
-                self.split.curves[c].points,
-                self.origin,
-                &mut self.coefficients,
-            );
-            self.spans[c] = (start, self.coefficients.len());
-        }
-        let f = &self.coefficients[self.spans[c].0..self.spans[c].1];
+        let f = self.polynomials.of(c, self.split.curves[c].points);
         let marks = &self.split.marks[c];
         if k == 0 {
             return f[0];

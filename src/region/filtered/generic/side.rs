@@ -19,7 +19,7 @@ use super::split::Split;
 use crate::intersect::algebraic::exact_f64;
 use crate::num::bounded::UNIT_ROUNDOFF;
 use crate::num::ring::Rational;
-use crate::region::filtered::side::ray_passages;
+use crate::region::filtered::side::windings_among;
 use num_traits::Zero;
 use std::cmp::Ordering;
 
@@ -34,20 +34,13 @@ pub(super) struct LoopWindings {
 /// The winding numbers of both regions at `x` around every loop but `skip`, or `None` when
 /// no direction decides every curve.
 fn windings_at(split: &Split<'_>, x: [f64; 2], skip: usize) -> Option<[i64; 2]> {
-    'directions: for d in 0..4 {
-        let mut w = [0, 0];
-        for c in &split.curves {
-            if c.loop_no == skip {
-                continue;
-            }
-            match ray_passages(x, c.points, &c.bbox, d) {
-                Some(k) => w[c.id.region] += k,
-                None => continue 'directions,
-            }
-        }
-        return Some(w);
-    }
-    None
+    windings_among(x, || {
+        split
+            .curves
+            .iter()
+            .filter(move |c| c.loop_no != skip)
+            .map(|c| (c.points, &c.bbox, c.id.region))
+    })
 }
 
 /// The exact sign of the turn a -> v -> b: cross(v - a, b - v) (a float filter with
