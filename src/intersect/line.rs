@@ -14,12 +14,30 @@
 //! part is decided by the two parameters g(q0), g(q1) of its ends on P: an overlap of positive
 //! length, one common end point (a tangency: the derivatives are parallel), or nothing. A
 //! curve of higher degree on the line is left to the general solver (`None`).
+//!
+//! **Fixed width** ([`segment_contact_small`]). Two segments whose ends are small integers on
+//! one dyadic scale (every font) are decided by the same formulas in `i128`, before big
+//! integers: with e = q1 - q0 and c = cross(d, e), non-parallel segments meet at
+//! s = cross(q0 - p0, e) / c, t = cross(q0 - p0, d) / c when both lie in [0, 1]; parallel
+//! segments meet only when collinear, cross(d, q0 - p0) = 0, and then as above through
+//! g(t) = dot(q0 + t e - p0, d) / |d|², now a fraction of two integers. Coordinates below
+//! 2^30 keep every product below 2^63.
+//!
+//! A segment and a quadratic or cubic with such ends ([`segment_curve_small`]) take the same
+//! path in `i128`: the power coefficients of Q are integers (binomial combinations of the
+//! control points), so f has integer coefficients; its roots at 0 and 1 are divided out
+//! exactly (synthetic division keeps integers), a remaining factor of degree 1 has its one
+//! rational root, and a remaining factor of higher degree whose Bernstein coefficients on
+//! [0, 1] all have one strict sign has no root there (the curve's ends touching the segment,
+//! the common case in outlines, leave exactly these). Anything else, or a number that does
+//! not fit, is left to big rationals (`None`).
 
 use super::algebraic::{round_polynomial_at, upoly_eval_q, value_at, AlgebraicReal};
 use super::curves::{IntersectionPoint, Overlap};
 use super::upoly;
 use super::zeros::roots_with_multiplicity;
 use crate::num::ring::{rational_to_f64, Rational};
+use crate::num::small::{integer_coordinates, SmallRational};
 use num_traits::{One, Zero};
 use std::cmp::Ordering;
 
@@ -191,6 +209,194 @@ fn collinear_segments(
     )
 }
 
+/// The common points of two segments decided in fixed width (see the module doc).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum SegmentContact {
+    /// No common point.
+    Apart,
+    /// One common point at s on the first segment and t on the second (a crossing, an end
+    /// on the other segment, or collinear segments touching end to end).
+    Point([SmallRational; 2]),
+    /// Collinear segments sharing a stretch of positive length: s increasing on the first,
+    /// t the matching ends on the second.
+    Overlap {
+        s: [SmallRational; 2],
+        t: [SmallRational; 2],
+    },
+}
+
+/// The largest magnitude of a scaled coordinate that [`segment_contact_small`] takes: 2^30,
+/// so that differences stay below 2^31 and every cross or dot product below 2^63.
+const SMALL_COORDINATE: i64 = 1 << 30;
+
+/// The common points of the segments `p` and `q` (two distinct ends each) in fixed-width
+/// arithmetic, exactly; `None` when the coordinates are not small integers on one dyadic
+/// scale or a parameter does not fit (the caller then intersects exactly in big rationals).
+pub(crate) fn segment_contact_small(p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<SegmentContact> {
+    let [p0, p1, q0, q1] = integer_coordinates([&p[0], &p[1], &q[0], &q[1]], SMALL_COORDINATE)?;
+    let w = |a: [i64; 2], b: [i64; 2]| [i128::from(b[0] - a[0]), i128::from(b[1] - a[1])];
+    let cross = |a: [i128; 2], b: [i128; 2]| a[0] * b[1] - a[1] * b[0];
+    let dot = |a: [i128; 2], b: [i128; 2]| a[0] * b[0] + a[1] * b[1];
+    let (d, e, r) = (w(p0, p1), w(q0, q1), w(p0, q0));
+    let unit = |x: SmallRational| SmallRational::ZERO <= x && x <= SmallRational::ONE;
+    let c = cross(d, e);
+    if c != 0 {
+        let s = SmallRational::new(cross(r, e), c)?;
+        let t = SmallRational::new(cross(r, d), c)?;
+        return Some(if unit(s) && unit(t) {
+            SegmentContact::Point([s, t])
+        } else {
+            SegmentContact::Apart
+        });
+    }
+    if cross(d, r) != 0 {
+        return Some(SegmentContact::Apart);
+    }
+    // Collinear: s = g(t) = (dot(r, d) + t dot(e, d)) / |d|^2, with dot(e, d) != 0.
+    let norm = dot(d, d);
+    let s_at_0 = SmallRational::new(dot(r, d), norm)?;
+    let slope = SmallRational::new(dot(e, d), norm)?;
+    let s_at_1 = s_at_0.add(slope)?;
+    let (lo, hi) = (s_at_0.min(s_at_1), s_at_0.max(s_at_1));
+    let (lo, hi) = (lo.max(SmallRational::ZERO), hi.min(SmallRational::ONE));
+    if lo > hi {
+        return Some(SegmentContact::Apart);
+    }
+    let t_of = |s: SmallRational| s.sub(s_at_0)?.div(slope);
+    Some(if lo == hi {
+        SegmentContact::Point([lo, t_of(lo)?])
+    } else {
+        SegmentContact::Overlap {
+            s: [lo, hi],
+            t: [t_of(lo)?, t_of(hi)?],
+        }
+    })
+}
+
+/// The common points of the segment `p` and the quadratic or cubic `q` as (s on `p`, t on
+/// `q`), increasing in s, in fixed-width arithmetic (module doc); `None` when the
+/// coordinates are not small integers on one dyadic scale, a number does not fit, the curve
+/// lies on the segment's line, or a root of f inside (0, 1) is irrational or not isolated by
+/// the sign test (the caller then intersects exactly in big rationals).
+pub(crate) fn segment_curve_small(
+    p: &[[f64; 2]],
+    q: &[[f64; 2]],
+) -> Option<Vec<[SmallRational; 2]>> {
+    let n = q.len() - 1;
+    if !(2..=3).contains(&n) {
+        return None;
+    }
+    let mut all = [&p[0]; 6];
+    all[1] = &p[1];
+    for (a, c) in all[2..].iter_mut().zip(q) {
+        *a = c;
+    }
+    let scaled = integer_coordinates(all, SMALL_COORDINATE)?;
+    let [p0, p1] = [scaled[0], scaled[1]].map(|c| c.map(i128::from));
+    let c: Vec<[i128; 2]> = scaled[2..2 + q.len()]
+        .iter()
+        .map(|c| {
+            [
+                i128::from(c[0] - p0[0] as i64),
+                i128::from(c[1] - p0[1] as i64),
+            ]
+        })
+        .collect();
+    let d = [p1[0] - p0[0], p1[1] - p0[1]];
+    // Power coefficients of Q - p0 (ascending): sum_k (-1)^(k-i) C(n,k) C(k,i) c_i t^k.
+    let binomial = |n: usize, k: usize| -> i128 {
+        [[1, 0, 0, 0], [1, 1, 0, 0], [1, 2, 1, 0], [1, 3, 3, 1]][n][k]
+    };
+    let power: Vec<[i128; 2]> = (0..=n)
+        .map(|k| {
+            let mut a = [0i128; 2];
+            for (i, ci) in c.iter().enumerate().take(k + 1) {
+                let w = binomial(n, k) * binomial(k, i) * if (k - i) % 2 == 0 { 1 } else { -1 };
+                a = [a[0] + w * ci[0], a[1] + w * ci[1]];
+            }
+            a
+        })
+        .collect();
+    // f(t) = cross(d, Q(t) - p0): below 2^31 * 2^36 * 2.
+    let mut f: Vec<i128> = power.iter().map(|a| d[0] * a[1] - d[1] * a[0]).collect();
+    if f.iter().all(|&x| x == 0) {
+        return None;
+    }
+    let mut roots: Vec<SmallRational> = Vec::new();
+    for end in [0i128, 1] {
+        let at_end = |f: &[i128]| if end == 0 { f[0] } else { f.iter().sum() };
+        while f.len() > 1 && at_end(&f) == 0 {
+            // f = (t - end) r: r_(k-1) = f_k + end r_k, from the top.
+            let m = f.len() - 1;
+            let mut r = vec![0i128; m];
+            r[m - 1] = f[m];
+            for k in (1..m).rev() {
+                r[k - 1] = f[k] + end * r[k];
+            }
+            f = r;
+            if roots.last() != Some(&SmallRational::integer(end as i64)) {
+                roots.push(SmallRational::integer(end as i64));
+            }
+        }
+    }
+    while f.len() > 1 && f.last() == Some(&0) {
+        f.pop();
+    }
+    match f.len() {
+        1 => {}
+        2 => {
+            let t = SmallRational::new(-f[0], f[1])?;
+            if SmallRational::ZERO < t && t < SmallRational::ONE {
+                roots.push(t);
+            }
+        }
+        _ => {
+            // Bernstein coefficients of the remaining factor r (degree m) on [0, 1], times
+            // C(m, j): b_j = sum_(i <= j) C(m - i, j - i) r_i; one strict sign: no root.
+            let m = f.len() - 1;
+            let signs: Vec<i32> = (0..=m)
+                .map(|j| {
+                    let b: i128 = (0..=j).map(|i| binomial(m - i, j - i) * f[i]).sum();
+                    b.signum() as i32
+                })
+                .collect();
+            if signs.iter().any(|&x| x == 0 || x != signs[0]) {
+                return None;
+            }
+        }
+    }
+    // s = dot(Q(t) - p0, d) / |d|^2 at each root t = a / b: Q(t) - p0 = sum_k power_k a^k
+    // b^(n - k) / b^n.
+    let norm = d[0] * d[0] + d[1] * d[1];
+    let mut found = Vec::with_capacity(roots.len());
+    for t in roots {
+        let (a, b) = (i128::from(t.numer()), i128::from(t.denom()));
+        let mut num = 0i128;
+        let mut scale = 1i128;
+        for (k, a_k) in power.iter().enumerate() {
+            let mut w = a_k[0]
+                .checked_mul(d[0])?
+                .checked_add(a_k[1].checked_mul(d[1])?)?;
+            for _ in 0..k {
+                w = w.checked_mul(a)?;
+            }
+            for _ in k..n {
+                w = w.checked_mul(b)?;
+            }
+            num = num.checked_add(w)?;
+        }
+        for _ in 0..n {
+            scale = scale.checked_mul(b)?;
+        }
+        let s = SmallRational::new(num, norm.checked_mul(scale)?)?;
+        if SmallRational::ZERO <= s && s <= SmallRational::ONE {
+            found.push([s, t]);
+        }
+    }
+    found.sort();
+    Some(found)
+}
+
 /// The answer of [`segment_and_curve`] with the roles of the two curves exchanged: the
 /// segment is the second curve, so s and t swap (and each overlap is turned to run along the
 /// first curve).
@@ -277,5 +483,123 @@ mod tests {
             }
         }
         assert!(contacts > 200, "the grid makes contacts: {contacts}");
+    }
+
+    /// Segments on a small grid, on dyadic scales, and in every order: the fixed-width answer
+    /// is the general solver's (resultants and big rationals), parameter for parameter.
+    #[test]
+    fn fixed_width_segments_agree_with_the_general_solver() {
+        use super::{segment_contact_small, SegmentContact};
+        let mut rng = XorShift(0x5e95);
+        let mut kinds = [0; 3];
+        for i in 0..3000 {
+            let scale = [1.0, 0.25, 1024.0, 3.0 / 64.0][i % 4];
+            let mut point = || {
+                let mut c = || ((rng.next() % 7) as f64 - 3.0) * scale;
+                [c(), c()]
+            };
+            let (p, mut q) = ([point(), point()], [point(), point()]);
+            if i % 3 == 0 {
+                // Ends on p's line, at multiples of half its length: collinear pieces.
+                let mut on_line = || {
+                    let k = (rng.next() % 7) as f64 / 2.0 - 1.0;
+                    [0, 1].map(|c| p[0][c] + k * (p[1][c] - p[0][c]))
+                };
+                q = [on_line(), on_line()];
+            }
+            if p[0] == p[1] || q[0] == q[1] {
+                continue;
+            }
+            let small = segment_contact_small(&p, &q).expect("small coordinates");
+            let exact = |x: &[[f64; 2]]| -> Vec<[Rational; 2]> {
+                x.iter()
+                    .map(|c| c.map(|v| Rational::from_float(v).unwrap()))
+                    .collect()
+            };
+            let general = intersect_general(&exact(&p), &exact(&q)).unwrap();
+            let big = |x: &super::SmallRational| x.to_rational();
+            match small {
+                SegmentContact::Apart => {
+                    assert!(
+                        general.points.is_empty() && general.overlaps.is_empty(),
+                        "{p:?} {q:?}"
+                    );
+                    kinds[0] += 1;
+                }
+                SegmentContact::Point([s, t]) => {
+                    assert!(general.overlaps.is_empty() && general.points.len() == 1);
+                    let x = &general.points[0];
+                    assert_eq!((x.s.exact(), x.t.exact()), (Some(&big(&s)), Some(&big(&t))));
+                    kinds[1] += 1;
+                }
+                SegmentContact::Overlap { s, t } => {
+                    assert!(general.points.is_empty() && general.overlaps.len() == 1);
+                    let o = &general.overlaps[0];
+                    for k in 0..2 {
+                        assert_eq!(o.s[k].exact(), Some(&big(&s[k])), "{p:?} {q:?}");
+                        assert_eq!(o.t[k].exact(), Some(&big(&t[k])), "{p:?} {q:?}");
+                    }
+                    kinds[2] += 1;
+                }
+            }
+        }
+        assert!(
+            kinds.iter().all(|&k| k > 30),
+            "every kind of contact: {kinds:?}"
+        );
+        // Beyond the fixed width: the caller falls back.
+        assert_eq!(
+            segment_contact_small(&[[0.1, 0.0], [1.0, 1.0]], &[[0.0, 1.0], [1.0, 0.0]]),
+            None
+        );
+    }
+
+    /// Segments against quadratics and cubics on a small grid (ends on the segment, tangent
+    /// ends and curves through the segment's line are frequent there), on dyadic scales:
+    /// wherever the fixed-width stage answers, its points are the general solver's.
+    #[test]
+    fn fixed_width_segment_and_curve_agree_with_the_general_solver() {
+        use super::segment_curve_small;
+        let mut rng = XorShift(0x5e9c);
+        let (mut answered, mut points) = (0, 0);
+        for i in 0..3000 {
+            let scale = [1.0, 0.5, 256.0, 5.0 / 32.0][i % 4];
+            let degree = 2 + i % 2;
+            let mut point = || {
+                let mut c = || ((rng.next() % 5) as f64 - 2.0) * scale;
+                [c(), c()]
+            };
+            let segment = [point(), point()];
+            let mut curve: Vec<[f64; 2]> = (0..=degree).map(|_| point()).collect();
+            if i % 3 == 0 {
+                // A curve that starts on the segment's line with a tangent along it.
+                curve[0] = segment[0];
+                curve[1] = [0, 1].map(|c| 2.0 * segment[1][c] - segment[0][c]);
+            }
+            if segment[0] == segment[1] || curve.iter().all(|c| c == &curve[0]) {
+                continue;
+            }
+            let Some(small) = segment_curve_small(&segment, &curve) else {
+                continue;
+            };
+            let exact = |x: &[[f64; 2]]| -> Vec<[Rational; 2]> {
+                x.iter()
+                    .map(|c| c.map(|v| Rational::from_float(v).unwrap()))
+                    .collect()
+            };
+            let general = intersect_general(&exact(&segment), &exact(&curve)).unwrap();
+            assert!(general.overlaps.is_empty());
+            assert_eq!(small.len(), general.points.len(), "{segment:?} {curve:?}");
+            for ([s, t], x) in small.iter().zip(&general.points) {
+                assert_eq!(x.s.exact(), Some(&s.to_rational()), "{segment:?} {curve:?}");
+                assert_eq!(x.t.exact(), Some(&t.to_rational()), "{segment:?} {curve:?}");
+            }
+            answered += 1;
+            points += small.len();
+        }
+        assert!(
+            answered > 1000 && points > 500,
+            "{answered} answered, {points} points"
+        );
     }
 }

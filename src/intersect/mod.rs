@@ -31,7 +31,7 @@ pub(crate) mod extrema;
 pub(crate) mod filter;
 pub(crate) mod interval;
 pub(crate) mod isolate;
-mod line;
+pub(crate) mod line;
 pub(crate) mod methods;
 pub(crate) mod modular;
 pub(crate) mod pyramid;

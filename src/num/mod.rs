@@ -12,3 +12,4 @@ pub mod meter;
 pub(crate) mod parse;
 pub(crate) mod poly;
 pub(crate) mod ring;
+pub(crate) mod small;

@@ -14,6 +14,7 @@ use crate::error::{Error, ErrorKind, Result};
 use crate::intersect::algebraic::{exact_f64, AlgebraicReal};
 use crate::intersect::curves::{intersect_curves_f64, Intersections};
 use crate::num::ring::Rational;
+use crate::num::small::SmallRational;
 use crate::region::arrangement::CurveId;
 use crate::region::input::Doubles;
 use std::cmp::Ordering;
@@ -49,7 +50,9 @@ use std::sync::{Arc, OnceLock};
 pub struct Parameter {
     nearest: f64,
     enclosure: [f64; 2],
-    exact: OnceLock<AlgebraicReal>,
+    /// Boxed: most parameters never make their exact number, and a small `Parameter` is
+    /// cheap to sort and copy.
+    exact: OnceLock<Box<AlgebraicReal>>,
     source: Source,
 }
 
@@ -62,6 +65,9 @@ enum Source {
     End(bool),
     /// A crossing proved by the float filter.
     Crossing(Crossing),
+    /// An exact rational found in fixed-width arithmetic (the contacts of segments with
+    /// integer or dyadic ends): compared without big integers.
+    Small(SmallRational),
 }
 
 /// Where a crossing parameter comes from: the pair, which side, and both enclosures (which
@@ -126,7 +132,7 @@ impl Parameter {
         Parameter {
             nearest,
             enclosure,
-            exact: OnceLock::from(x),
+            exact: OnceLock::from(Box::new(x)),
             source: Source::Known,
         }
     }
@@ -139,6 +145,27 @@ impl Parameter {
             enclosure: [x, x],
             exact: OnceLock::new(),
             source: Source::End(one),
+        }
+    }
+
+    /// An exact rational found in fixed-width arithmetic (its big form made on demand).
+    pub(crate) fn small(x: SmallRational) -> Parameter {
+        let (nearest, enclosure) = x.to_f64_enclosure();
+        Parameter {
+            nearest,
+            enclosure,
+            exact: OnceLock::new(),
+            source: Source::Small(x),
+        }
+    }
+
+    /// The number as a fixed-width rational when it is one without exact work: a curve's end
+    /// or a number found in fixed-width arithmetic.
+    pub(crate) fn as_small(&self) -> Option<SmallRational> {
+        match self.source {
+            Source::End(one) => Some(SmallRational::integer(i64::from(one))),
+            Source::Small(x) => Some(x),
+            _ => None,
         }
     }
 
@@ -182,8 +209,12 @@ impl Parameter {
     /// (`Some(false)` for 0, `Some(true)` for 1); crossings proved by the filter lie strictly
     /// inside (0, 1), so they answer `None`.
     pub fn curve_end(&self) -> Option<bool> {
-        if let Source::End(one) = self.source {
-            return Some(one);
+        match self.source {
+            Source::End(one) => return Some(one),
+            Source::Small(x) if x == SmallRational::ZERO => return Some(false),
+            Source::Small(x) if x == SmallRational::ONE => return Some(true),
+            Source::Small(_) => return None,
+            _ => {}
         }
         let x = self.exact.get()?.exact()?;
         if x == &Rational::from_integer(0.into()) {
@@ -210,7 +241,14 @@ impl Parameter {
             Source::Crossing(c) => c,
             Source::End(one) => {
                 let x = Rational::from_integer(i64::from(*one).into());
-                return Ok(self.exact.get_or_init(|| AlgebraicReal::from_rational(x)));
+                return Ok(self
+                    .exact
+                    .get_or_init(|| Box::new(AlgebraicReal::from_rational(x))));
+            }
+            Source::Small(x) => {
+                return Ok(self
+                    .exact
+                    .get_or_init(|| Box::new(AlgebraicReal::from_rational(x.to_rational()))));
             }
             Source::Known => unreachable!("a known parameter has its exact number"),
         };
@@ -230,7 +268,7 @@ impl Parameter {
                 )
             })?;
         let x = if c.side == 0 { &found.s } else { &found.t };
-        Ok(self.exact.get_or_init(|| x.clone()))
+        Ok(self.exact.get_or_init(|| Box::new(x.clone())))
     }
 
     /// The exact order of two parameters (of one curve): their enclosures first, exact
@@ -247,6 +285,9 @@ impl Parameter {
         }
         if other.enclosure[1] < self.enclosure[0] {
             return Ok(Ordering::Greater);
+        }
+        if let (Some(a), Some(b)) = (self.as_small(), other.as_small()) {
+            return Ok(a.cmp(&b));
         }
         Ok(self.algebraic()?.compare(other.algebraic()?))
     }
@@ -281,6 +322,8 @@ impl fmt::Debug for Parameter {
         match (self.exact.get(), &self.source) {
             (Some(x), _) => write!(f, "{x}"),
             (None, Source::End(one)) => write!(f, "{}", u8::from(*one)),
+            (None, Source::Small(x)) if x.denom() == 1 => write!(f, "{}", x.numer()),
+            (None, Source::Small(x)) => write!(f, "{}/{}", x.numer(), x.denom()),
             (None, _) => write!(
                 f,
                 "{:?} (crossing in [{:?}, {:?}])",

@@ -124,7 +124,11 @@ pub(crate) fn consecutive_meet_only_at_join<P: ProofPoint>(p: &[P], q: &[P]) -> 
 }
 
 /// Whether the curve with control points `p` is provably one-to-one (so has no
-/// self-intersection and does not retrace itself).
+/// self-intersection and does not retrace itself): some direction d (the chord, or the sum of
+/// the legs as computed) has d . (P_(i+1) - P_i) >= 0 for every leg and > 0 for one, decided
+/// exactly. Then d . P'(t) = n Σ_i d . (P_(i+1) - P_i) B_i^(n-1)(t) > 0 on (0, 1), so d . P
+/// increases strictly and P takes no point twice. Legs of length zero (a control point on
+/// an end, as fonts write straight quadratics) are allowed.
 pub(crate) fn one_to_one<P: ProofPoint>(p: &[P]) -> bool {
     let chord = minus(p[p.len() - 1].approx(), p[0].approx());
     let mut sum = [0.0, 0.0];
@@ -133,9 +137,17 @@ pub(crate) fn one_to_one<P: ProofPoint>(p: &[P]) -> bool {
         sum = [sum[0] + d[0], sum[1] + d[1]];
     }
     [chord, sum].iter().any(|d| {
+        let mut advances = false;
         d.iter().all(|c| c.is_finite())
-            && p.windows(2)
-                .all(|w| w[1].side(d, &w[0]) == Ordering::Greater)
+            && p.windows(2).all(|w| match w[1].side(d, &w[0]) {
+                Ordering::Less => false,
+                Ordering::Equal => true,
+                Ordering::Greater => {
+                    advances = true;
+                    true
+                }
+            })
+            && advances
     })
 }
 

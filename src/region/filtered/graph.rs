@@ -7,11 +7,18 @@
 //!
 //! 1. consecutive curves of a loop that a line through their join separates meet only there
 //!    (the exact test of `prune`, on doubles);
-//! 2. the certified float filter ([`certified_crossings_f64`]) proves every common point of the
+//! 2. two segments whose ends are small integers on one dyadic scale (every font) are
+//!    intersected exactly in fixed-width integers ([`segment_contact_small`]): crossings,
+//!    ends on the other segment, shared vertices and collinear overlaps alike, their
+//!    parameters [`Parameter::small`] rationals compared without big integers;
+//! 3. the certified float filter ([`certified_crossings_f64`]) proves every common point of the
 //!    pair a transversal crossing strictly inside both curves and gives each parameter's
 //!    correctly rounded double with an enclosure of doubles (a [`Parameter::crossing`], made
 //!    exact only on demand);
-//! 3. otherwise (an end on the other curve, a shared vertex, a tangency, an overlap) that pair
+//! 4. otherwise a segment and a quadratic or cubic with such ends are tried in fixed width
+//!    ([`segment_curve_small`]: the roots at the curve's ends divided out, a remaining factor
+//!    of degree 1 or of one sign);
+//! 5. otherwise (an end on the other curve, a shared vertex, a tangency, an overlap) that pair
 //!    alone is intersected exactly ([`intersect_curves_f64`]): its points and overlaps are
 //!    exact [`AlgebraicReal`]s. The rest of the boolean stays in floating point.
 //!
@@ -21,17 +28,20 @@
 //! [`Parameter::compare`]: disjoint enclosures order two parameters at once; only where
 //! enclosures meet are the exact numbers compared, so two contacts at one point of the plane
 //! (three curves through one point, a crossing at another curve's end) are recognised
-//! exactly and merged. Both sides of every overlap are split alike ([`transfer`], exact), as
-//! in the exact stages; the vertices, pieces and groups then come from the same procedure
+//! exactly and merged. Both sides of every overlap are split alike ([`transfer`], exact; an
+//! affine map between segments, in fixed width while its numbers fit), as in the exact
+//! stages; the vertices, pieces and groups then come from the same procedure
 //! ([`assemble`]).
 
 use crate::error::Result;
 use crate::intersect::algebraic::{exact_f64, value_at, AlgebraicReal};
-use crate::intersect::curves::{intersect_curves_f64, self_intersections_f64, Overlap};
+use crate::intersect::curves::{intersect_curves_f64, self_intersections_f64, Intersections};
 use crate::intersect::filter::certified_crossings_f64;
+use crate::intersect::line::{segment_contact_small, segment_curve_small, SegmentContact};
 use crate::num::ring::Rational;
+use crate::num::small::SmallRational;
 use crate::region::arrangement::{
-    assemble, meeting_boxes, strictly_between, Assembled, CurveId, Group, Piece, Stretch,
+    assemble, meeting_boxes, Assembled, CurveId, Group, Piece, Stretch,
 };
 use crate::region::curve::Curve as ExactCurve;
 use crate::region::input::Doubles;
@@ -90,6 +100,8 @@ pub(super) struct ContactCounts {
     pub filtered: usize,
     /// Consecutive curves proved to meet only at their join.
     pub joins: usize,
+    /// Pairs of segments intersected exactly in fixed-width integers.
+    pub fixed_width: usize,
     /// Pairs intersected exactly (a contact the filter could not decide).
     pub exact: usize,
     /// Curves intersected exactly with themselves.
@@ -113,11 +125,72 @@ pub(super) struct Graph<'a> {
 /// Two (curve, parameter) nodes that are one point of the plane.
 type Same = [(usize, Parameter); 2];
 
-/// An overlap of curves p and q with its exact ends.
+/// An overlap of curves p and q: its exact ends on p (increasing) and the matching ends on
+/// q.
 struct Shared {
     p: usize,
     q: usize,
-    overlap: Overlap,
+    s: [Parameter; 2],
+    t: [Parameter; 2],
+}
+
+/// The exact contacts of one pair of curves (i, j): common points as (s on i, t on j), and
+/// overlaps of positive length.
+struct Contacts {
+    i: usize,
+    j: usize,
+    points: Vec<[Parameter; 2]>,
+    overlaps: Vec<[[Parameter; 2]; 2]>,
+}
+
+impl Contacts {
+    /// The answer of the exact intersection of curves i and j.
+    fn exact(i: usize, j: usize, found: Intersections) -> Contacts {
+        let known = |x: &AlgebraicReal| Parameter::known(x.clone());
+        Contacts {
+            i,
+            j,
+            points: found
+                .points
+                .iter()
+                .map(|x| [known(&x.s), known(&x.t)])
+                .collect(),
+            overlaps: found
+                .overlaps
+                .iter()
+                .filter(|o| !o.s[0].equals(&o.s[1]) && !o.t[0].equals(&o.t[1]))
+                .map(|o| [o.s.each_ref().map(known), o.t.each_ref().map(known)])
+                .collect(),
+        }
+    }
+
+    /// The contacts of curves i and j (control points `p`, `q`) in fixed-width integers
+    /// when their ends allow it: two segments, or a segment and a quadratic or cubic (module
+    /// `line`); `None` otherwise.
+    fn fixed_width(i: usize, j: usize, p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<Contacts> {
+        let small = |st: [SmallRational; 2]| st.map(Parameter::small);
+        let (mut points, mut overlaps) = (Vec::new(), Vec::new());
+        match (p.len(), q.len()) {
+            (2, 2) => match segment_contact_small(p, q)? {
+                SegmentContact::Apart => {}
+                SegmentContact::Point(st) => points.push(small(st)),
+                SegmentContact::Overlap { s, t } => overlaps.push([small(s), small(t)]),
+            },
+            (2, _) => points.extend(segment_curve_small(p, q)?.into_iter().map(small)),
+            (_, 2) => points.extend(
+                segment_curve_small(q, p)?
+                    .into_iter()
+                    .map(|[t, s]| small([s, t])),
+            ),
+            _ => return None,
+        }
+        Some(Contacts {
+            i,
+            j,
+            points,
+            overlaps,
+        })
+    }
 }
 
 /// The curves that trace more than a point, in (region, loop, curve) order, and each one's
@@ -208,7 +281,18 @@ impl<'a> Graph<'a> {
                 counts.joins += 1;
                 continue;
             }
-            match certified_crossings_f64(curves[i].points, curves[j].points) {
+            let (p, q) = (curves[i].points, curves[j].points);
+            // Two segments: fixed width decides everything, crossings included.
+            let segments = p.len() == 2 && q.len() == 2;
+            if let Some(found) = segments
+                .then(|| Contacts::fixed_width(i, j, p, q))
+                .flatten()
+            {
+                counts.fixed_width += 1;
+                exact.push(found);
+                continue;
+            }
+            match certified_crossings_f64(p, q) {
                 Some(found) => {
                     counts.filtered += 1;
                     if !found.is_empty() {
@@ -217,20 +301,23 @@ impl<'a> Graph<'a> {
                     }
                 }
                 None => {
+                    if let Some(found) = (!segments)
+                        .then(|| Contacts::fixed_width(i, j, p, q))
+                        .flatten()
+                    {
+                        counts.fixed_width += 1;
+                        exact.push(found);
+                        continue;
+                    }
                     counts.exact += 1;
-
-                    exact.push((
-                        i,
-                        j,
-                        intersect_curves_f64(curves[i].points, curves[j].points)?,
-                    ));
+                    exact.push(Contacts::exact(i, j, intersect_curves_f64(p, q)?));
                 }
             }
         }
         for (c, curve) in curves.iter().enumerate() {
             if !one_to_one(curve.points) {
                 counts.exact_self += 1;
-                exact.push((c, c, self_intersections_f64(curve.points)?));
+                exact.push(Contacts::exact(c, c, self_intersections_f64(curve.points)?));
             }
         }
         // Phase 2: the parameters.
@@ -266,25 +353,20 @@ impl<'a> Graph<'a> {
                 record(&mut params, &mut same, i, at(0, x.s), j, at(1, x.t));
             }
         }
-        for (i, j, found) in exact {
-            for x in found.points {
-                let (s, t) = (Parameter::known(x.s), Parameter::known(x.t));
+        for Contacts {
+            i,
+            j,
+            points,
+            overlaps,
+        } in exact
+        {
+            for [s, t] in points {
                 record(&mut params, &mut same, i, s, j, t);
             }
-            for overlap in found.overlaps {
-                let ends = [&overlap.s[0], &overlap.s[1], &overlap.t[0], &overlap.t[1]];
-                if ends[0].equals(ends[1]) || ends[2].equals(ends[3]) {
-                    continue;
-                }
-                for e in 0..2 {
-                    params[i].push(Parameter::known(overlap.s[e].clone()));
-                    params[j].push(Parameter::known(overlap.t[e].clone()));
-                }
-                shared.push(Shared {
-                    p: i,
-                    q: j,
-                    overlap,
-                });
+            for [s, t] in overlaps {
+                params[i].extend(s.iter().cloned());
+                params[j].extend(t.iter().cloned());
+                shared.push(Shared { p: i, q: j, s, t });
             }
         }
         for (c, &d) in next.iter().enumerate() {
@@ -304,13 +386,12 @@ impl<'a> Graph<'a> {
         }
         let mut stretches = Vec::with_capacity(shared.len());
         for sh in &shared {
-            let at =
-                |c: usize, x: &AlgebraicReal| index_of(&params[c], &Parameter::known(x.clone()));
+            let at = |c: usize, x: &Parameter| index_of(&params[c], x);
             stretches.push(Stretch {
                 p: sh.p,
                 q: sh.q,
-                s: [at(sh.p, &sh.overlap.s[0])?, at(sh.p, &sh.overlap.s[1])?],
-                t: [at(sh.q, &sh.overlap.t[0])?, at(sh.q, &sh.overlap.t[1])?],
+                s: [at(sh.p, &sh.s[0])?, at(sh.p, &sh.s[1])?],
+                t: [at(sh.q, &sh.t[0])?, at(sh.q, &sh.t[1])?],
             });
         }
         let lens: Vec<usize> = params.iter().map(Vec::len).collect();
@@ -346,107 +427,138 @@ fn carry_across_overlaps(
     if shared.is_empty() {
         return Ok(());
     }
-    // Each overlap's range on each side as doubles around it.
-    let span = |r: &[AlgebraicReal; 2]| {
-        let (a, b) = (r[0].to_f64(), r[1].to_f64());
-        [a.min(b).next_down(), a.max(b).next_up()]
-    };
-    let spans: Vec<[[f64; 2]; 2]> = shared
-        .iter()
-        .map(|sh| [span(&sh.overlap.s), span(&sh.overlap.t)])
-        .collect();
-    // Between two segments, each direction's affine map, made once.
+    // Between two segments, each direction's affine map.
     let maps: Vec<[Option<Affine>; 2]> = shared
         .iter()
         .map(|sh| {
             let segments = curves[sh.p].points.len() == 2 && curves[sh.q].points.len() == 2;
-            let o = &sh.overlap;
             [
-                segments.then(|| Affine::new(&o.s, &o.t)),
-                segments.then(|| Affine::new(&o.t, &o.s)),
+                segments.then(|| Affine::new(&sh.s, &sh.t)),
+                segments.then(|| Affine::new(&sh.t, &sh.s)),
             ]
         })
         .collect();
     let mut work: Vec<(usize, Parameter)> = Vec::new();
+    let mut queued = vec![false; params.len()];
     for sh in shared {
         for c in [sh.p, sh.q] {
-            work.extend(params[c].iter().map(|x| (c, x.clone())));
+            if !std::mem::replace(&mut queued[c], true) {
+                work.extend(params[c].iter().map(|x| (c, x.clone())));
+            }
         }
     }
+    // The overlaps each curve takes part in, with its side (0: p, 1: q).
+    let mut sides: Vec<Vec<(usize, usize)>> = vec![Vec::new(); params.len()];
+    for (k, sh) in shared.iter().enumerate() {
+        sides[sh.p].push((k, 0));
+        sides[sh.q].push((k, 1));
+    }
     while let Some((from, x)) = work.pop() {
-        for (k, (sh, span)) in shared.iter().zip(&spans).enumerate() {
-            let o = &sh.overlap;
-            for (side_from, to, from_range, to_range, [lo, hi]) in [
-                (sh.p, sh.q, &o.s, &o.t, span[0]),
-                (sh.q, sh.p, &o.t, &o.s, span[1]),
-            ] {
-                if side_from != from {
-                    continue;
-                }
-                let [a, b] = x.enclosure();
-                if b < lo || a > hi {
-                    continue;
-                }
-                let exact = x.algebraic()?;
-                // Inside by the enclosures alone (lo, hi are outward around the ends).
-                let clearly_inside = a > lo.next_up().next_up() && b < hi.next_down().next_down();
-                if !clearly_inside && !strictly_between(exact, &from_range[0], &from_range[1]) {
-                    continue;
-                }
-                let t = if let Some(map) = &maps[k][usize::from(side_from != sh.p)] {
-                    map.image(exact)
-                } else {
-                    transfer(
-                        curves[from].exact(),
-                        exact,
-                        curves[to].exact(),
-                        (&to_range[0], &to_range[1]),
-                    )
-                };
-                let t = Parameter::known(t);
-                let mut failed = None;
-                let at = params[to].binary_search_by(|p| compare(p, &t, &mut failed));
-                if let Some(e) = failed {
-                    return Err(e);
-                }
-                if let Err(at) = at {
-                    params[to].insert(at, t.clone());
-                    work.push((to, t));
-                }
+        for &(k, side) in &sides[from] {
+            let sh = &shared[k];
+            let (to, from_range, to_range, map) = if side == 0 {
+                (sh.q, &sh.s, &sh.t, &maps[k][0])
+            } else {
+                (sh.p, &sh.t, &sh.s, &maps[k][1])
+            };
+            if !strictly_inside(&x, from_range)? {
+                continue;
+            }
+            let t = match map {
+                Some(map) => map.image(&x)?,
+                None => Parameter::known(transfer(
+                    curves[from].exact(),
+                    x.algebraic()?,
+                    curves[to].exact(),
+                    (to_range[0].algebraic()?, to_range[1].algebraic()?),
+                )),
+            };
+            let mut failed = None;
+            let at = params[to].binary_search_by(|p| compare(p, &t, &mut failed));
+            if let Some(e) = failed {
+                return Err(e);
+            }
+            if let Err(at) = at {
+                params[to].insert(at, t.clone());
+                work.push((to, t));
             }
         }
     }
     Ok(())
 }
 
+/// Whether x lies strictly between the two ends of `range` (in either order): enclosures
+/// first, exact comparisons only where they meet.
+fn strictly_inside(x: &Parameter, range: &[Parameter; 2]) -> Result<bool> {
+    let [a, b] = range;
+    let (lo, hi) = if a.compare(b)? == Ordering::Greater {
+        (b, a)
+    } else {
+        (a, b)
+    };
+    Ok(x.compare(lo)? == Ordering::Greater && x.compare(hi)? == Ordering::Less)
+}
+
 /// The affine map t = shift + slope s taking one overlap's ends on one segment to its ends
-/// on the other (rational: the overlap ends of two segments are).
+/// on the other: in fixed width while its numbers fit, else in big rationals (the overlap
+/// ends of two segments are rational).
 struct Affine {
-    shift: Rational,
-    slope: Rational,
+    small: Option<[SmallRational; 2]>,
+    big: OnceCell<[Rational; 2]>,
+    ends: [[Parameter; 2]; 2],
 }
 
 impl Affine {
-    fn new(from: &[AlgebraicReal; 2], to: &[AlgebraicReal; 2]) -> Affine {
-        let end = |x: &AlgebraicReal| {
-            x.exact()
-                .cloned()
-                .expect("the overlap of two segments has rational ends")
+    fn new(from: &[Parameter; 2], to: &[Parameter; 2]) -> Affine {
+        let small = || {
+            let [s0, s1, t0, t1] = [&from[0], &from[1], &to[0], &to[1]].map(Parameter::as_small);
+            let (s0, s1, t0, t1) = (s0?, s1?, t0?, t1?);
+            let slope = t1.sub(t0)?.div(s1.sub(s0)?)?;
+            Some([t0.sub(s0.mul(slope)?)?, slope])
         };
-        let (s0, s1, t0, t1) = (end(&from[0]), end(&from[1]), end(&to[0]), end(&to[1]));
-        let slope = (&t1 - &t0) / (&s1 - &s0);
         Affine {
-            shift: &t0 - &s0 * &slope,
-            slope,
+            small: small(),
+            big: OnceCell::new(),
+            ends: [from.clone(), to.clone()],
         }
     }
 
-    /// The image of x, exactly.
-    fn image(&self, x: &AlgebraicReal) -> AlgebraicReal {
-        match x.exact() {
-            Some(s) => AlgebraicReal::from_rational(&self.shift + s * &self.slope),
-            None => value_at(&[self.shift.clone(), self.slope.clone()], x),
+    /// `[shift, slope]` in big rationals, made once.
+    fn big(&self) -> Result<&[Rational; 2]> {
+        if let Some(b) = self.big.get() {
+            return Ok(b);
         }
+        let mut end = [
+            [Rational::default(), Rational::default()],
+            [Rational::default(), Rational::default()],
+        ];
+        for (e, side) in end.iter_mut().zip(&self.ends) {
+            for (v, x) in e.iter_mut().zip(side) {
+                *v = x
+                    .algebraic()?
+                    .exact()
+                    .cloned()
+                    .expect("the overlap of two segments has rational ends");
+            }
+        }
+        let [[s0, s1], [t0, t1]] = end;
+        let slope = (&t1 - &t0) / (&s1 - &s0);
+        Ok(self.big.get_or_init(|| [&t0 - &s0 * &slope, slope]))
+    }
+
+    /// The image of x, exactly.
+    fn image(&self, x: &Parameter) -> Result<Parameter> {
+        if let (Some([shift, slope]), Some(s)) = (self.small, x.as_small()) {
+            if let Some(t) = s.mul(slope).and_then(|v| v.add(shift)) {
+                return Ok(Parameter::small(t));
+            }
+        }
+        let [shift, slope] = self.big()?;
+        let x = x.algebraic()?;
+        Ok(Parameter::known(match x.exact() {
+            Some(s) => AlgebraicReal::from_rational(shift + s * slope),
+            None => value_at(&[shift.clone(), slope.clone()], x),
+        }))
     }
 }
 

@@ -11,7 +11,8 @@
 //! 1. `graph`: every pair of curves whose boxes meet is decided by the cheapest proof that
 //!    applies: a separating line at a loop's join (exact, on doubles), else the certified float
 //!    filter (transversal crossings strictly inside both curves, correctly rounded parameters
-//!    with enclosures), else the exact intersector **on that pair alone**. Each curve's
+//!    with enclosures), else fixed-width exact integers for a segment's contacts (below), else
+//!    the exact intersector **on that pair alone**. Two segments go to fixed width first. Each curve's
 //!    parameters are ordered by their enclosures, exactly where enclosures meet; equal
 //!    parameters (several contacts at one point) are merged; the vertices, pieces and groups
 //!    of coincident pieces follow as in the exact stages.
@@ -37,9 +38,13 @@
 //! fail (which would be a bug) or an area enclosure be too wide, `run` answers `None` and the
 //! exact stages answer.
 //!
-//! Integer and dyadic inputs (every font) are doubles, so all of the above applies to them;
-//! the exact work left for their degenerate contacts is the exact intersection of the pair
-//! involved (lines and quadratics with small integer coordinates: small numbers).
+//! Integer and dyadic inputs (every font) are doubles, so all of the above applies to them,
+//! and their degenerate contacts are decided in fixed-width integers before big ones: two
+//! segments, and a segment and a quadratic or cubic that the filter leaves undecided (an end
+//! on the segment, a tangent end), are intersected exactly in `i128` (`intersect::line`),
+//! their parameters exact rationals in 64 bits compared without allocation, and the affine
+//! maps that carry parameters across shared segments stay in that width while their numbers
+//! fit. Only what does not fit, or a contact of two curves, takes big rationals.
 //!
 //! [`Parameter`]: crate::region::Parameter
 
@@ -120,6 +125,7 @@ fn general(
         reason: None,
         pairs: c.pairs,
         joins: c.joins,
+        fixed_width: c.fixed_width,
         filtered: c.filtered,
         exact_pairs: c.exact,
         exact_self: c.exact_self,
