@@ -225,9 +225,11 @@ pub(crate) enum SegmentContact {
     },
 }
 
-/// The largest magnitude of a scaled coordinate that [`segment_contact_small`] takes: 2^30,
-/// so that differences stay below 2^31 and every cross or dot product below 2^63.
-const SMALL_COORDINATE: i64 = 1 << 30;
+/// The largest magnitude of a scaled coordinate that the fixed-width stage takes: 2^60, so
+/// that differences stay below 2^61 and a segment's cross and dot products below 2^123 (a
+/// curve's larger sums are checked). Doubles of one binade scale to 53-bit integers, so
+/// most double input whose exponents are close qualifies, not only integers.
+const SMALL_COORDINATE: i64 = 1 << 60;
 
 /// The common points of the segments `p` and `q` (two distinct ends each) in fixed-width
 /// arithmetic, exactly; `None` when the coordinates are not small integers on one dyadic
@@ -303,7 +305,8 @@ pub(crate) fn segment_curve_small(
         })
         .collect();
     let d = [p1[0] - p0[0], p1[1] - p0[1]];
-    // Power coefficients of Q - p0 (ascending): sum_k (-1)^(k-i) C(n,k) C(k,i) c_i t^k.
+    // Power coefficients of Q - p0 (ascending): sum_k (-1)^(k-i) C(n,k) C(k,i) c_i t^k, below
+    // 8 * 2^61 in magnitude.
     let binomial = |n: usize, k: usize| -> i128 {
         [[1, 0, 0, 0], [1, 1, 0, 0], [1, 2, 1, 0], [1, 3, 3, 1]][n][k]
     };
@@ -317,21 +320,33 @@ pub(crate) fn segment_curve_small(
             a
         })
         .collect();
-    // f(t) = cross(d, Q(t) - p0): below 2^31 * 2^36 * 2.
-    let mut f: Vec<i128> = power.iter().map(|a| d[0] * a[1] - d[1] * a[0]).collect();
+    // f(t) = cross(d, Q(t) - p0), and every sum below, checked.
+    let mut f = Vec::with_capacity(n + 1);
+    for a in &power {
+        f.push(
+            d[0].checked_mul(a[1])?
+                .checked_sub(d[1].checked_mul(a[0])?)?,
+        );
+    }
     if f.iter().all(|&x| x == 0) {
         return None;
     }
     let mut roots: Vec<SmallRational> = Vec::new();
     for end in [0i128, 1] {
-        let at_end = |f: &[i128]| if end == 0 { f[0] } else { f.iter().sum() };
-        while f.len() > 1 && at_end(&f) == 0 {
+        let at_end = |f: &[i128]| {
+            if end == 0 {
+                Some(f[0])
+            } else {
+                f.iter().try_fold(0i128, |acc, &x| acc.checked_add(x))
+            }
+        };
+        while f.len() > 1 && at_end(&f)? == 0 {
             // f = (t - end) r: r_(k-1) = f_k + end r_k, from the top.
             let m = f.len() - 1;
             let mut r = vec![0i128; m];
             r[m - 1] = f[m];
             for k in (1..m).rev() {
-                r[k - 1] = f[k] + end * r[k];
+                r[k - 1] = f[k].checked_add(end * r[k])?;
             }
             f = r;
             if roots.last() != Some(&SmallRational::integer(end as i64)) {
@@ -354,20 +369,24 @@ pub(crate) fn segment_curve_small(
             // Bernstein coefficients of the remaining factor r (degree m) on [0, 1], times
             // C(m, j): b_j = sum_(i <= j) C(m - i, j - i) r_i; one strict sign: no root.
             let m = f.len() - 1;
-            let signs: Vec<i32> = (0..=m)
-                .map(|j| {
-                    let b: i128 = (0..=j).map(|i| binomial(m - i, j - i) * f[i]).sum();
-                    b.signum() as i32
-                })
-                .collect();
-            if signs.iter().any(|&x| x == 0 || x != signs[0]) {
+            let mut signs = [0i128; 4];
+            for (j, sign) in signs.iter_mut().enumerate().take(m + 1) {
+                let mut b = 0i128;
+                for (i, fi) in f.iter().enumerate().take(j + 1) {
+                    b = b.checked_add(binomial(m - i, j - i).checked_mul(*fi)?)?;
+                }
+                *sign = b.signum();
+            }
+            if signs[..=m].iter().any(|&x| x == 0 || x != signs[0]) {
                 return None;
             }
         }
     }
     // s = dot(Q(t) - p0, d) / |d|^2 at each root t = a / b: Q(t) - p0 = sum_k power_k a^k
     // b^(n - k) / b^n.
-    let norm = d[0] * d[0] + d[1] * d[1];
+    let norm = d[0]
+        .checked_mul(d[0])?
+        .checked_add(d[1].checked_mul(d[1])?)?;
     let mut found = Vec::with_capacity(roots.len());
     for t in roots {
         let (a, b) = (i128::from(t.numer()), i128::from(t.denom()));
@@ -493,7 +512,7 @@ mod tests {
         let mut rng = XorShift(0x5e95);
         let mut kinds = [0; 3];
         for i in 0..3000 {
-            let scale = [1.0, 0.25, 1024.0, 3.0 / 64.0][i % 4];
+            let scale = [1.0, 0.25, 1024.0, 3.0 / 64.0, 0.1][i % 5];
             let mut point = || {
                 let mut c = || ((rng.next() % 7) as f64 - 3.0) * scale;
                 [c(), c()]
@@ -510,7 +529,12 @@ mod tests {
             if p[0] == p[1] || q[0] == q[1] {
                 continue;
             }
-            let small = segment_contact_small(&p, &q).expect("small coordinates");
+            // Small integers always fit; multiples of 0.1 (53-bit integers on one scale) fit
+            // unless a reduced parameter needs more than 64 bits.
+            let Some(small) = segment_contact_small(&p, &q) else {
+                assert_eq!(i % 5, 4, "small coordinates fit: {p:?} {q:?}");
+                continue;
+            };
             let exact = |x: &[[f64; 2]]| -> Vec<[Rational; 2]> {
                 x.iter()
                     .map(|c| c.map(|v| Rational::from_float(v).unwrap()))
@@ -548,10 +572,14 @@ mod tests {
             "every kind of contact: {kinds:?}"
         );
         // Beyond the fixed width: the caller falls back.
+        // Doubles of distant binades (1e-30 and 1) do not share a 60-bit scale: big rationals.
         assert_eq!(
-            segment_contact_small(&[[0.1, 0.0], [1.0, 1.0]], &[[0.0, 1.0], [1.0, 0.0]]),
+            segment_contact_small(&[[1e-30, 0.0], [1.0, 1.0]], &[[0.0, 1.0], [1.0, 0.0]]),
             None
         );
+        // 0.1 and 1 do: the crossing of the diagonals is exact in fixed width.
+        let tenth = segment_contact_small(&[[0.1, 0.0], [1.0, 1.0]], &[[0.0, 1.0], [1.0, 0.0]]);
+        assert!(matches!(tenth, Some(SegmentContact::Point(_))));
     }
 
     /// Segments against quadratics and cubics on a small grid (ends on the segment, tangent
@@ -563,7 +591,7 @@ mod tests {
         let mut rng = XorShift(0x5e9c);
         let (mut answered, mut points) = (0, 0);
         for i in 0..3000 {
-            let scale = [1.0, 0.5, 256.0, 5.0 / 32.0][i % 4];
+            let scale = [1.0, 0.5, 256.0, 5.0 / 32.0, 0.1][i % 5];
             let degree = 2 + i % 2;
             let mut point = || {
                 let mut c = || ((rng.next() % 5) as f64 - 2.0) * scale;

@@ -7,18 +7,19 @@
 //!
 //! 1. consecutive curves of a loop that a line through their join separates meet only there
 //!    (the exact test of `prune`, on doubles);
-//! 2. two segments whose ends are small integers on one dyadic scale (every font) are
-//!    intersected exactly in fixed-width integers ([`segment_contact_small`]): crossings,
-//!    ends on the other segment, shared vertices and collinear overlaps alike, their
-//!    parameters [`Parameter::small`] rationals compared without big integers;
+//! 2. a segment and a curve whose control points are integers on one dyadic scale within 60
+//!    bits (every font; most doubles of nearby magnitudes) are intersected exactly in
+//!    fixed-width integers: two segments always ([`segment_contact_small`]: crossings, ends on
+//!    the other segment, shared vertices and collinear overlaps alike), a segment and a
+//!    quadratic or cubic when the roots at the curve's ends leave a factor of degree 1 or of
+//!    one sign on [0, 1] ([`segment_curve_small`]: an end on the segment, a tangent end, no
+//!    contact). The parameters are [`Parameter::small`] rationals compared without big
+//!    integers;
 //! 3. the certified float filter ([`certified_crossings_f64`]) proves every common point of the
 //!    pair a transversal crossing strictly inside both curves and gives each parameter's
 //!    correctly rounded double with an enclosure of doubles (a [`Parameter::crossing`], made
 //!    exact only on demand);
-//! 4. otherwise a segment and a quadratic or cubic with such ends are tried in fixed width
-//!    ([`segment_curve_small`]: the roots at the curve's ends divided out, a remaining factor
-//!    of degree 1 or of one sign);
-//! 5. otherwise (an end on the other curve, a shared vertex, a tangency, an overlap) that pair
+//! 4. otherwise (an end on the other curve, a shared vertex, a tangency, an overlap) that pair
 //!    alone is intersected exactly ([`intersect_curves_f64`]): its points and overlaps are
 //!    exact [`AlgebraicReal`]s. The rest of the boolean stays in floating point.
 //!
@@ -282,12 +283,9 @@ impl<'a> Graph<'a> {
                 continue;
             }
             let (p, q) = (curves[i].points, curves[j].points);
-            // Two segments: fixed width decides everything, crossings included.
-            let segments = p.len() == 2 && q.len() == 2;
-            if let Some(found) = segments
-                .then(|| Contacts::fixed_width(i, j, p, q))
-                .flatten()
-            {
+            // A segment: fixed width first (it decides two segments always, and a segment with
+            // a curve whose end lies on it, which the filter cannot).
+            if let Some(found) = Contacts::fixed_width(i, j, p, q) {
                 counts.fixed_width += 1;
                 exact.push(found);
                 continue;
@@ -301,14 +299,6 @@ impl<'a> Graph<'a> {
                     }
                 }
                 None => {
-                    if let Some(found) = (!segments)
-                        .then(|| Contacts::fixed_width(i, j, p, q))
-                        .flatten()
-                    {
-                        counts.fixed_width += 1;
-                        exact.push(found);
-                        continue;
-                    }
                     counts.exact += 1;
                     exact.push(Contacts::exact(i, j, intersect_curves_f64(p, q)?));
                 }
