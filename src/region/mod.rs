@@ -128,6 +128,7 @@ mod output;
 mod parameter;
 mod pipeline;
 mod prune;
+mod straight;
 mod svg;
 mod transfer;
 mod winding;

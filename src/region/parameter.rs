@@ -17,6 +17,7 @@ use crate::num::ring::Rational;
 use crate::num::small::SmallRational;
 use crate::region::arrangement::CurveId;
 use crate::region::input::Doubles;
+use crate::region::straight::Straight;
 use std::cmp::Ordering;
 use std::fmt;
 use std::sync::{Arc, OnceLock};
@@ -48,6 +49,8 @@ use std::sync::{Arc, OnceLock};
 /// ```
 #[derive(Clone)]
 pub struct Parameter {
+    /// The nearest double, except for a straight quadratic's parameter (a double in the
+    /// enclosure; see [`Parameter::to_f64`]).
     nearest: f64,
     enclosure: [f64; 2],
     /// Boxed: most parameters never make their exact number, and a small `Parameter` is
@@ -68,6 +71,10 @@ enum Source {
     /// An exact rational found in fixed-width arithmetic (the contacts of segments with
     /// integer or dyadic ends): compared without big integers.
     Small(SmallRational),
+    /// The parameter t = φ⁻¹(u) of a straight quadratic whose chord parameter u was found in
+    /// fixed width (module `straight`): compared by u; its certified nearest double (kept
+    /// here) and its exact number made on demand.
+    Straight(SmallRational, Straight, OnceLock<f64>),
 }
 
 /// Where a crossing parameter comes from: the pair, which side, and both enclosures (which
@@ -159,12 +166,35 @@ impl Parameter {
         }
     }
 
-    /// The number as a fixed-width rational when it is one without exact work: a curve's end
-    /// or a number found in fixed-width arithmetic.
-    pub(crate) fn as_small(&self) -> Option<SmallRational> {
+    /// The parameter t = φ⁻¹(u) of a straight quadratic of kind `kind` at the chord
+    /// parameter u (module `straight`), its double certified now, its exact number made on
+    /// demand.
+    pub(crate) fn straight(u: SmallRational, kind: Straight) -> Parameter {
+        let (approx, enclosure) = kind.enclosure(u);
+        Parameter {
+            nearest: approx,
+            enclosure,
+            exact: OnceLock::new(),
+            source: Source::Straight(u, kind, OnceLock::new()),
+        }
+    }
+
+    /// The parameter of a point of a chord (a segment, or a straight quadratic's chord when
+    /// `kind` is one) at the chord parameter u.
+    pub(crate) fn on_chord(u: SmallRational, kind: Option<Straight>) -> Parameter {
+        match kind {
+            Some(kind) => Parameter::straight(u, kind),
+            None => Parameter::small(u),
+        }
+    }
+
+    /// The chord parameter u of the point, as a fixed-width rational when known without exact
+    /// work: a curve's end (0 or 1), a number found in fixed width on a segment, or the u of a
+    /// straight quadratic's parameter.
+    pub(crate) fn chord_coordinate(&self) -> Option<SmallRational> {
         match self.source {
             Source::End(one) => Some(SmallRational::integer(i64::from(one))),
-            Source::Small(x) => Some(x),
+            Source::Small(x) | Source::Straight(x, ..) => Some(x),
             _ => None,
         }
     }
@@ -196,6 +226,16 @@ impl Parameter {
 
     /// The double nearest to the exact parameter (ties to even), certified.
     pub fn to_f64(&self) -> f64 {
+        match &self.source {
+            Source::Straight(u, kind, nearest) => *nearest.get_or_init(|| kind.nearest(*u).0),
+            _ => self.nearest,
+        }
+    }
+
+    /// A double inside [`enclosure`](Parameter::enclosure) (the nearest one, except for a
+    /// straight quadratic's parameter, whose nearest double is certified only on demand):
+    /// what the float stages compute with, the enclosure's width as the bound.
+    pub(crate) fn approx(&self) -> f64 {
         self.nearest
     }
 
@@ -211,9 +251,13 @@ impl Parameter {
     pub fn curve_end(&self) -> Option<bool> {
         match self.source {
             Source::End(one) => return Some(one),
-            Source::Small(x) if x == SmallRational::ZERO => return Some(false),
-            Source::Small(x) if x == SmallRational::ONE => return Some(true),
-            Source::Small(_) => return None,
+            Source::Small(x) | Source::Straight(x, ..) if x == SmallRational::ZERO => {
+                return Some(false)
+            }
+            Source::Small(x) | Source::Straight(x, ..) if x == SmallRational::ONE => {
+                return Some(true)
+            }
+            Source::Small(_) | Source::Straight(..) => return None,
             _ => {}
         }
         let x = self.exact.get()?.exact()?;
@@ -249,6 +293,9 @@ impl Parameter {
                 return Ok(self
                     .exact
                     .get_or_init(|| Box::new(AlgebraicReal::from_rational(x.to_rational()))));
+            }
+            Source::Straight(u, kind, _) => {
+                return Ok(self.exact.get_or_init(|| Box::new(kind.root(*u))));
             }
             Source::Known => unreachable!("a known parameter has its exact number"),
         };
@@ -286,7 +333,23 @@ impl Parameter {
         if other.enclosure[1] < self.enclosure[0] {
             return Ok(Ordering::Greater);
         }
-        if let (Some(a), Some(b)) = (self.as_small(), other.as_small()) {
+        // Fixed-width numbers of one kind (φ is increasing, so u orders a straight
+        // quadratic's parameters; its ends are u = 0 and 1).
+        let straight = |p: &Parameter| match p.source {
+            Source::Straight(_, kind, _) => Some(kind),
+            _ => None,
+        };
+        let comparable = match (straight(self), straight(other)) {
+            (Some(a), Some(b)) => a == b,
+            (Some(_), None) => matches!(other.source, Source::End(_)),
+            (None, Some(_)) => matches!(self.source, Source::End(_)),
+            (None, None) => true,
+        };
+        if let (true, Some(a), Some(b)) = (
+            comparable,
+            self.chord_coordinate(),
+            other.chord_coordinate(),
+        ) {
             return Ok(a.cmp(&b));
         }
         Ok(self.algebraic()?.compare(other.algebraic()?))
@@ -324,6 +387,13 @@ impl fmt::Debug for Parameter {
             (None, Source::End(one)) => write!(f, "{}", u8::from(*one)),
             (None, Source::Small(x)) if x.denom() == 1 => write!(f, "{}", x.numer()),
             (None, Source::Small(x)) => write!(f, "{}/{}", x.numer(), x.denom()),
+            (None, Source::Straight(u, kind, _)) => write!(
+                f,
+                "{:?} (φ⁻¹({}/{}) of a straight quadratic, {kind:?})",
+                self.nearest,
+                u.numer(),
+                u.denom()
+            ),
             (None, _) => write!(
                 f,
                 "{:?} (crossing in [{:?}, {:?}])",

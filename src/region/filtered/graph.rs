@@ -48,6 +48,7 @@ use crate::region::curve::Curve as ExactCurve;
 use crate::region::input::Doubles;
 use crate::region::parameter::{Crossings, Parameter};
 use crate::region::prune::{consecutive_meet_only_at_join, one_to_one};
+use crate::region::straight::Straight;
 use crate::region::transfer::transfer;
 use crate::shape::array::Bezier;
 use std::cell::OnceCell;
@@ -62,6 +63,17 @@ pub(super) struct Curve<'a> {
     pub bbox: [f64; 4],
     /// The exact curve, made on first use (only curves in a degenerate contact need it).
     exact: OnceCell<ExactCurve>,
+    /// A straight quadratic's kind (module `straight`).
+    pub straight: Option<Straight>,
+}
+
+impl Curve<'_> {
+    /// The control points of the curve's chord, when its points are a linear function of a
+    /// chord parameter: a segment, or a straight quadratic (module `straight`).
+    fn chord(&self) -> Option<[[f64; 2]; 2]> {
+        let n = self.points.len();
+        (n == 2 || self.straight.is_some()).then(|| [self.points[0], self.points[n - 1]])
+    }
 }
 
 impl Curve<'_> {
@@ -165,25 +177,32 @@ impl Contacts {
         }
     }
 
-    /// The contacts of curves i and j (control points `p`, `q`) in fixed-width integers
-    /// when their ends allow it: two segments, or a segment and a quadratic or cubic (module
-    /// `line`); `None` otherwise.
-    fn fixed_width(i: usize, j: usize, p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<Contacts> {
-        let small = |st: [SmallRational; 2]| st.map(Parameter::small);
+    /// The contacts of curves i and j in fixed-width integers when their control points
+    /// allow it: two chords (segments or straight quadratics), or a chord and a quadratic or
+    /// cubic (module `line`); `None` otherwise. A straight quadratic's chord parameters u
+    /// become its parameters φ⁻¹(u) (module `straight`).
+    fn fixed_width(i: usize, j: usize, a: &Curve<'_>, b: &Curve<'_>) -> Option<Contacts> {
+        let on = |c: &Curve<'_>, u: SmallRational| Parameter::on_chord(u, c.straight);
         let (mut points, mut overlaps) = (Vec::new(), Vec::new());
-        match (p.len(), q.len()) {
-            (2, 2) => match segment_contact_small(p, q)? {
+        match (a.chord(), b.chord()) {
+            (Some(p), Some(q)) => match segment_contact_small(&p, &q)? {
                 SegmentContact::Apart => {}
-                SegmentContact::Point(st) => points.push(small(st)),
-                SegmentContact::Overlap { s, t } => overlaps.push([small(s), small(t)]),
+                SegmentContact::Point([s, t]) => points.push([on(a, s), on(b, t)]),
+                SegmentContact::Overlap { s, t } => {
+                    overlaps.push([s.map(|x| on(a, x)), t.map(|x| on(b, x))]);
+                }
             },
-            (2, _) => points.extend(segment_curve_small(p, q)?.into_iter().map(small)),
-            (_, 2) => points.extend(
-                segment_curve_small(q, p)?
+            (Some(p), None) => points.extend(
+                segment_curve_small(&p, b.points)?
                     .into_iter()
-                    .map(|[t, s]| small([s, t])),
+                    .map(|[s, t]| [on(a, s), Parameter::small(t)]),
             ),
-            _ => return None,
+            (None, Some(q)) => points.extend(
+                segment_curve_small(&q, a.points)?
+                    .into_iter()
+                    .map(|[t, s]| [Parameter::small(s), on(b, t)]),
+            ),
+            (None, None) => return None,
         }
         Some(Contacts {
             i,
@@ -214,6 +233,7 @@ fn collect<'a>(doubles: [&'a Doubles; 2]) -> (Vec<Curve<'a>>, Vec<usize>) {
                     },
                     bbox: bbox(points),
                     exact: OnceCell::new(),
+                    straight: Straight::of(points),
                 });
                 next.push(curves.len());
             }
@@ -285,7 +305,7 @@ impl<'a> Graph<'a> {
             let (p, q) = (curves[i].points, curves[j].points);
             // A segment: fixed width first (it decides two segments always, and a segment with
             // a curve whose end lies on it, which the filter cannot).
-            if let Some(found) = Contacts::fixed_width(i, j, p, q) {
+            if let Some(found) = Contacts::fixed_width(i, j, &curves[i], &curves[j]) {
                 counts.fixed_width += 1;
                 exact.push(found);
                 continue;
@@ -421,10 +441,11 @@ fn carry_across_overlaps(
     let maps: Vec<[Option<Affine>; 2]> = shared
         .iter()
         .map(|sh| {
-            let segments = curves[sh.p].points.len() == 2 && curves[sh.q].points.len() == 2;
+            let (p, q) = (&curves[sh.p], &curves[sh.q]);
+            let chords = p.chord().is_some() && q.chord().is_some();
             [
-                segments.then(|| Affine::new(&sh.s, &sh.t)),
-                segments.then(|| Affine::new(&sh.t, &sh.s)),
+                chords.then(|| Affine::new(&sh.s, &sh.t, [p, q])),
+                chords.then(|| Affine::new(&sh.t, &sh.s, [q, p])),
             ]
         })
         .collect();
@@ -454,8 +475,8 @@ fn carry_across_overlaps(
             if !strictly_inside(&x, from_range)? {
                 continue;
             }
-            let t = match map {
-                Some(map) => map.image(&x)?,
+            let t = match map.as_ref().map(|m| m.image(&x)).transpose()?.flatten() {
+                Some(t) => t,
                 None => Parameter::known(transfer(
                     curves[from].exact(),
                     x.algebraic()?,
@@ -489,19 +510,25 @@ fn strictly_inside(x: &Parameter, range: &[Parameter; 2]) -> Result<bool> {
     Ok(x.compare(lo)? == Ordering::Greater && x.compare(hi)? == Ordering::Less)
 }
 
-/// The affine map t = shift + slope s taking one overlap's ends on one segment to its ends
-/// on the other: in fixed width while its numbers fit, else in big rationals (the overlap
-/// ends of two segments are rational).
+/// The affine map v = shift + slope u taking one overlap's ends on one chord to its ends on
+/// the other, in chord parameters (a segment's own parameter, a straight quadratic's u): in
+/// fixed width while its numbers fit, else, between two segments, in big rationals (the
+/// overlap ends of two segments are rational).
 struct Affine {
     small: Option<[SmallRational; 2]>,
     big: OnceCell<[Rational; 2]>,
     ends: [[Parameter; 2]; 2],
+    /// The kind of the target when it is a straight quadratic.
+    target: Option<Straight>,
+    /// Whether both curves are segments (chord parameter = curve parameter).
+    segments: bool,
 }
 
 impl Affine {
-    fn new(from: &[Parameter; 2], to: &[Parameter; 2]) -> Affine {
+    fn new(from: &[Parameter; 2], to: &[Parameter; 2], curves: [&Curve<'_>; 2]) -> Affine {
         let small = || {
-            let [s0, s1, t0, t1] = [&from[0], &from[1], &to[0], &to[1]].map(Parameter::as_small);
+            let [s0, s1, t0, t1] =
+                [&from[0], &from[1], &to[0], &to[1]].map(Parameter::chord_coordinate);
             let (s0, s1, t0, t1) = (s0?, s1?, t0?, t1?);
             let slope = t1.sub(t0)?.div(s1.sub(s0)?)?;
             Some([t0.sub(s0.mul(slope)?)?, slope])
@@ -510,6 +537,8 @@ impl Affine {
             small: small(),
             big: OnceCell::new(),
             ends: [from.clone(), to.clone()],
+            target: curves[1].straight,
+            segments: curves.iter().all(|c| c.points.len() == 2),
         }
     }
 
@@ -536,19 +565,23 @@ impl Affine {
         Ok(self.big.get_or_init(|| [&t0 - &s0 * &slope, slope]))
     }
 
-    /// The image of x, exactly.
-    fn image(&self, x: &Parameter) -> Result<Parameter> {
-        if let (Some([shift, slope]), Some(s)) = (self.small, x.as_small()) {
+    /// The image of x, exactly; `None` when neither fixed width nor (between segments) big
+    /// rationals apply, for the caller's exact transfer.
+    fn image(&self, x: &Parameter) -> Result<Option<Parameter>> {
+        if let (Some([shift, slope]), Some(s)) = (self.small, x.chord_coordinate()) {
             if let Some(t) = s.mul(slope).and_then(|v| v.add(shift)) {
-                return Ok(Parameter::small(t));
+                return Ok(Some(Parameter::on_chord(t, self.target)));
             }
+        }
+        if !self.segments {
+            return Ok(None);
         }
         let [shift, slope] = self.big()?;
         let x = x.algebraic()?;
-        Ok(Parameter::known(match x.exact() {
+        Ok(Some(Parameter::known(match x.exact() {
             Some(s) => AlgebraicReal::from_rational(shift + s * slope),
             None => value_at(&[shift.clone(), slope.clone()], x),
-        }))
+        })))
     }
 }
 

@@ -48,9 +48,9 @@ impl Areas<'_, '_> {
     }
 }
 
-/// The parameter as its double with the width of its enclosure as the bound.
+/// The parameter as a double in its enclosure with the enclosure's width as the bound.
 fn bounded(p: &Parameter) -> BoundedF64 {
-    parameter(p.to_f64(), p.enclosure())
+    parameter(p.approx(), p.enclosure())
 }
 
 /// An enclosure of the derivative P'(t) of the curve with control points `points` at the

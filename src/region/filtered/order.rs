@@ -90,24 +90,22 @@ impl Around {
 /// The direction of half-edge h in floating point. At a curve's end, and anywhere on a
 /// segment, the derivative is n (p1 - p0) (or n (p_n - p_(n-1))): the signs of its
 /// coordinates, hence its class, come from comparisons of doubles, exactly, when those two
-/// points differ (a zero first derivative is left to the exact order).
+/// points differ (a zero first derivative is left to the exact order). A straight quadratic
+/// (module `straight`) leaves every point of it along its chord, as a segment does, even at
+/// the end where its derivative vanishes.
 fn direction(graph: &Graph<'_>, h: usize) -> Direction {
     let (c, at, toward) = graph.branch(h);
     let points = graph.curves[c].points;
     let param = &graph.params[c][at];
     let backward = toward < at;
-    let end = match param.curve_end() {
-        Some(one) => Some(one),
-        None if points.len() == 2 => Some(false),
+    let n = points.len() - 1;
+    let chord = (n == 1 || graph.curves[c].straight.is_some()).then(|| (points[0], points[n]));
+    let leg = || match param.curve_end() {
+        Some(true) => Some((points[n - 1], points[n])),
+        Some(false) => Some((points[0], points[1])),
         None => None,
     };
-    if let Some(one) = end {
-        let n = points.len() - 1;
-        let (a, b) = if one {
-            (points[n - 1], points[n])
-        } else {
-            (points[0], points[1])
-        };
+    if let Some((a, b)) = chord.or_else(leg) {
         if a != b {
             let cmp = |x: f64, y: f64| -> i8 {
                 match x.partial_cmp(&y) {

@@ -377,3 +377,56 @@ fn random_blobs_with_holes_and_both_fill_rules_agree() {
         "the float path answered {answered} of {total}"
     );
 }
+
+/// A square (side `s`) at (x, y) whose side k is a segment (`kinds[k]` = 0) or a straight
+/// quadratic with its control point on its start (1) or its end (2), as fonts write them.
+fn straight_square(x: f64, y: f64, s: f64, kinds: [u8; 4]) -> Vec<Bezier<f64, 2>> {
+    let c = [[x, y], [x + s, y], [x + s, y + s], [x, y + s]];
+    (0..4)
+        .map(|i| {
+            let (a, b) = (c[i], c[(i + 1) % 4]);
+            let points = match kinds[i] {
+                0 => vec![a, b],
+                1 => vec![a, a, b],
+                _ => vec![a, b, b],
+            };
+            Bezier::new(points).unwrap()
+        })
+        .collect()
+}
+
+/// Straight quadratics sharing stretches with segments and with each other (both kinds),
+/// within one region (overlapping copies, as in a union of shifted glyphs) and between two:
+/// fixed width on their chords, parameters carried through φ⁻¹, the same answers as the exact
+/// stages, parameter for parameter.
+#[test]
+fn straight_quadratics_on_shared_edges_agree_with_the_exact_stages() {
+    let mut rng = XorShift(0x57a1);
+    let mut kinds = || [0, 1, 2, 3].map(|_| (rng.next() % 3) as u8);
+    let mut answered = 0;
+    for round in 0..6 * rounds() {
+        let step = [0.5, 1.0, 0.25][round % 3];
+        let a = Region::from_f64(
+            vec![straight_square(0.0, 0.0, 2.0, kinds())],
+            FillRule::NonZero,
+        )
+        .unwrap();
+        // Three copies moved along x: their horizontal sides overlap.
+        let copies = (1..=3)
+            .map(|k| straight_square(step * k as f64, 0.0, 2.0, kinds()))
+            .collect();
+        let b = Region::from_f64(copies, FillRule::NonZero).unwrap();
+        answered += compare(&a, &b, &format!("round {round}: copies by {step}"));
+        let beside = Region::from_f64(
+            vec![straight_square(2.0, step, 2.0, kinds())],
+            FillRule::EvenOdd,
+        )
+        .unwrap();
+        answered += compare(&a, &beside, &format!("round {round}: beside at {step}"));
+    }
+    assert_eq!(
+        answered,
+        6 * rounds() * 2 * 4,
+        "the general stages answer every case"
+    );
+}
