@@ -99,7 +99,7 @@ pub fn restrict_curves<'py>(
     let readonly = array.readonly();
     let input = readonly.as_array();
     let input = input.as_slice_memory_order().expect("contiguous");
-    if let Some(i) = first_not_finite(input) {
+    if let Some(i) = crate::numbers::first_not_finite(input) {
         let logical = if point_major {
             (i / (d * k)) * d * k + (i % d) * k + (i % (d * k)) / d
         } else {
@@ -134,27 +134,6 @@ fn is_point_major(a: &Bound<'_, PyArray3<f64>>) -> bool {
     let item = std::mem::size_of::<f64>() as isize;
     let (d, k) = (shape[1] as isize, shape[2] as isize);
     shape[0] > 0 && shape[1] > 1 && a.strides() == [item * d * k, item, item * d]
-}
-
-/// The index of the first NaN or infinity. The common case, all finite, is one pass the
-/// compiler vectorises: x - x is 0 for a finite x and NaN otherwise, summed in eight lanes.
-fn first_not_finite(v: &[f64]) -> Option<usize> {
-    let mut lanes = [0.0f64; 8];
-    let (blocks, rest) = v.as_chunks::<8>();
-    for block in blocks {
-        for (lane, x) in lanes.iter_mut().zip(block) {
-            // x - x: zero exactly when x is finite (the point of the expression).
-            #[allow(clippy::eq_op)]
-            let zero_if_finite = x - x;
-            *lane += zero_if_finite;
-        }
-    }
-    let finite = lanes.iter().sum::<f64>() == 0.0 && rest.iter().all(|x| x.is_finite());
-    if finite {
-        None
-    } else {
-        v.iter().position(|x| !x.is_finite())
-    }
 }
 
 /// The `nodes` argument of `restrict_curves` as a float64 array of three dimensions.

@@ -10,6 +10,7 @@ use crate::records::{
 use blossom::budget::{curve_pair_work, self_intersection_work};
 use blossom::{BezierCurve, Intersections, Rational, Reduction, RoundedIntersections};
 use num_rational::Ratio;
+use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 
@@ -275,6 +276,48 @@ fn point_arg(point: &Bound<'_, PyAny>, d: usize) -> PyResult<Coords> {
     Ok(read_array(&flat, "point", 1, "the point's coordinates")?.coords)
 }
 
+/// Degrees up to which `Curve.evaluate_multi` of a float64 curve runs de Casteljau's
+/// algorithm (`BezierCurve::eval_many`), faster than the O(n) method at these degrees
+/// (`benches/python/evaluate_multi.rs`).
+const DE_CASTELJAU_DEGREES: usize = 4;
+
+/// `Curve.evaluate_multi` of a float64 curve: B at every value of `s` (refused, naming the
+/// entry, when one is not finite) written straight into a new `D x M` Fortran-order array
+/// (point after point, the library's layout), -0.0 made +0.0.
+fn evaluate_f64<'py>(
+    py: Python<'py>,
+    c: &BezierCurve<f64>,
+    s: &[f64],
+) -> PyResult<Bound<'py, PyAny>> {
+    if let Some(k) = crate::numbers::first_not_finite(s) {
+        return Err(bad(
+            format!("s_vals[{k}]"),
+            "NotFinite",
+            format!("expected a finite number, found {}", s[k]),
+        ));
+    }
+    let d = c.dim();
+    // SAFETY: every entry of the new array is written below before it is read or returned.
+    #[allow(unsafe_code)]
+    let answer = unsafe { PyArray2::<f64>::new(py, [d, s.len()], true) };
+    {
+        let mut writable = answer.readwrite();
+        let out = writable.as_slice_mut().expect("a new contiguous array");
+        call(&[], || {
+            if c.degree() <= DE_CASTELJAU_DEGREES {
+                c.eval_many(s, out)
+            } else {
+                c.eval_many_linear(s, out)
+            }
+        })?;
+        for x in out.iter_mut() {
+            // x + 0.0 is x, except that -0.0 becomes +0.0.
+            *x += 0.0;
+        }
+    }
+    Ok(answer.into_any())
+}
+
 fn evaluate_multi<'py, T: Num>(
     py: Python<'py>,
     c: &BezierCurve<T>,
@@ -483,11 +526,13 @@ impl Curve {
         })
     }
 
-    /// B at every value of the 1-D `s_vals`, a `D x M` array. A float64 curve takes O(n)
-    /// operations per value in [0, 1] (`BezierCurve::eval_many_linear`: a running convex
-    /// combination of the nodes, its error bound and measured error within those of de
-    /// Casteljau's algorithm, which `evaluate` and values outside [0, 1] use; the two agree
-    /// to a few units in the last place); an exact curve answers exactly.
+    /// B at every value of the 1-D `s_vals`, a `D x M` array. A float64 curve of degree
+    /// n > 4 takes O(n) operations per value in [0, 1] (`BezierCurve::eval_many_linear`: a
+    /// running convex combination of the nodes, its error bound of the order of de
+    /// Casteljau's and its measured error within 1.5 times it), de Casteljau's algorithm
+    /// (`eval_many`, faster at these degrees) up to degree 4 and outside [0, 1]. `evaluate`
+    /// is de Casteljau's at every degree: above degree 4 the two may differ in the last
+    /// places. An exact curve answers exactly.
     fn evaluate_multi<'py>(
         &self,
         py: Python<'py>,
@@ -495,10 +540,16 @@ impl Curve {
     ) -> PyResult<Bound<'py, PyAny>> {
         match &self.shape {
             CurveShape::F64(c) => {
+                // The common case, a contiguous float64 array, read where it lies.
+                if let Ok(array) = s_vals.cast::<PyArray1<f64>>() {
+                    if let Ok(readonly) = array.try_readonly() {
+                        if let Ok(s) = readonly.as_slice() {
+                            return evaluate_f64(py, c, s);
+                        }
+                    }
+                }
                 let s = f64::values(s_vals, "s_vals")?;
-                let mut out = vec![0.0; c.dim() * s.len()];
-                call(&[], || c.eval_many_linear(&s, &mut out))?;
-                f64::columns(py, c.dim(), s.len(), out)
+                evaluate_f64(py, c, &s)
             }
             CurveShape::Exact(c) => evaluate_multi(py, c, s_vals),
         }

@@ -293,6 +293,27 @@ pub fn exact_values(obj: &Bound<'_, PyAny>, arg: &str) -> PyResult<Vec<Rational>
     }
 }
 
+/// The index of the first NaN or infinity. The common case, all finite, is one pass the
+/// compiler vectorises: x - x is 0 for a finite x and NaN otherwise, summed in eight lanes.
+pub fn first_not_finite(v: &[f64]) -> Option<usize> {
+    let mut lanes = [0.0f64; 8];
+    let (blocks, rest) = v.as_chunks::<8>();
+    for block in blocks {
+        for (lane, x) in lanes.iter_mut().zip(block) {
+            // x - x: zero exactly when x is finite (the point of the expression).
+            #[allow(clippy::eq_op)]
+            let zero_if_finite = x - x;
+            *lane += zero_if_finite;
+        }
+    }
+    let finite = lanes.iter().sum::<f64>() == 0.0 && rest.iter().all(|x| x.is_finite());
+    if finite {
+        None
+    } else {
+        v.iter().position(|x| !x.is_finite())
+    }
+}
+
 /// A `d x n` float64 array (Fortran order, as bezier's nodes) from point-major coordinates.
 pub fn f64_columns(
     py: Python<'_>,

@@ -141,68 +141,141 @@ impl BezierCurve<f64> {
             .flat_map(|p| p.iter().zip(&centre).map(|(v, c)| v - c))
             .collect();
         let reversed: Vec<f64> = centred.rchunks_exact(dim).flatten().copied().collect();
-        // The parameters of each branch, by index: t in (0, 1/2] (nodes in order, t' = t),
-        // t in (1/2, 1) (nodes reversed, t' = 1 - t); the ends are the end nodes, and
-        // parameters outside [0, 1] go to de Casteljau.
-        let mut low = Vec::with_capacity(ts.len());
-        let mut high = Vec::new();
-        let mut level = Vec::new();
-        for (i, (&t, point)) in ts.iter().zip(out.chunks_exact_mut(dim)).enumerate() {
-            if t > 0.0 && t <= 0.5 {
-                low.push(i);
-            } else if t > 0.5 && t < 1.0 {
-                high.push(i);
-            } else if t == 0.0 {
-                point.copy_from_slice(&w[..dim]);
-            } else if t == 1.0 {
-                point.copy_from_slice(&w[n * dim..]);
-            } else {
-                self.eval_into(&t, point, &mut level);
-            }
+        let nodes = Nodes {
+            centre: &centre,
+            forward: &centred,
+            reversed: &reversed,
+        };
+        #[cfg(target_arch = "x86_64")]
+        let avx = std::arch::is_x86_feature_detected!("avx");
+        #[cfg(not(target_arch = "x86_64"))]
+        let avx = false;
+        if avx {
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: the processor has just been seen to support AVX.
+            #[allow(unsafe_code)]
+            unsafe {
+                blocks_avx(&nodes, ts, out)
+            };
+        } else {
+            blocks_any(&nodes, ts, out);
         }
-        let mut q = vec![[0.0; LANES]; dim];
-        for (nodes, indices, flip) in [(&centred[..], &low, false), (&reversed[..], &high, true)] {
-            for block in indices.chunks(LANES) {
-                // t' and s = 1 - t' of each lane (a short last block repeats its first).
-                let (mut tp, mut s) = ([0.0; LANES], [0.0; LANES]);
-                for l in 0..LANES {
-                    let t = ts[*block.get(l).unwrap_or(&block[0])];
-                    (tp[l], s[l]) = if flip { (1.0 - t, t) } else { (t, 1.0 - t) };
-                }
-                steps(nodes, dim, &tp, &s, &mut q);
-                for (l, &i) in block.iter().enumerate() {
-                    let point = &mut out[i * dim..(i + 1) * dim];
-                    for ((o, qx), &c) in point.iter_mut().zip(&q).zip(&centre) {
-                        *o = if c == 0.0 { qx[l] } else { c + qx[l] };
-                    }
-                }
-            }
-        }
+        self.fix_ends(ts, out);
         Ok(())
+    }
+
+    /// Rewrites the points of [`BezierCurve::eval_many_linear`] at parameters not in (0, 1):
+    /// the end nodes at 0 and 1, de Casteljau's algorithm elsewhere (and at NaN).
+    fn fix_ends(&self, ts: &[f64], out: &mut [f64]) {
+        let (w, dim) = (self.coordinates(), self.dim());
+        let mut level = Vec::new();
+        for (t, point) in ts.iter().zip(out.chunks_exact_mut(dim)) {
+            if !(*t > 0.0 && *t < 1.0) {
+                if *t == 0.0 {
+                    point.copy_from_slice(&w[..dim]);
+                } else if *t == 1.0 {
+                    point.copy_from_slice(&w[w.len() - dim..]);
+                } else {
+                    self.eval_into(t, point, &mut level);
+                }
+            }
+        }
     }
 }
 
-/// The n steps of the recurrence on one block of lanes: `q[x][l]` ends as coordinate x of
-/// the curve of `nodes` (point after point, `dim` coordinates each) at the lane's parameter
-/// t' = `tp[l]`, s = `s[l]` its 1 - t'.
-#[inline]
-fn steps(nodes: &[f64], dim: usize, tp: &[f64; LANES], s: &[f64; LANES], q: &mut [[f64; LANES]]) {
-    let n = nodes.len() / dim - 1;
-    for (x, qx) in q.iter_mut().enumerate() {
-        *qx = [nodes[x]; LANES];
+/// The translated control points of [`BezierCurve::eval_many_linear`]: each coordinate's
+/// centre, and the nodes less their centres in order and reversed (point after point).
+struct Nodes<'a> {
+    centre: &'a [f64],
+    forward: &'a [f64],
+    reversed: &'a [f64],
+}
+
+/// [`blocks_any`] compiled for AVX (4 lanes an instruction, the same operations, so the same
+/// doubles); callers make sure that the processor has it.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+fn blocks_avx(nodes: &Nodes<'_>, ts: &[f64], out: &mut [f64]) {
+    blocks_any(nodes, ts, out);
+}
+
+/// [`blocks`] with the dimension fixed at compile time for 1, 2 and 3.
+#[inline(always)]
+fn blocks_any(nodes: &Nodes<'_>, ts: &[f64], out: &mut [f64]) {
+    match nodes.centre.len() {
+        1 => blocks::<1>(nodes, ts, out),
+        2 => blocks::<2>(nodes, ts, out),
+        3 => blocks::<3>(nodes, ts, out),
+        _ => blocks::<0>(nodes, ts, out),
     }
-    let mut h = [1.0f64; LANES];
-    for (k, node) in nodes.chunks_exact(dim).enumerate().skip(1) {
-        let a = (n - k + 1) as f64;
-        let b = k as f64;
+}
+
+/// The recurrence at every parameter of `ts`, [`LANES`] consecutive parameters at a time
+/// (a short last block padded with 1/2), written point after point to `out`; each lane runs
+/// from the end nearer to its parameter (the nodes in order and t' = t for t <= 1/2, reversed
+/// and t' = 1 - t above), the choice made per lane by masks, without branches. Parameters
+/// not in (0, 1) get numbers that [`BezierCurve::fix_ends`] then replaces. `D` is the
+/// dimension when it is known at compile time, else 0.
+#[inline(always)]
+fn blocks<const D: usize>(nodes: &Nodes<'_>, ts: &[f64], out: &mut [f64]) {
+    let dim = if D == 0 { nodes.centre.len() } else { D };
+    let n = nodes.forward.len() / dim - 1;
+    let mut q = vec![[0.0; LANES]; dim];
+    let mut last = vec![0.0; LANES * dim];
+    for (t_block, out_block) in ts.chunks(LANES).zip(out.chunks_mut(LANES * dim)) {
+        let t: [f64; LANES] = std::array::from_fn(|l| t_block.get(l).copied().unwrap_or(0.5));
+        // Each lane's direction as a mask of bits, t' and s = 1 - t'.
+        let mut reverse = [0u64; LANES];
+        let (mut tp, mut s) = ([0.0; LANES], [0.0; LANES]);
         for l in 0..LANES {
-            let num = a * tp[l] * h[l];
-            h[l] = num / (b * s[l] + num);
+            let high = t[l] > 0.5;
+            reverse[l] = if high { u64::MAX } else { 0 };
+            (tp[l], s[l]) = if high {
+                (1.0 - t[l], t[l])
+            } else {
+                (t[l], 1.0 - t[l])
+            };
         }
-        for (qx, &y) in q.iter_mut().zip(node) {
+        let pick = |f: f64, r: f64, mask: u64| {
+            f64::from_bits((f.to_bits() & !mask) | (r.to_bits() & mask))
+        };
+        for (x, qx) in q.iter_mut().enumerate() {
+            let (f, r) = (nodes.forward[x], nodes.reversed[x]);
             for l in 0..LANES {
-                qx[l] += h[l] * (y - qx[l]);
+                qx[l] = pick(f, r, reverse[l]);
             }
+        }
+        let mut h = [1.0f64; LANES];
+        for k in 1..=n {
+            let a = (n - k + 1) as f64;
+            let b = k as f64;
+            for l in 0..LANES {
+                let num = a * tp[l] * h[l];
+                h[l] = num / (b * s[l] + num);
+            }
+            let forward = &nodes.forward[k * dim..(k + 1) * dim];
+            let reversed = &nodes.reversed[k * dim..(k + 1) * dim];
+            for ((qx, &f), &r) in q.iter_mut().zip(forward).zip(reversed) {
+                for l in 0..LANES {
+                    let y = pick(f, r, reverse[l]);
+                    qx[l] += h[l] * (y - qx[l]);
+                }
+            }
+        }
+        let whole = out_block.len() == LANES * dim;
+        let target = if whole {
+            &mut *out_block
+        } else {
+            &mut last[..]
+        };
+        for (x, (qx, &c)) in q.iter().zip(nodes.centre).enumerate() {
+            for (l, &v) in qx.iter().enumerate() {
+                target[l * dim + x] = c + v;
+            }
+        }
+        if !whole {
+            let len = out_block.len();
+            out_block.copy_from_slice(&last[..len]);
         }
     }
 }
