@@ -137,7 +137,13 @@ fn is_point_major(a: &Bound<'_, PyArray3<f64>>) -> bool {
     let shape = a.shape();
     let item = std::mem::size_of::<f64>() as isize;
     let (d, k) = (shape[1] as isize, shape[2] as isize);
-    shape[0] > 0 && shape[1] > 1 && a.strides() == [item * d * k, item, item * d]
+    let strides = a.strides();
+    // A stride along an axis of length 1 is never used (numpy sets it freely).
+    shape[0] > 0
+        && shape[1] > 1
+        && (shape[0] == 1 || strides[0] == item * d * k)
+        && strides[1] == item
+        && (shape[2] == 1 || strides[2] == item * d)
 }
 
 /// The `nodes` argument of `restrict_curves` as a float64 array of three dimensions.
