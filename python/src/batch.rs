@@ -22,19 +22,12 @@ use pyo3::prelude::*;
 pub fn restrict_curves<'py>(
     py: Python<'py>,
     nodes: &Bound<'py, PyAny>,
-    start: f64,
-    end: f64,
+    start: &Bound<'py, PyAny>,
+    end: &Bound<'py, PyAny>,
     out: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    for (name, x) in [("start", start), ("end", end)] {
-        if !x.is_finite() {
-            return Err(bad(
-                name,
-                "NotFinite",
-                format!("expected a finite number, found {x}"),
-            ));
-        }
-    }
+    let start = crate::numbers::f64_arg(start, "start")?;
+    let end = crate::numbers::f64_arg(end, "end")?;
     let array = batch_array(py, nodes)?;
     let shape = array.shape().to_vec();
     let (n, d, k) = (shape[0], shape[1], shape[2]);

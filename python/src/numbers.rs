@@ -245,6 +245,14 @@ pub fn points_of_columns<T: Clone>(c: &[T], d: usize, n: usize) -> Vec<T> {
 /// A finite double argument.
 pub fn f64_arg(obj: &Bound<'_, PyAny>, path: &str) -> PyResult<f64> {
     let x: f64 = obj.extract().map_err(|_| {
+        if obj.is_instance_of::<PyInt>() {
+            // float(i) overflows (OverflowError): an int beyond the doubles.
+            return bad(
+                path,
+                "NotFinite",
+                "expected a finite number, found an integer beyond the range of doubles",
+            );
+        }
         bad(
             path,
             "Invalid",
