@@ -149,6 +149,8 @@ def batch(args, rng):
         print(line)
     if rust:
         print(f"  Rust RestrictionMap::restrict_arrays on [[f64; 2]; 4]: {rust['rust_batch_ns'] * 1e3:7.3f} ms; on 200,000 1-D rows: {rust['rust_rows_ns'] * 1e3:7.3f} ms")
+        if "rust_c_order_ns" in rust:
+            print(f"  Rust, the binding's C-order route (64 curves copied to points, restricted, copied back): {rust['rust_c_order_ns'] * 1e3:7.3f} ms")
 
 
 def main():

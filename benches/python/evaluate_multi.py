@@ -1,7 +1,7 @@
 """Curve.evaluate_multi against Python bezier's, degrees 1..20, 1,000 parameters.
 
     python benches/python/evaluate_multi.py [--degrees 1-20] [--params 1000] [--rounds 7]
-                                            [--dimension 2] [--seed 5] [--errors]
+                                            [--dimension 2] [--seed 5] [--errors | --errors-only]
 
 For each degree: one random planar curve (nodes uniform in [-1, 1]), 1,000 parameters uniform
 in [0, 1] (the ends included), and the two calls `blossom.Curve(nodes, n).evaluate_multi(s)`
@@ -9,7 +9,7 @@ and `bezier.Curve(nodes, n).evaluate_multi(s)` timed in alternating rounds (each
 mean over enough calls to take about 20 ms; the figure is the median round and the best).
 Prints per degree the times in microseconds and bezier / blossom (> 1: blossom faster).
 
-With --errors also the accuracy over the same degrees against the exact values
+With --errors (--errors-only: without the timing) also the accuracy over the same degrees against the exact values
 (fractions.Fraction, the doubles read exactly): the largest absolute error over 20 random
 curves x 200 parameters per degree of blossom's evaluate_multi, of de Casteljau's algorithm
 in float64 (x + s (y - x), the library's steps, in numpy) and of bezier's, and the ratios to
@@ -142,10 +142,12 @@ def main():
     parser.add_argument("--dimension", type=int, default=2)
     parser.add_argument("--seed", type=int, default=5)
     parser.add_argument("--errors", action="store_true")
+    parser.add_argument("--errors-only", action="store_true")
     args = parser.parse_args()
     print(f"python {sys.version.split()[0]}, numpy {np.__version__}, bezier {bezier.__version__}")
-    timing(args)
-    if args.errors:
+    if not args.errors_only:
+        timing(args)
+    if args.errors or args.errors_only:
         errors(args)
 
 
