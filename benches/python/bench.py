@@ -1,6 +1,6 @@
 """blossom's Python package against Python bezier, on the same arrays in one run.
 
-    python benches/python/bench.py [--pairs 500] [--seed 7] [--no-rust]
+    python benches/python/bench.py [--pairs 500] [--seed 7] [--no-rust] [--only batch]
 
 Prints, each figure with its ratio:
   * Curve.intersect on random cubic pairs, blossom vs bezier (whole set, best of 5 runs);
@@ -149,6 +149,8 @@ def batch(args, rng):
         print(line)
     if rust:
         print(f"  Rust RestrictionMap::restrict_arrays on [[f64; 2]; 4]: {rust['rust_batch_ns'] * 1e3:7.3f} ms; on 200,000 1-D rows: {rust['rust_rows_ns'] * 1e3:7.3f} ms")
+        if "rust_c_order_ns" in rust:
+            print(f"  Rust, the binding's C-order route (64 curves copied to points, restricted, copied back): {rust['rust_c_order_ns'] * 1e3:7.3f} ms")
 
 
 def main():
@@ -156,12 +158,16 @@ def main():
     parser.add_argument("--pairs", type=int, default=500)
     parser.add_argument("--seed", type=int, default=7)
     parser.add_argument("--no-rust", action="store_true")
+    parser.add_argument("--only", choices=["intersect", "evaluate", "batch"], help="run one of the three parts")
     args = parser.parse_args()
     rng = np.random.default_rng(args.seed)
     print(f"python {sys.version.split()[0]}, numpy {np.__version__}, bezier {bezier.__version__}, blossom {blossom.__version__}")
-    intersections(args, rng)
-    evaluation(rng)
-    batch(args, rng)
+    if args.only in (None, "intersect"):
+        intersections(args, rng)
+    if args.only in (None, "evaluate"):
+        evaluation(rng)
+    if args.only in (None, "batch"):
+        batch(args, rng)
 
 
 if __name__ == "__main__":

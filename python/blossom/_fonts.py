@@ -12,6 +12,7 @@ Every answer is certified and there is no fallback: a glyph whose overlap remova
 fontTools is imported when ``remove_overlaps`` runs, not when ``blossom`` is imported.
 """
 
+from difflib import get_close_matches
 from itertools import combinations
 
 from ._blossom import Error, RegionPen
@@ -32,6 +33,13 @@ def _component_region(glyph_set, component):
     pen = RegionPen(glyph_set)
     pen.addComponent(base, transformation)
     return pen.region()
+
+
+def _error(path, kind, message):
+    """A blossom.Error on the argument `path`, as the extension raises them."""
+    error = Error(f"{path}: {message}")
+    error.path, error.kind = path, kind
+    return error
 
 
 def _glyph_error(name, error):
@@ -178,16 +186,33 @@ def remove_overlaps(font, glyph_names=None, remove_hinting=True, *,
     ``NotImplementedError`` for a font without glyf, CFF or CFF2 outlines (as fontTools).
     """
     if not (hasattr(font, "getGlyphSet") and hasattr(font, "getGlyphOrder")):
-        error = Error(f"font: expected a fontTools TTFont, found {type(font).__name__}")
-        error.path, error.kind = "font", "Invalid"
-        raise error
+        raise _error("font", "Invalid", f"expected a fontTools TTFont, found {type(font).__name__}")
+    # max_work is read (and refused when bad) even when no glyph needs a boolean.
+    RegionPen().region().simplify(max_work=max_work)
     if not any(tag in font for tag in ("glyf", "GLYF", "CFF ", "CFF2")):
         raise NotImplementedError(
             "No outline data found in the font: missing 'glyf', 'GLYF', 'CFF ', or 'CFF2' table"
         )
+    order = font.getGlyphOrder()
     if glyph_names is None:
-        glyph_names = font.getGlyphOrder()
-    glyph_names = list(glyph_names)
+        glyph_names = order
+    elif isinstance(glyph_names, (str, bytes)):
+        raise _error("glyph_names", "Invalid", "expected an iterable of glyph names, found a single "
+                     f"{type(glyph_names).__name__} (pass [{glyph_names!r}] for one glyph)")
+    try:
+        glyph_names = list(glyph_names)
+    except TypeError:
+        raise _error("glyph_names", "Invalid",
+                     f"expected an iterable of glyph names, found {type(glyph_names).__name__}") from None
+    known = set(order)
+    for k, name in enumerate(glyph_names):
+        if not isinstance(name, str) or name not in known:
+            near = []
+            if isinstance(name, str):
+                by_case = [n for n in order if n.lower() == name.lower()]
+                near = by_case or get_close_matches(name, order, n=1)
+            hint = f" (did you mean {near[0]!r}?)" if near else ""
+            raise _error(f"glyph_names[{k}]", "Invalid", f"{name!r} is not a glyph of the font{hint}")
     glyph_set = font.getGlyphSet()
     modified = set()
     if "glyf" in font or "GLYF" in font:

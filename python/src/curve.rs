@@ -10,6 +10,7 @@ use crate::records::{
 use blossom::budget::{curve_pair_work, self_intersection_work};
 use blossom::{BezierCurve, Intersections, Rational, Reduction, RoundedIntersections};
 use num_rational::Ratio;
+use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 
@@ -209,15 +210,28 @@ const SELF: [Rename; 1] = [Rename {
 }];
 
 /// The `max_work` argument: a positive number of nanoseconds (or None for the default).
-pub fn max_work_arg(max_work: Option<f64>) -> PyResult<Option<f64>> {
-    match max_work {
-        Some(x) if x.is_nan() || x <= 0.0 => Err(bad(
+pub fn max_work_arg(max_work: Option<&Bound<'_, PyAny>>) -> PyResult<Option<f64>> {
+    let Some(obj) = max_work else {
+        return Ok(None);
+    };
+    let x: f64 = obj.extract().map_err(|_| {
+        bad(
+            "max_work",
+            "Invalid",
+            format!(
+                "expected a number of nanoseconds, found {}",
+                crate::args::type_name(obj)
+            ),
+        )
+    })?;
+    if x.is_nan() || x <= 0.0 {
+        return Err(bad(
             "max_work",
             "Domain",
             format!("expected a positive number of nanoseconds, found {x}"),
-        )),
-        other => Ok(other),
+        ));
     }
+    Ok(Some(x))
 }
 
 /// Refuses an estimated work over the limit (`max_work`, default [`DEFAULT_MAX_WORK`]).
@@ -262,7 +276,9 @@ fn rounded_pairs(x: &RoundedIntersections) -> Vec<(f64, f64)> {
 /// A point argument: `D x 1` (as bezier's) or a length-`D` sequence.
 fn point_arg(point: &Bound<'_, PyAny>, d: usize) -> PyResult<Coords> {
     let numpy = point.py().import("numpy")?;
-    let array = numpy.call_method1("asarray", (point,))?;
+    let array = numpy
+        .call_method1("asarray", (point,))
+        .map_err(|e| bad("point", "Invalid", format!("not an array of numbers: {e}")))?;
     let shape: Vec<usize> = array.getattr("shape")?.extract()?;
     if shape != [d, 1] && shape != [d] {
         return Err(bad(
@@ -273,6 +289,48 @@ fn point_arg(point: &Bound<'_, PyAny>, d: usize) -> PyResult<Coords> {
     }
     let flat = array.call_method0("ravel")?;
     Ok(read_array(&flat, "point", 1, "the point's coordinates")?.coords)
+}
+
+/// Degrees up to which `Curve.evaluate_multi` of a float64 curve runs de Casteljau's
+/// algorithm (`BezierCurve::eval_many`), faster than the O(n) method at these degrees
+/// (`benches/python/evaluate_multi.rs`).
+const DE_CASTELJAU_DEGREES: usize = 4;
+
+/// `Curve.evaluate_multi` of a float64 curve: B at every value of `s` (refused, naming the
+/// entry, when one is not finite) written straight into a new `D x M` Fortran-order array
+/// (point after point, the library's layout), -0.0 made +0.0.
+fn evaluate_f64<'py>(
+    py: Python<'py>,
+    c: &BezierCurve<f64>,
+    s: &[f64],
+) -> PyResult<Bound<'py, PyAny>> {
+    if let Some(k) = crate::numbers::first_not_finite(s) {
+        return Err(bad(
+            format!("s_vals[{k}]"),
+            "NotFinite",
+            format!("expected a finite number, found {}", s[k]),
+        ));
+    }
+    let d = c.dim();
+    // SAFETY: every entry of the new array is written below before it is read or returned.
+    #[allow(unsafe_code)]
+    let answer = unsafe { PyArray2::<f64>::new(py, [d, s.len()], true) };
+    {
+        let mut writable = answer.readwrite();
+        let out = writable.as_slice_mut().expect("a new contiguous array");
+        call(&[], || {
+            if c.degree() <= DE_CASTELJAU_DEGREES {
+                c.eval_many(s, out)
+            } else {
+                c.eval_many_linear(s, out)
+            }
+        })?;
+        for x in out.iter_mut() {
+            // x + 0.0 is x, except that -0.0 becomes +0.0.
+            *x += 0.0;
+        }
+    }
+    Ok(answer.into_any())
 }
 
 fn evaluate_multi<'py, T: Num>(
@@ -393,9 +451,15 @@ impl Curve {
     /// nodes are always copied, and the degree always checked (`copy` and `verify` are taken
     /// for bezier's signature).
     #[new]
-    #[pyo3(signature = (nodes, degree, *, copy = true, verify = true))]
-    fn new(nodes: &Bound<'_, PyAny>, degree: usize, copy: bool, verify: bool) -> PyResult<Self> {
+    #[pyo3(signature = (nodes, degree, *, copy = None, verify = None))]
+    fn new(
+        nodes: &Bound<'_, PyAny>,
+        degree: &Bound<'_, PyAny>,
+        copy: Option<&Bound<'_, PyAny>>,
+        verify: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
         let _ = (copy, verify);
+        let degree = crate::args::degree_arg(degree, "degree")?;
         let curve = Curve::read(nodes, "nodes")?;
         if curve.degree() != degree {
             return Err(degree_error(degree, curve.degree() + 1));
@@ -405,8 +469,8 @@ impl Curve {
 
     /// The curve of `nodes`, its degree their number minus one.
     #[staticmethod]
-    #[pyo3(signature = (nodes, copy = true))]
-    fn from_nodes(nodes: &Bound<'_, PyAny>, copy: bool) -> PyResult<Self> {
+    #[pyo3(signature = (nodes, copy = None))]
+    fn from_nodes(nodes: &Bound<'_, PyAny>, copy: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
         let _ = copy;
         Curve::read(nodes, "nodes")
     }
@@ -483,7 +547,13 @@ impl Curve {
         })
     }
 
-    /// B at every value of the 1-D `s_vals`, a `D x M` array.
+    /// B at every value of the 1-D `s_vals`, a `D x M` array. A float64 curve of degree
+    /// n > 4 takes O(n) operations per value in [0, 1] (`BezierCurve::eval_many_linear`: a
+    /// running convex combination of the nodes, its error bound of the order of de
+    /// Casteljau's and its measured error within 1.5 times it), de Casteljau's algorithm
+    /// (`eval_many`, faster at these degrees) up to degree 4 and outside [0, 1]. `evaluate`
+    /// is de Casteljau's at every degree: above degree 4 the two may differ in the last
+    /// places. An exact curve answers exactly.
     fn evaluate_multi<'py>(
         &self,
         py: Python<'py>,
@@ -491,10 +561,16 @@ impl Curve {
     ) -> PyResult<Bound<'py, PyAny>> {
         match &self.shape {
             CurveShape::F64(c) => {
+                // The common case, a contiguous float64 array, read where it lies.
+                if let Ok(array) = s_vals.cast::<PyArray1<f64>>() {
+                    if let Ok(readonly) = array.try_readonly() {
+                        if let Ok(s) = readonly.as_slice() {
+                            return evaluate_f64(py, c, s);
+                        }
+                    }
+                }
                 let s = f64::values(s_vals, "s_vals")?;
-                let mut out = vec![0.0; c.dim() * s.len()];
-                call(&[], || c.eval_many(&s, &mut out))?;
-                f64::columns(py, c.dim(), s.len(), out)
+                evaluate_f64(py, c, &s)
             }
             CurveShape::Exact(c) => evaluate_multi(py, c, s_vals),
         }
@@ -544,11 +620,12 @@ impl Curve {
     /// (`"least-squares-endpoints"`), or by interpolation (`"interpolating"`). Exact for a
     /// curve that is a degree-elevated one (then equal to bezier's); bezier's pseudo-inverse
     /// of the elevation matrix differs otherwise.
-    #[pyo3(signature = (method = "least-squares"))]
-    fn reduce_(&self, method: &str) -> PyResult<Curve> {
+    #[pyo3(signature = (method = None))]
+    fn reduce_(&self, method: Option<&Bound<'_, PyAny>>) -> PyResult<Curve> {
+        let method = crate::args::str_arg(method, "method", "least-squares")?;
         let method = crate::errors::name_arg(
             "method",
-            method,
+            &method,
             &[
                 ("least-squares", Reduction::LeastSquares),
                 ("least-squares-endpoints", Reduction::LeastSquaresEndpoints),
@@ -579,21 +656,18 @@ impl Curve {
     /// the parameters on this curve, row 1 on `other`, each the nearest double to the exact
     /// parameter; isolated points, and each overlap as its two end pairs, sorted by s then t.
     /// `strategy` is taken for bezier's signature (there is one, exact, method).
-    #[pyo3(signature = (other, strategy = None, verify = true, *, max_work = None))]
+    #[pyo3(signature = (other, strategy = None, verify = None, *, max_work = None))]
     fn intersect<'py>(
         &self,
         py: Python<'py>,
         other: &Bound<'py, PyAny>,
         strategy: Option<&Bound<'py, PyAny>>,
-        verify: bool,
-        max_work: Option<f64>,
+        verify: Option<&Bound<'py, PyAny>>,
+        max_work: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
         let max_work = max_work_arg(max_work)?;
         let _ = (strategy, verify);
-        let other = other.cast::<Curve>().map_err(|_| {
-            pyo3::exceptions::PyTypeError::new_err("other: can only intersect with another Curve")
-        })?;
-        let other = other.get();
+        let other = crate::args::class_arg::<Curve>(other, "other", "a Curve")?.get();
         if let Some((a, b)) = self.both_f64(other) {
             Self::planar(a, "self")?;
             Self::planar(b, "other")?;
@@ -610,13 +684,13 @@ impl Curve {
 
     /// Every pair s < t with B(s) = B(t) (planar curve), certified, as a `2 x K` float64 array
     /// sorted by s; a retracing stretch as its end pairs.
-    #[pyo3(signature = (strategy = None, verify = true, *, max_work = None))]
+    #[pyo3(signature = (strategy = None, verify = None, *, max_work = None))]
     fn self_intersections<'py>(
         &self,
         py: Python<'py>,
         strategy: Option<&Bound<'py, PyAny>>,
-        verify: bool,
-        max_work: Option<f64>,
+        verify: Option<&Bound<'py, PyAny>>,
+        max_work: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
         let max_work = max_work_arg(max_work)?;
         let _ = (strategy, verify);
@@ -635,11 +709,12 @@ impl Curve {
     fn intersections(
         &self,
         py: Python<'_>,
-        other: PyRef<'_, Curve>,
-        max_work: Option<f64>,
+        other: &Bound<'_, PyAny>,
+        max_work: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<IntersectionRecords> {
         let max_work = max_work_arg(max_work)?;
-        let x = self.exact_intersections(py, &other, max_work)?;
+        let other = crate::args::class_arg::<Curve>(other, "other", "a Curve")?.get();
+        let x = self.exact_intersections(py, other, max_work)?;
         intersection_records(py, &x)
     }
 
@@ -649,7 +724,7 @@ impl Curve {
     fn self_intersection_records(
         &self,
         py: Python<'_>,
-        max_work: Option<f64>,
+        max_work: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<IntersectionRecords> {
         let max_work = max_work_arg(max_work)?;
         let x = self.exact_self_intersections(py, max_work)?;

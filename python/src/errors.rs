@@ -147,6 +147,30 @@ fn edit_distance(a: &str, b: &str) -> usize {
     row[b.len()]
 }
 
+/// The name of `names` that `name` most likely misspells, ignoring case ("NonZero" is
+/// "nonzero"): the one name it begins ("taylor" for "taylor-shift"), else the name fewest
+/// edits away relative to the longer length, when that is at most about half of it.
+pub fn nearest_name<'a>(name: &str, names: &[&'a str]) -> Option<&'a str> {
+    let lower = name.to_lowercase();
+    let prefixed: Vec<&str> = names
+        .iter()
+        .filter(|n| !lower.is_empty() && n.to_lowercase().starts_with(&lower))
+        .copied()
+        .collect();
+    if let [one] = prefixed.as_slice() {
+        return Some(one);
+    }
+    names
+        .iter()
+        .map(|n| {
+            let longer = n.chars().count().max(name.chars().count()).max(1);
+            (edit_distance(&lower, &n.to_lowercase()), longer, *n)
+        })
+        .filter(|(d, longer, _)| *d <= longer / 2 + 1)
+        .min_by(|a, b| (a.0 * b.1).cmp(&(b.0 * a.1)))
+        .map(|(_, _, n)| n)
+}
+
 /// The value named `name` among `accepted` (name, value) pairs, the argument `path`; an
 /// unknown name raises `blossom.Error` (kind `UnknownName`) listing the accepted names and
 /// offering the nearest one (`expected "nonzero" or "evenodd", found "odd" (did you mean
@@ -161,18 +185,10 @@ pub fn name_arg<T: Copy>(path: &str, name: &str, accepted: &[(&str, T)]) -> PyRe
         [one] => one.clone(),
         [rest @ .., last] => format!("{} or {last}", rest.join(", ")),
     };
-    // The accepted name fewest edits away (ignoring case first: "NonZero" is "nonzero").
-    let lower = name.to_lowercase();
-    let nearest = accepted
-        .iter()
-        .map(|(n, _)| (edit_distance(&lower, n), *n))
-        .min();
-    let hint = match nearest {
-        Some((d, n)) if d <= n.len().max(name.len()) / 2 + 1 => {
-            format!(" (did you mean {n:?}?)")
-        }
-        _ => String::new(),
-    };
+    let names: Vec<&str> = accepted.iter().map(|(n, _)| *n).collect();
+    let hint = nearest_name(name, &names)
+        .map(|n| format!(" (did you mean {n:?}?)"))
+        .unwrap_or_default();
     Err(bad(
         path,
         "UnknownName",

@@ -5,8 +5,8 @@
 //! work, and maps the library's errors (and any panic) to `blossom.Error`, a `ValueError`.
 //! Nothing here depends on Python at the library's side: the library never sees this crate.
 //!
-//! Modules, one job each: `errors` (exceptions, panics), `numbers` (arrays and Fractions in and
-//! out), `curve` (`Curve`), `triangle` (`Triangle`, `CurvedPolygon`), `tensor` (`TensorPatch`),
+//! Modules, one job each: `errors` (exceptions, panics), `args` (scalar arguments read so
+//! that every bad one is a `blossom.Error`), `numbers` (arrays and Fractions in and out), `curve` (`Curve`), `triangle` (`Triangle`, `CurvedPolygon`), `tensor` (`TensorPatch`),
 //! `records` (the certified answers), `power` (the power-form restrictions), `batch`
 //! (`restrict_curves`), `zeros` (`bezier_zeros`), `area` (exact signed areas), `length` (arc
 //! length by quadrature), `validity` (the exact sign of a triangle's Jacobian), `region`
@@ -18,6 +18,7 @@
 #![allow(clippy::new_ret_no_self)]
 
 mod area;
+mod args;
 mod batch;
 mod curve;
 mod draw;

@@ -245,6 +245,14 @@ pub fn points_of_columns<T: Clone>(c: &[T], d: usize, n: usize) -> Vec<T> {
 /// A finite double argument.
 pub fn f64_arg(obj: &Bound<'_, PyAny>, path: &str) -> PyResult<f64> {
     let x: f64 = obj.extract().map_err(|_| {
+        if obj.is_instance_of::<PyInt>() {
+            // float(i) overflows (OverflowError): an int beyond the doubles.
+            return bad(
+                path,
+                "NotFinite",
+                "expected a finite number, found an integer beyond the range of doubles",
+            );
+        }
         bad(
             path,
             "Invalid",
@@ -290,6 +298,27 @@ pub fn exact_values(obj: &Bound<'_, PyAny>, arg: &str) -> PyResult<Vec<Rational>
             .enumerate()
             .map(|(k, &x)| exact_of_f64(x, &format!("{arg}[{k}]")))
             .collect(),
+    }
+}
+
+/// The index of the first NaN or infinity. The common case, all finite, is one pass the
+/// compiler vectorises: x - x is 0 for a finite x and NaN otherwise, summed in eight lanes.
+pub fn first_not_finite(v: &[f64]) -> Option<usize> {
+    let mut lanes = [0.0f64; 8];
+    let (blocks, rest) = v.as_chunks::<8>();
+    for block in blocks {
+        for (lane, x) in lanes.iter_mut().zip(block) {
+            // x - x: zero exactly when x is finite (the point of the expression).
+            #[allow(clippy::eq_op)]
+            let zero_if_finite = x - x;
+            *lane += zero_if_finite;
+        }
+    }
+    let finite = lanes.iter().sum::<f64>() == 0.0 && rest.iter().all(|x| x.is_finite());
+    if finite {
+        None
+    } else {
+        v.iter().position(|x| !x.is_finite())
     }
 }
 

@@ -19,7 +19,7 @@ use crate::errors::bad;
 use crate::region::{fill_rule_arg, region_of_f64, CurvedRegion};
 use blossom::region::FillRule;
 use pyo3::prelude::*;
-use pyo3::types::{PyString, PyTuple};
+use pyo3::types::{PyBytes, PyString, PyTuple};
 
 type Point = [f64; 2];
 
@@ -83,7 +83,7 @@ fn point_arg(obj: &Bound<'_, PyAny>, path: &str) -> PyResult<Point> {
         Ok(xy) => xy,
         Err(_) => {
             let n = obj.len().ok();
-            if n != Some(2) || obj.is_instance_of::<PyString>() {
+            if n != Some(2) || obj.is_instance_of::<PyString>() || obj.is_instance_of::<PyBytes>() {
                 return Err(bad(
                     path,
                     "Shape",
@@ -93,9 +93,21 @@ fn point_arg(obj: &Bound<'_, PyAny>, path: &str) -> PyResult<Point> {
                     ),
                 ));
             }
+            let item = |k: usize| {
+                obj.get_item(k).map_err(|_| {
+                    bad(
+                        path,
+                        "Shape",
+                        format!(
+                            "expected a point (x, y), found {}",
+                            obj.repr().map_or("?".into(), |r| r.to_string())
+                        ),
+                    )
+                })
+            };
             (
-                crate::numbers::f64_arg(&obj.get_item(0)?, &format!("{path}[0]"))?,
-                crate::numbers::f64_arg(&obj.get_item(1)?, &format!("{path}[1]"))?,
+                crate::numbers::f64_arg(&item(0)?, &format!("{path}[0]"))?,
+                crate::numbers::f64_arg(&item(1)?, &format!("{path}[1]"))?,
             )
         }
     };
@@ -185,6 +197,25 @@ impl RegionPen {
     }
 }
 
+/// " (did you mean 'name'?)" for the glyph set's name nearest to `glyph_name` (a string),
+/// when the glyph set lists its names (`keys()`) and one is near; else "".
+fn nearest_glyph(glyph_set: &Bound<'_, PyAny>, glyph_name: &Bound<'_, PyAny>) -> String {
+    let Ok(name) = glyph_name.extract::<String>() else {
+        return String::new();
+    };
+    let names: Vec<String> = match glyph_set
+        .call_method0("keys")
+        .and_then(|k| k.try_iter()?.map(|n| n?.extract::<String>()).collect())
+    {
+        Ok(names) => names,
+        Err(_) => return String::new(),
+    };
+    let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+    crate::errors::nearest_name(&name, &refs)
+        .map(|n| format!(" (did you mean {n:?}?)"))
+        .unwrap_or_default()
+}
+
 /// The six numbers of a transformation argument (a tuple or fontTools' `Transform`).
 fn affine_arg(obj: &Bound<'_, PyAny>) -> PyResult<Affine> {
     let values: Vec<f64> = obj
@@ -228,8 +259,8 @@ fn affine_arg(obj: &Bound<'_, PyAny>) -> PyResult<Affine> {
 #[pymethods]
 impl RegionPen {
     #[new]
-    #[pyo3(signature = (glyph_set = None, *, fill_rule = "nonzero"))]
-    fn new(glyph_set: Option<Py<PyAny>>, fill_rule: &str) -> PyResult<Self> {
+    #[pyo3(signature = (glyph_set = None, *, fill_rule = None))]
+    fn new(glyph_set: Option<Py<PyAny>>, fill_rule: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
         Ok(RegionPen {
             fill: fill_rule_arg(fill_rule)?,
             glyph_set,
@@ -348,13 +379,18 @@ impl RegionPen {
             }
         };
         let glyph = glyph_set.bind(py).get_item(glyph_name).map_err(|e| {
-            if e.is_instance_of::<pyo3::exceptions::PyKeyError>(py) {
+            // A missing name (KeyError), or one the glyph set cannot look up (an unhashable
+            // list: TypeError).
+            if e.is_instance_of::<pyo3::exceptions::PyKeyError>(py)
+                || e.is_instance_of::<pyo3::exceptions::PyTypeError>(py)
+            {
                 bad(
                     "addComponent.glyphName",
                     "Invalid",
                     format!(
-                        "the component {} is not in the glyph set",
-                        glyph_name.repr().map_or("?".into(), |r| r.to_string())
+                        "the component {} is not in the glyph set{}",
+                        glyph_name.repr().map_or("?".into(), |r| r.to_string()),
+                        nearest_glyph(glyph_set.bind(py), glyph_name)
                     ),
                 )
             } else {

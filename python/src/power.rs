@@ -67,14 +67,14 @@ fn power_curve<'py, T: Num + WrapCurve>(
 /// of "bulk" (default), "taylor-shift", "closed-form", "definition", "pyramid",
 /// "polarisation").
 #[pyfunction(name = "restrict_power_curve")]
-#[pyo3(signature = (coefficients, start, end, *, method = "bulk"))]
+#[pyo3(signature = (coefficients, start, end, *, method = None))]
 pub fn restrict_power_curve_py(
     coefficients: &Bound<'_, PyAny>,
     start: &Bound<'_, PyAny>,
     end: &Bound<'_, PyAny>,
-    method: &str,
+    method: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Curve> {
-    let method = method_arg(method)?;
+    let method = method_arg(&crate::args::str_arg(method, "method", "bulk")?)?;
     let read = read_array(
         coefficients,
         "coefficients",
@@ -119,13 +119,13 @@ fn power_surface<T: WrapTensor>(
 /// array, `coefficients[:, i, j]` = c_ij) restricted to `rect = (u_start, u_end, v_start,
 /// v_end)`: a `TensorPatch` of bidegree (n, m), by `method`.
 #[pyfunction(name = "restrict_power_surface")]
-#[pyo3(signature = (coefficients, rect, *, method = "bulk"))]
+#[pyo3(signature = (coefficients, rect, *, method = None))]
 pub fn restrict_power_surface_py(
     coefficients: &Bound<'_, PyAny>,
     rect: &Bound<'_, PyAny>,
-    method: &str,
+    method: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<TensorPatchPy> {
-    let method = method_arg(method)?;
+    let method = method_arg(&crate::args::str_arg(method, "method", "bulk")?)?;
     let read = read_array(coefficients, "coefficients", 3, "D x (n + 1) x (m + 1)")?;
     let (d, rows, cols) = (read.shape[0], read.shape[1], read.shape[2]);
     if d == 0 || rows == 0 || cols == 0 {
@@ -168,13 +168,13 @@ fn power_triangle<T: WrapTriangle>(
 /// `3 x 2` array: the (s, t) images of (0, 0), (1, 0), (0, 1)): a `Triangle` of degree N, by
 /// `method`.
 #[pyfunction(name = "restrict_power_triangle")]
-#[pyo3(signature = (coefficients, corners, *, method = "bulk"))]
+#[pyo3(signature = (coefficients, corners, *, method = None))]
 pub fn restrict_power_triangle_py(
     coefficients: &Bound<'_, PyAny>,
     corners: &Bound<'_, PyAny>,
-    method: &str,
+    method: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Triangle> {
-    let method = method_arg(method)?;
+    let method = method_arg(&crate::args::str_arg(method, "method", "bulk")?)?;
     let read = read_array(coefficients, "coefficients", 2, "D x (N + 1)(N + 2) / 2")?;
     let (d, count) = (read.shape[0], read.shape[1]);
     let n = triangle_degree(count).filter(|_| d > 0).ok_or_else(|| {

@@ -116,10 +116,11 @@ fn planar_f64(c: &Curve) -> Option<Bezier<f64, 2>> {
 }
 
 /// The `fill_rule` argument: `"nonzero"` or `"evenodd"` (SVG's names).
-pub fn fill_rule_arg(name: &str) -> PyResult<FillRule> {
+pub fn fill_rule_arg(name: Option<&Bound<'_, PyAny>>) -> PyResult<FillRule> {
+    let name = crate::args::str_arg(name, "fill_rule", "nonzero")?;
     name_arg(
         "fill_rule",
-        name,
+        &name,
         &[
             ("nonzero", FillRule::NonZero),
             ("evenodd", FillRule::EvenOdd),
@@ -383,7 +384,8 @@ impl BooleanResult {
     /// when False (PostScript's, CFF's), and by the input's convention when None (clockwise
     /// when the signed area of `self`'s loops, else of `other`'s, is negative).
     #[pyo3(signature = (pen, *, clockwise = None))]
-    fn draw(&self, pen: &Bound<'_, PyAny>, clockwise: Option<bool>) -> PyResult<()> {
+    fn draw(&self, pen: &Bound<'_, PyAny>, clockwise: Option<&Bound<'_, PyAny>>) -> PyResult<()> {
+        let clockwise = crate::args::optional_bool_arg(clockwise, "clockwise")?;
         let py = pen.py();
         let point = |p: &Point| (p[0], p[1]);
         let commands = self.commands(self.reversed(clockwise))?;
@@ -467,10 +469,7 @@ fn loop_polygon(
 
 /// The `other` argument of a boolean.
 fn region_arg<'a>(other: &'a Bound<'_, PyAny>) -> PyResult<&'a CurvedRegion> {
-    other
-        .cast::<CurvedRegion>()
-        .map(|r| r.get())
-        .map_err(|_| pyo3::exceptions::PyTypeError::new_err("other: expected a CurvedRegion"))
+    crate::args::class_arg::<CurvedRegion>(other, "other", "a CurvedRegion").map(|r| r.get())
 }
 
 impl CurvedRegion {
@@ -479,7 +478,7 @@ impl CurvedRegion {
         py: Python<'_>,
         other: &Bound<'_, PyAny>,
         op: BooleanOp,
-        max_work: Option<f64>,
+        max_work: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<BooleanResult> {
         let max_work = max_work_arg(max_work)?;
         let other = region_arg(other)?;
@@ -495,9 +494,25 @@ impl CurvedRegion {
     /// Curve arguments at `loops[l][c]`, read; a curve that is not planar raises there.
     fn read_loops(loops: &Bound<'_, PyAny>) -> PyResult<Vec<Vec<Curve>>> {
         let mut curves = Vec::new();
-        for (l, lp) in loops.try_iter()?.enumerate() {
+        let not_a_sequence = |path: &str, obj: &Bound<'_, PyAny>| {
+            bad(
+                path,
+                "Invalid",
+                format!(
+                    "expected a sequence of loops, each a sequence of curves, found {}",
+                    crate::args::type_name(obj)
+                ),
+            )
+        };
+        let outer = loops
+            .try_iter()
+            .map_err(|_| not_a_sequence("loops", loops))?;
+        for (l, lp) in outer.enumerate() {
             let mut row = Vec::new();
-            for (c, obj) in lp?.try_iter()?.enumerate() {
+            let lp = lp?;
+            let path = format!("loops[{l}]");
+            let inner = lp.try_iter().map_err(|_| not_a_sequence(&path, &lp))?;
+            for (c, obj) in inner.enumerate() {
                 let path = format!("loops[{l}][{c}]");
                 let curve = curve_arg(&obj?, &path)?;
                 if curve.dim() != 2 {
@@ -525,8 +540,8 @@ impl CurvedRegion {
     /// `fill_rule`. Float64 curves stay doubles (read exactly by the library); a region with an
     /// exact curve is exact.
     #[new]
-    #[pyo3(signature = (loops, fill_rule = "nonzero"))]
-    fn new(loops: &Bound<'_, PyAny>, fill_rule: &str) -> PyResult<Self> {
+    #[pyo3(signature = (loops, fill_rule = None))]
+    fn new(loops: &Bound<'_, PyAny>, fill_rule: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
         let fill = fill_rule_arg(fill_rule)?;
         let curves = Self::read_loops(loops)?;
         let doubles: Option<Vec<Vec<Bezier<f64, 2>>>> = curves
@@ -598,7 +613,11 @@ impl CurvedRegion {
     /// fill rule leaves out removed, parts of zero area dropped. A `BooleanResult` whose
     /// edges all name region 0 (`self`).
     #[pyo3(signature = (*, max_work = None))]
-    fn simplify(&self, py: Python<'_>, max_work: Option<f64>) -> PyResult<BooleanResult> {
+    fn simplify(
+        &self,
+        py: Python<'_>,
+        max_work: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<BooleanResult> {
         let max_work = max_work_arg(max_work)?;
         let a = &self.region;
         check_region_work(&[self], max_work, || simplify_work(a))?;
@@ -611,8 +630,9 @@ impl CurvedRegion {
 
     /// The region of a planar `Triangle` (the loop of its three edges, fill nonzero).
     #[staticmethod]
-    fn from_triangle(triangle: &Triangle) -> PyResult<Self> {
-        triangle_region(triangle, "triangle")
+    fn from_triangle(triangle: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let t = crate::args::class_arg::<Triangle>(triangle, "triangle", "a Triangle")?;
+        triangle_region(t.get(), "triangle")
     }
 
     /// The number of loops.
@@ -637,7 +657,7 @@ impl CurvedRegion {
         &self,
         py: Python<'_>,
         other: &Bound<'_, PyAny>,
-        max_work: Option<f64>,
+        max_work: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<BooleanResult> {
         self.run(py, other, BooleanOp::Intersection, max_work)
     }
@@ -648,7 +668,7 @@ impl CurvedRegion {
         &self,
         py: Python<'_>,
         other: &Bound<'_, PyAny>,
-        max_work: Option<f64>,
+        max_work: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<BooleanResult> {
         self.run(py, other, BooleanOp::Union, max_work)
     }
@@ -659,7 +679,7 @@ impl CurvedRegion {
         &self,
         py: Python<'_>,
         other: &Bound<'_, PyAny>,
-        max_work: Option<f64>,
+        max_work: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<BooleanResult> {
         self.run(py, other, BooleanOp::Difference, max_work)
     }
@@ -670,7 +690,7 @@ impl CurvedRegion {
         &self,
         py: Python<'_>,
         other: &Bound<'_, PyAny>,
-        max_work: Option<f64>,
+        max_work: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<BooleanResult> {
         self.run(py, other, BooleanOp::Xor, max_work)
     }
@@ -682,7 +702,7 @@ impl CurvedRegion {
         &self,
         py: Python<'py>,
         points: &Bound<'py, PyAny>,
-        max_work: Option<f64>,
+        max_work: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyList>> {
         let max_work = max_work_arg(max_work)?;
         let read = read_array(points, "points", 2, "2 x M, one column per point")?;
@@ -793,13 +813,13 @@ fn triangle_region(t: &Triangle, arg: &str) -> PyResult<CurvedRegion> {
 /// empty, also when the triangles only touch; `[self]` or `[other]` (the `Triangle`) when one
 /// lies inside the other (its three whole edges are the answer); otherwise one
 /// `CurvedPolygon` per component, its edges the pieces of the triangles' edges.
+/// (`max_work` read by the caller.)
 pub fn triangle_intersect(
     py: Python<'_>,
     t1: &Triangle,
     t2: &Triangle,
     max_work: Option<f64>,
 ) -> PyResult<Py<PyList>> {
-    let max_work = max_work_arg(max_work)?;
     let a = cached_region(t1, "self")?;
     let b = cached_region(t2, "other")?;
     let (ra, rb) = (&a.region, &b.region);

@@ -7,6 +7,7 @@
 //! nu the power of s = lambda2 and mu of t = lambda3; the binding permutes between the two.
 
 use crate::area::chain_area;
+use crate::args::bool_arg;
 use crate::curve::{curves_tuple, Curve, CurveShape, WrapCurve};
 use crate::errors::{bad, call, Rename};
 use crate::numbers::{read_array, rounded, Coords, Num};
@@ -394,15 +395,21 @@ impl Triangle {
     /// `Triangle(nodes, degree, *, copy=True, verify=True)`: nodes `D x (n + 1)(n + 2) / 2`
     /// in bezier's order; float64, or exact when holding Fractions.
     #[new]
-    #[pyo3(signature = (nodes, degree, *, copy = true, verify = true))]
-    fn new(nodes: &Bound<'_, PyAny>, degree: usize, copy: bool, verify: bool) -> PyResult<Self> {
+    #[pyo3(signature = (nodes, degree, *, copy = None, verify = None))]
+    fn new(
+        nodes: &Bound<'_, PyAny>,
+        degree: &Bound<'_, PyAny>,
+        copy: Option<&Bound<'_, PyAny>>,
+        verify: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
         let _ = (copy, verify);
+        let degree = crate::args::degree_arg(degree, "degree")?;
         Triangle::read(nodes, Some(degree))
     }
 
     #[staticmethod]
-    #[pyo3(signature = (nodes, copy = true))]
-    fn from_nodes(nodes: &Bound<'_, PyAny>, copy: bool) -> PyResult<Self> {
+    #[pyo3(signature = (nodes, copy = None))]
+    fn from_nodes(nodes: &Bound<'_, PyAny>, copy: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
         let _ = copy;
         Triangle::read(nodes, None)
     }
@@ -456,49 +463,53 @@ impl Triangle {
 
     /// B at barycentric weights, a `D x 1` array; `verify` checks that they are non-negative
     /// and sum to 1 (within 1e-5, as bezier's), else the homogeneous form is evaluated.
-    #[pyo3(signature = (lambda1, lambda2, lambda3, verify = true))]
+    #[pyo3(signature = (lambda1, lambda2, lambda3, verify = None))]
     fn evaluate_barycentric<'py>(
         &self,
         py: Python<'py>,
         lambda1: &Bound<'py, PyAny>,
         lambda2: &Bound<'py, PyAny>,
         lambda3: &Bound<'py, PyAny>,
-        verify: bool,
+        verify: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
+        let verify = bool_arg(verify, "verify", true)?;
         on_triangle!(&self.shape, p => eval_barycentric(py, p, [lambda1, lambda2, lambda3], verify))
     }
 
     /// B at each row of the `N x 3` weights, a `D x N` array.
-    #[pyo3(signature = (param_vals, verify = true))]
+    #[pyo3(signature = (param_vals, verify = None))]
     fn evaluate_barycentric_multi<'py>(
         &self,
         py: Python<'py>,
         param_vals: &Bound<'py, PyAny>,
-        verify: bool,
+        verify: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
+        let verify = bool_arg(verify, "verify", true)?;
         on_triangle!(&self.shape, p => eval_barycentric_multi(py, p, param_vals, verify))
     }
 
     /// B(s, t), a `D x 1` array; `verify` checks that (s, t) is in the reference triangle.
-    #[pyo3(signature = (s, t, verify = true))]
+    #[pyo3(signature = (s, t, verify = None))]
     fn evaluate_cartesian<'py>(
         &self,
         py: Python<'py>,
         s: &Bound<'py, PyAny>,
         t: &Bound<'py, PyAny>,
-        verify: bool,
+        verify: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
+        let verify = bool_arg(verify, "verify", true)?;
         on_triangle!(&self.shape, p => eval_cartesian(py, p, s, t, verify))
     }
 
     /// B at each row (s, t) of the `N x 2` array, a `D x N` array.
-    #[pyo3(signature = (param_vals, verify = true))]
+    #[pyo3(signature = (param_vals, verify = None))]
     fn evaluate_cartesian_multi<'py>(
         &self,
         py: Python<'py>,
         param_vals: &Bound<'py, PyAny>,
-        verify: bool,
+        verify: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
+        let verify = bool_arg(verify, "verify", true)?;
         on_triangle!(&self.shape, p => eval_cartesian_multi(py, p, param_vals, verify))
     }
 
@@ -593,21 +604,18 @@ impl Triangle {
     /// `CurvedPolygon` per component of the intersection (counter-clockwise), its edges the
     /// pieces of the triangles' edges. `strategy` and `verify` are accepted for bezier's
     /// signature and ignored (there is one, exact, method). Refused over `max_work`.
-    #[pyo3(signature = (other, strategy = None, verify = true, *, max_work = None))]
+    #[pyo3(signature = (other, strategy = None, verify = None, *, max_work = None))]
     fn intersect(
         &self,
         py: Python<'_>,
         other: &Bound<'_, PyAny>,
         strategy: Option<&Bound<'_, PyAny>>,
-        verify: bool,
-        max_work: Option<f64>,
+        verify: Option<&Bound<'_, PyAny>>,
+        max_work: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Py<PyList>> {
         let _ = (strategy, verify);
-        let other = other.cast::<Triangle>().map_err(|_| {
-            pyo3::exceptions::PyTypeError::new_err(
-                "other: can only intersect with another Triangle",
-            )
-        })?;
+        let max_work = crate::curve::max_work_arg(max_work)?;
+        let other = crate::args::class_arg::<Triangle>(other, "other", "a Triangle")?;
         crate::region::triangle_intersect(py, self, other.get(), max_work)
     }
 }
@@ -651,17 +659,16 @@ impl CurvedPolygon {
 #[pymethods]
 impl CurvedPolygon {
     #[new]
-    #[pyo3(signature = (*edges, metadata = None, verify = true))]
+    #[pyo3(signature = (*edges, metadata = None, verify = None))]
     fn new(
         edges: &Bound<'_, PyTuple>,
         metadata: Option<Py<PyAny>>,
-        verify: bool,
+        verify: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
+        let verify = bool_arg(verify, "verify", true)?;
         let mut curves = Vec::new();
         for (k, e) in edges.iter().enumerate() {
-            let c = e.cast::<Curve>().map_err(|_| {
-                pyo3::exceptions::PyTypeError::new_err(format!("edges[{k}]: expected a Curve"))
-            })?;
+            let c = crate::args::class_arg::<Curve>(&e, &format!("edges[{k}]"), "a Curve")?;
             curves.push(c.get().clone());
         }
         if verify {

@@ -15,7 +15,7 @@ use pyo3::prelude::*;
 pub fn bezier_zeros_py(
     py: Python<'_>,
     coefficients: &Bound<'_, PyAny>,
-    max_work: Option<f64>,
+    max_work: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Zeros> {
     let max_work = crate::curve::max_work_arg(max_work)?;
     let read = read_array(

@@ -60,9 +60,49 @@ def test_evaluate_and_multi_match_the_bernstein_sum(rng):
             exact = bernstein_point(nodes, s)
             one = c.evaluate(s)
             assert one.shape == (d, 1)
-            assert np.array_equal(one[:, 0], multi[:, k])
+            # evaluate is de Casteljau's; evaluate_multi is too up to degree 4 and outside
+            # [0, 1], and the O(n) method above (the same values within its error bound).
+            if n <= 4 or not 0 <= s <= 1:
+                assert np.array_equal(one[:, 0], multi[:, k])
             scale = np.abs(nodes).max() * 2**n * 8
-            assert np.all(np.abs(one[:, 0] - as_floats(exact)) <= scale * np.finfo(float).eps)
+            for got in (one[:, 0], multi[:, k]):
+                assert np.all(np.abs(got - as_floats(exact)) <= scale * np.finfo(float).eps)
+
+
+def test_evaluate_multi_error_within_twice_de_casteljau(rng):
+    # Degrees 5..20 (the O(n) method): the largest error against the exact value over random
+    # curves and parameters in [0, 1], at most twice that of de Casteljau's algorithm
+    # (`evaluate`, bit for bit the library's de Casteljau), per degree.
+    for n in range(5, 21):
+        worst_multi = worst_dc = 0.0
+        for lo, hi in [(-1.0, 1.0), (10.0, 11.0)]:
+            nodes = np.asfortranarray(rng.uniform(lo, hi, (1, n + 1)))
+            c = blossom.Curve(nodes, n)
+            s_vals = rng.uniform(0.0, 1.0, 40)
+            multi = c.evaluate_multi(s_vals)[0]
+            for s, got in zip(s_vals, multi):
+                exact = bernstein_point(nodes, s)[0]
+                worst_multi = max(worst_multi, abs(float(Fraction(got) - exact)))
+                worst_dc = max(worst_dc, abs(float(Fraction(c.evaluate(s)[0, 0]) - exact)))
+        assert worst_multi <= 2 * worst_dc, (n, worst_multi, worst_dc)
+
+
+def test_evaluate_multi_ends_and_layouts():
+    nodes = np.asfortranarray([[10.0 + j / 7 for j in range(9)], [-(j**2) / 3 - 1e-3 for j in range(9)]])
+    c = blossom.Curve(nodes, 8)
+    s = np.array([0.0, 1.0, -0.5, 1.5, 0.5, 0.25])
+    multi = c.evaluate_multi(s)
+    assert multi.tolist()[0][:2] == [nodes[0, 0], nodes[0, -1]]
+    assert multi.tolist()[1][:2] == [nodes[1, 0], nodes[1, -1]]
+    for k in (2, 3):
+        assert np.array_equal(multi[:, k], c.evaluate(s[k])[:, 0])
+    # Strided, list and integer inputs give the same answer as a contiguous array.
+    wide = np.zeros(12)
+    wide[::2] = s
+    assert np.array_equal(c.evaluate_multi(wide[::2]), multi)
+    assert np.array_equal(c.evaluate_multi(s.tolist()), multi)
+    assert np.array_equal(c.evaluate_multi(np.array([0, 1])), multi[:, :2])
+    assert c.evaluate_multi(np.zeros(0)).shape == (2, 0)
 
 
 def test_hodograph_matches_the_derivative_sum(rng):

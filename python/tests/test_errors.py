@@ -59,8 +59,7 @@ def test_dimensions_an_operation_does_not_take():
     raises("other.nodes", "Dimension", c2.intersect, c3)
     raises("self.nodes", "Dimension", c3.self_intersections)
     raises("self.nodes", "Dimension", c3.intersections, c2)
-    with pytest.raises(TypeError):
-        c2.intersect("not a curve")
+    raises("other", "Invalid", c2.intersect, "not a curve")
     t3 = blossom.Triangle(np.zeros((3, 3)), 1)
     raises("self.nodes", "Dimension", getattr, t3, "area")
     raises("self.nodes", "Dimension", getattr, t3, "is_valid")
@@ -82,8 +81,7 @@ def test_curved_polygon():
     b = blossom.Curve(np.array([[1.0, 0.0], [0.0, 1.0]]), 1)
     raises("edges[1]", "Invalid", blossom.CurvedPolygon, a, b)  # b ends at (0, 1), a starts at (0, 0)
     raises("edges", "Shape", blossom.CurvedPolygon, a)
-    with pytest.raises(TypeError):
-        blossom.CurvedPolygon(a, "b")
+    raises("edges[1]", "Invalid", blossom.CurvedPolygon, a, "b")
 
 
 def test_power_and_batch_arguments():
@@ -113,6 +111,30 @@ def test_work_over_the_limit_is_refused_before_computing():
     raises("max_work", "TooLarge", blossom.bezier_zeros, rng.uniform(-1, 1, 40), max_work=1e3)
     raises("max_work", "Domain", p.intersect, q, max_work=-1.0)
     raises("max_work", "Domain", blossom.bezier_zeros, [1.0, -1.0], max_work=float("nan"))
+
+
+def test_degrees_types_and_flags():
+    # The issue-47 case: a negative degree was an OverflowError.
+    raises("degree", "Degree", blossom.Curve, LINE, -1)
+    raises("degree", "TooLarge", blossom.Curve, LINE, 2**70)
+    raises("degree", "Invalid", blossom.Curve, LINE, "1")
+    raises("degree", "Invalid", blossom.Curve, LINE, 1.0)
+    raises("degree", "Invalid", blossom.Curve, LINE, True)
+    assert blossom.Curve(LINE, np.int64(1)).degree == 1
+    raises("degree", "Degree", blossom.Triangle, np.zeros((2, 3)), -2)
+    raises("method", "Invalid", blossom.Curve(LINE, 1).reduce_, 3)
+    raises("fill_rule", "Invalid", blossom.CurvedRegion, [], fill_rule=0)
+    raises("start", "Invalid", blossom.restrict_curves, np.zeros((1, 2, 4)), "0", 1.0)
+    raises("end", "NotFinite", blossom.restrict_curves, np.zeros((1, 2, 4)), 0.0, 10**400)
+    raises("max_work", "Invalid", blossom.bezier_zeros, [1.0, -1.0], max_work="a lot")
+    t = blossom.Triangle(np.array([[0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]), 1)
+    raises("verify", "Invalid", t.evaluate_cartesian, 0.2, 0.2, verify="no")
+    raises("triangle", "Invalid", blossom.CurvedRegion.from_triangle, LINE)
+    raises("other", "Invalid", blossom.Curve(LINE, 1).intersections, None)
+    # Arguments taken for bezier's signature only accept anything, as bezier's do.
+    assert blossom.Curve(LINE, 1, copy=0, verify="yes").degree == 1
+    # None is the default of the optional string arguments.
+    assert blossom.Curve(LINE, 1).reduce_(method=None).degree == 0
 
 
 def test_a_rust_panic_is_an_exception():

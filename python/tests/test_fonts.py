@@ -322,6 +322,22 @@ def test_remove_overlaps_errors():
     assert e.value.path == "glyphs['A'].max_work" and e.value.kind == "TooLarge"
     # The glyph was left untouched by the refused call (nothing half-written).
     assert contours(font, "A") == 2
+    for kwargs, path in [
+        ({"glyph_names": 3}, "glyph_names"),
+        ({"glyph_names": "A"}, "glyph_names"),
+        ({"glyph_names": ["A", "Z"]}, "glyph_names[1]"),
+        ({"glyph_names": [None]}, "glyph_names[0]"),
+        ({"max_work": "x"}, "max_work"),
+        ({"max_work": -1.0}, "max_work"),
+        ({"glyph_names": [], "max_work": float("nan")}, "max_work"),
+    ]:
+        with pytest.raises(blossom.Error) as e:
+            blossom.remove_overlaps(font, **kwargs)
+        assert e.value.path == path, kwargs
+    assert contours(font, "A") == 2
+    with pytest.raises(blossom.Error) as e:
+        blossom.remove_overlaps(font, glyph_names=["a"])
+    assert "did you mean 'A'" in str(e.value)
     del font["glyf"]
     with pytest.raises(NotImplementedError):
         blossom.remove_overlaps(font)

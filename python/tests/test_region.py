@@ -242,8 +242,9 @@ def test_bad_input():
     with pytest.raises(blossom.Error) as e:
         sq.winding(np.array([[np.nan], [0.0]]))
     assert e.value.path.startswith("points")
-    with pytest.raises(TypeError):
+    with pytest.raises(blossom.Error) as e:
         sq.union(3)
+    assert (e.value.path, e.value.kind) == ("other", "Invalid")
     with pytest.raises(blossom.Error) as e:
         sq.union(sq, max_work=1.0)
     assert e.value.path == "max_work"
@@ -252,8 +253,9 @@ def test_bad_input():
     with pytest.raises(blossom.Error) as e:
         t2.intersect(t3)
     assert e.value.path == "other.nodes"
-    with pytest.raises(TypeError):
+    with pytest.raises(blossom.Error) as e:
         t2.intersect(sq)
+    assert (e.value.path, e.value.kind) == ("other", "Invalid")
 
 
 def test_bezier_peer_triangle_areas():

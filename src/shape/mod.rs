@@ -7,6 +7,7 @@ pub(crate) mod array;
 pub(crate) mod basis;
 pub(crate) mod bezier;
 pub(crate) mod coords;
+pub(crate) mod eval_linear;
 pub(crate) mod eval_many;
 pub(crate) mod flat;
 pub(crate) mod halving;
