@@ -64,27 +64,43 @@ use super::input::Region;
 /// join, in nanoseconds: the filter on two cubics takes about 1.5 µs on a 2-core x86-64
 /// machine (benches/intersect.rs); counted at 5 µs with its share of the later stages.
 const PAIR_WORK: u128 = 5_000;
+/// The cost of a pair of segments whose boxes meet, in nanoseconds: decided in fixed width
+/// (about 0.3 µs) or by a proved join, counted at 2 µs with its share of the later stages
+/// (a board of 7,200 unit squares touching at corners united with its copy moved by one
+/// square: 91,395 pairs, 0.56 s in all, load 5).
+const SEGMENT_PAIR_WORK: u128 = 2_000;
+/// The cost of one box test of the ray that seeds a connected component's winding numbers,
+/// in nanoseconds (one ray per loop against every curve bounds it: a component is at least a
+/// loop, and most are seeded by a join on their box without a ray).
+const RAY_WORK: u128 = 10;
 /// The cost per curve beyond its pairs (its box, its parameters, the faces, the walk and the
 /// area), in nanoseconds, counted generously.
 const CURVE_WORK: u128 = 2_000;
 
 /// The work estimate of [`run`] in nanoseconds when both regions are of doubles, else `None`:
-/// every pair of curves whose boxes meet at [`PAIR_WORK`], every curve at [`CURVE_WORK`], and
-/// one box ray per component against every curve. The pairs the filter cannot decide go to the
-/// exact intersector one by one; the caller's work meter bounds those.
+/// every pair of curves whose boxes meet at [`PAIR_WORK`] ([`SEGMENT_PAIR_WORK`] for two
+/// segments), every curve at [`CURVE_WORK`], and one box ray per loop against every curve at
+/// [`RAY_WORK`] a curve. The pairs neither fixed width nor the filter decide go to the exact
+/// intersector one by one; the caller's work meter bounds those.
 pub(crate) fn work(regions: &[&Region; 2]) -> Option<u128> {
     let doubles = [regions[0].doubles()?, regions[1].doubles()?];
-    let boxes: Vec<[f64; 4]> = doubles
+    let curves: Vec<&Vec<[f64; 2]>> = doubles.iter().flat_map(|d| d.iter().flatten()).collect();
+    let boxes: Vec<[f64; 4]> = curves.iter().map(|c| graph::bbox(c)).collect();
+    let pair_work: u128 = crate::region::arrangement::meeting_boxes(&boxes)
         .iter()
-        .flat_map(|d| d.iter().flatten())
-        .map(|c| graph::bbox(c))
-        .collect();
-    let pairs = crate::region::arrangement::meeting_boxes(&boxes).len() as u128;
+        .map(|&(i, j)| {
+            if curves[i].len() == 2 && curves[j].len() == 2 {
+                SEGMENT_PAIR_WORK
+            } else {
+                PAIR_WORK
+            }
+        })
+        .sum();
     let (curves, loops) = (
         boxes.len() as u128,
         (doubles[0].len() + doubles[1].len()) as u128,
     );
-    Some(pairs * PAIR_WORK + curves * CURVE_WORK + loops * curves * 50)
+    Some(pair_work + curves * CURVE_WORK + loops * curves * RAY_WORK)
 }
 
 /// The boolean `op` of the two regions when every input number is a double (module docs),
