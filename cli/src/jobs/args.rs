@@ -39,12 +39,16 @@ pub const DEFAULT_MAX_WORK: u64 = 1_000_000_000;
 /// The default limit on the size of a job's input in bytes (`--max-input`): 1 MiB.
 pub const DEFAULT_MAX_INPUT: u64 = 1 << 20;
 
-/// The limits of one run of `blossom restrict`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// The limits of one run of `blossom restrict` (`--max-work`, `--max-input`).
+#[derive(Args, Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Limits {
     /// The largest estimated work of a job that is computed.
+    #[arg(long = "max-work", value_parser = limit, allow_negative_numbers = true)]
+    #[arg(default_value_t = DEFAULT_MAX_WORK)]
     pub max_work: u64,
     /// The largest input, in bytes, that is read.
+    #[arg(long = "max-input", value_parser = limit, allow_negative_numbers = true)]
+    #[arg(default_value_t = DEFAULT_MAX_INPUT)]
     pub max_input: u64,
 }
 
@@ -237,25 +241,15 @@ enum Sub {
     Restrict {
         #[command(flatten)]
         io: Io,
-        #[arg(long, value_parser = arithmetic)]
-        arithmetic: Option<Arithmetic>,
-        #[arg(long, value_parser = method)]
-        method: Option<MethodChoice>,
+        #[arg(long, value_parser = arithmetic, default_value = "exact")]
+        arithmetic: Arithmetic,
+        #[arg(long, value_parser = method, default_value = Method::default().name())]
+        method: MethodChoice,
     },
     /// Certified zeros and intersections.
-    Intersect {
-        #[command(flatten)]
-        io: Io,
-        #[arg(long, value_parser = arithmetic)]
-        arithmetic: Option<Arithmetic>,
-    },
+    Intersect(Certified),
     /// Certified booleans, triangle intersections and winding numbers.
-    Region {
-        #[command(flatten)]
-        io: Io,
-        #[arg(long, value_parser = arithmetic)]
-        arithmetic: Option<Arithmetic>,
-    },
+    Region(Certified),
     /// The exact error of another program's f64 answer.
     Check {
         #[command(flatten)]
@@ -290,30 +284,38 @@ struct Io {
     /// The job file (`-`: standard input).
     #[arg(long)]
     input: Option<PathBuf>,
-    /// The work budget.
-    #[arg(long = "max-work", value_parser = limit, allow_negative_numbers = true)]
-    max_work: Option<u64>,
-    /// The longest input read.
-    #[arg(long = "max-input", value_parser = limit, allow_negative_numbers = true)]
-    max_input: Option<u64>,
+    /// The work budget and the longest input read.
+    #[command(flatten)]
+    limits: Limits,
     #[arg(short = 'h', long = "help")]
     help: bool,
 }
 
-impl Io {
-    fn input(&self) -> Result<Option<PathBuf>, Error> {
-        match self.input.as_deref().map(|p| p.as_os_str()) {
-            Some(p) if p.is_empty() => Err(Error::new("--input", "empty file name")),
-            Some(p) if p == "-" => Ok(None),
-            _ => Ok(self.input.clone()),
-        }
-    }
+/// The flags of `intersect` and `region`.
+#[derive(Args, Debug)]
+struct Certified {
+    #[command(flatten)]
+    io: Io,
+    #[arg(long, value_parser = arithmetic, default_value = "exact")]
+    arithmetic: Arithmetic,
+}
 
-    fn limits(&self) -> Limits {
-        Limits {
-            max_work: self.max_work.unwrap_or(DEFAULT_MAX_WORK),
-            max_input: self.max_input.unwrap_or(DEFAULT_MAX_INPUT),
+impl Io {
+    /// The command `make` of the input and the limits, or the help text `help` when asked.
+    fn command(
+        self,
+        help: &'static str,
+        make: impl FnOnce(Option<PathBuf>, Limits) -> Command,
+    ) -> Result<Command, Error> {
+        if self.help {
+            return Ok(Command::Help(help));
         }
+        let input = match self.input.as_deref().map(|p| p.as_os_str()) {
+            Some(p) if p.is_empty() => return Err(Error::new("--input", "empty file name")),
+            Some(p) if p == "-" => None,
+            _ => self.input,
+        };
+        Ok(make(input, self.limits))
     }
 }
 
@@ -380,14 +382,6 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
     if cli.version {
         return Ok(Command::Version);
     }
-    let restrict_like =
-        |io: &Io, help: &'static str, make: &dyn Fn(Option<PathBuf>, Limits) -> Command| {
-            if io.help {
-                Ok(Command::Help(help))
-            } else {
-                Ok(make(io.input()?, io.limits()))
-            }
-        };
     match cli.command {
         None => Ok(Command::Verify {
             json: false,
@@ -400,21 +394,33 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
             io,
             arithmetic,
             method,
-        }) => restrict_like(&io, RESTRICT_HELP, &|input, limits| {
+        }) => io.command(RESTRICT_HELP, |input, limits| {
             Command::Restrict(RestrictOptions {
                 input,
-                arithmetic: arithmetic.unwrap_or(Arithmetic::Exact),
-                method: method.unwrap_or_default(),
+                arithmetic,
+                method,
                 limits,
             })
         }),
-        Some(Sub::Intersect { io, arithmetic }) => {
-            certified(io, arithmetic, INTERSECT_HELP, Command::Intersect)
+        Some(Sub::Intersect(Certified { io, arithmetic })) => {
+            io.command(INTERSECT_HELP, |input, limits| {
+                Command::Intersect(IntersectOptions {
+                    input,
+                    arithmetic,
+                    limits,
+                })
+            })
         }
-        Some(Sub::Region { io, arithmetic }) => {
-            certified(io, arithmetic, REGION_HELP, Command::Region)
+        Some(Sub::Region(Certified { io, arithmetic })) => {
+            io.command(REGION_HELP, |input, limits| {
+                Command::Region(IntersectOptions {
+                    input,
+                    arithmetic,
+                    limits,
+                })
+            })
         }
-        Some(Sub::Check { io, per_point }) => restrict_like(&io, CHECK_HELP, &|input, limits| {
+        Some(Sub::Check { io, per_point }) => io.command(CHECK_HELP, |input, limits| {
             Command::Check(CheckOptions {
                 input,
                 per_point,
@@ -450,23 +456,6 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
             )),
         },
     }
-}
-
-/// `intersect` and `region`: the same flags, another help and command.
-fn certified(
-    io: Io,
-    arithmetic: Option<Arithmetic>,
-    help: &'static str,
-    command: fn(IntersectOptions) -> Command,
-) -> Result<Command, Error> {
-    if io.help {
-        return Ok(Command::Help(help));
-    }
-    Ok(command(IntersectOptions {
-        input: io.input()?,
-        arithmetic: arithmetic.unwrap_or(Arithmetic::Exact),
-        limits: io.limits(),
-    }))
 }
 
 /// The clap error `e` of the command line `args` as the contract's one-line error.

@@ -39,7 +39,7 @@ pub mod write;
 pub use intersect as intersect_jobs;
 
 use crate::number::take_error_bound;
-use args::{Arithmetic, Command, MethodChoice, RestrictOptions};
+use args::{Arithmetic, Command, IntersectOptions, Limits, MethodChoice, RestrictOptions};
 use blossom::{BoundedF64, Error, Rational};
 use kinds::{job_and_kind, Context, Job, Subcommand};
 use read::Text;
@@ -47,6 +47,7 @@ use restrict::specialised;
 use serde_json::Value;
 use std::ffi::OsString;
 use std::io::{Read, Write};
+use std::path::Path;
 use std::sync::Mutex;
 
 /// The exit code of bad input or bad arguments.
@@ -64,23 +65,18 @@ pub struct Outcome {
 }
 
 impl Outcome {
-    fn success(stdout: String) -> Self {
-        Outcome {
-            code: 0,
-            stdout,
-            stderr: String::new(),
-        }
-    }
-
     fn of(result: Result<String, Error>) -> Self {
-        result.map_or_else(|e| Outcome::failure(&e), Outcome::success)
-    }
-
-    fn failure(error: &Error) -> Self {
-        Outcome {
-            code: EXIT_BAD_INPUT,
-            stdout: String::new(),
-            stderr: format!("error: {}\n", escaped(&error.to_string())),
+        match result {
+            Ok(stdout) => Outcome {
+                code: 0,
+                stdout,
+                stderr: String::new(),
+            },
+            Err(error) => Outcome {
+                code: EXIT_BAD_INPUT,
+                stdout: String::new(),
+                stderr: format!("error: {}\n", escaped(&error.to_string())),
+            },
         }
     }
 }
@@ -109,101 +105,83 @@ fn with_newline(mut text: String) -> String {
 /// Runs the command line `args` (without the program name), reading a job from `stdin` when
 /// needed. Prints nothing itself.
 pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
-    match args::parse(args) {
-        Err(error) => Outcome::failure(&error),
-        Ok(Command::Help(text)) => Outcome::success(
-            [
-                ("  %RESTRICT%\n", Subcommand::Restrict),
-                ("  %INTERSECT%\n", Subcommand::Intersect),
-                ("  %REGION%\n", Subcommand::Region),
-            ]
-            .iter()
-            .fold(text.to_string(), |text, (mark, sub)| {
-                text.replace(mark, &kinds::help_list(*sub))
-            }),
-        ),
-        Ok(Command::Version) => {
-            Outcome::success(format!("blossom {}\n", env!("CARGO_PKG_VERSION")))
-        }
-        Ok(Command::Verify { json, verbose }) => {
+    let command = match args::parse(args) {
+        Ok(command) => command,
+        Err(error) => return Outcome::of(Err(error)),
+    };
+    Outcome::of(match command {
+        Command::Help(text) => Ok([
+            ("  %RESTRICT%\n", Subcommand::Restrict),
+            ("  %INTERSECT%\n", Subcommand::Intersect),
+            ("  %REGION%\n", Subcommand::Region),
+        ]
+        .iter()
+        .fold(text.to_string(), |text, (mark, sub)| {
+            text.replace(mark, &kinds::help_list(*sub))
+        })),
+        Command::Version => Ok(format!("blossom {}\n", env!("CARGO_PKG_VERSION"))),
+        Command::Verify { json, verbose } => {
             let (report, ok) = crate::verify::run_report(json, verbose);
-            Outcome {
+            return Outcome {
                 code: if ok { 0 } else { 1 },
                 stdout: with_newline(report),
                 stderr: String::new(),
-            }
-        }
-        Ok(Command::Restrict(options)) => Outcome::of(restrict(&options, stdin)),
-        Ok(Command::Intersect(options)) => certified(&options, Subcommand::Intersect, stdin),
-        Ok(Command::Region(options)) => certified(&options, Subcommand::Region, stdin),
-        Ok(Command::Check(options)) => {
-            let context = Context {
-                method: MethodChoice::default(),
-                arithmetic: Arithmetic::Exact,
-                limits: options.limits,
             };
+        }
+        Command::Restrict(o) => restrict(&o, stdin),
+        Command::Intersect(o) => certified(&o, Subcommand::Intersect, stdin),
+        Command::Region(o) => certified(&o, Subcommand::Region, stdin),
+        Command::Check(o) => {
+            let context = Context::new(MethodChoice::default(), Arithmetic::Exact, o.limits);
+            let shape = |job: &Value| shape(job).map(drop);
             let exact = |job: &Value| solve(job, &context);
-            Outcome::of(
-                read_input(options.input.as_deref(), &options.limits, stdin)
-                    .and_then(|bytes| parse_json(&bytes))
-                    .and_then(|document| {
-                        crate::check::check_command(&document, options.per_point, &shape, &exact)
-                    })
-                    .map(with_newline),
-            )
+            let document = document(o.input.as_deref(), &o.limits, stdin);
+            document.and_then(|document| {
+                crate::check::check_command(&document, o.per_point, &shape, &exact)
+                    .map(with_newline)
+            })
         }
-        Ok(Command::Figures { out }) => {
-            Outcome::of(crate::figures::write_figures(&out).map(|written| {
-                written
-                    .iter()
-                    .map(|path| format!("{}\n", path.display()))
-                    .collect()
-            }))
-        }
-        Ok(Command::Completions(shell)) => Outcome::of(args::completions(&shell)),
-        Ok(Command::Expand(words)) => {
-            Outcome::of(crate::specialised::expand_command(&words).map(with_newline))
-        }
-    }
+        Command::Figures { out } => crate::figures::write_figures(&out).map(|written| {
+            written
+                .iter()
+                .map(|path| format!("{}\n", path.display()))
+                .collect()
+        }),
+        Command::Completions(shell) => args::completions(&shell),
+        Command::Expand(words) => crate::specialised::expand_command(&words).map(with_newline),
+    })
 }
 
-/// The answer of a job of `blossom intersect` or `blossom region`, as one line of JSON, or the
-/// failure.
-fn certified(
-    options: &args::IntersectOptions,
-    subcommand: Subcommand,
-    stdin: &mut dyn Read,
-) -> Outcome {
-    let context = Context {
-        method: MethodChoice::default(),
-        arithmetic: options.arithmetic,
-        limits: options.limits,
-    };
-    let answer = read_input(options.input.as_deref(), &options.limits, stdin)
-        .and_then(|bytes| parse_json(&bytes))
-        .and_then(|document| {
-            let (job, kind) = job_and_kind(&document, subcommand)?;
-            match options.arithmetic {
-                Arithmetic::Exact => Job::<Rational>::read(kind.name, job)?.solve(&context),
-                Arithmetic::F64 => Job::<BoundedF64>::read(kind.name, job)?.solve(&context),
-            }
-        });
-    Outcome::of(answer.and_then(|answer| one_line(&answer)))
+/// The JSON document read from `input` (or standard input).
+fn document(input: Option<&Path>, limits: &Limits, stdin: &mut dyn Read) -> Result<Value, Error> {
+    parse_json(&read_input(input, limits, stdin)?)
 }
 
 /// `blossom restrict`: the answer's text, one line of JSON and a newline.
-fn restrict(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<String, Error> {
-    if options.method == MethodChoice::Specialised && !specialised::BUILT_IN {
+fn restrict(o: &RestrictOptions, stdin: &mut dyn Read) -> Result<String, Error> {
+    if o.method == MethodChoice::Specialised && !specialised::BUILT_IN {
         return Err(Error::new("--method", specialised::NOT_BUILT_IN));
     }
-    let bytes = read_input(options.input.as_deref(), &options.limits, stdin)?;
-    let document = parse_json(&bytes)?;
-    let context = Context {
-        method: options.method,
-        arithmetic: options.arithmetic,
-        limits: options.limits,
-    };
-    one_line(&solve(&document, &context)?)
+    let document = document(o.input.as_deref(), &o.limits, stdin)?;
+    one_line(&solve(
+        &document,
+        &Context::new(o.method, o.arithmetic, o.limits),
+    )?)
+}
+
+/// `blossom intersect` and `blossom region`: the answer's text, one line of JSON and a newline.
+fn certified(
+    o: &IntersectOptions,
+    subcommand: Subcommand,
+    stdin: &mut dyn Read,
+) -> Result<String, Error> {
+    let document = document(o.input.as_deref(), &o.limits, stdin)?;
+    let (job, kind) = job_and_kind(&document, subcommand)?;
+    let context = Context::new(MethodChoice::default(), o.arithmetic, o.limits);
+    one_line(&match o.arithmetic {
+        Arithmetic::Exact => Job::<Rational>::read(kind.name, job)?.solve(&context)?,
+        Arithmetic::F64 => Job::<BoundedF64>::read(kind.name, job)?.solve(&context)?,
+    })
 }
 
 /// The answer of the `restrict` job `document` within the budget: its shape and fields are
@@ -212,14 +190,10 @@ fn restrict(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<String, E
 /// largest bound over its numbers on their distance to the exact answer for the same input
 /// doubles (`null` when some number has no finite bound).
 pub fn solve(document: &Value, context: &Context) -> Result<Value, Error> {
-    shape(document)?;
     let (job, kind) = job_and_kind(document, Subcommand::Restrict)?;
-    let estimate = budget::up_front(
-        document,
-        context.method,
-        context.arithmetic,
-        &context.limits,
-    )?;
+    let shape = Job::<Text>::read(kind.name, job)?;
+    let estimate = budget::estimate_of(&shape, job, context.method, context.arithmetic);
+    let estimate = budget::up_front(estimate, &context.limits)?;
     budget::metered(&context.limits, &estimate.field, || {
         match context.arithmetic {
             Arithmetic::Exact => Job::<Rational>::read(kind.name, job)?.solve(context),
@@ -238,10 +212,10 @@ pub fn solve(document: &Value, context: &Context) -> Result<Value, Error> {
 }
 
 /// Checks the kind and the fields of the `restrict` job `document` (the names of all of them
-/// first), its numbers not yet read.
-pub fn shape(document: &Value) -> Result<(), Error> {
+/// first), its numbers not yet read: the job so read.
+pub fn shape(document: &Value) -> Result<Job<Text>, Error> {
     let (job, kind) = job_and_kind(document, Subcommand::Restrict)?;
-    Job::<Text>::read(kind.name, job).map(drop)
+    Job::<Text>::read(kind.name, job)
 }
 
 /// `answer` as one line of JSON and a newline.
@@ -255,7 +229,7 @@ fn one_line(answer: &Value) -> Result<String, Error> {
 /// `limits.max_input` of them (a longer input is refused, never truncated).
 pub(crate) fn read_input(
     input: Option<&std::path::Path>,
-    limits: &cost::Limits,
+    limits: &Limits,
     stdin: &mut dyn Read,
 ) -> Result<Vec<u8>, Error> {
     let limit = limits.max_input;
@@ -335,7 +309,7 @@ pub fn main() -> i32 {
             .or_else(|| payload.downcast_ref::<&str>().map(|s| s.to_string()))
             .or_else(|| payload.downcast_ref::<String>().cloned())
             .unwrap_or_else(|| String::from("unknown panic"));
-        Outcome::failure(&Error::new("internal", message))
+        Outcome::of(Err(Error::new("internal", message)))
     });
     // Write errors (a closed pipe) are ignored: the exit code still tells the story.
     let _ = std::io::stdout()

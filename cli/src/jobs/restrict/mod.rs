@@ -1,6 +1,6 @@
 //! The jobs of `blossom restrict`, one file per kind, each a struct deriving `Deserialize`
-//! (its fields in the order they are checked) that implements [`Kind`](super::kinds::Kind):
-//! its up-front estimate (the cost model of [`super::cost`]) and its answer, a struct deriving
+//! (its fields in the order they are checked) with its up-front estimate (the cost model of
+//! [`super::cost`]) that implements [`Kind`](super::kinds::Kind): its answer, a struct deriving
 //! `Serialize`. This module holds what they share: the number types they compute in
 //! ([`Number`]), the answers' common forms and the carried evaluators of `--method
 //! specialised` ([`specialised`]).
