@@ -39,14 +39,14 @@ pub const DEFAULT_MAX_WORK: u64 = 1_000_000_000;
 /// The default limit on the size of a job's input in bytes (`--max-input`): 1 MiB.
 pub const DEFAULT_MAX_INPUT: u64 = 1 << 20;
 
-/// The limits of one run of `blossom restrict` (`--max-work`, `--max-input`).
+/// The limits of one run of a job (`--max-work`, `--max-input`).
 #[derive(Args, Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Limits {
-    /// The largest estimated work of a job that is computed.
+    /// The work budget.
     #[arg(long = "max-work", value_parser = limit, allow_negative_numbers = true)]
     #[arg(default_value_t = DEFAULT_MAX_WORK)]
     pub max_work: u64,
-    /// The largest input, in bytes, that is read.
+    /// The longest input read.
     #[arg(long = "max-input", value_parser = limit, allow_negative_numbers = true)]
     #[arg(default_value_t = DEFAULT_MAX_INPUT)]
     pub max_input: u64,
@@ -101,38 +101,48 @@ pub const METHOD_NAMES: [(&str, MethodChoice); 7] = [
 ];
 
 /// Options of `blossom restrict`.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Args, Clone, Debug, PartialEq, Eq)]
 pub struct RestrictOptions {
-    /// The job file; `None` for standard input.
+    /// The job file (`-`: standard input).
+    #[arg(long)]
     pub input: Option<PathBuf>,
-    /// `--arithmetic`, default exact.
-    pub arithmetic: Arithmetic,
-    /// `--method`, default `bulk` ([`MethodChoice::default`]).
-    pub method: MethodChoice,
     /// `--max-work` and `--max-input` ([`super::budget`]).
+    #[command(flatten)]
     pub limits: Limits,
+    /// The arithmetic: exact (the default) or f64.
+    #[arg(long, value_parser = arithmetic, default_value = "exact")]
+    pub arithmetic: Arithmetic,
+    /// The algorithm ([`MethodChoice::default`]: bulk).
+    #[arg(long, value_parser = method, default_value = Method::default().name())]
+    pub method: MethodChoice,
 }
 
-/// Options of `blossom intersect`.
-#[derive(Clone, Debug, PartialEq, Eq)]
+/// Options of `blossom intersect` and `blossom region`.
+#[derive(Args, Clone, Debug, PartialEq, Eq)]
 pub struct IntersectOptions {
-    /// The job file; `None` for standard input.
+    /// The job file (`-`: standard input).
+    #[arg(long)]
     pub input: Option<PathBuf>,
-    /// `--arithmetic`, default exact: how the job's numbers are read.
-    pub arithmetic: Arithmetic,
     /// `--max-work` and `--max-input` ([`super::budget`]).
+    #[command(flatten)]
     pub limits: Limits,
+    /// How the job's numbers are read: exact (the default) or f64.
+    #[arg(long, value_parser = arithmetic, default_value = "exact")]
+    pub arithmetic: Arithmetic,
 }
 
 /// Options of `blossom check`.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Args, Clone, Debug, PartialEq, Eq)]
 pub struct CheckOptions {
-    /// The file holding the job and the answer; `None` for standard input.
+    /// The job file (`-`: standard input), holding the job and the answer.
+    #[arg(long)]
     pub input: Option<PathBuf>,
-    /// `--per-point`: the error of every control point, besides the largest.
-    pub per_point: bool,
     /// `--max-work` and `--max-input` ([`super::budget`]), applied to the job.
+    #[command(flatten)]
     pub limits: Limits,
+    /// The error of every control point, besides the largest.
+    #[arg(long = "per-point")]
+    pub per_point: bool,
 }
 
 /// The subcommands, in the order the help lists them.
@@ -240,22 +250,30 @@ enum Sub {
     /// Restrict a curve or surface given as JSON.
     Restrict {
         #[command(flatten)]
-        io: Io,
-        #[arg(long, value_parser = arithmetic, default_value = "exact")]
-        arithmetic: Arithmetic,
-        #[arg(long, value_parser = method, default_value = Method::default().name())]
-        method: MethodChoice,
+        options: RestrictOptions,
+        #[arg(short = 'h', long = "help")]
+        help: bool,
     },
     /// Certified zeros and intersections.
-    Intersect(Certified),
+    Intersect {
+        #[command(flatten)]
+        options: IntersectOptions,
+        #[arg(short = 'h', long = "help")]
+        help: bool,
+    },
     /// Certified booleans, triangle intersections and winding numbers.
-    Region(Certified),
+    Region {
+        #[command(flatten)]
+        options: IntersectOptions,
+        #[arg(short = 'h', long = "help")]
+        help: bool,
+    },
     /// The exact error of another program's f64 answer.
     Check {
         #[command(flatten)]
-        io: Io,
-        #[arg(long = "per-point")]
-        per_point: bool,
+        options: CheckOptions,
+        #[arg(short = 'h', long = "help")]
+        help: bool,
     },
     /// Draw the papers' figures as SVG files.
     Figures {
@@ -278,44 +296,12 @@ enum Sub {
     Help,
 }
 
-/// The flags every subcommand that reads a job has.
-#[derive(Args, Debug)]
-struct Io {
-    /// The job file (`-`: standard input).
-    #[arg(long)]
-    input: Option<PathBuf>,
-    /// The work budget and the longest input read.
-    #[command(flatten)]
-    limits: Limits,
-    #[arg(short = 'h', long = "help")]
-    help: bool,
-}
-
-/// The flags of `intersect` and `region`.
-#[derive(Args, Debug)]
-struct Certified {
-    #[command(flatten)]
-    io: Io,
-    #[arg(long, value_parser = arithmetic, default_value = "exact")]
-    arithmetic: Arithmetic,
-}
-
-impl Io {
-    /// The command `make` of the input and the limits, or the help text `help` when asked.
-    fn command(
-        self,
-        help: &'static str,
-        make: impl FnOnce(Option<PathBuf>, Limits) -> Command,
-    ) -> Result<Command, Error> {
-        if self.help {
-            return Ok(Command::Help(help));
-        }
-        let input = match self.input.as_deref().map(|p| p.as_os_str()) {
-            Some(p) if p.is_empty() => return Err(Error::new("--input", "empty file name")),
-            Some(p) if p == "-" => None,
-            _ => self.input,
-        };
-        Ok(make(input, self.limits))
+/// The `--input` as given: `None` for standard input (`-` or none), an empty name refused.
+fn input(input: Option<PathBuf>) -> Result<Option<PathBuf>, Error> {
+    match input.as_deref().map(|p| p.as_os_str()) {
+        Some(p) if p.is_empty() => Err(Error::new("--input", "empty file name")),
+        Some(p) if p == "-" => Ok(None),
+        _ => Ok(input),
     }
 }
 
@@ -390,43 +376,26 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
         Some(Sub::Help) => Ok(Command::Help(HELP)),
         Some(Sub::Verify { help: true, .. }) => Ok(Command::Help(VERIFY_HELP)),
         Some(Sub::Verify { json, verbose, .. }) => Ok(Command::Verify { json, verbose }),
-        Some(Sub::Restrict {
-            io,
-            arithmetic,
-            method,
-        }) => io.command(RESTRICT_HELP, |input, limits| {
-            Command::Restrict(RestrictOptions {
-                input,
-                arithmetic,
-                method,
-                limits,
-            })
-        }),
-        Some(Sub::Intersect(Certified { io, arithmetic })) => {
-            io.command(INTERSECT_HELP, |input, limits| {
-                Command::Intersect(IntersectOptions {
-                    input,
-                    arithmetic,
-                    limits,
-                })
-            })
+        Some(Sub::Restrict { help: true, .. }) => Ok(Command::Help(RESTRICT_HELP)),
+        Some(Sub::Intersect { help: true, .. }) => Ok(Command::Help(INTERSECT_HELP)),
+        Some(Sub::Region { help: true, .. }) => Ok(Command::Help(REGION_HELP)),
+        Some(Sub::Check { help: true, .. }) => Ok(Command::Help(CHECK_HELP)),
+        Some(Sub::Restrict { mut options, .. }) => {
+            options.input = input(options.input)?;
+            Ok(Command::Restrict(options))
         }
-        Some(Sub::Region(Certified { io, arithmetic })) => {
-            io.command(REGION_HELP, |input, limits| {
-                Command::Region(IntersectOptions {
-                    input,
-                    arithmetic,
-                    limits,
-                })
-            })
+        Some(Sub::Intersect { mut options, .. }) => {
+            options.input = input(options.input)?;
+            Ok(Command::Intersect(options))
         }
-        Some(Sub::Check { io, per_point }) => io.command(CHECK_HELP, |input, limits| {
-            Command::Check(CheckOptions {
-                input,
-                per_point,
-                limits,
-            })
-        }),
+        Some(Sub::Region { mut options, .. }) => {
+            options.input = input(options.input)?;
+            Ok(Command::Region(options))
+        }
+        Some(Sub::Check { mut options, .. }) => {
+            options.input = input(options.input)?;
+            Ok(Command::Check(options))
+        }
         Some(Sub::Figures { help: true, .. }) => Ok(Command::Help(FIGURES_HELP)),
         Some(Sub::Figures { out, .. }) => match out {
             Some(dir) if dir.as_os_str().is_empty() => {
