@@ -112,7 +112,7 @@ pub struct RestrictOptions {
     /// The arithmetic: exact (the default) or f64.
     #[arg(long, value_parser = arithmetic, default_value = "exact")]
     pub arithmetic: Arithmetic,
-    /// The algorithm ([`MethodChoice::default`]: bulk).
+    /// The algorithm (bulk by default).
     #[arg(long, value_parser = method, default_value = Method::default().name())]
     pub method: MethodChoice,
 }

@@ -14,10 +14,10 @@ pub mod prelude {
     pub use super::{Context, Kind};
     pub use crate::jobs::args::MethodChoice;
     pub use crate::jobs::cost::{grown_bits, metered, operation, Calibration, Env};
-    pub use crate::jobs::read::{any, counted, exactly, items, leaf, not_empty, number, under};
+    pub use crate::jobs::read::{any, exactly, items, leaf, not_empty, number, object, under};
     pub use crate::jobs::read::{coordinates, rectangular, triangular, MAX_DEGREE};
     pub use crate::jobs::read::{Corners, Degree, NumberList, NumberRows, Numbers, Points, Rows};
-    pub use crate::jobs::read::{Reading, Written};
+    pub use crate::jobs::read::{List, Reading, Written};
     pub use crate::jobs::write::{write, Double, Out, Param, Write};
     pub use blossom::{Error, Method, Point, Rational};
     pub use serde::{Deserialize, Deserializer, Serialize};

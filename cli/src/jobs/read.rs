@@ -1,18 +1,19 @@
-//! Reading a job with serde: the job types derive `Deserialize`, and [`read_job`] runs them over
-//! the parsed document through [`Reader`], a thin `Deserializer` over `serde_json::Value` that
-//! knows the path of every value, so that each error names its field
-//! (`coefficients[2]: expected 3 coordinates, found 2`, `regions[1].loops[0][2][1][0]: ...`).
+//! Reading a job with serde: the objects of a job (the job itself, a region, a triangle, a
+//! `bezier-triangle` entry, a `bspline` piece) derive `Deserialize`, and [`read_job`] runs them
+//! over the parsed document through [`Reader`], a thin `Deserializer` over `serde_json::Value`
+//! that knows the path of every field; everything else (numbers, points, grids, lists, degrees
+//! and names: the leaves) is read from its JSON value by plain functions ([`leaf`], [`items`]),
+//! so that each error names its field (`coefficients[2]: expected 3 coordinates, found 2`,
+//! `regions[1].loops[0][2][1][0]: ...`).
 //!
 //! The reader keeps the contract's order of checks: the fields of an object are checked for
 //! unknown names before any value is read (the nearest accepted name in the message: `did you
 //! mean "control_points"?`), then read in the order the type declares them, a missing one
 //! refused when it is reached (`interval: missing field`); arrays element by element, their
-//! count checked before their elements are read. The leaves of a job (its numbers, points,
-//! grids, degrees and names) are read from their JSON value by plain functions ([`leaf`],
-//! [`items`]): [`number`] reads one number by the contract's rules for the arithmetic `T`
-//! ([`Reading`]: integers and fractions and decimals as strings exactly, JSON numbers with a
-//! fraction part only under `f64`), and the containers check counts and dimensions as they go
-//! ([`Numbers`], [`Point`], [`Points`], [`Rows`]).
+//! count checked before their elements are read. [`number`] reads one number by the contract's
+//! rules for the arithmetic `T` ([`Reading`]: integers and fractions and decimals as strings
+//! exactly, JSON numbers with a fraction part only under `f64`), and the containers check
+//! counts and dimensions as they go ([`Numbers`], [`Points`], [`Rows`]).
 
 use crate::names::{did_you_mean, listed, quoted, unknown_field};
 use crate::number::{f64_from_json, json_type, rational_from_json, JsonNumber};
@@ -27,15 +28,18 @@ use std::marker::PhantomData;
 /// Reads the job object `job` (its `"kind"` read already, and accepted among its fields) as a
 /// `D`; errors at its top level name `input`.
 pub fn read_job<D: DeserializeOwned>(job: &Map<String, Value>) -> Result<D, Error> {
-    let reader = Reader {
-        value: None,
-        object: Some(job),
-        path: String::new(),
-    };
-    D::deserialize(reader).map_err(|e| match e.error {
-        error if error.field.is_empty() => Error::of(error.kind, "input", error.message),
-        error => error,
-    })
+    match D::deserialize(Reader::new(None, Some(job))) {
+        Err(ReadError { error, .. }) if error.field.is_empty() => {
+            Err(Error::of(error.kind, "input", error.message))
+        }
+        result => result.map_err(|e| e.error),
+    }
+}
+
+/// Reads an object of a job (a region, an entry) from `value` on its own: its errors name
+/// fields relative to it.
+pub fn object<D: DeserializeOwned>(value: &Value) -> Result<D, Error> {
+    D::deserialize(Reader::new(Some(value), None)).map_err(|e| e.error)
 }
 
 /// The fields of the struct `D` reads (its serde field names, in order).
@@ -76,20 +80,13 @@ pub struct ReadError {
 }
 
 impl ReadError {
-    /// An error at `relative` (`""`, `[2]` or `name`) below the value being read.
-    fn below(relative: impl Into<String>, message: impl Into<String>) -> Self {
+    /// An error at `relative` (`""`, `[2]` or `name`) below `path`, placed.
+    fn at(path: &str, relative: &str, message: impl Into<String>) -> Self {
+        let error = Error::new(joined(path, relative), message);
         ReadError {
-            error: Error::new(relative, message),
-            placed: false,
+            error,
+            placed: true,
         }
-    }
-
-    fn at(mut self, path: &str) -> Self {
-        if !self.placed {
-            self.error.field = joined(path, &self.error.field);
-            self.placed = true;
-        }
-        self
     }
 }
 
@@ -102,14 +99,17 @@ impl fmt::Display for ReadError {
 impl std::error::Error for ReadError {}
 
 impl de::Error for ReadError {
+    /// An error raised below the value being read: its field (relative, marked by [`below`])
+    /// is put under the value's path by the reader.
     fn custom<M: fmt::Display>(message: M) -> Self {
         let text = message.to_string();
-        match text
+        let (field, message) = text
             .strip_prefix(RELATIVE)
             .and_then(|t| t.split_once(RELATIVE))
-        {
-            Some((field, message)) => ReadError::below(field, message),
-            None => ReadError::below("", text),
+            .unwrap_or(("", &text));
+        ReadError {
+            error: Error::new(field, message),
+            placed: false,
         }
     }
 }
@@ -144,63 +144,30 @@ pub fn under(path: &str, error: Error) -> Error {
     Error::of(error.kind, joined(path, &error.field), error.message)
 }
 
-/// The `Deserializer` of one value of the job at `path` (`value` `None`: a field that is
-/// absent, which reads as `None` where optional and is missing elsewhere; `object` set: the
-/// job object, whose `"kind"` is read already).
+/// The `Deserializer` of one value of a job at `path`: `value` `None` is a field that is absent
+/// (read as `None` where optional, missing elsewhere), `job` the job object itself, whose
+/// `"kind"` is read already. Objects are read by the types that derive `Deserialize`, their
+/// fields checked first and then read in their declared order ([`Fields`]); every other value
+/// is handed whole to the leaf that reads it (by serde_json's own deserializer: numbers keep
+/// their spelling, `arbitrary_precision`).
 pub struct Reader<'a> {
     value: Option<&'a Value>,
-    object: Option<&'a Map<String, Value>>,
+    job: Option<&'a Map<String, Value>>,
     path: String,
 }
 
 impl<'a> Reader<'a> {
-    fn at(value: Option<&'a Value>, path: String) -> Self {
-        Reader {
-            value,
-            object: None,
-            path,
-        }
+    fn new(value: Option<&'a Value>, job: Option<&'a Map<String, Value>>) -> Self {
+        let path = String::new();
+        Reader { value, job, path }
     }
+}
 
-    /// The object being read, or the refusal of what is there instead.
-    fn object<'v, V: Visitor<'v>>(&self, visitor: &V) -> Result<&'a Map<String, Value>, ReadError> {
-        match (self.object, self.value) {
-            (Some(map), _) | (None, Some(Value::Object(map))) => Ok(map),
-            (None, None) => Err(self.missing()),
-            (None, Some(_)) => Err(self.wrong_type(visitor)),
-        }
-    }
-
-    /// The refusal of a value of the wrong type: `expected EXPECTED, found an array`.
-    fn wrong_type<'v, V: Visitor<'v>>(&self, visitor: &V) -> ReadError {
-        /// What a visitor expects, for messages.
-        struct Expecting<'v, V>(&'v V);
-        impl<'de, V: Visitor<'de>> fmt::Display for Expecting<'_, V> {
-            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                self.0.expecting(f)
-            }
-        }
-        let found = self.value.map_or("nothing", json_type);
-        let message = format!("expected {}, found {found}", Expecting(visitor));
-        ReadError::below("", message).at(&self.path)
-    }
-
-    fn missing(&self) -> ReadError {
-        ReadError::below("", "missing field").at(&self.path)
-    }
-
-    /// Reads the entries `entries` of the object at this path with `visitor`.
-    fn entries<'de, V: Visitor<'de>>(
-        &self,
-        entries: Vec<(&'de str, Option<&'de Value>)>,
-        visitor: V,
-    ) -> Result<V::Value, ReadError> {
-        let fields = Fields {
-            entries: entries.into_iter(),
-            current: None,
-            path: &self.path,
-        };
-        visitor.visit_map(fields).map_err(|e| e.at(&self.path))
+/// `error` under `path`, unless a reader below placed it already.
+fn place(path: &str, error: ReadError) -> ReadError {
+    match error.placed {
+        true => error,
+        false => ReadError::at(path, &error.error.field, error.error.message),
     }
 }
 
@@ -208,47 +175,18 @@ impl<'de> Deserializer<'de> for Reader<'de> {
     type Error = ReadError;
 
     fn deserialize_any<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, ReadError> {
-        match self.value {
-            None if self.object.is_none() => Err(self.missing()),
-            None | Some(Value::Object(_)) => self.deserialize_map(visitor),
-            Some(Value::Array(items)) => {
-                let elements = Elements {
-                    items: items.iter().enumerate(),
-                    path: &self.path,
-                };
-                visitor.visit_seq(elements).map_err(|e| e.at(&self.path))
-            }
-            // Numbers keep their spelling (`arbitrary_precision`): serde_json presents them.
-            Some(leaf) => leaf
-                .deserialize_any(visitor)
-                .map_err(|e| ReadError::below("", e.to_string()).at(&self.path)),
-        }
+        let Some(value) = self.value else {
+            return Err(ReadError::at(&self.path, "", "missing field"));
+        };
+        let read = value.deserialize_any(visitor);
+        read.map_err(|e| place(&self.path, de::Error::custom(e)))
     }
 
     fn deserialize_option<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, ReadError> {
         match self.value {
-            None | Some(Value::Null) if self.object.is_none() => visitor.visit_none(),
+            None | Some(Value::Null) if self.job.is_none() => visitor.visit_none(),
             _ => visitor.visit_some(self),
         }
-    }
-
-    fn deserialize_seq<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, ReadError> {
-        match self.value {
-            Some(Value::Array(_)) => self.deserialize_any(visitor),
-            None if self.object.is_none() => Err(self.missing()),
-            _ => Err(self.wrong_type(&visitor)),
-        }
-    }
-
-    fn deserialize_map<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, ReadError> {
-        let map = self.object(&visitor)?;
-        let top = self.object.is_some();
-        let entries = map
-            .iter()
-            .filter(|(k, _)| !top || k.as_str() != "kind")
-            .map(|(k, v)| (k.as_str(), Some(v)))
-            .collect();
-        self.entries(entries, visitor)
     }
 
     /// An object: its fields are checked for unknown names first, then read in the order of
@@ -259,63 +197,49 @@ impl<'de> Deserializer<'de> for Reader<'de> {
         fields: &'static [&'static str],
         visitor: V,
     ) -> Result<V::Value, ReadError> {
-        let map = self.object(&visitor)?;
-        let accepted: Vec<&str> = self
-            .object
-            .map(|_| "kind")
-            .into_iter()
-            .chain(fields.iter().copied())
-            .collect();
+        let map = match (self.job, self.value) {
+            (Some(map), _) | (None, Some(Value::Object(map))) => map,
+            (None, None) => return Err(ReadError::at(&self.path, "", "missing field")),
+            (None, Some(other)) => {
+                let found = json_type(other);
+                let message = format!("expected {}, found {found}", Expecting(&visitor));
+                return Err(ReadError::at(&self.path, "", message));
+            }
+        };
+        let top = self.job.map(|_| "kind");
+        let accepted: Vec<&str> = top.into_iter().chain(fields.iter().copied()).collect();
         if let Some(name) = map.keys().find(|k| !accepted.contains(&k.as_str())) {
-            let refusal = ReadError::below(name.clone(), unknown_field(name, &accepted));
-            return Err(refusal.at(&self.path));
+            return Err(ReadError::at(
+                &self.path,
+                name,
+                unknown_field(name, &accepted),
+            ));
         }
-        let entries = fields.iter().map(|f| (*f, map.get(*f))).collect();
-        self.entries(entries, visitor)
-    }
-
-    fn deserialize_newtype_struct<V: Visitor<'de>>(
-        self,
-        _name: &'static str,
-        visitor: V,
-    ) -> Result<V::Value, ReadError> {
-        visitor.visit_newtype_struct(self)
+        let entries: Vec<_> = fields.iter().map(|f| (*f, map.get(*f))).collect();
+        let fields = Fields {
+            entries: entries.into_iter(),
+            current: None,
+            path: &self.path,
+        };
+        visitor.visit_map(fields).map_err(|e| place(&self.path, e))
     }
 
     serde::forward_to_deserialize_any! {
         bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string bytes byte_buf
-        unit unit_struct tuple tuple_struct enum identifier ignored_any
+        unit unit_struct newtype_struct seq tuple tuple_struct map enum identifier ignored_any
     }
 }
 
-/// The elements of an array, each read at `path[i]`.
-struct Elements<'a, 'p> {
-    items: std::iter::Enumerate<std::slice::Iter<'a, Value>>,
-    path: &'p str,
-}
+/// What a visitor expects, for messages.
+struct Expecting<'v, V>(&'v V);
 
-impl<'de> de::SeqAccess<'de> for Elements<'de, '_> {
-    type Error = ReadError;
-
-    fn next_element_seed<S: DeserializeSeed<'de>>(
-        &mut self,
-        seed: S,
-    ) -> Result<Option<S::Value>, ReadError> {
-        let Some((i, item)) = self.items.next() else {
-            return Ok(None);
-        };
-        let path = format!("{}[{i}]", self.path);
-        seed.deserialize(Reader::at(Some(item), path.clone()))
-            .map(Some)
-            .map_err(|e| e.at(&path))
-    }
-
-    fn size_hint(&self) -> Option<usize> {
-        Some(self.items.len())
+impl<'de, V: Visitor<'de>> fmt::Display for Expecting<'_, V> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        self.0.expecting(f)
     }
 }
 
-/// The fields of an object, each read at `path.name` (`None`: absent).
+/// The fields of an object in their declared order, each read at `path.name` (`None`: absent).
 struct Fields<'a, 'p> {
     entries: std::vec::IntoIter<(&'a str, Option<&'a Value>)>,
     current: Option<(&'a str, Option<&'a Value>)>,
@@ -334,44 +258,21 @@ impl<'de> de::MapAccess<'de> for Fields<'de, '_> {
             return Ok(None);
         };
         let key: Result<_, de::value::Error> = seed.deserialize(name.into_deserializer());
+        let path = joined(self.path, name);
         key.map(Some)
-            .map_err(|e| ReadError::below("", e.to_string()).at(&joined(self.path, name)))
+            .map_err(|e| ReadError::at(&path, "", e.to_string()))
     }
 
     fn next_value_seed<S: DeserializeSeed<'de>>(&mut self, seed: S) -> Result<S::Value, ReadError> {
         let (name, value) = self.current.take().expect("a key before its value");
         let path = joined(self.path, name);
-        seed.deserialize(Reader::at(value, path.clone()))
-            .map_err(|e| e.at(&path))
+        let reader = Reader {
+            value,
+            job: None,
+            path: path.clone(),
+        };
+        seed.deserialize(reader).map_err(|e| place(&path, e))
     }
-}
-
-/// The elements of an array read by serde as `E` (values that derive their reading, such as a
-/// region), `count` checked before any is read (it says what is wrong with their number).
-pub fn counted<'de, D: Deserializer<'de>, E: Deserialize<'de>>(
-    d: D,
-    expected: impl Into<String>,
-    count: impl FnOnce(usize) -> Result<(), String>,
-) -> Result<Vec<E>, D::Error> {
-    struct Items<E, C>(String, C, PhantomData<E>);
-    impl<'de, E: Deserialize<'de>, C: FnOnce(usize) -> Result<(), String>> Visitor<'de>
-        for Items<E, C>
-    {
-        type Value = Vec<E>;
-        fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-            f.write_str(&self.0)
-        }
-        fn visit_seq<A: de::SeqAccess<'de>>(self, mut seq: A) -> Result<Vec<E>, A::Error> {
-            let found = seq.size_hint().unwrap_or(0);
-            (self.1)(found).map_err(de::Error::custom)?;
-            let mut out = Vec::with_capacity(found);
-            while let Some(item) = seq.next_element()? {
-                out.push(item);
-            }
-            Ok(out)
-        }
-    }
-    d.deserialize_seq(Items(expected.into(), count, PhantomData))
 }
 
 // ------------------------------------------------------------------------------------------
@@ -404,6 +305,16 @@ pub fn items<X>(
     count(items.len()).map_err(|message| Error::new("", message))?;
     let read = |(k, x): (usize, &Value)| item(x).map_err(|e| under(&format!("[{k}]"), e));
     items.iter().enumerate().map(read).collect()
+}
+
+/// A list of values that read themselves (objects of a job, points), any number of them.
+#[derive(Clone, Debug)]
+pub struct List<E>(pub Vec<E>);
+
+impl<'de, E: DeserializeOwned> Deserialize<'de> for List<E> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        leaf(d, |v| items(v, "a sequence", any, object)).map(List)
+    }
 }
 
 /// The count of exactly `n` elements (`expected 3 corners, found 2`).

@@ -19,7 +19,8 @@ struct Pair<T>(Vec<Curve<T>>);
 
 impl<'de, T: Reading> Deserialize<'de> for Pair<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        counted(d, "an array of two curves", exactly(2, "curves")).map(Pair)
+        let curves = |v: &Value| items(v, "an array of two curves", exactly(2, "curves"), object);
+        leaf(d, curves).map(Pair)
     }
 }
 

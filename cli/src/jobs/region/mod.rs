@@ -32,7 +32,7 @@ pub mod triangle_triangle;
 pub mod winding;
 
 use super::intersect::{Curve2, Curves};
-use super::read::{any, below, counted, exactly, items, leaf, Name, Named, Reading};
+use super::read::{any, below, exactly, items, leaf, object, List, Name, Named, Reading};
 use super::write::{write, Double, Param};
 use blossom::region::MAX_REGION_DEGREE;
 use blossom::region::{parse_svg_path, BooleanOp, Edge, FillRule, Region, RegionResult};
@@ -80,7 +80,7 @@ pub struct RegionShape<T>(pub Region, PhantomData<T>);
     expecting = "a region {\"loops\": [...], \"fill\": ...}"
 )]
 struct RegionFields<T> {
-    loops: Option<Vec<Loop<T>>>,
+    loops: Option<List<Loop<T>>>,
     path: Option<String>,
     fill: Option<Name<FillRule>>,
 }
@@ -101,7 +101,7 @@ impl<'de, T: Reading> Deserialize<'de> for RegionShape<T> {
         let fields = RegionFields::<T>::deserialize(d)?;
         let fill = fields.fill.map_or(FillRule::NonZero, |f| f.0);
         let region = match (fields.loops, fields.path) {
-            (Some(loops), None) => from_loops(loops.into_iter().map(|l| l.0).collect(), fill),
+            (Some(loops), None) => from_loops(loops.0.into_iter().map(|l| l.0).collect(), fill),
             (None, Some(path)) => parse_svg_path(&path, |text| {
                 T::read(&Value::String(text.to_string()))
                     .map(|x| x.exact())
@@ -175,7 +175,7 @@ pub struct TriangleShape<T>(pub Region, PhantomData<T>);
 )]
 struct TriangleFields<T> {
     degree: TriangleDegree,
-    nodes: Vec<Point2<T>>,
+    nodes: List<Point2<T>>,
 }
 
 /// The degree of a triangle: a JSON integer, at most [`MAX_REGION_DEGREE`].
@@ -205,7 +205,7 @@ impl<'de> Deserialize<'de> for TriangleDegree {
 impl<'de, T: Reading> Deserialize<'de> for TriangleShape<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let fields = TriangleFields::<T>::deserialize(d)?;
-        let nodes = fields.nodes.into_iter().map(|p| p.0).collect();
+        let nodes = fields.nodes.0.into_iter().map(|p| p.0).collect();
         Region::triangle(fields.degree.0, nodes)
             .map(|r| TriangleShape(r, PhantomData))
             .map_err(|e| below(&e))
@@ -216,11 +216,11 @@ impl<'de, T: Reading> Deserialize<'de> for TriangleShape<T> {
 #[derive(Clone, Debug)]
 pub struct Two<S>(pub [S; 2]);
 
-impl<'de, S: Deserialize<'de> + Plural> Deserialize<'de> for Two<S> {
+impl<'de, S: serde::de::DeserializeOwned + Plural> Deserialize<'de> for Two<S> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let expected = format!("an array of two {}", S::PLURAL);
-        let items: Vec<S> = counted(d, expected, exactly(2, S::PLURAL))?;
-        Ok(Two(items.try_into().unwrap_or_else(|_| unreachable!())))
+        let two = leaf(d, |v| items(v, &expected, exactly(2, S::PLURAL), object))?;
+        Ok(Two(two.try_into().unwrap_or_else(|_| unreachable!())))
     }
 }
 

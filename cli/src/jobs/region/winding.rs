@@ -14,7 +14,7 @@ pub struct Winding<T> {
     /// A.
     region: RegionShape<T>,
     /// The points.
-    points: Vec<Point2<T>>,
+    points: List<Point2<T>>,
 }
 
 /// The answer.
@@ -33,7 +33,7 @@ struct Position {
 impl<T: Number> Kind for Winding<T> {
     fn solve(self, context: &Context) -> Result<Value, Error> {
         let region = self.region.0;
-        let points: Vec<_> = self.points.into_iter().map(|p| p.0).collect();
+        let points: Vec<_> = self.points.0.into_iter().map(|p| p.0).collect();
         let fill = region.fill();
         let position = |w| match w {
             Found::Boundary => Position {

@@ -16,7 +16,7 @@ use blossom::{triangle_control_points_from_samples, TriangularPatch};
 #[serde(bound = "T: Reading")]
 pub struct BezierTriangle<T> {
     /// The control points with their indices, in any order.
-    control_points: Vec<Entry<T>>,
+    control_points: List<Entry<T>>,
     /// P, Q, R by their barycentric coordinates.
     triangle: Corners<T, 3>,
 }
@@ -146,10 +146,10 @@ fn barycentric<T: Number>(corners: [[T; 3]; 3]) -> Result<[[T; 3]; 3], Error> {
 impl<T: Reading> BezierTriangle<T> {
     /// The up-front estimate ([`Kind`]): a `triangle`'s.
     pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
-        let entries = self.control_points.len() as f64;
+        let entries = self.control_points.0.len() as f64;
         // N from the number of entries (N + 1)(N + 2) / 2.
         let big_n = ((8.0 * entries + 1.0).sqrt() - 3.0).max(0.0) / 2.0 + 1.0;
-        let d = self.control_points.first().map_or(1, |e| e.point.0.len());
+        let d = self.control_points.0.first().map_or(1, |e| e.point.0.len());
         let sizes = (big_n, entries, d.max(1) as f64);
         super::triangle::estimate(env, "control_points", sizes, &CALIBRATION)
     }
@@ -157,7 +157,7 @@ impl<T: Reading> BezierTriangle<T> {
 
 impl<T: Number> Kind for BezierTriangle<T> {
     fn solve(self, context: &Context) -> Result<Value, Error> {
-        let patch = net(self.control_points)?;
+        let patch = net(self.control_points.0)?;
         let bary = barycentric(self.triangle.0)?;
         let big_n = patch.degree();
         // The corners in the (u, v) = (r, s) plane, where the patch's own corners are (1, 0),

@@ -23,7 +23,10 @@ struct Pieces<T>(Vec<PieceJob<T>>);
 
 impl<'de, T: Reading> Deserialize<'de> for Pieces<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        counted(d, "an array of pieces", not_empty("piece")).map(Pieces)
+        leaf(d, |v| {
+            items(v, "an array of pieces", not_empty("piece"), object)
+        })
+        .map(Pieces)
     }
 }
 
