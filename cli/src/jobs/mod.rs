@@ -41,10 +41,10 @@ pub use intersect as intersect_jobs;
 use crate::number::take_error_bound;
 use args::{Arithmetic, Command, IntersectOptions, Limits, MethodChoice, RestrictOptions};
 use blossom::{BoundedF64, Error, Rational};
-use kinds::{job_and_kind, Context, Job, Subcommand};
+use kinds::{job_and_kind, Context, Job, KindInfo, Subcommand};
 use read::Text;
 use restrict::specialised;
-use serde_json::Value;
+use serde_json::{Map, Value};
 use std::ffi::OsString;
 use std::io::{Read, Write};
 use std::path::Path;
@@ -178,10 +178,21 @@ fn certified(
     let document = document(o.input.as_deref(), &o.limits, stdin)?;
     let (job, kind) = job_and_kind(&document, subcommand)?;
     let context = Context::new(MethodChoice::default(), o.arithmetic, o.limits);
-    one_line(&match o.arithmetic {
-        Arithmetic::Exact => Job::<Rational>::read(kind.name, job)?.solve(&context)?,
-        Arithmetic::F64 => Job::<BoundedF64>::read(kind.name, job)?.solve(&context)?,
-    })
+    one_line(&answer(kind, job, &context)?)
+}
+
+/// The answer of the job object `job` of kind `kind`, its numbers read in the arithmetic of
+/// `context`: `"kind"` first, then the fields of the kind's answer.
+fn answer(kind: &KindInfo, job: &Map<String, Value>, context: &Context) -> Result<Value, Error> {
+    let answer = match context.arithmetic {
+        Arithmetic::Exact => Job::<Rational>::read(kind.name, job)?.solve(context)?,
+        Arithmetic::F64 => Job::<BoundedF64>::read(kind.name, job)?.solve(context)?,
+    };
+    let mut named = Map::from_iter([(String::from("kind"), Value::from(kind.name))]);
+    if let Value::Object(fields) = answer {
+        named.extend(fields);
+    }
+    Ok(Value::Object(named))
 }
 
 /// The answer of the `restrict` job `document` within the budget: its shape and fields are
@@ -195,19 +206,17 @@ pub fn solve(document: &Value, context: &Context) -> Result<Value, Error> {
     let estimate = budget::estimate_of(&shape, job, context.method, context.arithmetic);
     let estimate = budget::up_front(estimate, &context.limits)?;
     budget::metered(&context.limits, &estimate.field, || {
-        match context.arithmetic {
-            Arithmetic::Exact => Job::<Rational>::read(kind.name, job)?.solve(context),
-            Arithmetic::F64 => {
-                let mut answer = Job::<BoundedF64>::read(kind.name, job)?.solve(context)?;
-                let bound = take_error_bound(&mut answer)
-                    .and_then(serde_json::Number::from_f64)
-                    .map_or(Value::Null, Value::Number);
-                if let Value::Object(map) = &mut answer {
-                    map.insert("error_bound".into(), bound);
-                }
-                Ok(answer)
+        let mut answer = answer(kind, job, context)?;
+        if context.arithmetic == Arithmetic::F64 {
+            let bound = take_error_bound(&mut answer).and_then(serde_json::Number::from_f64);
+            if let Value::Object(fields) = &mut answer {
+                fields.insert(
+                    "error_bound".into(),
+                    bound.map_or(Value::Null, Value::Number),
+                );
             }
         }
+        Ok(answer)
     })
 }
 

@@ -41,7 +41,7 @@ impl<T: Number> Kind for CurveCurve<T> {
                     };
                     at(path, e)
                 })?;
-                write(&IntersectionsAnswer::of("curve-curve", &found))
+                write(&IntersectionsAnswer::of(&found))
             },
         )
     }

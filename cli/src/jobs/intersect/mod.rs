@@ -167,7 +167,6 @@ impl<'de, T: Reading> Deserialize<'de> for Curve<T> {
 /// The answer of a `curve-curve` or `self` job.
 #[derive(Serialize)]
 pub struct IntersectionsAnswer {
-    kind: &'static str,
     points: Vec<PointAnswer>,
     overlaps: Vec<OverlapAnswer>,
 }
@@ -187,10 +186,9 @@ struct OverlapAnswer {
 }
 
 impl IntersectionsAnswer {
-    /// The answer of the job `kind` that found `found`.
-    pub fn of(kind: &'static str, found: &Intersections) -> Self {
+    /// The answer of a job that found `found`.
+    pub fn of(found: &Intersections) -> Self {
         IntersectionsAnswer {
-            kind,
             points: found
                 .points
                 .iter()

@@ -40,7 +40,6 @@ impl<'de, T: Reading> Deserialize<'de> for Coefficients<T> {
 /// The answer.
 #[derive(Serialize)]
 struct Answer {
-    kind: &'static str,
     identically_zero: bool,
     roots: Vec<Root>,
 }
@@ -63,7 +62,6 @@ impl<T: Number> Kind for Roots<T> {
                 multiplicity: z.multiplicity,
             };
             write(&Answer {
-                kind: "roots",
                 identically_zero: zeros.identically_zero,
                 roots: zeros.zeros.iter().map(root).collect(),
             })

@@ -22,7 +22,7 @@ impl<T: Number> Kind for SelfIntersections<T> {
             blossom::budget::self_intersection_work(&p),
             || {
                 let found = blossom::self_intersections(&p).map_err(|e| at("curve", e))?;
-                write(&IntersectionsAnswer::of("self", &found))
+                write(&IntersectionsAnswer::of(&found))
             },
         )
     }

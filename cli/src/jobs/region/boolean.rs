@@ -23,7 +23,7 @@ impl<T: Number> Kind for Boolean<T> {
         let [a, b] = self.regions.0.map(|r| r.0);
         certified(context, "regions", boolean_work(&a, &b), || {
             let result = boolean(&a, &b, self.op.0).map_err(|e| under("regions", e))?;
-            RegionAnswer::write("boolean", &result, false)
+            RegionAnswer::write(&result, false)
         })
     }
 }

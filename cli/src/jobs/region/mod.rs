@@ -242,7 +242,6 @@ impl<T> Plural for TriangleShape<T> {
 /// oriented simple loops of edges, an enclosure of its area and its SVG path data.
 #[derive(Serialize)]
 pub struct RegionAnswer {
-    kind: &'static str,
     loops: Vec<LoopAnswer>,
     area: [Double; 2],
     /// The result as SVG path data (`null` when an edge has degree over 3).
@@ -269,13 +268,9 @@ struct EdgeAnswer {
 }
 
 impl RegionAnswer {
-    /// The answer of the job `kind` (`triangle_edges`: edges numbered as a
-    /// `triangle-triangle` answer numbers them) as JSON.
-    pub fn write(
-        kind: &'static str,
-        result: &RegionResult,
-        triangle_edges: bool,
-    ) -> Result<Value, Error> {
+    /// The answer of `result` (`triangle_edges`: edges numbered as a `triangle-triangle`
+    /// answer numbers them) as JSON.
+    pub fn write(result: &RegionResult, triangle_edges: bool) -> Result<Value, Error> {
         let edge = |e: &Edge| -> Result<EdgeAnswer, Error> {
             Ok(EdgeAnswer {
                 region: (!triangle_edges).then_some(e.region),
@@ -297,7 +292,6 @@ impl RegionAnswer {
             })
         });
         write(&RegionAnswer {
-            kind,
             loops: loops.collect::<Result<_, Error>>()?,
             area: [Double(result.area[0]), Double(result.area[1])],
             svg: result.svg(),

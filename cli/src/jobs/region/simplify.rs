@@ -21,7 +21,7 @@ impl<T: Number> Kind for Simplify<T> {
         let a = self.region.0;
         certified(context, "region", simplify_work(&a), || {
             let result = simplify(&a).map_err(|e| under("region", e))?;
-            RegionAnswer::write("simplify", &result, false)
+            RegionAnswer::write(&result, false)
         })
     }
 }

@@ -22,7 +22,7 @@ impl<T: Number> Kind for TriangleTriangle<T> {
         let [t1, t2] = self.triangles.0.map(|t| t.0);
         certified(context, "triangles", boolean_work(&t1, &t2), || {
             let result = triangle_intersection(&t1, &t2).map_err(|e| under("triangles", e))?;
-            RegionAnswer::write("triangle-triangle", &result, true)
+            RegionAnswer::write(&result, true)
         })
     }
 }

@@ -20,7 +20,6 @@ pub struct Winding<T> {
 /// The answer.
 #[derive(Serialize)]
 struct Answer {
-    kind: &'static str,
     points: Vec<Position>,
 }
 
@@ -47,10 +46,7 @@ impl<T: Number> Kind for Winding<T> {
         };
         certified(context, "points", region.winding_work(points.len()), || {
             let points = region.windings(&points).into_iter().map(position).collect();
-            write(&Answer {
-                kind: "winding",
-                points,
-            })
+            write(&Answer { points })
         })
     }
 }

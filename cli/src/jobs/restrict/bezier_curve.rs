@@ -63,7 +63,6 @@ impl<T: Number> Kind for BezierCurve<T> {
             }
         };
         write(&Restricted {
-            kind: "bezier-curve",
             degree: n,
             control_points: Out(restricted),
         })

@@ -68,7 +68,6 @@ impl<T: Number> Kind for BezierTensor<T> {
             }
         };
         write(&Restricted {
-            kind: "bezier-tensor",
             degree: [n, m],
             control_points: Out(net),
         })

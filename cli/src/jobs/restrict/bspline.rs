@@ -42,7 +42,6 @@ struct PieceJob<T> {
 #[derive(Serialize)]
 #[serde(bound = "T: Write")]
 struct Answer<T: Write> {
-    kind: &'static str,
     degree: usize,
     knots: Out<Vec<T>>,
     control_points: Out<Vec<Point<T>>>,
@@ -89,7 +88,6 @@ impl<T: Number> Kind for Bspline<Written<T>> {
         }
         let f = bspline_from_pieces(self.degree.0, &pieces)?;
         write(&Answer {
-            kind: "bspline",
             degree: f.degree(),
             knots: Out(rounded::<T>(f.knots())),
             control_points: Out(f.control_points().iter().map(|p| rounded(p)).collect()),

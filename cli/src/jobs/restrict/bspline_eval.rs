@@ -23,7 +23,6 @@ pub struct BsplineEval<T> {
 #[derive(Serialize)]
 #[serde(bound = "T: Write")]
 struct Answer<T: Write> {
-    kind: &'static str,
     points: Out<Vec<Point<T>>>,
 }
 
@@ -57,7 +56,6 @@ impl<T: Number> Kind for BsplineEval<T> {
             })
             .collect::<Result<Vec<Point<T>>, Error>>()?;
         write(&Answer {
-            kind: "bspline-eval",
             points: Out(points),
         })
     }

@@ -37,7 +37,6 @@ impl<T: Number> Kind for Curve<T> {
             MethodChoice::Specialised => specialised::curve(&curve, a, b)?,
         };
         write(&Restricted {
-            kind: "curve",
             degree: restricted.degree(),
             control_points: Out(restricted.into_control_points()),
         })

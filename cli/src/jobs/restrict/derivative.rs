@@ -38,7 +38,6 @@ impl<T: Number> Kind for Derivative<T> {
         }
         let hodograph = blossom::bezier_derivative(&curve, k)?;
         write(&Restricted {
-            kind: "derivative",
             degree: n - k,
             control_points: Out(hodograph.control_points().to_vec()),
         })

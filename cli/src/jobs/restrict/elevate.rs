@@ -32,7 +32,6 @@ impl<T: Number> Kind for Elevate<T> {
         let m = self.to_degree.0;
         let elevated = elevate(&curve, m)?;
         write(&Restricted {
-            kind: "elevate",
             degree: m,
             control_points: Out(elevated.control_points().to_vec()),
         })

@@ -25,7 +25,7 @@ pub struct RationalCurve<T> {
 #[serde(bound = "T: Write")]
 struct Answer<T: Write> {
     #[serde(flatten)]
-    curve: Restricted<usize, Vec<Point<T>>>,
+    curve: Restricted<usize, Out<Vec<Point<T>>>>,
     weights: Out<Vec<T>>,
 }
 
@@ -72,7 +72,6 @@ impl<T: Number> Kind for RationalCurve<Written<T>> {
         )?;
         write(&Answer {
             curve: Restricted {
-                kind: "rational-curve",
                 degree: bezier.degree(),
                 control_points: Out(bezier.points().iter().map(|p| rounded(p)).collect()),
             },

@@ -40,7 +40,6 @@ impl<'de> Deserialize<'de> for DegreePair {
 #[derive(Serialize)]
 #[serde(bound = "T: Write")]
 struct Answer<T: Write> {
-    kind: &'static str,
     degree: [usize; 2],
     control_points: Out<Vec<Vec<Point<T>>>>,
     weights: Out<Vec<Vec<T>>>,
@@ -143,7 +142,6 @@ impl<T: Number> Kind for RationalTensor<Written<T>> {
                 .map(move |(j, w)| (format!("weights[{i}][{j}]"), w))
         }))?;
         write(&Answer {
-            kind: "rational-tensor",
             degree: [degree.0, degree.1],
             control_points: Out(patch
                 .rows()

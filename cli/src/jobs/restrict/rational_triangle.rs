@@ -68,8 +68,7 @@ impl<T: Number> Kind for RationalTriangle<Written<T>> {
                 .map(|(k, w)| (format!("control_points[{k}].weight"), w)),
         )?;
         let net = TriangularPatch::new(patch.degree(), points)?;
-        write(&super::triangle::TriangleAnswer {
-            kind: "rational-triangle",
+        write(&super::Restricted {
             degree: patch.degree(),
             control_points: entries(&net, Some(&weights)),
         })

@@ -22,7 +22,7 @@ pub struct Reduce<T> {
 #[serde(bound = "T: Write")]
 struct Reduced<T: Write> {
     #[serde(flatten)]
-    curve: Restricted<usize, Vec<Vec<T>>>,
+    curve: Restricted<usize, Out<Vec<Vec<T>>>>,
     l2_error: Out<T>,
 }
 
@@ -73,7 +73,6 @@ impl<T: Number> Kind for Reduce<T> {
         let error = squared_l2_distance(&reduced, &curve)?;
         write(&Reduced {
             curve: Restricted {
-                kind: "reduce",
                 degree: m,
                 control_points: Out(reduced.control_points().to_vec()),
             },

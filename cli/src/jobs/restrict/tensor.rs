@@ -52,7 +52,6 @@ impl<T: Number> Kind for Tensor<T> {
         };
         let (n, m) = patch.degree();
         write(&Restricted {
-            kind: "tensor",
             degree: [n, m],
             control_points: Out(patch.to_nested()),
         })

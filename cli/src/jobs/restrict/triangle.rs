@@ -2,7 +2,7 @@
 //! grid), or sum_(i+j<=N) c_ij u^i v^j with `"total_degree": N` (a triangular array, row i
 //! holding N + 1 - i points), on the triangle with the given corners, by every `--method`.
 
-use super::{entries, specialised, Number};
+use super::{entries, specialised, Number, Restricted};
 use crate::jobs::cost::triangle_operations;
 use crate::jobs::kind::prelude::*;
 use blossom::{restrict_power_surface_to_triangle, restrict_power_triangle};
@@ -18,17 +18,6 @@ pub struct Triangle<T> {
     coefficients: Rows<T>,
     /// The corners `[[a1, a2], [b1, b2], [c1, c2]]`.
     triangle: Corners<T, 2>,
-}
-
-/// The answer of a triangular restriction.
-#[derive(Serialize)]
-pub struct TriangleAnswer<E: Serialize> {
-    /// The kind of the job.
-    pub kind: &'static str,
-    /// N.
-    pub degree: usize,
-    /// The entries `{"a", "b", "c", "point"}` in lexicographic order of (a, b).
-    pub control_points: Vec<E>,
 }
 
 /// The measured factors of the estimate ([`Calibration`]).
@@ -83,8 +72,7 @@ impl<T: Number> Kind for Triangle<T> {
                 }
             }
         };
-        write(&TriangleAnswer {
-            kind: "triangle",
+        write(&Restricted {
             degree: patch.degree(),
             control_points: entries(&patch, None),
         })
