@@ -2,23 +2,9 @@
 //! fields, each value parsed by a function that says what is wrong with it; [`parse`] maps every
 //! clap error to the contract's one line `error: FIELD: message` (the argument as FIELD; a
 //! mistyped subcommand, option or value gets the nearest accepted name, [`crate::names`]) and
-//! turns the parsed type into the [`Command`] the rest of the binary runs.
-//!
-//! ```text
-//! blossom                                   same as `blossom verify`
-//! blossom verify [--json] [--verbose]
-//! blossom restrict [--input FILE] [--arithmetic exact|f64] [--method METHOD]
-//!                  [--max-work UNITS] [--max-input BYTES]
-//! blossom intersect [--input FILE] [--arithmetic exact|f64] [--max-work UNITS] [--max-input BYTES]
-//! blossom region [--input FILE] [--arithmetic exact|f64] [--max-work UNITS] [--max-input BYTES]
-//! blossom check [--input FILE] [--per-point] [--max-work UNITS] [--max-input BYTES]
-//! blossom figures [--out DIR]
-//! blossom expand curve N | tensor N M | triangle N M | triangle-total N | bezier-curve N
-//!                | bezier-tensor N M | bezier-triangle N
-//! blossom completions SHELL                 shell completions (bash, zsh, fish, elvish, powershell)
-//! blossom [SUBCOMMAND] --help | -h          help (also `blossom help`)
-//! blossom --version | -V
-//! ```
+//! turns the parsed type into the [`Command`] the rest of the binary runs. The usage is the
+//! help text's (`cli/help/blossom.txt`, [`HELP`]); `blossom completions SHELL` prints a
+//! completion script (bash, zsh, fish, elvish, powershell).
 //!
 //! `--input -` reads standard input, as does leaving `--input` out. A value that starts with
 //! `--` is taken for a forgotten value (`--input --method pyramid`: clap refuses it as a
@@ -50,15 +36,6 @@ pub struct Limits {
     #[arg(long = "max-input", value_parser = limit, allow_negative_numbers = true)]
     #[arg(default_value_t = DEFAULT_MAX_INPUT)]
     pub max_input: u64,
-}
-
-impl Default for Limits {
-    fn default() -> Self {
-        Limits {
-            max_work: DEFAULT_MAX_WORK,
-            max_input: DEFAULT_MAX_INPUT,
-        }
-    }
 }
 
 /// The arithmetic of `restrict`.
@@ -145,19 +122,6 @@ pub struct CheckOptions {
     pub per_point: bool,
 }
 
-/// The subcommands, in the order the help lists them.
-pub const SUBCOMMANDS: [&str; 9] = [
-    "verify",
-    "restrict",
-    "intersect",
-    "region",
-    "check",
-    "figures",
-    "expand",
-    "completions",
-    "help",
-];
-
 /// What the command line asks for.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Command {
@@ -193,28 +157,14 @@ pub enum Command {
     Version,
 }
 
-/// Help for the whole program.
+/// The help of the whole program, the binary's own (`cli/help/`); each subcommand's below.
 pub const HELP: &str = include_str!("../../help/blossom.txt");
-
-/// Help for `blossom restrict`.
 pub const RESTRICT_HELP: &str = include_str!("../../help/restrict.txt");
-
-/// Help for `blossom expand`.
 pub const EXPAND_HELP: &str = include_str!("../../help/expand.txt");
-
-/// Help for `blossom verify`.
 pub const VERIFY_HELP: &str = include_str!("../../help/verify.txt");
-
-/// Help for `blossom figures`.
 pub const FIGURES_HELP: &str = include_str!("../../help/figures.txt");
-
-/// Help for `blossom intersect`.
 pub const INTERSECT_HELP: &str = include_str!("../../help/intersect.txt");
-
-/// Help for `blossom region`.
 pub const REGION_HELP: &str = include_str!("../../help/region.txt");
-
-/// Help for `blossom check`.
 pub const CHECK_HELP: &str = include_str!("../../help/check.txt");
 
 /// The command line as clap reads it (help and version are this module's own flags, so that
@@ -380,22 +330,22 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
         Some(Sub::Intersect { help: true, .. }) => Ok(Command::Help(INTERSECT_HELP)),
         Some(Sub::Region { help: true, .. }) => Ok(Command::Help(REGION_HELP)),
         Some(Sub::Check { help: true, .. }) => Ok(Command::Help(CHECK_HELP)),
-        Some(Sub::Restrict { mut options, .. }) => {
-            options.input = input(options.input)?;
-            Ok(Command::Restrict(options))
-        }
-        Some(Sub::Intersect { mut options, .. }) => {
-            options.input = input(options.input)?;
-            Ok(Command::Intersect(options))
-        }
-        Some(Sub::Region { mut options, .. }) => {
-            options.input = input(options.input)?;
-            Ok(Command::Region(options))
-        }
-        Some(Sub::Check { mut options, .. }) => {
-            options.input = input(options.input)?;
-            Ok(Command::Check(options))
-        }
+        Some(Sub::Restrict { options: o, .. }) => Ok(Command::Restrict(RestrictOptions {
+            input: input(o.input)?,
+            ..o
+        })),
+        Some(Sub::Intersect { options: o, .. }) => Ok(Command::Intersect(IntersectOptions {
+            input: input(o.input)?,
+            ..o
+        })),
+        Some(Sub::Region { options: o, .. }) => Ok(Command::Region(IntersectOptions {
+            input: input(o.input)?,
+            ..o
+        })),
+        Some(Sub::Check { options: o, .. }) => Ok(Command::Check(CheckOptions {
+            input: input(o.input)?,
+            ..o
+        })),
         Some(Sub::Figures { help: true, .. }) => Ok(Command::Help(FIGURES_HELP)),
         Some(Sub::Figures { out, .. }) => match out {
             Some(dir) if dir.as_os_str().is_empty() => {
@@ -447,6 +397,8 @@ fn refusal(e: &clap::Error, args: &[OsString]) -> Error {
         .map(|a| a.to_string_lossy().into_owned())
         .filter(|a| !a.starts_with('-'))
         .unwrap_or_default();
+    let cli = Cli::command();
+    let subcommands: Vec<&str> = cli.get_subcommands().map(|c| c.get_name()).collect();
     match e.kind() {
         ErrorKind::InvalidValue if context(ContextKind::InvalidValue).is_empty() => {
             Error::new(flag, "missing value")
@@ -464,24 +416,31 @@ fn refusal(e: &clap::Error, args: &[OsString]) -> Error {
                 word.as_str(),
                 format!(
                     "unknown subcommand{} (expected {}; see blossom --help)",
-                    did_you_mean(&word, &SUBCOMMANDS),
-                    listed(&SUBCOMMANDS)
+                    did_you_mean(&word, &subcommands),
+                    listed(&subcommands)
                 ),
             )
         }
         ErrorKind::UnknownArgument => {
             let word = argument.split('=').next().unwrap_or_default().to_string();
-            let flags = flags_of(&subcommand);
-            if subcommand.is_empty() || !SUBCOMMANDS.contains(&subcommand.as_str()) {
-                Error::new(
+            let Some(sub) = cli.find_subcommand(&subcommand) else {
+                return Error::new(
                     word.as_str(),
                     format!(
                         "unknown option (expected a subcommand: {}; see blossom --help){}",
-                        listed(&SUBCOMMANDS),
+                        listed(&subcommands),
                         did_you_mean(&word, &["--help", "--version"])
                     ),
-                )
-            } else if word.starts_with('-') && word.len() > 1 {
+                );
+            };
+            if word.starts_with('-') && word.len() > 1 {
+                // The long flags of the subcommand (help excepted).
+                let flags: Vec<String> = sub
+                    .get_arguments()
+                    .filter_map(|a| a.get_long())
+                    .filter(|l| *l != "help")
+                    .map(|l| format!("--{l}"))
+                    .collect();
                 let names: Vec<&str> = flags.iter().map(String::as_str).collect();
                 Error::new(
                     word.as_str(),
@@ -517,21 +476,6 @@ fn refusal(e: &clap::Error, args: &[OsString]) -> Error {
                 .to_string(),
         ),
     }
-}
-
-/// The long flags of `subcommand` (help excepted), for messages.
-fn flags_of(subcommand: &str) -> Vec<String> {
-    let command = Cli::command();
-    command
-        .find_subcommand(subcommand)
-        .map(|sub| {
-            sub.get_arguments()
-                .filter_map(|a| a.get_long())
-                .filter(|l| *l != "help")
-                .map(|l| format!("--{l}"))
-                .collect()
-        })
-        .unwrap_or_default()
 }
 
 /// The completion script of `shell` for `blossom`.

@@ -39,7 +39,7 @@ pub mod write;
 pub use intersect as intersect_jobs;
 
 use crate::number::take_error_bound;
-use args::{Arithmetic, Command, IntersectOptions, Limits, MethodChoice, RestrictOptions};
+use args::{Arithmetic, Command, IntersectOptions, Limits, MethodChoice};
 use blossom::{BoundedF64, Error, Rational};
 use kinds::{job_and_kind, Context, Job, KindInfo, Subcommand};
 use read::Text;
@@ -47,7 +47,7 @@ use restrict::specialised;
 use serde_json::{Map, Value};
 use std::ffi::OsString;
 use std::io::{Read, Write};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
 /// The exit code of bad input or bad arguments.
@@ -109,6 +109,10 @@ pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
         Ok(command) => command,
         Err(error) => return Outcome::of(Err(error)),
     };
+    let mut document = |input: &Option<PathBuf>, limits: &Limits| {
+        read_input(input.as_deref(), limits, stdin).and_then(|bytes| parse_json(&bytes))
+    };
+    let one_line = |answer: Value| format!("{answer}\n");
     Outcome::of(match command {
         Command::Help(text) => Ok([
             ("  %RESTRICT%\n", Subcommand::Restrict),
@@ -128,15 +132,21 @@ pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
                 stderr: String::new(),
             };
         }
-        Command::Restrict(o) => restrict(&o, stdin),
-        Command::Intersect(o) => certified(&o, Subcommand::Intersect, stdin),
-        Command::Region(o) => certified(&o, Subcommand::Region, stdin),
+        Command::Restrict(o) if o.method == MethodChoice::Specialised && !specialised::BUILT_IN => {
+            Err(Error::new("--method", specialised::NOT_BUILT_IN))
+        }
+        Command::Restrict(o) => document(&o.input, &o.limits).and_then(|job| {
+            solve(&job, &Context::new(o.method, o.arithmetic, o.limits)).map(one_line)
+        }),
+        Command::Intersect(o) => document(&o.input, &o.limits)
+            .and_then(|job| certified(&job, Subcommand::Intersect, &o).map(one_line)),
+        Command::Region(o) => document(&o.input, &o.limits)
+            .and_then(|job| certified(&job, Subcommand::Region, &o).map(one_line)),
         Command::Check(o) => {
             let context = Context::new(MethodChoice::default(), Arithmetic::Exact, o.limits);
             let shape = |job: &Value| shape(job).map(drop);
             let exact = |job: &Value| solve(job, &context);
-            let document = document(o.input.as_deref(), &o.limits, stdin);
-            document.and_then(|document| {
+            document(&o.input, &o.limits).and_then(|document| {
                 crate::check::check_command(&document, o.per_point, &shape, &exact)
                     .map(with_newline)
             })
@@ -152,33 +162,18 @@ pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
     })
 }
 
-/// The JSON document read from `input` (or standard input).
-fn document(input: Option<&Path>, limits: &Limits, stdin: &mut dyn Read) -> Result<Value, Error> {
-    parse_json(&read_input(input, limits, stdin)?)
-}
-
-/// `blossom restrict`: the answer's text, one line of JSON and a newline.
-fn restrict(o: &RestrictOptions, stdin: &mut dyn Read) -> Result<String, Error> {
-    if o.method == MethodChoice::Specialised && !specialised::BUILT_IN {
-        return Err(Error::new("--method", specialised::NOT_BUILT_IN));
-    }
-    let document = document(o.input.as_deref(), &o.limits, stdin)?;
-    one_line(&solve(
-        &document,
-        &Context::new(o.method, o.arithmetic, o.limits),
-    )?)
-}
-
-/// `blossom intersect` and `blossom region`: the answer's text, one line of JSON and a newline.
+/// The answer of the job `document` of `blossom intersect` or `blossom region`.
 fn certified(
-    o: &IntersectOptions,
+    document: &Value,
     subcommand: Subcommand,
-    stdin: &mut dyn Read,
-) -> Result<String, Error> {
-    let document = document(o.input.as_deref(), &o.limits, stdin)?;
-    let (job, kind) = job_and_kind(&document, subcommand)?;
-    let context = Context::new(MethodChoice::default(), o.arithmetic, o.limits);
-    one_line(&answer(kind, job, &context)?)
+    o: &IntersectOptions,
+) -> Result<Value, Error> {
+    let (job, kind) = job_and_kind(document, subcommand)?;
+    answer(
+        kind,
+        job,
+        &Context::new(MethodChoice::default(), o.arithmetic, o.limits),
+    )
 }
 
 /// The answer of the job object `job` of kind `kind`, its numbers read in the arithmetic of
@@ -210,10 +205,8 @@ pub fn solve(document: &Value, context: &Context) -> Result<Value, Error> {
         if context.arithmetic == Arithmetic::F64 {
             let bound = take_error_bound(&mut answer).and_then(serde_json::Number::from_f64);
             if let Value::Object(fields) = &mut answer {
-                fields.insert(
-                    "error_bound".into(),
-                    bound.map_or(Value::Null, Value::Number),
-                );
+                let bound = bound.map_or(Value::Null, Value::Number);
+                fields.insert("error_bound".into(), bound);
             }
         }
         Ok(answer)
@@ -227,45 +220,31 @@ pub fn shape(document: &Value) -> Result<Job<Text>, Error> {
     Job::<Text>::read(kind.name, job)
 }
 
-/// `answer` as one line of JSON and a newline.
-fn one_line(answer: &Value) -> Result<String, Error> {
-    serde_json::to_string(answer)
-        .map(|text| text + "\n")
-        .map_err(|e| Error::new("internal", format!("cannot write the answer: {e}")))
-}
-
 /// The bytes of the job: the `--input` file, or standard input when `input` is `None`, at most
 /// `limits.max_input` of them (a longer input is refused, never truncated).
 pub(crate) fn read_input(
-    input: Option<&std::path::Path>,
+    input: Option<&Path>,
     limits: &Limits,
     stdin: &mut dyn Read,
 ) -> Result<Vec<u8>, Error> {
-    let limit = limits.max_input;
-    let (field, mut source): (&str, Box<dyn Read + '_>) = match input {
-        Some(path) => {
-            let file = std::fs::File::open(path).map_err(|e| {
-                Error::new(
-                    "--input",
-                    format!("cannot read {:?}: {e}", path.display().to_string()),
-                )
-            })?;
-            ("--input", Box::new(file))
-        }
-        None => ("input", Box::new(stdin)),
+    let (field, cannot) = match input {
+        Some(path) => (
+            "--input",
+            format!("cannot read {:?}", path.display().to_string()),
+        ),
+        None => ("input", String::from("cannot read standard input")),
     };
-    let mut bytes = Vec::new();
-    source
+    let refusal = |e: std::io::Error| Error::new(field, format!("{cannot}: {e}"));
+    let mut source: Box<dyn Read + '_> = match input {
+        Some(path) => Box::new(std::fs::File::open(path).map_err(refusal)?),
+        None => Box::new(stdin),
+    };
+    let (limit, mut bytes) = (limits.max_input, Vec::new());
+    let read = source
         .by_ref()
         .take(limit.saturating_add(1))
-        .read_to_end(&mut bytes)
-        .map_err(|e| match input {
-            Some(path) => Error::new(
-                "--input",
-                format!("cannot read {:?}: {e}", path.display().to_string()),
-            ),
-            None => Error::new("input", format!("cannot read standard input: {e}")),
-        })?;
+        .read_to_end(&mut bytes);
+    read.map_err(refusal)?;
     if bytes.len() as u64 > limit {
         return Err(Error::new(
             field,
@@ -282,16 +261,11 @@ pub(crate) fn parse_json(bytes: &[u8]) -> Result<Value, Error> {
     let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
     serde_json::from_slice(bytes).map_err(|e| {
         let full = e.to_string();
-        let location = format!(" at line {} column {}", e.line(), e.column());
-        let message = full.strip_suffix(&location).unwrap_or(&full);
-        Error::new(
-            "input",
-            format!(
-                "invalid JSON at line {} column {}: {message}",
-                e.line(),
-                e.column()
-            ),
-        )
+        let (line, column) = (e.line(), e.column());
+        let message = full.strip_suffix(&format!(" at line {line} column {column}"));
+        let message = message.unwrap_or(&full);
+        let message = format!("invalid JSON at line {line} column {column}: {message}");
+        Error::new("input", message)
     })
 }
 
