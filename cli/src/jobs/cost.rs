@@ -266,14 +266,13 @@ pub fn grown_bits(coefficients: f64, domain: f64, n: f64) -> f64 {
 /// The index of a method in the rows of [`CALIBRATION`].
 fn method_index(method: MethodChoice) -> usize {
     match method {
-        MethodChoice::Library(Method::ClosedForm) => 0,
+        // The carried evaluators unroll the closed forms.
+        MethodChoice::Library(Method::ClosedForm) | MethodChoice::Specialised => 0,
         MethodChoice::Library(Method::Definition) => 1,
         MethodChoice::Library(Method::Pyramid) => 2,
         MethodChoice::Library(Method::Polarisation) => 3,
         MethodChoice::Library(Method::Bulk) => 4,
         MethodChoice::Library(Method::TaylorShift) => 5,
-        // The carried evaluators unroll the closed forms.
-        MethodChoice::Specialised => 0,
     }
 }
 
@@ -409,24 +408,22 @@ pub fn triangle_operations(method: MethodChoice, big_n: f64, terms: f64, d: f64)
     }
 }
 
-/// Reading every number exactly, at its full length.
-pub const EXACT_READING: Spelling = Spelling {
-    short: false,
-    f64: false,
-    doubles: false,
-};
-
-/// The top-level field of `job` that holds the number with the most bits.
+/// The top-level field of `job` that holds the number with the most bits (read exactly, at
+/// its full length).
 pub fn longest_number_field(job: &Map<String, Value>) -> String {
-    job.iter()
+    let exactly = Spelling {
+        short: false,
+        f64: false,
+        doubles: false,
+    };
+    let bits = |(name, value): (&String, &Value)| (name, numbers(value, exactly).max_bits);
+    let fields = job
+        .iter()
         .filter(|(name, _)| name.as_str() != "kind")
-        .map(|(name, value)| (name, numbers(value, EXACT_READING).max_bits))
-        .fold((String::from("input"), 0.0), |best, (name, bits)| {
-            if bits > best.1 {
-                (name.clone(), bits)
-            } else {
-                best
-            }
-        })
-        .0
+        .map(bits);
+    let longest = fields.fold(("input", 0.0), |best, (name, bits)| match bits > best.1 {
+        true => (name.as_str(), bits),
+        false => best,
+    });
+    longest.0.to_string()
 }

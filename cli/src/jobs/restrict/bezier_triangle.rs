@@ -121,10 +121,8 @@ fn barycentric<T: Number>(corners: [[T; 3]; 3]) -> Result<[[T; 3]; 3], Error> {
         let sum = r.add(&s).add(&t);
         let off = sum.sub(&T::one());
         let distance = if off < T::zero() { off.neg() } else { off };
-        if !matches!(
-            distance.partial_cmp(&tolerance),
-            Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)
-        ) {
+        #[allow(clippy::neg_cmp_op_on_partial_ord)] // a NaN distance is refused too
+        if !(distance <= tolerance) {
             return Err(Error::new(
                 format!("triangle[{k}]"),
                 format!(
