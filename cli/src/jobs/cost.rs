@@ -416,11 +416,8 @@ pub fn longest_number_field(job: &Map<String, Value>) -> String {
         f64: false,
         doubles: false,
     };
-    let bits = |(name, value): (&String, &Value)| (name, numbers(value, exactly).max_bits);
-    let fields = job
-        .iter()
-        .filter(|(name, _)| name.as_str() != "kind")
-        .map(bits);
+    let fields = job.iter().filter(|(name, _)| name.as_str() != "kind");
+    let fields = fields.map(|(name, value)| (name, numbers(value, exactly).max_bits));
     let longest = fields.fold(("input", 0.0), |best, (name, bits)| match bits > best.1 {
         true => (name.as_str(), bits),
         false => best,
