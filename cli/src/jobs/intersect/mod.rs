@@ -12,14 +12,12 @@
 //! of degrees n and m has degree n m) and with the bit length of the integers the exact
 //! methods compute with, so a job is refused when a curve's degree is over
 //! [`MAX_CURVE_DEGREE`] or a Bézier function's over [`MAX_FUNCTION_DEGREE`] (naming the
-//! field, before its numbers are read); then twice, as for `restrict`:
-//! 1. before computing, when its estimated work ([`blossom::budget::bezier_zeros_work`],
-//!    [`blossom::budget::curve_pair_work`]: the float filter runs first, and when it decides
-//!    only the two resultants and one Descartes test per crossing remain;
-//!    [`blossom::budget::self_intersection_work`]) is over [`UP_FRONT_FACTOR`] times
-//!    `--max-work` ([`within_budget`]), naming `control_points`, `curves` or `curve`;
-//! 2. while computing, under the work meter ([`super::cost::metered`]), which the exact
-//!    methods charge as they go.
+//! field, before its numbers are read); then by the work budget ([`certified`]), before
+//! computing from the library's estimate ([`blossom::budget::bezier_zeros_work`],
+//! [`blossom::budget::curve_pair_work`]: the float filter runs first, and when it decides only
+//! the two resultants and one Descartes test per crossing remain;
+//! [`blossom::budget::self_intersection_work`]), naming `control_points`, `curves` or `curve`,
+//! and while computing under the work meter, which the exact methods charge as they go.
 
 pub mod curve_curve;
 pub mod roots;

@@ -15,16 +15,11 @@
 //!
 //! * Curve and triangle degrees 1..=[`MAX_REGION_DEGREE`] (the contract asks for 10); a
 //!   longer curve is refused before its numbers are read.
-//! * The work of a `boolean`, `simplify` or `triangle-triangle` job is the library's
-//!   estimate ([`blossom::region::boolean_work`]) in nanoseconds of a 2-core machine; a job
-//!   whose estimate is over twice `--max-work` is refused up front
-//!   ([`within_budget`](super::intersect::within_budget)) naming `regions` (`region`,
-//!   `triangles`); what it lets through runs under the work meter
-//!   ([`super::cost::metered`]), which stops it at `--max-work` naming the same field. The
-//!   answer is written under the meter as well: the exact parameters of the crossings the
-//!   float path proved are computed there.
-//! * The work of a `winding` job is [`Region::winding_work`], refused over twice `--max-work`
-//!   naming `points`, and metered the same way.
+//! * The work budget as for `blossom intersect` ([`certified`](super::intersect::certified)),
+//!   from the library's estimate ([`blossom::region::boolean_work`], [`Region::winding_work`])
+//!   and under the meter, naming `regions` (`region`, `triangles`, `points`). The answer is
+//!   written under the meter as well: the exact parameters of the crossings the float path
+//!   proved are computed there.
 
 pub mod boolean;
 pub mod simplify;
