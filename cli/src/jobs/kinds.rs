@@ -56,6 +56,15 @@ macro_rules! kinds {
         }
 
         impl Job<Text> {
+            /// Reads the `restrict` job object `job` of kind `kind` without its numbers (its
+            /// shape, for the estimate); the kinds of the other subcommands are not read so.
+            pub fn shape(kind: &str, job: &Map<String, Value>) -> Result<Self, Error> {
+                match kind {
+                    $($name => shape!($sub, $variant, job),)*
+                    other => Err(Error::new("kind", format!("unknown kind {}", quoted(other)))),
+                }
+            }
+
             /// The up-front estimate of a `restrict` job read without its numbers (each kind's
             /// `estimate`, see [`Kind`]); `None` for the kinds of the other subcommands.
             pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
@@ -73,6 +82,16 @@ macro_rules! kinds {
                 }
             }
         }
+    };
+}
+
+/// The shape of a job of a kind of `$sub` (only `restrict` jobs are read so).
+macro_rules! shape {
+    (Restrict, $variant:ident, $job:ident) => {
+        read_job($job).map(Job::$variant)
+    };
+    ($sub:ident, $variant:ident, $job:ident) => {
+        Err(Error::new("kind", "not a kind of blossom restrict"))
     };
 }
 

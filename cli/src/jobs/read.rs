@@ -28,12 +28,10 @@ use std::marker::PhantomData;
 /// Reads the job object `job` (its `"kind"` read already, and accepted among its fields) as a
 /// `D`; errors at its top level name `input`.
 pub fn read_job<D: DeserializeOwned>(job: &Map<String, Value>) -> Result<D, Error> {
-    match D::deserialize(Reader::new(None, Some(job))) {
-        Err(ReadError { error, .. }) if error.field.is_empty() => {
-            Err(Error::of(error.kind, "input", error.message))
-        }
-        result => result.map_err(|e| e.error),
-    }
+    D::deserialize(Reader::new(None, Some(job))).map_err(|e| match e.error {
+        error if error.field.is_empty() => Error::of(error.kind, "input", error.message),
+        error => error,
+    })
 }
 
 /// Reads an object of a job (a region, an entry) from `value` on its own: its errors name
@@ -122,10 +120,12 @@ const RELATIVE: &str = "\u{0}";
 /// `loops[0][2]`, a point's `[1]`), as the error of any deserializer: the reader puts it under
 /// the value's path.
 pub fn below<E: de::Error>(error: &Error) -> E {
-    E::custom(format!(
-        "{RELATIVE}{}{RELATIVE}{}",
-        error.field, error.message
-    ))
+    E::custom(relative(error))
+}
+
+/// `error` as the message of [`below`].
+fn relative(error: &Error) -> String {
+    format!("{RELATIVE}{}{RELATIVE}{}", error.field, error.message)
 }
 
 /// `path` and `name` joined: `name` at the top, `path.name` for a field, `path[2]` for an index.
@@ -163,6 +163,37 @@ impl<'a> Reader<'a> {
     }
 }
 
+impl<'a> Reader<'a> {
+    /// The fields of the object at this path in the order `fields` declares them (the work of
+    /// `deserialize_struct`, apart from the visitor, so that it is compiled once).
+    fn fields(
+        &self,
+        fields: &'static [&'static str],
+        expecting: &dyn fmt::Display,
+    ) -> Result<Fields<'a, '_>, ReadError> {
+        let map = match (self.job, self.value) {
+            (Some(map), _) | (None, Some(Value::Object(map))) => map,
+            (None, None) => return Err(ReadError::at(&self.path, "", "missing field")),
+            (None, Some(other)) => {
+                let message = format!("expected {expecting}, found {}", json_type(other));
+                return Err(ReadError::at(&self.path, "", message));
+            }
+        };
+        let top = self.job.map(|_| "kind");
+        let accepted: Vec<&str> = top.into_iter().chain(fields.iter().copied()).collect();
+        if let Some(name) = map.keys().find(|k| !accepted.contains(&k.as_str())) {
+            let message = unknown_field(name, &accepted);
+            return Err(ReadError::at(&self.path, name, message));
+        }
+        let entries: Vec<_> = fields.iter().map(|f| (*f, map.get(*f))).collect();
+        Ok(Fields {
+            entries: entries.into_iter(),
+            current: None,
+            path: &self.path,
+        })
+    }
+}
+
 /// `error` under `path`, unless a reader below placed it already.
 fn place(path: &str, error: ReadError) -> ReadError {
     match error.placed {
@@ -197,30 +228,7 @@ impl<'de> Deserializer<'de> for Reader<'de> {
         fields: &'static [&'static str],
         visitor: V,
     ) -> Result<V::Value, ReadError> {
-        let map = match (self.job, self.value) {
-            (Some(map), _) | (None, Some(Value::Object(map))) => map,
-            (None, None) => return Err(ReadError::at(&self.path, "", "missing field")),
-            (None, Some(other)) => {
-                let found = json_type(other);
-                let message = format!("expected {}, found {found}", Expecting(&visitor));
-                return Err(ReadError::at(&self.path, "", message));
-            }
-        };
-        let top = self.job.map(|_| "kind");
-        let accepted: Vec<&str> = top.into_iter().chain(fields.iter().copied()).collect();
-        if let Some(name) = map.keys().find(|k| !accepted.contains(&k.as_str())) {
-            return Err(ReadError::at(
-                &self.path,
-                name,
-                unknown_field(name, &accepted),
-            ));
-        }
-        let entries: Vec<_> = fields.iter().map(|f| (*f, map.get(*f))).collect();
-        let fields = Fields {
-            entries: entries.into_iter(),
-            current: None,
-            path: &self.path,
-        };
+        let fields = self.fields(fields, &Expecting(&visitor))?;
         visitor.visit_map(fields).map_err(|e| place(&self.path, e))
     }
 
@@ -264,14 +272,22 @@ impl<'de> de::MapAccess<'de> for Fields<'de, '_> {
     }
 
     fn next_value_seed<S: DeserializeSeed<'de>>(&mut self, seed: S) -> Result<S::Value, ReadError> {
+        let reader = self.value();
+        let path = reader.path.clone();
+        seed.deserialize(reader).map_err(|e| place(&path, e))
+    }
+}
+
+impl<'a> Fields<'a, '_> {
+    /// The reader of the current field's value.
+    fn value(&mut self) -> Reader<'a> {
         let (name, value) = self.current.take().expect("a key before its value");
         let path = joined(self.path, name);
-        let reader = Reader {
+        Reader {
             value,
             job: None,
-            path: path.clone(),
-        };
-        seed.deserialize(reader).map_err(|e| place(&path, e))
+            path,
+        }
     }
 }
 
@@ -292,19 +308,33 @@ pub fn leaf<'de, D: Deserializer<'de>, X>(
 pub fn items<X>(
     value: &Value,
     expected: &str,
-    count: impl FnOnce(usize) -> Result<(), String>,
+    count: impl Fn(usize) -> Result<(), String>,
     item: impl Fn(&Value) -> Result<X, Error>,
 ) -> Result<Vec<X>, Error> {
+    let items = array(value, expected, &count)?;
+    let mut out = Vec::with_capacity(items.len());
+    for (k, x) in items.iter().enumerate() {
+        match item(x) {
+            Ok(x) => out.push(x),
+            Err(e) => return Err(under(&format!("[{k}]"), e)),
+        }
+    }
+    Ok(out)
+}
+
+/// The elements of `value` once `count` has accepted their number, or the refusal (the work
+/// of [`items`] apart from reading the elements, compiled once).
+fn array<'v>(
+    value: &'v Value,
+    expected: &str,
+    count: &dyn Fn(usize) -> Result<(), String>,
+) -> Result<&'v [Value], Error> {
     let Value::Array(items) = value else {
-        let found = json_type(value);
-        return Err(Error::new(
-            "",
-            format!("expected {expected}, found {found}"),
-        ));
+        let message = format!("expected {expected}, found {}", json_type(value));
+        return Err(Error::new("", message));
     };
     count(items.len()).map_err(|message| Error::new("", message))?;
-    let read = |(k, x): (usize, &Value)| item(x).map_err(|e| under(&format!("[{k}]"), e));
-    items.iter().enumerate().map(read).collect()
+    Ok(items)
 }
 
 /// A list of values that read themselves (objects of a job, points), any number of them.
@@ -318,7 +348,7 @@ impl<'de, E: DeserializeOwned> Deserialize<'de> for List<E> {
 }
 
 /// The count of exactly `n` elements (`expected 3 corners, found 2`).
-pub fn exactly(n: usize, what: &'static str) -> impl FnOnce(usize) -> Result<(), String> {
+pub fn exactly(n: usize, what: &'static str) -> impl Fn(usize) -> Result<(), String> {
     move |found| match found == n {
         true => Ok(()),
         false => Err(format!("expected {n} {what}, found {found}")),
@@ -326,7 +356,7 @@ pub fn exactly(n: usize, what: &'static str) -> impl FnOnce(usize) -> Result<(),
 }
 
 /// The count of at least one element (`expected at least one point, found none`).
-pub fn not_empty(what: &'static str) -> impl FnOnce(usize) -> Result<(), String> {
+pub fn not_empty(what: &'static str) -> impl Fn(usize) -> Result<(), String> {
     move |found| match found {
         0 => Err(format!("expected at least one {what}, found none")),
         _ => Ok(()),
@@ -446,7 +476,7 @@ pub fn number<T: Reading>(value: &Value) -> Result<T, Error> {
 }
 
 /// `N` numbers, called `what` in a refusal of their count.
-fn array<T: Reading, const N: usize>(
+fn numbers<T: Reading, const N: usize>(
     value: &Value,
     expected: &str,
     what: &'static str,
@@ -462,7 +492,7 @@ pub struct Numbers<T, const N: usize>(pub [T; N]);
 impl<'de, T: Reading, const N: usize> Deserialize<'de> for Numbers<T, N> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         leaf(d, |v| {
-            array(v, &format!("an array of {N} numbers"), "numbers").map(Numbers)
+            numbers(v, &format!("an array of {N} numbers"), "numbers").map(Numbers)
         })
     }
 }
@@ -481,7 +511,7 @@ impl<'de, T: Reading, const D: usize> Deserialize<'de> for Corners<T, D> {
                 "a corner (an array of 3 barycentric coordinates)",
             ),
         };
-        let corner = |c: &Value| array(c, expected, what);
+        let corner = |c: &Value| numbers(c, expected, what);
         leaf(d, |v| {
             let corners = items(v, "an array of 3 corners", exactly(3, "corners"), corner)?;
             Ok(Corners(
