@@ -2,23 +2,9 @@
 //! fields, each value parsed by a function that says what is wrong with it; [`parse`] maps every
 //! clap error to the contract's one line `error: FIELD: message` (the argument as FIELD; a
 //! mistyped subcommand, option or value gets the nearest accepted name, [`crate::names`]) and
-//! turns the parsed type into the [`Command`] the rest of the binary runs.
-//!
-//! ```text
-//! blossom                                   same as `blossom verify`
-//! blossom verify [--json] [--verbose]
-//! blossom restrict [--input FILE] [--arithmetic exact|f64] [--method METHOD]
-//!                  [--max-work UNITS] [--max-input BYTES]
-//! blossom intersect [--input FILE] [--arithmetic exact|f64] [--max-work UNITS] [--max-input BYTES]
-//! blossom region [--input FILE] [--arithmetic exact|f64] [--max-work UNITS] [--max-input BYTES]
-//! blossom check [--input FILE] [--per-point] [--max-work UNITS] [--max-input BYTES]
-//! blossom figures [--out DIR]
-//! blossom expand curve N | tensor N M | triangle N M | triangle-total N | bezier-curve N
-//!                | bezier-tensor N M | bezier-triangle N
-//! blossom completions SHELL                 shell completions (bash, zsh, fish, elvish, powershell)
-//! blossom [SUBCOMMAND] --help | -h          help (also `blossom help`)
-//! blossom --version | -V
-//! ```
+//! turns the parsed type into the [`Command`] the rest of the binary runs. The usage is the
+//! help text's (`cli/help/blossom.txt`, [`HELP`]); `blossom completions SHELL` prints a
+//! completion script (bash, zsh, fish, elvish, powershell).
 //!
 //! `--input -` reads standard input, as does leaving `--input` out. A value that starts with
 //! `--` is taken for a forgotten value (`--input --method pyramid`: clap refuses it as a
@@ -39,22 +25,17 @@ pub const DEFAULT_MAX_WORK: u64 = 1_000_000_000;
 /// The default limit on the size of a job's input in bytes (`--max-input`): 1 MiB.
 pub const DEFAULT_MAX_INPUT: u64 = 1 << 20;
 
-/// The limits of one run of `blossom restrict`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// The limits of one run of a job (`--max-work`, `--max-input`).
+#[derive(Args, Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Limits {
-    /// The largest estimated work of a job that is computed.
+    /// The work budget.
+    #[arg(long = "max-work", value_parser = limit, allow_negative_numbers = true)]
+    #[arg(default_value_t = DEFAULT_MAX_WORK)]
     pub max_work: u64,
-    /// The largest input, in bytes, that is read.
+    /// The longest input read.
+    #[arg(long = "max-input", value_parser = limit, allow_negative_numbers = true)]
+    #[arg(default_value_t = DEFAULT_MAX_INPUT)]
     pub max_input: u64,
-}
-
-impl Default for Limits {
-    fn default() -> Self {
-        Limits {
-            max_work: DEFAULT_MAX_WORK,
-            max_input: DEFAULT_MAX_INPUT,
-        }
-    }
 }
 
 /// The arithmetic of `restrict`.
@@ -97,52 +78,49 @@ pub const METHOD_NAMES: [(&str, MethodChoice); 7] = [
 ];
 
 /// Options of `blossom restrict`.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Args, Clone, Debug, PartialEq, Eq)]
 pub struct RestrictOptions {
-    /// The job file; `None` for standard input.
+    /// The job file (`-`: standard input).
+    #[arg(long)]
     pub input: Option<PathBuf>,
-    /// `--arithmetic`, default exact.
-    pub arithmetic: Arithmetic,
-    /// `--method`, default `bulk` ([`MethodChoice::default`]).
-    pub method: MethodChoice,
     /// `--max-work` and `--max-input` ([`super::budget`]).
+    #[command(flatten)]
     pub limits: Limits,
+    /// The arithmetic: exact (the default) or f64.
+    #[arg(long, value_parser = arithmetic, default_value = "exact")]
+    pub arithmetic: Arithmetic,
+    /// The algorithm (bulk by default).
+    #[arg(long, value_parser = method, default_value = Method::default().name())]
+    pub method: MethodChoice,
 }
 
-/// Options of `blossom intersect`.
-#[derive(Clone, Debug, PartialEq, Eq)]
+/// Options of `blossom intersect` and `blossom region`.
+#[derive(Args, Clone, Debug, PartialEq, Eq)]
 pub struct IntersectOptions {
-    /// The job file; `None` for standard input.
+    /// The job file (`-`: standard input).
+    #[arg(long)]
     pub input: Option<PathBuf>,
-    /// `--arithmetic`, default exact: how the job's numbers are read.
-    pub arithmetic: Arithmetic,
     /// `--max-work` and `--max-input` ([`super::budget`]).
+    #[command(flatten)]
     pub limits: Limits,
+    /// How the job's numbers are read: exact (the default) or f64.
+    #[arg(long, value_parser = arithmetic, default_value = "exact")]
+    pub arithmetic: Arithmetic,
 }
 
 /// Options of `blossom check`.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Args, Clone, Debug, PartialEq, Eq)]
 pub struct CheckOptions {
-    /// The file holding the job and the answer; `None` for standard input.
+    /// The job file (`-`: standard input), holding the job and the answer.
+    #[arg(long)]
     pub input: Option<PathBuf>,
-    /// `--per-point`: the error of every control point, besides the largest.
-    pub per_point: bool,
     /// `--max-work` and `--max-input` ([`super::budget`]), applied to the job.
+    #[command(flatten)]
     pub limits: Limits,
+    /// The error of every control point, besides the largest.
+    #[arg(long = "per-point")]
+    pub per_point: bool,
 }
-
-/// The subcommands, in the order the help lists them.
-pub const SUBCOMMANDS: [&str; 9] = [
-    "verify",
-    "restrict",
-    "intersect",
-    "region",
-    "check",
-    "figures",
-    "expand",
-    "completions",
-    "help",
-];
 
 /// What the command line asks for.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -179,28 +157,14 @@ pub enum Command {
     Version,
 }
 
-/// Help for the whole program.
+/// The help of the whole program, the binary's own (`cli/help/`); each subcommand's below.
 pub const HELP: &str = include_str!("../../help/blossom.txt");
-
-/// Help for `blossom restrict`.
 pub const RESTRICT_HELP: &str = include_str!("../../help/restrict.txt");
-
-/// Help for `blossom expand`.
 pub const EXPAND_HELP: &str = include_str!("../../help/expand.txt");
-
-/// Help for `blossom verify`.
 pub const VERIFY_HELP: &str = include_str!("../../help/verify.txt");
-
-/// Help for `blossom figures`.
 pub const FIGURES_HELP: &str = include_str!("../../help/figures.txt");
-
-/// Help for `blossom intersect`.
 pub const INTERSECT_HELP: &str = include_str!("../../help/intersect.txt");
-
-/// Help for `blossom region`.
 pub const REGION_HELP: &str = include_str!("../../help/region.txt");
-
-/// Help for `blossom check`.
 pub const CHECK_HELP: &str = include_str!("../../help/check.txt");
 
 /// The command line as clap reads it (help and version are this module's own flags, so that
@@ -236,32 +200,30 @@ enum Sub {
     /// Restrict a curve or surface given as JSON.
     Restrict {
         #[command(flatten)]
-        io: Io,
-        #[arg(long, value_parser = arithmetic)]
-        arithmetic: Option<Arithmetic>,
-        #[arg(long, value_parser = method)]
-        method: Option<MethodChoice>,
+        options: RestrictOptions,
+        #[arg(short = 'h', long = "help")]
+        help: bool,
     },
     /// Certified zeros and intersections.
     Intersect {
         #[command(flatten)]
-        io: Io,
-        #[arg(long, value_parser = arithmetic)]
-        arithmetic: Option<Arithmetic>,
+        options: IntersectOptions,
+        #[arg(short = 'h', long = "help")]
+        help: bool,
     },
     /// Certified booleans, triangle intersections and winding numbers.
     Region {
         #[command(flatten)]
-        io: Io,
-        #[arg(long, value_parser = arithmetic)]
-        arithmetic: Option<Arithmetic>,
+        options: IntersectOptions,
+        #[arg(short = 'h', long = "help")]
+        help: bool,
     },
     /// The exact error of another program's f64 answer.
     Check {
         #[command(flatten)]
-        io: Io,
-        #[arg(long = "per-point")]
-        per_point: bool,
+        options: CheckOptions,
+        #[arg(short = 'h', long = "help")]
+        help: bool,
     },
     /// Draw the papers' figures as SVG files.
     Figures {
@@ -284,36 +246,12 @@ enum Sub {
     Help,
 }
 
-/// The flags every subcommand that reads a job has.
-#[derive(Args, Debug)]
-struct Io {
-    /// The job file (`-`: standard input).
-    #[arg(long)]
-    input: Option<PathBuf>,
-    /// The work budget.
-    #[arg(long = "max-work", value_parser = limit, allow_negative_numbers = true)]
-    max_work: Option<u64>,
-    /// The longest input read.
-    #[arg(long = "max-input", value_parser = limit, allow_negative_numbers = true)]
-    max_input: Option<u64>,
-    #[arg(short = 'h', long = "help")]
-    help: bool,
-}
-
-impl Io {
-    fn input(&self) -> Result<Option<PathBuf>, Error> {
-        match self.input.as_deref().map(|p| p.as_os_str()) {
-            Some(p) if p.is_empty() => Err(Error::new("--input", "empty file name")),
-            Some(p) if p == "-" => Ok(None),
-            _ => Ok(self.input.clone()),
-        }
-    }
-
-    fn limits(&self) -> Limits {
-        Limits {
-            max_work: self.max_work.unwrap_or(DEFAULT_MAX_WORK),
-            max_input: self.max_input.unwrap_or(DEFAULT_MAX_INPUT),
-        }
+/// The `--input` as given: `None` for standard input (`-` or none), an empty name refused.
+fn input(input: Option<PathBuf>) -> Result<Option<PathBuf>, Error> {
+    match input.as_deref().map(|p| p.as_os_str()) {
+        Some(p) if p.is_empty() => Err(Error::new("--input", "empty file name")),
+        Some(p) if p == "-" => Ok(None),
+        _ => Ok(input),
     }
 }
 
@@ -380,14 +318,6 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
     if cli.version {
         return Ok(Command::Version);
     }
-    let restrict_like =
-        |io: &Io, help: &'static str, make: &dyn Fn(Option<PathBuf>, Limits) -> Command| {
-            if io.help {
-                Ok(Command::Help(help))
-            } else {
-                Ok(make(io.input()?, io.limits()))
-            }
-        };
     match cli.command {
         None => Ok(Command::Verify {
             json: false,
@@ -396,31 +326,26 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
         Some(Sub::Help) => Ok(Command::Help(HELP)),
         Some(Sub::Verify { help: true, .. }) => Ok(Command::Help(VERIFY_HELP)),
         Some(Sub::Verify { json, verbose, .. }) => Ok(Command::Verify { json, verbose }),
-        Some(Sub::Restrict {
-            io,
-            arithmetic,
-            method,
-        }) => restrict_like(&io, RESTRICT_HELP, &|input, limits| {
-            Command::Restrict(RestrictOptions {
-                input,
-                arithmetic: arithmetic.unwrap_or(Arithmetic::Exact),
-                method: method.unwrap_or_default(),
-                limits,
-            })
-        }),
-        Some(Sub::Intersect { io, arithmetic }) => {
-            certified(io, arithmetic, INTERSECT_HELP, Command::Intersect)
-        }
-        Some(Sub::Region { io, arithmetic }) => {
-            certified(io, arithmetic, REGION_HELP, Command::Region)
-        }
-        Some(Sub::Check { io, per_point }) => restrict_like(&io, CHECK_HELP, &|input, limits| {
-            Command::Check(CheckOptions {
-                input,
-                per_point,
-                limits,
-            })
-        }),
+        Some(Sub::Restrict { help: true, .. }) => Ok(Command::Help(RESTRICT_HELP)),
+        Some(Sub::Intersect { help: true, .. }) => Ok(Command::Help(INTERSECT_HELP)),
+        Some(Sub::Region { help: true, .. }) => Ok(Command::Help(REGION_HELP)),
+        Some(Sub::Check { help: true, .. }) => Ok(Command::Help(CHECK_HELP)),
+        Some(Sub::Restrict { options: o, .. }) => Ok(Command::Restrict(RestrictOptions {
+            input: input(o.input)?,
+            ..o
+        })),
+        Some(Sub::Intersect { options: o, .. }) => Ok(Command::Intersect(IntersectOptions {
+            input: input(o.input)?,
+            ..o
+        })),
+        Some(Sub::Region { options: o, .. }) => Ok(Command::Region(IntersectOptions {
+            input: input(o.input)?,
+            ..o
+        })),
+        Some(Sub::Check { options: o, .. }) => Ok(Command::Check(CheckOptions {
+            input: input(o.input)?,
+            ..o
+        })),
         Some(Sub::Figures { help: true, .. }) => Ok(Command::Help(FIGURES_HELP)),
         Some(Sub::Figures { out, .. }) => match out {
             Some(dir) if dir.as_os_str().is_empty() => {
@@ -452,23 +377,6 @@ pub fn parse(args: &[OsString]) -> Result<Command, Error> {
     }
 }
 
-/// `intersect` and `region`: the same flags, another help and command.
-fn certified(
-    io: Io,
-    arithmetic: Option<Arithmetic>,
-    help: &'static str,
-    command: fn(IntersectOptions) -> Command,
-) -> Result<Command, Error> {
-    if io.help {
-        return Ok(Command::Help(help));
-    }
-    Ok(command(IntersectOptions {
-        input: io.input()?,
-        arithmetic: arithmetic.unwrap_or(Arithmetic::Exact),
-        limits: io.limits(),
-    }))
-}
-
 /// The clap error `e` of the command line `args` as the contract's one-line error.
 fn refusal(e: &clap::Error, args: &[OsString]) -> Error {
     let context = |kind: ContextKind| match e.get(kind) {
@@ -489,6 +397,8 @@ fn refusal(e: &clap::Error, args: &[OsString]) -> Error {
         .map(|a| a.to_string_lossy().into_owned())
         .filter(|a| !a.starts_with('-'))
         .unwrap_or_default();
+    let cli = Cli::command();
+    let subcommands: Vec<&str> = cli.get_subcommands().map(|c| c.get_name()).collect();
     match e.kind() {
         ErrorKind::InvalidValue if context(ContextKind::InvalidValue).is_empty() => {
             Error::new(flag, "missing value")
@@ -506,24 +416,31 @@ fn refusal(e: &clap::Error, args: &[OsString]) -> Error {
                 word.as_str(),
                 format!(
                     "unknown subcommand{} (expected {}; see blossom --help)",
-                    did_you_mean(&word, &SUBCOMMANDS),
-                    listed(&SUBCOMMANDS)
+                    did_you_mean(&word, &subcommands),
+                    listed(&subcommands)
                 ),
             )
         }
         ErrorKind::UnknownArgument => {
             let word = argument.split('=').next().unwrap_or_default().to_string();
-            let flags = flags_of(&subcommand);
-            if subcommand.is_empty() || !SUBCOMMANDS.contains(&subcommand.as_str()) {
-                Error::new(
+            let Some(sub) = cli.find_subcommand(&subcommand) else {
+                return Error::new(
                     word.as_str(),
                     format!(
                         "unknown option (expected a subcommand: {}; see blossom --help){}",
-                        listed(&SUBCOMMANDS),
+                        listed(&subcommands),
                         did_you_mean(&word, &["--help", "--version"])
                     ),
-                )
-            } else if word.starts_with('-') && word.len() > 1 {
+                );
+            };
+            if word.starts_with('-') && word.len() > 1 {
+                // The long flags of the subcommand (help excepted).
+                let flags: Vec<String> = sub
+                    .get_arguments()
+                    .filter_map(|a| a.get_long())
+                    .filter(|l| *l != "help")
+                    .map(|l| format!("--{l}"))
+                    .collect();
                 let names: Vec<&str> = flags.iter().map(String::as_str).collect();
                 Error::new(
                     word.as_str(),
@@ -559,21 +476,6 @@ fn refusal(e: &clap::Error, args: &[OsString]) -> Error {
                 .to_string(),
         ),
     }
-}
-
-/// The long flags of `subcommand` (help excepted), for messages.
-fn flags_of(subcommand: &str) -> Vec<String> {
-    let command = Cli::command();
-    command
-        .find_subcommand(subcommand)
-        .map(|sub| {
-            sub.get_arguments()
-                .filter_map(|a| a.get_long())
-                .filter(|l| *l != "help")
-                .map(|l| format!("--{l}"))
-                .collect()
-        })
-        .unwrap_or_default()
 }
 
 /// The completion script of `shell` for `blossom`.

@@ -105,6 +105,16 @@ pub struct Estimate {
     pub field: String,
 }
 
+impl Estimate {
+    /// No work, naming the input (for what is not a job: reading refuses it).
+    pub fn zero() -> Self {
+        Estimate {
+            work: 0.0,
+            field: String::from("input"),
+        }
+    }
+}
+
 /// The end of every refusal: the unit and the flag that raises the limit.
 pub const RAISE_IT: &str = "(about a nanosecond each; raise it with --max-work if you mean it)";
 
@@ -237,76 +247,13 @@ pub fn numbers(value: &Value, reading: Spelling) -> Numbers {
     }
 }
 
-/// The numbers of a field (none when it is missing).
-pub fn numbers_in(value: Option<&Value>, reading: Spelling) -> Numbers {
-    value.map(|v| numbers(v, reading)).unwrap_or_default()
-}
-
-/// The length of an array (0 for anything else).
-pub fn len(value: Option<&Value>) -> f64 {
-    match value {
-        Some(Value::Array(items)) => items.len() as f64,
-        _ => 0.0,
-    }
-}
-
-/// The length of the first element of an array that is an array itself (0 otherwise).
-pub fn first_len(value: Option<&Value>) -> f64 {
-    match value {
-        Some(Value::Array(items)) => len(items.first()),
-        _ => 0.0,
-    }
-}
-
-/// The dimension of the points of a list (`[p, ...]`), a grid (`[[p, ...], ...]`) or a list
-/// of triangle entries (`[{"point": p}, ...]`): the length of the first point, at least 1.
-pub fn dimension(value: Option<&Value>) -> f64 {
-    let mut v = value;
-    for _ in 0..3 {
-        match v {
-            Some(Value::Array(items)) => match items.first() {
-                Some(Value::Array(inner)) if !matches!(inner.first(), Some(Value::Array(_))) => {
-                    return (inner.len() as f64).max(1.0)
-                }
-                Some(Value::Object(entry)) => {
-                    return dimension(Some(&Value::Array(vec![entry
-                        .get("point")
-                        .cloned()
-                        .unwrap_or(Value::Null)])))
-                }
-                next => v = next,
-            },
-            _ => return 1.0,
-        }
-    }
-    1.0
-}
-
-/// A degree field's value as the job will read it (0 when it is not a number; reading checks).
-pub fn degree_of(value: Option<&Value>) -> f64 {
-    match value {
-        Some(Value::Number(n)) => n.as_f64().unwrap_or(0.0).max(0.0),
-        Some(Value::String(s)) => s.trim().parse::<f64>().unwrap_or(0.0).max(0.0),
-        Some(Value::Array(items)) => items.iter().map(|v| degree_of(Some(v))).fold(0.0, f64::max),
-        _ => 0.0,
-    }
-}
-
-/// What one ring operation costs in the arithmetic, on numbers of about `bits` bits.
-#[derive(Clone, Copy, Debug)]
-pub struct Arith {
-    /// Exact rationals (else doubles with their error bounds).
-    pub exact: bool,
-}
-
-impl Arith {
-    /// Work units of one operation on numbers of about `bits` bits.
-    pub fn operation(self, bits: f64) -> f64 {
-        if self.exact {
-            EXACT_OPERATION + LIMB_PAIR * (bits / 64.0).powi(2)
-        } else {
-            F64_OPERATION
-        }
+/// Work units of one ring operation on numbers of about `bits` bits, exactly (rationals) or
+/// in doubles with their error bounds.
+pub fn operation(exact: bool, bits: f64) -> f64 {
+    if exact {
+        EXACT_OPERATION + LIMB_PAIR * (bits / 64.0).powi(2)
+    } else {
+        F64_OPERATION
     }
 }
 
@@ -319,14 +266,13 @@ pub fn grown_bits(coefficients: f64, domain: f64, n: f64) -> f64 {
 /// The index of a method in the rows of [`CALIBRATION`].
 fn method_index(method: MethodChoice) -> usize {
     match method {
-        MethodChoice::Library(Method::ClosedForm) => 0,
+        // The carried evaluators unroll the closed forms.
+        MethodChoice::Library(Method::ClosedForm) | MethodChoice::Specialised => 0,
         MethodChoice::Library(Method::Definition) => 1,
         MethodChoice::Library(Method::Pyramid) => 2,
         MethodChoice::Library(Method::Polarisation) => 3,
         MethodChoice::Library(Method::Bulk) => 4,
         MethodChoice::Library(Method::TaylorShift) => 5,
-        // The carried evaluators unroll the closed forms.
-        MethodChoice::Specialised => 0,
     }
 }
 
@@ -353,19 +299,17 @@ pub struct Env<'a> {
 }
 
 impl<'a> Env<'a> {
-    /// The field `name` of the job.
-    pub fn get(&self, name: &str) -> Option<&'a Value> {
-        self.job.get(name)
-    }
-
-    /// The numbers anywhere in the field `name`.
+    /// The numbers anywhere in the field `name` (none when it is missing).
     pub fn numbers(&self, name: &str) -> Numbers {
-        numbers_in(self.get(name), self.reading)
+        self.job
+            .get(name)
+            .map(|v| numbers(v, self.reading))
+            .unwrap_or_default()
     }
 
-    /// The cost of one operation in the job's arithmetic.
-    pub fn arith(&self) -> Arith {
-        Arith { exact: self.exact }
+    /// Work units of one operation in the job's arithmetic on numbers of about `bits` bits.
+    pub fn operation(&self, bits: f64) -> f64 {
+        operation(self.exact, bits)
     }
 
     /// The estimate of a job that computes in rationals under both arithmetics and reads its
@@ -388,6 +332,24 @@ impl<'a> Env<'a> {
     /// The factor `[exact, f64]` of a job of one algorithm for the arithmetic.
     pub fn factor(&self, factor: [f64; 2]) -> f64 {
         factor[usize::from(!self.exact)]
+    }
+
+    /// The estimate of a restriction by `--method` (`curve`, `tensor`, `triangle` and their
+    /// Bézier forms) of degree `degree` in `ops` ring operations, whose points are the field
+    /// `points` and whose domain is the field `domain`, calibrated by `row`: the field named is
+    /// `points`.
+    pub fn restriction(
+        &self,
+        (points, domain): (&'static str, &str),
+        degree: f64,
+        ops: f64,
+        row: &Calibration,
+    ) -> Option<(f64, &'static str)> {
+        let (c, i) = (self.numbers(points), self.numbers(domain));
+        let polar = polar_bits(self.method);
+        let bits = grown_bits(polar * c.max_bits, polar * i.max_bits, degree);
+        let work = ops * self.operation(bits) * self.calibrated(row);
+        Some((work + c.and(i).reading, points))
     }
 }
 
@@ -446,24 +408,19 @@ pub fn triangle_operations(method: MethodChoice, big_n: f64, terms: f64, d: f64)
     }
 }
 
-/// Reading every number exactly, at its full length.
-pub const EXACT_READING: Spelling = Spelling {
-    short: false,
-    f64: false,
-    doubles: false,
-};
-
-/// The top-level field of `job` that holds the number with the most bits.
+/// The top-level field of `job` that holds the number with the most bits (read exactly, at
+/// its full length).
 pub fn longest_number_field(job: &Map<String, Value>) -> String {
-    job.iter()
-        .filter(|(name, _)| name.as_str() != "kind")
-        .map(|(name, value)| (name, numbers(value, EXACT_READING).max_bits))
-        .fold((String::from("input"), 0.0), |best, (name, bits)| {
-            if bits > best.1 {
-                (name.clone(), bits)
-            } else {
-                best
-            }
-        })
-        .0
+    let exactly = Spelling {
+        short: false,
+        f64: false,
+        doubles: false,
+    };
+    let fields = job.iter().filter(|(name, _)| name.as_str() != "kind");
+    let fields = fields.map(|(name, value)| (name, numbers(value, exactly).max_bits));
+    let longest = fields.fold(("input", 0.0), |best, (name, bits)| match bits > best.1 {
+        true => (name.as_str(), bits),
+        false => best,
+    });
+    longest.0.to_string()
 }

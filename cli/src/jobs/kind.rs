@@ -1,12 +1,28 @@
-//! What a kind of job is ([`Kind`]: read with serde, estimated, answered), the subcommand that
-//! answers it and the command line's choices it is computed with ([`Context`]). Each kind's file
-//! implements [`Kind`]; the list of kinds ([`super::kinds`]) puts them together.
+//! What a kind of job is ([`Kind`]: read with serde, answered), the subcommand that answers it,
+//! the command line's choices it is computed with ([`Context`]) and what the kinds' files share
+//! ([`prelude`]). Each kind's file implements [`Kind`]; the list of kinds ([`super::kinds`])
+//! puts them together.
 
 use super::args::{Arithmetic, Limits, MethodChoice};
-use super::cost::Env;
 use blossom::Error;
 use serde::de::DeserializeOwned;
 use serde_json::Value;
+
+/// What every kind's file works with (`use crate::jobs::kind::prelude::*`): the kind's trait,
+/// the readers of a job's leaves, the writing of its answer and the cost model of its estimate.
+pub mod prelude {
+    pub use super::{Context, Kind};
+    pub use crate::jobs::args::MethodChoice;
+    pub use crate::jobs::cost::{grown_bits, metered, operation, Calibration, Env};
+    pub use crate::jobs::read::{any, exactly, items, leaf, not_empty, number, object, under};
+    pub use crate::jobs::read::{coordinates, rectangular, triangular, MAX_DEGREE};
+    pub use crate::jobs::read::{Corners, Degree, NumberList, NumberRows, Numbers, Points, Rows};
+    pub use crate::jobs::read::{List, Reading, Written};
+    pub use crate::jobs::write::{write, Double, Out, Param, Write};
+    pub use blossom::{Error, Method, Point, Rational};
+    pub use serde::{Deserialize, Deserializer, Serialize};
+    pub use serde_json::Value;
+}
 
 /// The subcommand that answers a kind.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -30,17 +46,23 @@ pub struct Context {
     pub limits: Limits,
 }
 
-/// A kind of job: read with serde (its fields, unknown ones refused), estimated, answered.
-pub trait Kind: DeserializeOwned {
-    /// The up-front work estimate of a `restrict` job of this kind from the job as written
-    /// (sizes and number lengths, nothing read): the work units (its measured factor applied,
-    /// the reading of its numbers included) and the field that holds the sizes; `None` for the
-    /// kinds estimated after reading.
-    fn estimate(env: &Env) -> Option<(f64, &'static str)> {
-        let _ = env;
-        None
+impl Context {
+    /// The choices of a run.
+    pub fn new(method: MethodChoice, arithmetic: Arithmetic, limits: Limits) -> Self {
+        Context {
+            method,
+            arithmetic,
+            limits,
+        }
     }
+}
 
+/// A kind of job: read with serde (its fields, unknown ones refused) and answered. The kinds of
+/// `blossom restrict` also have an up-front work estimate, `fn estimate(&self, env: &Env) ->
+/// Option<(f64, &'static str)>` on the job read without its numbers ([`super::read::Text`]):
+/// the work units (its measured factor applied, the reading of its numbers included) and the
+/// field that holds the sizes; `None` for the kinds estimated after reading.
+pub trait Kind: DeserializeOwned {
     /// The answer as JSON (`error_bound` and the one-line text are added by the caller).
     fn solve(self, context: &Context) -> Result<Value, Error>;
 }

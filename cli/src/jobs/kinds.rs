@@ -8,7 +8,7 @@
 
 use super::cost::Env;
 pub use super::kind::{Context, Kind, Subcommand};
-use super::read::{fields_of, read_job, Reading, Written};
+use super::read::{fields_of, read_job, Reading, Text, Written};
 use super::{intersect, region, restrict};
 use crate::names::{did_you_mean, quoted};
 use blossom::Error;
@@ -55,15 +55,26 @@ macro_rules! kinds {
             }
         }
 
-        impl<T: restrict::Number> Job<T> where $($($path)::+<$input>: Kind,)* {
-            /// The up-front estimate of the `restrict` job `job` of kind `kind`.
-            pub fn estimate(kind: &str, env: &Env) -> Option<(f64, &'static str)> {
+        impl Job<Text> {
+            /// Reads the `restrict` job object `job` of kind `kind` without its numbers (its
+            /// shape, for the estimate); the kinds of the other subcommands are not read so.
+            pub fn shape(kind: &str, job: &Map<String, Value>) -> Result<Self, Error> {
                 match kind {
-                    $($name => <$($path)::+<$input> as Kind>::estimate(env),)*
-                    _ => None,
+                    $($name => shape!($sub, $variant, job),)*
+                    other => Err(Error::new("kind", format!("unknown kind {}", quoted(other)))),
                 }
             }
 
+            /// The up-front estimate of a `restrict` job read without its numbers (each kind's
+            /// `estimate`, see [`Kind`]); `None` for the kinds of the other subcommands.
+            pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+                match self {
+                    $(Job::$variant(job) => estimate!($sub, job, env),)*
+                }
+            }
+        }
+
+        impl<T: restrict::Number> Job<T> where $($($path)::+<$input>: Kind,)* {
             /// The answer of the job.
             pub fn solve(self, context: &Context) -> Result<Value, Error> {
                 match self {
@@ -74,7 +85,26 @@ macro_rules! kinds {
     };
 }
 
-use super::read::Text;
+/// The shape of a job of a kind of `$sub` (only `restrict` jobs are read so).
+macro_rules! shape {
+    (Restrict, $variant:ident, $job:ident) => {
+        read_job($job).map(Job::$variant)
+    };
+    ($sub:ident, $variant:ident, $job:ident) => {
+        Err(Error::new("kind", "not a kind of blossom restrict"))
+    };
+}
+
+/// The estimate of a job of a kind of `$sub`: its own for `restrict`, none for the others.
+macro_rules! estimate {
+    (Restrict, $job:ident, $env:ident) => {
+        $job.estimate($env)
+    };
+    ($sub:ident, $job:ident, $env:ident) => {{
+        let _ = ($job, $env);
+        None
+    }};
+}
 
 kinds! {
     Restrict "curve" => Curve(restrict::curve::Curve<T>)

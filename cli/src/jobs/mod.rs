@@ -39,14 +39,15 @@ pub mod write;
 pub use intersect as intersect_jobs;
 
 use crate::number::take_error_bound;
-use args::{Arithmetic, Command, MethodChoice, RestrictOptions};
+use args::{Arithmetic, Command, IntersectOptions, Limits, MethodChoice};
 use blossom::{BoundedF64, Error, Rational};
-use kinds::{job_and_kind, Context, Job, Subcommand};
+use kinds::{job_and_kind, Context, Job, KindInfo, Subcommand};
 use read::Text;
 use restrict::specialised;
-use serde_json::Value;
+use serde_json::{Map, Value};
 use std::ffi::OsString;
 use std::io::{Read, Write};
+use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
 /// The exit code of bad input or bad arguments.
@@ -64,23 +65,18 @@ pub struct Outcome {
 }
 
 impl Outcome {
-    fn success(stdout: String) -> Self {
-        Outcome {
-            code: 0,
-            stdout,
-            stderr: String::new(),
-        }
-    }
-
     fn of(result: Result<String, Error>) -> Self {
-        result.map_or_else(|e| Outcome::failure(&e), Outcome::success)
-    }
-
-    fn failure(error: &Error) -> Self {
-        Outcome {
-            code: EXIT_BAD_INPUT,
-            stdout: String::new(),
-            stderr: format!("error: {}\n", escaped(&error.to_string())),
+        match result {
+            Ok(stdout) => Outcome {
+                code: 0,
+                stdout,
+                stderr: String::new(),
+            },
+            Err(error) => Outcome {
+                code: EXIT_BAD_INPUT,
+                stdout: String::new(),
+                stderr: format!("error: {}\n", escaped(&error.to_string())),
+            },
         }
     }
 }
@@ -109,101 +105,89 @@ fn with_newline(mut text: String) -> String {
 /// Runs the command line `args` (without the program name), reading a job from `stdin` when
 /// needed. Prints nothing itself.
 pub fn run(args: &[OsString], stdin: &mut dyn Read) -> Outcome {
-    match args::parse(args) {
-        Err(error) => Outcome::failure(&error),
-        Ok(Command::Help(text)) => Outcome::success(
-            [
-                ("  %RESTRICT%\n", Subcommand::Restrict),
-                ("  %INTERSECT%\n", Subcommand::Intersect),
-                ("  %REGION%\n", Subcommand::Region),
-            ]
-            .iter()
-            .fold(text.to_string(), |text, (mark, sub)| {
-                text.replace(mark, &kinds::help_list(*sub))
-            }),
-        ),
-        Ok(Command::Version) => {
-            Outcome::success(format!("blossom {}\n", env!("CARGO_PKG_VERSION")))
-        }
-        Ok(Command::Verify { json, verbose }) => {
+    let command = match args::parse(args) {
+        Ok(command) => command,
+        Err(error) => return Outcome::of(Err(error)),
+    };
+    let mut document = |input: &Option<PathBuf>, limits: &Limits| {
+        read_input(input.as_deref(), limits, stdin).and_then(|bytes| parse_json(&bytes))
+    };
+    let one_line = |answer: Value| format!("{answer}\n");
+    Outcome::of(match command {
+        Command::Help(text) => Ok([
+            ("  %RESTRICT%\n", Subcommand::Restrict),
+            ("  %INTERSECT%\n", Subcommand::Intersect),
+            ("  %REGION%\n", Subcommand::Region),
+        ]
+        .iter()
+        .fold(text.to_string(), |text, (mark, sub)| {
+            text.replace(mark, &kinds::help_list(*sub))
+        })),
+        Command::Version => Ok(format!("blossom {}\n", env!("CARGO_PKG_VERSION"))),
+        Command::Verify { json, verbose } => {
             let (report, ok) = crate::verify::run_report(json, verbose);
-            Outcome {
+            return Outcome {
                 code: if ok { 0 } else { 1 },
                 stdout: with_newline(report),
                 stderr: String::new(),
-            }
-        }
-        Ok(Command::Restrict(options)) => Outcome::of(restrict(&options, stdin)),
-        Ok(Command::Intersect(options)) => certified(&options, Subcommand::Intersect, stdin),
-        Ok(Command::Region(options)) => certified(&options, Subcommand::Region, stdin),
-        Ok(Command::Check(options)) => {
-            let context = Context {
-                method: MethodChoice::default(),
-                arithmetic: Arithmetic::Exact,
-                limits: options.limits,
             };
+        }
+        Command::Restrict(o) if o.method == MethodChoice::Specialised && !specialised::BUILT_IN => {
+            Err(Error::new("--method", specialised::NOT_BUILT_IN))
+        }
+        Command::Restrict(o) => document(&o.input, &o.limits).and_then(|job| {
+            solve(&job, &Context::new(o.method, o.arithmetic, o.limits)).map(one_line)
+        }),
+        Command::Intersect(o) => document(&o.input, &o.limits)
+            .and_then(|job| certified(&job, Subcommand::Intersect, &o).map(one_line)),
+        Command::Region(o) => document(&o.input, &o.limits)
+            .and_then(|job| certified(&job, Subcommand::Region, &o).map(one_line)),
+        Command::Check(o) => {
+            let context = Context::new(MethodChoice::default(), Arithmetic::Exact, o.limits);
+            let shape = |job: &Value| shape(job).map(drop);
             let exact = |job: &Value| solve(job, &context);
-            Outcome::of(
-                read_input(options.input.as_deref(), &options.limits, stdin)
-                    .and_then(|bytes| parse_json(&bytes))
-                    .and_then(|document| {
-                        crate::check::check_command(&document, options.per_point, &shape, &exact)
-                    })
-                    .map(with_newline),
-            )
+            document(&o.input, &o.limits).and_then(|document| {
+                crate::check::check_command(&document, o.per_point, &shape, &exact)
+                    .map(with_newline)
+            })
         }
-        Ok(Command::Figures { out }) => {
-            Outcome::of(crate::figures::write_figures(&out).map(|written| {
-                written
-                    .iter()
-                    .map(|path| format!("{}\n", path.display()))
-                    .collect()
-            }))
-        }
-        Ok(Command::Completions(shell)) => Outcome::of(args::completions(&shell)),
-        Ok(Command::Expand(words)) => {
-            Outcome::of(crate::specialised::expand_command(&words).map(with_newline))
-        }
-    }
+        Command::Figures { out } => crate::figures::write_figures(&out).map(|written| {
+            written
+                .iter()
+                .map(|path| format!("{}\n", path.display()))
+                .collect()
+        }),
+        Command::Completions(shell) => args::completions(&shell),
+        Command::Expand(words) => crate::specialised::expand_command(&words).map(with_newline),
+    })
 }
 
-/// The answer of a job of `blossom intersect` or `blossom region`, as one line of JSON, or the
-/// failure.
+/// The answer of the job `document` of `blossom intersect` or `blossom region`.
 fn certified(
-    options: &args::IntersectOptions,
+    document: &Value,
     subcommand: Subcommand,
-    stdin: &mut dyn Read,
-) -> Outcome {
-    let context = Context {
-        method: MethodChoice::default(),
-        arithmetic: options.arithmetic,
-        limits: options.limits,
-    };
-    let answer = read_input(options.input.as_deref(), &options.limits, stdin)
-        .and_then(|bytes| parse_json(&bytes))
-        .and_then(|document| {
-            let (job, kind) = job_and_kind(&document, subcommand)?;
-            match options.arithmetic {
-                Arithmetic::Exact => Job::<Rational>::read(kind.name, job)?.solve(&context),
-                Arithmetic::F64 => Job::<BoundedF64>::read(kind.name, job)?.solve(&context),
-            }
-        });
-    Outcome::of(answer.and_then(|answer| one_line(&answer)))
+    o: &IntersectOptions,
+) -> Result<Value, Error> {
+    let (job, kind) = job_and_kind(document, subcommand)?;
+    answer(
+        kind,
+        job,
+        &Context::new(MethodChoice::default(), o.arithmetic, o.limits),
+    )
 }
 
-/// `blossom restrict`: the answer's text, one line of JSON and a newline.
-fn restrict(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<String, Error> {
-    if options.method == MethodChoice::Specialised && !specialised::BUILT_IN {
-        return Err(Error::new("--method", specialised::NOT_BUILT_IN));
-    }
-    let bytes = read_input(options.input.as_deref(), &options.limits, stdin)?;
-    let document = parse_json(&bytes)?;
-    let context = Context {
-        method: options.method,
-        arithmetic: options.arithmetic,
-        limits: options.limits,
+/// The answer of the job object `job` of kind `kind`, its numbers read in the arithmetic of
+/// `context`: `"kind"` first, then the fields of the kind's answer.
+fn answer(kind: &KindInfo, job: &Map<String, Value>, context: &Context) -> Result<Value, Error> {
+    let answer = match context.arithmetic {
+        Arithmetic::Exact => Job::<Rational>::read(kind.name, job)?.solve(context)?,
+        Arithmetic::F64 => Job::<BoundedF64>::read(kind.name, job)?.solve(context)?,
     };
-    one_line(&solve(&document, &context)?)
+    let mut named = Map::from_iter([(String::from("kind"), Value::from(kind.name))]);
+    if let Value::Object(fields) = answer {
+        named.extend(fields);
+    }
+    Ok(Value::Object(named))
 }
 
 /// The answer of the `restrict` job `document` within the budget: its shape and fields are
@@ -212,77 +196,55 @@ fn restrict(options: &RestrictOptions, stdin: &mut dyn Read) -> Result<String, E
 /// largest bound over its numbers on their distance to the exact answer for the same input
 /// doubles (`null` when some number has no finite bound).
 pub fn solve(document: &Value, context: &Context) -> Result<Value, Error> {
-    shape(document)?;
     let (job, kind) = job_and_kind(document, Subcommand::Restrict)?;
-    let estimate = budget::up_front(
-        document,
-        context.method,
-        context.arithmetic,
-        &context.limits,
-    )?;
+    let shape = Job::shape(kind.name, job)?;
+    let estimate = budget::estimate_of(&shape, job, context.method, context.arithmetic);
+    let estimate = budget::up_front(estimate, &context.limits)?;
     budget::metered(&context.limits, &estimate.field, || {
-        match context.arithmetic {
-            Arithmetic::Exact => Job::<Rational>::read(kind.name, job)?.solve(context),
-            Arithmetic::F64 => {
-                let mut answer = Job::<BoundedF64>::read(kind.name, job)?.solve(context)?;
-                let bound = take_error_bound(&mut answer)
-                    .and_then(serde_json::Number::from_f64)
-                    .map_or(Value::Null, Value::Number);
-                if let Value::Object(map) = &mut answer {
-                    map.insert("error_bound".into(), bound);
-                }
-                Ok(answer)
+        let mut answer = answer(kind, job, context)?;
+        if context.arithmetic == Arithmetic::F64 {
+            let bound = take_error_bound(&mut answer).and_then(serde_json::Number::from_f64);
+            if let Value::Object(fields) = &mut answer {
+                let bound = bound.map_or(Value::Null, Value::Number);
+                fields.insert("error_bound".into(), bound);
             }
         }
+        Ok(answer)
     })
 }
 
 /// Checks the kind and the fields of the `restrict` job `document` (the names of all of them
-/// first), its numbers not yet read.
-pub fn shape(document: &Value) -> Result<(), Error> {
+/// first), its numbers not yet read: the job so read.
+pub fn shape(document: &Value) -> Result<Job<Text>, Error> {
     let (job, kind) = job_and_kind(document, Subcommand::Restrict)?;
-    Job::<Text>::read(kind.name, job).map(drop)
-}
-
-/// `answer` as one line of JSON and a newline.
-fn one_line(answer: &Value) -> Result<String, Error> {
-    serde_json::to_string(answer)
-        .map(|text| text + "\n")
-        .map_err(|e| Error::new("internal", format!("cannot write the answer: {e}")))
+    Job::shape(kind.name, job)
 }
 
 /// The bytes of the job: the `--input` file, or standard input when `input` is `None`, at most
 /// `limits.max_input` of them (a longer input is refused, never truncated).
 pub(crate) fn read_input(
-    input: Option<&std::path::Path>,
-    limits: &cost::Limits,
+    input: Option<&Path>,
+    limits: &Limits,
     stdin: &mut dyn Read,
 ) -> Result<Vec<u8>, Error> {
-    let limit = limits.max_input;
-    let (field, mut source): (&str, Box<dyn Read + '_>) = match input {
-        Some(path) => {
-            let file = std::fs::File::open(path).map_err(|e| {
-                Error::new(
-                    "--input",
-                    format!("cannot read {:?}: {e}", path.display().to_string()),
-                )
-            })?;
-            ("--input", Box::new(file))
-        }
-        None => ("input", Box::new(stdin)),
+    let (field, cannot) = match input {
+        Some(path) => (
+            "--input",
+            format!("cannot read {:?}", path.display().to_string()),
+        ),
+        None => ("input", String::from("cannot read standard input")),
     };
-    let mut bytes = Vec::new();
-    source
+    let refusal = |e: std::io::Error| Error::new(field, format!("{cannot}: {e}"));
+    let mut source: Box<dyn Read + '_> = match input {
+        Some(path) => Box::new(std::fs::File::open(path).map_err(refusal)?),
+        None => Box::new(stdin),
+    };
+    let (limit, mut bytes) = (limits.max_input, Vec::new());
+    let read = source
         .by_ref()
         .take(limit.saturating_add(1))
-        .read_to_end(&mut bytes)
-        .map_err(|e| match input {
-            Some(path) => Error::new(
-                "--input",
-                format!("cannot read {:?}: {e}", path.display().to_string()),
-            ),
-            None => Error::new("input", format!("cannot read standard input: {e}")),
-        })?;
+        .read_to_end(&mut bytes);
+    read.map_err(refusal)?;
     if bytes.len() as u64 > limit {
         return Err(Error::new(
             field,
@@ -299,16 +261,11 @@ pub(crate) fn parse_json(bytes: &[u8]) -> Result<Value, Error> {
     let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
     serde_json::from_slice(bytes).map_err(|e| {
         let full = e.to_string();
-        let location = format!(" at line {} column {}", e.line(), e.column());
-        let message = full.strip_suffix(&location).unwrap_or(&full);
-        Error::new(
-            "input",
-            format!(
-                "invalid JSON at line {} column {}: {message}",
-                e.line(),
-                e.column()
-            ),
-        )
+        let (line, column) = (e.line(), e.column());
+        let message = full.strip_suffix(&format!(" at line {line} column {column}"));
+        let message = message.unwrap_or(&full);
+        let message = format!("invalid JSON at line {line} column {column}: {message}");
+        Error::new("input", message)
     })
 }
 
@@ -335,7 +292,7 @@ pub fn main() -> i32 {
             .or_else(|| payload.downcast_ref::<&str>().map(|s| s.to_string()))
             .or_else(|| payload.downcast_ref::<String>().cloned())
             .unwrap_or_else(|| String::from("unknown panic"));
-        Outcome::failure(&Error::new("internal", message))
+        Outcome::of(Err(Error::new("internal", message)))
     });
     // Write errors (a closed pipe) are ignored: the exit code still tells the story.
     let _ = std::io::stdout()

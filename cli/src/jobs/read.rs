@@ -1,75 +1,62 @@
-//! Reading a job with serde: the job types derive `Deserialize`, and [`read`] runs them over the
-//! parsed document through [`Reader`], a thin `Deserializer` over `serde_json::Value` that
-//! knows the path of every value, so that each error names its field
-//! (`coefficients[2]: expected 3 coordinates, found 2`, `regions[1].loops[0][2][1][0]: ...`).
+//! Reading a job with serde: the objects of a job (the job itself, a region, a triangle, a
+//! `bezier-triangle` entry, a `bspline` piece) derive `Deserialize`, and [`read_job`] runs them
+//! over the parsed document through [`Reader`], a thin `Deserializer` over `serde_json::Value`
+//! that knows the path of every field; everything else (numbers, points, grids, lists, degrees
+//! and names: the leaves) is read from its JSON value by plain functions ([`leaf`], [`items`]),
+//! so that each error names its field (`coefficients[2]: expected 3 coordinates, found 2`,
+//! `regions[1].loops[0][2][1][0]: ...`).
 //!
 //! The reader keeps the contract's order of checks: the fields of an object are checked for
 //! unknown names before any value is read (the nearest accepted name in the message: `did you
 //! mean "control_points"?`), then read in the order the type declares them, a missing one
-//! refused when it is reached (`interval: missing field`); arrays element by element. The
-//! leaves are this module's types: [`Num`] reads one number by the contract's rules for the
-//! arithmetic `T` ([`Reading`]: integers and fractions and decimals as strings exactly, JSON
-//! numbers with a fraction part only under `f64`), and the containers check counts and
-//! dimensions as they go ([`Numbers`], [`Point`], [`Points`], [`Rows`]).
+//! refused when it is reached (`interval: missing field`); arrays element by element, their
+//! count checked before their elements are read. [`number`] reads one number by the contract's
+//! rules for the arithmetic `T` ([`Reading`]: integers and fractions and decimals as strings
+//! exactly, JSON numbers with a fraction part only under `f64`), and the containers check
+//! counts and dimensions as they go ([`Numbers`], [`Points`], [`Rows`]).
 
 use crate::names::{did_you_mean, listed, quoted, unknown_field};
-use crate::number::{f64_from_json, format_rational, json_type, rational_from_json, JsonNumber};
-use blossom::{BoundedF64, Error, ErrorKind, Rational};
+use crate::number::{f64_from_json, json_type, rational_from_json, JsonNumber};
+use blossom::{BoundedF64, Error, Rational};
 use serde::de::{self, DeserializeOwned, DeserializeSeed, IntoDeserializer, Visitor};
 use serde::{Deserialize, Deserializer};
 use serde_json::{Map, Value};
+use std::cell::Cell;
 use std::fmt;
 use std::marker::PhantomData;
 
-/// Reads a `D` from `value`, the whole job (errors at its top level name `input`).
-pub fn read<D: DeserializeOwned>(value: &Value) -> Result<D, Error> {
-    read_at(value, "")
-}
-
-/// Reads a `D` from `value`, which sits at `path` in the job.
-pub fn read_at<D: DeserializeOwned>(value: &Value, path: &str) -> Result<D, Error> {
-    D::deserialize(Reader::at(Some(value), path.to_string())).map_err(ReadError::finish)
-}
-
-/// A job object read without its `"kind"` (named first among the accepted fields).
+/// Reads the job object `job` (its `"kind"` read already, and accepted among its fields) as a
+/// `D`; errors at its top level name `input`.
 pub fn read_job<D: DeserializeOwned>(job: &Map<String, Value>) -> Result<D, Error> {
-    let reader = Reader {
-        value: None,
-        object: Some(job),
-        path: String::new(),
-    };
-    D::deserialize(reader).map_err(ReadError::finish)
+    D::deserialize(Reader::new(None, Some(job))).map_err(|e| match e.error {
+        error if error.field.is_empty() => Error::of(error.kind, "input", error.message),
+        error => error,
+    })
+}
+
+/// Reads an object of a job (a region, an entry) from `value` on its own: its errors name
+/// fields relative to it.
+pub fn object<D: DeserializeOwned>(value: &Value) -> Result<D, Error> {
+    D::deserialize(Reader::new(Some(value), None)).map_err(|e| e.error)
 }
 
 /// The fields of the struct `D` reads (its serde field names, in order).
 pub fn fields_of<D: DeserializeOwned>() -> &'static [&'static str] {
     /// A deserializer that only asks which fields a struct has.
-    struct Fields;
-    #[derive(Debug)]
-    struct Found(&'static [&'static str]);
-    impl fmt::Display for Found {
-        fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-            f.write_str("fields")
-        }
-    }
-    impl std::error::Error for Found {}
-    impl de::Error for Found {
-        fn custom<M: fmt::Display>(_: M) -> Self {
-            Found(&[])
-        }
-    }
-    impl<'de> Deserializer<'de> for Fields {
-        type Error = Found;
-        fn deserialize_any<V: Visitor<'de>>(self, _: V) -> Result<V::Value, Found> {
-            Err(Found(&[]))
+    struct Fields<'c>(&'c Cell<&'static [&'static str]>);
+    impl<'de> Deserializer<'de> for Fields<'_> {
+        type Error = de::value::Error;
+        fn deserialize_any<V: Visitor<'de>>(self, _: V) -> Result<V::Value, Self::Error> {
+            Err(de::Error::custom("not a struct"))
         }
         fn deserialize_struct<V: Visitor<'de>>(
             self,
             _: &'static str,
             fields: &'static [&'static str],
             _: V,
-        ) -> Result<V::Value, Found> {
-            Err(Found(fields))
+        ) -> Result<V::Value, Self::Error> {
+            self.0.set(fields);
+            Err(de::Error::custom("only its fields"))
         }
         serde::forward_to_deserialize_any! {
             bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string bytes
@@ -77,14 +64,13 @@ pub fn fields_of<D: DeserializeOwned>() -> &'static [&'static str] {
             identifier ignored_any
         }
     }
-    match D::deserialize(Fields) {
-        Ok(_) => &[],
-        Err(Found(fields)) => fields,
-    }
+    let fields = Cell::new(&[][..]);
+    let _ = D::deserialize(Fields(&fields));
+    fields.get()
 }
 
 /// An error of reading: a library [`Error`] whose field is completed by the reader that
-/// returns it (`relative` under its own path) on the way out.
+/// returns it (under its own path) on the way out.
 #[derive(Debug)]
 pub struct ReadError {
     error: Error,
@@ -92,37 +78,13 @@ pub struct ReadError {
 }
 
 impl ReadError {
-    /// An error at `relative` (`""`, `[2]` or `name`) below the value being read.
-    pub fn below(relative: impl Into<String>, kind: ErrorKind, message: impl Into<String>) -> Self {
-        ReadError {
-            error: Error::of(kind, relative, message),
-            placed: false,
-        }
-    }
-
-    /// A library error whose field is relative to the value being read (a region's
-    /// `loops[0][2]`).
-    pub fn from_library(error: Error) -> Self {
+    /// An error at `relative` (`""`, `[2]` or `name`) below `path`, placed.
+    fn at(path: &str, relative: &str, message: impl Into<String>) -> Self {
+        let error = Error::new(joined(path, relative), message);
         ReadError {
             error,
-            placed: false,
+            placed: true,
         }
-    }
-
-    fn at(mut self, path: &str) -> Self {
-        if !self.placed {
-            self.error.field = joined(path, &self.error.field);
-            self.placed = true;
-        }
-        self
-    }
-
-    fn finish(self) -> Error {
-        let mut error = self.error;
-        if error.field.is_empty() {
-            error.field = String::from("input");
-        }
-        error
     }
 }
 
@@ -135,14 +97,17 @@ impl fmt::Display for ReadError {
 impl std::error::Error for ReadError {}
 
 impl de::Error for ReadError {
+    /// An error raised below the value being read: its field (relative, marked by [`below`])
+    /// is put under the value's path by the reader.
     fn custom<M: fmt::Display>(message: M) -> Self {
         let text = message.to_string();
-        match text
+        let (field, message) = text
             .strip_prefix(RELATIVE)
             .and_then(|t| t.split_once(RELATIVE))
-        {
-            Some((field, message)) => ReadError::below(field, ErrorKind::Invalid, message),
-            None => ReadError::below("", ErrorKind::Invalid, text),
+            .unwrap_or(("", &text));
+        ReadError {
+            error: Error::new(field, message),
+            placed: false,
         }
     }
 }
@@ -152,13 +117,15 @@ impl de::Error for ReadError {
 const RELATIVE: &str = "\u{0}";
 
 /// The library error `error`, whose field is relative to the value being read (a region's
-/// `loops[0][2]`, a triangle's `nodes`), as the error of any deserializer: the reader puts it
-/// under the value's path.
+/// `loops[0][2]`, a point's `[1]`), as the error of any deserializer: the reader puts it under
+/// the value's path.
 pub fn below<E: de::Error>(error: &Error) -> E {
-    E::custom(format!(
-        "{RELATIVE}{}{RELATIVE}{}",
-        error.field, error.message
-    ))
+    E::custom(relative(error))
+}
+
+/// `error` as the message of [`below`].
+fn relative(error: &Error) -> String {
+    format!("{RELATIVE}{}{RELATIVE}{}", error.field, error.message)
 }
 
 /// `path` and `name` joined: `name` at the top, `path.name` for a field, `path[2]` for an index.
@@ -171,46 +138,103 @@ pub fn joined(path: &str, name: &str) -> String {
     }
 }
 
-/// The `Deserializer` of one value of the job at `path` (`value` `None`: a field that is
-/// absent, which reads as `None` where optional and is missing elsewhere; `object` set: the
-/// job object, whose `"kind"` is read already).
+/// `error` re-addressed under `path` (`[2]`, `regions`): a field named relative to a value
+/// (by the library, or by a leaf) put under the value's own path.
+pub fn under(path: &str, error: Error) -> Error {
+    Error::of(error.kind, joined(path, &error.field), error.message)
+}
+
+/// The `Deserializer` of one value of a job at `path`: `value` `None` is a field that is absent
+/// (read as `None` where optional, missing elsewhere), `job` the job object itself, whose
+/// `"kind"` is read already. Objects are read by the types that derive `Deserialize`, their
+/// fields checked first and then read in their declared order (`Fields`); every other value
+/// is handed whole to the leaf that reads it (by serde_json's own deserializer: numbers keep
+/// their spelling, `arbitrary_precision`).
 pub struct Reader<'a> {
     value: Option<&'a Value>,
-    object: Option<&'a Map<String, Value>>,
+    job: Option<&'a Map<String, Value>>,
     path: String,
 }
 
 impl<'a> Reader<'a> {
-    fn at(value: Option<&'a Value>, path: String) -> Self {
-        Reader {
-            value,
-            object: None,
-            path,
+    fn new(value: Option<&'a Value>, job: Option<&'a Map<String, Value>>) -> Self {
+        let path = String::new();
+        Reader { value, job, path }
+    }
+}
+
+impl<'a> Reader<'a> {
+    /// The fields of the object at this path in the order `fields` declares them (the work of
+    /// `deserialize_struct`, apart from the visitor, so that it is compiled once).
+    fn fields(
+        &self,
+        fields: &'static [&'static str],
+        expecting: &dyn fmt::Display,
+    ) -> Result<Fields<'a, '_>, ReadError> {
+        let map = match (self.job, self.value) {
+            (Some(map), _) | (None, Some(Value::Object(map))) => map,
+            (None, None) => return Err(ReadError::at(&self.path, "", "missing field")),
+            (None, Some(other)) => {
+                let message = format!("expected {expecting}, found {}", json_type(other));
+                return Err(ReadError::at(&self.path, "", message));
+            }
+        };
+        let top = self.job.map(|_| "kind");
+        let accepted: Vec<&str> = top.into_iter().chain(fields.iter().copied()).collect();
+        if let Some(name) = map.keys().find(|k| !accepted.contains(&k.as_str())) {
+            let message = unknown_field(name, &accepted);
+            return Err(ReadError::at(&self.path, name, message));
+        }
+        let entries: Vec<_> = fields.iter().map(|f| (*f, map.get(*f))).collect();
+        Ok(Fields {
+            entries: entries.into_iter(),
+            current: None,
+            path: &self.path,
+        })
+    }
+}
+
+/// `error` under `path`, unless a reader below placed it already.
+fn place(path: &str, error: ReadError) -> ReadError {
+    match error.placed {
+        true => error,
+        false => ReadError::at(path, &error.error.field, error.error.message),
+    }
+}
+
+impl<'de> Deserializer<'de> for Reader<'de> {
+    type Error = ReadError;
+
+    fn deserialize_any<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, ReadError> {
+        let Some(value) = self.value else {
+            return Err(ReadError::at(&self.path, "", "missing field"));
+        };
+        let read = value.deserialize_any(visitor);
+        read.map_err(|e| place(&self.path, de::Error::custom(e)))
+    }
+
+    fn deserialize_option<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, ReadError> {
+        match self.value {
+            None | Some(Value::Null) if self.job.is_none() => visitor.visit_none(),
+            _ => visitor.visit_some(self),
         }
     }
 
-    /// The refusal of a value of the wrong type: `expected EXPECTED, found an array`.
-    fn wrong_type(&self, expected: &dyn fmt::Display) -> ReadError {
-        let found = self.value.map_or("nothing", json_type);
-        ReadError::below(
-            "",
-            ErrorKind::Invalid,
-            format!("expected {expected}, found {found}"),
-        )
-        .at(&self.path)
+    /// An object: its fields are checked for unknown names first, then read in the order of
+    /// `fields`, an absent one read as absent.
+    fn deserialize_struct<V: Visitor<'de>>(
+        self,
+        _name: &'static str,
+        fields: &'static [&'static str],
+        visitor: V,
+    ) -> Result<V::Value, ReadError> {
+        let fields = self.fields(fields, &Expecting(&visitor))?;
+        visitor.visit_map(fields).map_err(|e| place(&self.path, e))
     }
 
-    /// The object being read, or the refusal of what is there instead.
-    fn object<'v, V: Visitor<'v>>(&self, visitor: &V) -> Result<&'a Map<String, Value>, ReadError> {
-        match (self.object, self.value) {
-            (Some(map), _) | (None, Some(Value::Object(map))) => Ok(map),
-            (None, None) => Err(self.missing()),
-            (None, Some(_)) => Err(self.wrong_type(&Expecting(visitor))),
-        }
-    }
-
-    fn missing(&self) -> ReadError {
-        ReadError::below("", ErrorKind::Invalid, "missing field").at(&self.path)
+    serde::forward_to_deserialize_any! {
+        bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string bytes byte_buf
+        unit unit_struct newtype_struct seq tuple tuple_struct map enum identifier ignored_any
     }
 }
 
@@ -223,141 +247,11 @@ impl<'de, V: Visitor<'de>> fmt::Display for Expecting<'_, V> {
     }
 }
 
-impl<'de> Deserializer<'de> for Reader<'de> {
-    type Error = ReadError;
-
-    fn deserialize_any<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, ReadError> {
-        let path = self.path.clone();
-        let result = match self.value {
-            None if self.object.is_some() => return self.deserialize_map(visitor),
-            None => return Err(self.missing()),
-            Some(Value::Array(items)) => visitor.visit_seq(Elements {
-                items: items.iter().enumerate(),
-                path: &path,
-            }),
-            Some(Value::Object(_)) => return self.deserialize_map(visitor),
-            // Numbers keep their spelling (`arbitrary_precision`): serde_json presents them.
-            Some(leaf) => leaf
-                .deserialize_any(visitor)
-                .map_err(|e| ReadError::below("", ErrorKind::Invalid, e.to_string())),
-        };
-        result.map_err(|e| e.at(&path))
-    }
-
-    fn deserialize_option<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, ReadError> {
-        match self.value {
-            None | Some(Value::Null) if self.object.is_none() => visitor.visit_none(),
-            _ => visitor.visit_some(self),
-        }
-    }
-
-    fn deserialize_seq<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, ReadError> {
-        match self.value {
-            Some(Value::Array(_)) => self.deserialize_any(visitor),
-            None if self.object.is_none() => Err(self.missing()),
-            _ => Err(self.wrong_type(&Expecting(&visitor))),
-        }
-    }
-
-    fn deserialize_map<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, ReadError> {
-        let map = self.object(&visitor)?;
-        let entries: Vec<(&str, Option<&Value>)> = map
-            .iter()
-            .filter(|(k, _)| self.object.is_none() || k.as_str() != "kind")
-            .map(|(k, v)| (k.as_str(), Some(v)))
-            .collect();
-        visitor
-            .visit_map(Fields::new(entries, &self.path))
-            .map_err(|e| e.at(&self.path))
-    }
-
-    /// An object: its fields are checked for unknown names first, then read in the order of
-    /// `fields`, an absent one read as absent.
-    fn deserialize_struct<V: Visitor<'de>>(
-        self,
-        _name: &'static str,
-        fields: &'static [&'static str],
-        visitor: V,
-    ) -> Result<V::Value, ReadError> {
-        let map = self.object(&visitor)?;
-        let top = self.object.is_some();
-        let mut accepted: Vec<&str> = Vec::with_capacity(fields.len() + 1);
-        if top {
-            accepted.push("kind");
-        }
-        accepted.extend_from_slice(fields);
-        if let Some(name) = map.keys().find(|k| !accepted.contains(&k.as_str())) {
-            return Err(ReadError::below(
-                name.clone(),
-                ErrorKind::Invalid,
-                unknown_field(name, &accepted),
-            )
-            .at(&self.path));
-        }
-        let entries = fields.iter().map(|f| (*f, map.get(*f))).collect();
-        visitor
-            .visit_map(Fields::new(entries, &self.path))
-            .map_err(|e| e.at(&self.path))
-    }
-
-    fn deserialize_newtype_struct<V: Visitor<'de>>(
-        self,
-        _name: &'static str,
-        visitor: V,
-    ) -> Result<V::Value, ReadError> {
-        visitor.visit_newtype_struct(self)
-    }
-
-    serde::forward_to_deserialize_any! {
-        bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string bytes byte_buf
-        unit unit_struct tuple tuple_struct enum identifier ignored_any
-    }
-}
-
-/// The elements of an array, each read at `path[i]`.
-struct Elements<'a, 'p> {
-    items: std::iter::Enumerate<std::slice::Iter<'a, Value>>,
-    path: &'p str,
-}
-
-impl<'de> de::SeqAccess<'de> for Elements<'de, '_> {
-    type Error = ReadError;
-
-    fn next_element_seed<S: DeserializeSeed<'de>>(
-        &mut self,
-        seed: S,
-    ) -> Result<Option<S::Value>, ReadError> {
-        match self.items.next() {
-            None => Ok(None),
-            Some((i, item)) => {
-                let path = format!("{}[{i}]", self.path);
-                seed.deserialize(Reader::at(Some(item), path.clone()))
-                    .map(Some)
-                    .map_err(|e| e.at(&path))
-            }
-        }
-    }
-
-    fn size_hint(&self) -> Option<usize> {
-        Some(self.items.len())
-    }
-}
-
-/// The fields of an object, each read at `path.name` (`None`: absent).
+/// The fields of an object in their declared order, each read at `path.name` (`None`: absent).
 struct Fields<'a, 'p> {
     entries: std::vec::IntoIter<(&'a str, Option<&'a Value>)>,
     current: Option<(&'a str, Option<&'a Value>)>,
     path: &'p str,
-}
-
-impl<'a, 'p> Fields<'a, 'p> {
-    fn new(entries: Vec<(&'a str, Option<&'a Value>)>, path: &'p str) -> Self {
-        Fields {
-            entries: entries.into_iter(),
-            current: None,
-            path,
-        }
-    }
 }
 
 impl<'de> de::MapAccess<'de> for Fields<'de, '_> {
@@ -368,26 +262,111 @@ impl<'de> de::MapAccess<'de> for Fields<'de, '_> {
         seed: K,
     ) -> Result<Option<K::Value>, ReadError> {
         self.current = self.entries.next();
-        match self.current {
-            None => Ok(None),
-            Some((name, _)) => seed
-                .deserialize(name.into_deserializer())
-                .map(Some)
-                .map_err(|e: de::value::Error| de::Error::custom(e))
-                .map_err(|e: ReadError| e.at(&joined(self.path, name))),
-        }
+        let Some((name, _)) = self.current else {
+            return Ok(None);
+        };
+        let key: Result<_, de::value::Error> = seed.deserialize(name.into_deserializer());
+        let path = joined(self.path, name);
+        key.map(Some)
+            .map_err(|e| ReadError::at(&path, "", e.to_string()))
     }
 
     fn next_value_seed<S: DeserializeSeed<'de>>(&mut self, seed: S) -> Result<S::Value, ReadError> {
+        let reader = self.value();
+        let path = reader.path.clone();
+        seed.deserialize(reader).map_err(|e| place(&path, e))
+    }
+}
+
+impl<'a> Fields<'a, '_> {
+    /// The reader of the current field's value.
+    fn value(&mut self) -> Reader<'a> {
         let (name, value) = self.current.take().expect("a key before its value");
         let path = joined(self.path, name);
-        seed.deserialize(Reader::at(value, path.clone()))
-            .map_err(|e| e.at(&path))
+        Reader {
+            value,
+            job: None,
+            path,
+        }
     }
 }
 
 // ------------------------------------------------------------------------------------------
-// Numbers.
+// Leaves: read from their JSON value by plain functions, their errors relative to the value.
+
+/// Reads a leaf of a job from its JSON value by `read`, whose errors name fields relative to
+/// the value (`[2][0]`); the reader puts them under the value's path.
+pub fn leaf<'de, D: Deserializer<'de>, X>(
+    d: D,
+    read: impl FnOnce(&Value) -> Result<X, Error>,
+) -> Result<X, D::Error> {
+    read(&Value::deserialize(d)?).map_err(|e| below(&e))
+}
+
+/// The elements of the array `value`, each read by `item` under its index, after `count` has
+/// accepted their number; `expected` says what `value` must be (`an array of points`).
+pub fn items<X>(
+    value: &Value,
+    expected: &str,
+    count: impl Fn(usize) -> Result<(), String>,
+    item: impl Fn(&Value) -> Result<X, Error>,
+) -> Result<Vec<X>, Error> {
+    let items = array(value, expected, &count)?;
+    let mut out = Vec::with_capacity(items.len());
+    for (k, x) in items.iter().enumerate() {
+        match item(x) {
+            Ok(x) => out.push(x),
+            Err(e) => return Err(under(&format!("[{k}]"), e)),
+        }
+    }
+    Ok(out)
+}
+
+/// The elements of `value` once `count` has accepted their number, or the refusal (the work
+/// of [`items`] apart from reading the elements, compiled once).
+fn array<'v>(
+    value: &'v Value,
+    expected: &str,
+    count: &dyn Fn(usize) -> Result<(), String>,
+) -> Result<&'v [Value], Error> {
+    let Value::Array(items) = value else {
+        let message = format!("expected {expected}, found {}", json_type(value));
+        return Err(Error::new("", message));
+    };
+    count(items.len()).map_err(|message| Error::new("", message))?;
+    Ok(items)
+}
+
+/// A list of values that read themselves (objects of a job, points), any number of them.
+#[derive(Clone, Debug)]
+pub struct List<E>(pub Vec<E>);
+
+impl<'de, E: DeserializeOwned> Deserialize<'de> for List<E> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        leaf(d, |v| items(v, "a sequence", any, object)).map(List)
+    }
+}
+
+/// The count of exactly `n` elements (`expected 3 corners, found 2`).
+pub fn exactly(n: usize, what: &'static str) -> impl Fn(usize) -> Result<(), String> {
+    move |found| match found == n {
+        true => Ok(()),
+        false => Err(format!("expected {n} {what}, found {found}")),
+    }
+}
+
+/// The count of at least one element (`expected at least one point, found none`).
+pub fn not_empty(what: &'static str) -> impl Fn(usize) -> Result<(), String> {
+    move |found| match found {
+        0 => Err(format!("expected at least one {what}, found none")),
+        _ => Ok(()),
+    }
+}
+
+/// Any count.
+pub fn any(_: usize) -> Result<(), String> {
+    Ok(())
+}
 
 /// A number type a job is read into: the arithmetic's rules for one JSON value (the messages of
 /// [`crate::number`]), and its exact value for the jobs that decide exactly.
@@ -469,11 +448,7 @@ impl<T: Reading> Reading for Written<T> {
             T::read(value)?.exact()
         } else {
             let double = f64_from_json(value)?;
-            let spelling = match value {
-                Value::Number(n) => Value::String(n.to_string()),
-                other => other.clone(),
-            };
-            match rational_from_json(&spelling) {
+            match rational_from_json(&Value::String(spelling(value))) {
                 _ if double == 0.0 => Rational::default(),
                 Ok(q) => q,
                 Err(_) => Rational::from_float(double).unwrap_or_default(),
@@ -487,29 +462,38 @@ impl<T: Reading> Reading for Written<T> {
     }
 }
 
-/// One number of a job, read by [`Reading`].
-#[derive(Clone, Debug)]
-pub struct Num<T>(pub T);
-
-impl<'de, T: Reading> Deserialize<'de> for Num<T> {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let value = Value::deserialize(d)?;
-        T::read(&value).map(Num).map_err(de::Error::custom)
+/// A number as written in the job (`0.1`, `"1/3"` as `1/3`), for messages.
+pub fn spelling(value: &Value) -> String {
+    match value {
+        Value::String(s) => s.clone(),
+        other => other.to_string(),
     }
 }
 
-/// Exactly `N` numbers (an interval, a rectangle, barycentric coordinates).
+/// One number of a job, read by [`Reading`].
+pub fn number<T: Reading>(value: &Value) -> Result<T, Error> {
+    T::read(value).map_err(|message| Error::new("", message))
+}
+
+/// `N` numbers, called `what` in a refusal of their count.
+fn numbers<T: Reading, const N: usize>(
+    value: &Value,
+    expected: &str,
+    what: &'static str,
+) -> Result<[T; N], Error> {
+    let numbers = items(value, expected, exactly(N, what), number)?;
+    Ok(numbers.try_into().unwrap_or_else(|_| unreachable!()))
+}
+
+/// Exactly `N` numbers (an interval, a rectangle).
 #[derive(Clone, Debug)]
 pub struct Numbers<T, const N: usize>(pub [T; N]);
 
 impl<'de, T: Reading, const N: usize> Deserialize<'de> for Numbers<T, N> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let expected = format!("an array of {N} numbers");
-        let items = counted::<D, Num<T>>(d, Count::Exactly(N, "numbers"), expected)?;
-        let numbers: Vec<T> = items.into_iter().map(|n| n.0).collect();
-        Ok(Numbers(
-            numbers.try_into().unwrap_or_else(|_| unreachable!()),
-        ))
+        leaf(d, |v| {
+            numbers(v, &format!("an array of {N} numbers"), "numbers").map(Numbers)
+        })
     }
 }
 
@@ -520,81 +504,21 @@ pub struct Corners<T, const D: usize>(pub [[T; D]; 3]);
 
 impl<'de, T: Reading, const D: usize> Deserialize<'de> for Corners<T, D> {
     fn deserialize<D2: Deserializer<'de>>(d: D2) -> Result<Self, D2::Error> {
-        let corners: Vec<Corner<T, D>> =
-            counted(d, Count::Exactly(3, "corners"), "an array of 3 corners")?;
-        let corners: Vec<[T; D]> = corners.into_iter().map(|c| c.0).collect();
-        Ok(Corners(
-            corners.try_into().unwrap_or_else(|_| unreachable!()),
-        ))
-    }
-}
-
-/// One corner of [`Corners`].
-struct Corner<T, const D: usize>([T; D]);
-
-impl<'de, T: Reading, const D: usize> Deserialize<'de> for Corner<T, D> {
-    fn deserialize<D2: Deserializer<'de>>(d: D2) -> Result<Self, D2::Error> {
-        let (noun, what) = match D {
+        let (what, expected) = match D {
             2 => ("coordinates", "a corner (an array of 2 numbers)"),
             _ => (
                 "barycentric coordinates",
                 "a corner (an array of 3 barycentric coordinates)",
             ),
         };
-        let items: Vec<Num<T>> = counted(d, Count::Exactly(D, noun), what)?;
-        let numbers: Vec<T> = items.into_iter().map(|n| n.0).collect();
-        Ok(Corner(
-            numbers.try_into().unwrap_or_else(|_| unreachable!()),
-        ))
+        let corner = |c: &Value| numbers(c, expected, what);
+        leaf(d, |v| {
+            let corners = items(v, "an array of 3 corners", exactly(3, "corners"), corner)?;
+            Ok(Corners(
+                corners.try_into().unwrap_or_else(|_| unreachable!()),
+            ))
+        })
     }
-}
-
-/// How many elements an array must have, and what they are called in messages.
-#[derive(Clone, Copy)]
-pub enum Count {
-    /// Exactly this many.
-    Exactly(usize, &'static str),
-    /// At least one.
-    NotEmpty(&'static str),
-    /// Any number.
-    Any,
-}
-
-/// The elements of an array, each read as `E`, their count checked before they are read.
-pub fn counted<'de, D: Deserializer<'de>, E: Deserialize<'de>>(
-    d: D,
-    count: Count,
-    expected: impl Into<String>,
-) -> Result<Vec<E>, D::Error> {
-    struct Items<E>(Count, String, PhantomData<E>);
-    impl<'de, E: Deserialize<'de>> Visitor<'de> for Items<E> {
-        type Value = Vec<E>;
-        fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-            f.write_str(&self.1)
-        }
-        fn visit_seq<A: de::SeqAccess<'de>>(self, mut seq: A) -> Result<Vec<E>, A::Error> {
-            let found = seq.size_hint().unwrap_or(0);
-            match self.0 {
-                Count::Exactly(n, what) if found != n => {
-                    return Err(de::Error::custom(format!(
-                        "expected {n} {what}, found {found}"
-                    )))
-                }
-                Count::NotEmpty(what) if found == 0 => {
-                    return Err(de::Error::custom(format!(
-                        "expected at least one {what}, found none"
-                    )))
-                }
-                _ => {}
-            }
-            let mut out = Vec::with_capacity(found);
-            while let Some(item) = seq.next_element()? {
-                out.push(item);
-            }
-            Ok(out)
-        }
-    }
-    d.deserialize_seq(Items(count, expected.into(), PhantomData))
 }
 
 /// "1 coordinate", "3 coordinates".
@@ -607,36 +531,37 @@ pub fn coordinates(d: usize) -> String {
 }
 
 /// A point of any dimension D >= 1.
-#[derive(Clone, Debug)]
-pub struct Point<T>(pub blossom::Point<T>);
-
-impl<'de, T: Reading> Deserialize<'de> for Point<T> {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let xs: Vec<Num<T>> = counted(
-            d,
-            Count::NotEmpty("coordinate"),
-            "a point (an array of numbers)",
-        )?;
-        Ok(Point(xs.into_iter().map(|x| x.0).collect()))
-    }
+pub fn point<T: Reading>(value: &Value) -> Result<blossom::Point<T>, Error> {
+    let expected = "a point (an array of numbers)";
+    items(value, expected, not_empty("coordinate"), number)
 }
 
 /// Refuses the first point (at `[k]` below the value read, `at(k)`) whose dimension is not
 /// that of the first.
-fn same_dimension<'a, T: 'a, E: de::Error>(
+fn same_dimension<'a, T: 'a>(
     points: impl Iterator<Item = (String, &'a blossom::Point<T>)>,
-) -> Result<(), E> {
+) -> Result<(), Error> {
     let mut dim = None;
     for (at, p) in points {
         match dim {
             Some(d) if d != p.len() => {
                 let message = format!("expected {}, found {}", coordinates(d), p.len());
-                return Err(below(&Error::new(at, message)));
+                return Err(Error::new(at, message));
             }
             _ => dim = Some(p.len()),
         }
     }
     Ok(())
+}
+
+/// A point of a job, its own field (the point of a `bezier-triangle` entry).
+#[derive(Clone, Debug)]
+pub struct Point<T>(pub blossom::Point<T>);
+
+impl<'de, T: Reading> Deserialize<'de> for Point<T> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        leaf(d, point).map(Point)
+    }
 }
 
 /// A non-empty list of points of one dimension (the coefficients of a curve, control points).
@@ -645,15 +570,25 @@ pub struct Points<T>(pub Vec<blossom::Point<T>>);
 
 impl<'de, T: Reading> Deserialize<'de> for Points<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let points: Vec<Point<T>> = counted(d, Count::NotEmpty("point"), "an array of points")?;
-        let points: Vec<_> = points.into_iter().map(|p| p.0).collect();
-        same_dimension(
-            points
-                .iter()
-                .enumerate()
-                .map(|(k, p)| (format!("[{k}]"), p)),
-        )?;
-        Ok(Points(points))
+        leaf(d, |v| {
+            let points = items(v, "an array of points", not_empty("point"), point)?;
+            same_dimension(
+                points
+                    .iter()
+                    .enumerate()
+                    .map(|(k, p)| (format!("[{k}]"), p)),
+            )?;
+            Ok(Points(points))
+        })
+    }
+}
+
+impl<T> Points<T> {
+    /// The degree n of the curve of these points (their number minus one) and their dimension,
+    /// for estimates.
+    pub fn sizes(&self) -> (f64, f64) {
+        let d = self.0.first().map_or(1, Vec::len).max(1);
+        ((self.0.len() as f64 - 1.0).max(0.0), d as f64)
     }
 }
 
@@ -662,26 +597,28 @@ impl<'de, T: Reading> Deserialize<'de> for Points<T> {
 #[derive(Clone, Debug)]
 pub struct Rows<T>(pub Vec<Vec<blossom::Point<T>>>);
 
-/// A row of [`Rows`].
-struct Row<T>(Vec<blossom::Point<T>>);
-
-impl<'de, T: Reading> Deserialize<'de> for Row<T> {
+impl<'de, T: Reading> Deserialize<'de> for Rows<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let points: Vec<Point<T>> = counted(d, Count::Any, "a row of points (an array)")?;
-        Ok(Row(points.into_iter().map(|p| p.0).collect()))
+        let row = |r: &Value| items(r, "a row of points (an array)", any, point);
+        leaf(d, |v| {
+            let rows = items(v, "an array of rows of points", any, row)?;
+            same_dimension(rows.iter().enumerate().flat_map(|(i, row)| {
+                let at = move |(j, p)| (format!("[{i}][{j}]"), p);
+                row.iter().enumerate().map(at)
+            }))?;
+            Ok(Rows(rows))
+        })
     }
 }
 
-impl<'de, T: Reading> Deserialize<'de> for Rows<T> {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let rows: Vec<Row<T>> = counted(d, Count::Any, "an array of rows of points")?;
-        let rows: Vec<_> = rows.into_iter().map(|r| r.0).collect();
-        same_dimension(rows.iter().enumerate().flat_map(|(i, row)| {
-            row.iter()
-                .enumerate()
-                .map(move |(j, p)| (format!("[{i}][{j}]"), p))
-        }))?;
-        Ok(Rows(rows))
+impl<T> Rows<T> {
+    /// The number of rows, that of the first row's points and their dimension (1 without
+    /// them), for estimates.
+    pub fn sizes(&self) -> (f64, f64, f64) {
+        let first = self.0.first();
+        let d = first.and_then(|row| row.first()).map_or(1, Vec::len).max(1);
+        let columns = first.map_or(0, Vec::len);
+        (self.0.len() as f64, columns as f64, d as f64)
     }
 }
 
@@ -736,25 +673,15 @@ pub fn triangular<X>(rows: &[Vec<X>], path: &str, big_n: usize, what: &str) -> R
     Ok(())
 }
 
-/// Rows of numbers (the grid of a rational surface's denominator).
+/// Rows of numbers (the grid of a rational surface's denominator), each row non-empty.
 #[derive(Clone, Debug)]
 pub struct NumberRows<T>(pub Vec<Vec<T>>);
 
 impl<'de, T: Reading> Deserialize<'de> for NumberRows<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let rows: Vec<NumberRow<T>> = counted(d, Count::Any, "an array of rows of numbers")?;
-        Ok(NumberRows(rows.into_iter().map(|r| r.0).collect()))
-    }
-}
-
-/// A row of numbers.
-struct NumberRow<T>(Vec<T>);
-
-impl<'de, T: Reading> Deserialize<'de> for NumberRow<T> {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let items: Vec<Num<T>> =
-            counted(d, Count::NotEmpty("number"), "a row of numbers (an array)")?;
-        Ok(NumberRow(items.into_iter().map(|n| n.0).collect()))
+        let expected = "a row of numbers (an array)";
+        let row = |r: &Value| items(r, expected, not_empty("number"), number);
+        leaf(d, |v| items(v, "an array of rows of numbers", any, row)).map(NumberRows)
     }
 }
 
@@ -764,8 +691,7 @@ pub struct NumberList<T>(pub Vec<T>);
 
 impl<'de, T: Reading> Deserialize<'de> for NumberList<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let items: Vec<Num<T>> = counted(d, Count::Any, "an array of numbers")?;
-        Ok(NumberList(items.into_iter().map(|n| n.0).collect()))
+        leaf(d, |v| items(v, "an array of numbers", any, number)).map(NumberList)
     }
 }
 
@@ -782,28 +708,33 @@ pub struct Degree(pub usize);
 
 impl<'de> Deserialize<'de> for Degree {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let value = Value::deserialize(d)?;
-        let text = match &value {
-            Value::Number(n) => n.to_string(),
-            Value::String(s) => s.trim().to_string(),
-            other => {
-                return Err(de::Error::custom(format!(
-                    "expected a non-negative integer, found {}",
-                    json_type(other)
-                )))
-            }
-        };
-        if text.is_empty() || !text.bytes().all(|b| b.is_ascii_digit()) {
-            return Err(de::Error::custom(format!(
-                "expected a non-negative integer, found {text:?}"
-            )));
+        leaf(d, degree).map(Degree)
+    }
+}
+
+/// A degree (see [`Degree`]).
+pub fn degree(value: &Value) -> Result<usize, Error> {
+    let text = match value {
+        Value::Number(n) => n.to_string(),
+        Value::String(s) => s.trim().to_string(),
+        other => {
+            let found = json_type(other);
+            return Err(Error::new(
+                "",
+                format!("expected a non-negative integer, found {found}"),
+            ));
         }
-        match text.parse::<usize>() {
-            Ok(d) if d <= MAX_DEGREE => Ok(Degree(d)),
-            _ => Err(de::Error::custom(format!(
-                "expected a degree of at most {MAX_DEGREE}, found {text}"
-            ))),
-        }
+    };
+    if text.is_empty() || !text.bytes().all(|b| b.is_ascii_digit()) {
+        let message = format!("expected a non-negative integer, found {text:?}");
+        return Err(Error::new("", message));
+    }
+    match text.parse::<usize>() {
+        Ok(d) if d <= MAX_DEGREE => Ok(d),
+        _ => Err(Error::new(
+            "",
+            format!("expected a degree of at most {MAX_DEGREE}, found {text}"),
+        )),
     }
 }
 
@@ -822,30 +753,26 @@ pub struct Name<E>(pub E);
 impl<'de, E: Named> Deserialize<'de> for Name<E> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let names: Vec<&str> = E::NAMES.iter().map(|(n, _)| *n).collect();
-        match Value::deserialize(d)? {
+        let refusal = |message: String| Error::new("", message);
+        leaf(d, |value| match value {
             Value::String(name) => E::NAMES
                 .iter()
-                .find(|(n, _)| *n == name)
+                .find(|(n, _)| n == name)
                 .map(|(_, e)| Name(*e))
                 .ok_or_else(|| {
-                    de::Error::custom(format!(
+                    refusal(format!(
                         "unknown {} {}{} (expected {})",
                         E::WHAT,
-                        quoted(&name),
-                        did_you_mean(&name, &names),
+                        quoted(name),
+                        did_you_mean(name, &names),
                         listed(&names)
                     ))
                 }),
-            other => Err(de::Error::custom(format!(
+            other => Err(refusal(format!(
                 "expected a string ({}), found {}",
                 listed(&names),
-                json_type(&other)
+                json_type(other)
             ))),
-        }
+        })
     }
-}
-
-/// An exact number as the contract writes it, for messages (`1/2`).
-pub fn shown(q: &Rational) -> String {
-    format_rational(q).unwrap_or_else(|_| q.to_string())
 }

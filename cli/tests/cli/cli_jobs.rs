@@ -276,6 +276,31 @@ fn an_open_loop_names_the_later_curve_under_the_job_path() {
     );
 }
 
+/// Issue 47 (a friction): an open loop is quoted with its numbers as written in the job, not
+/// as the exact value of the double nearest to them (`0.1`, not
+/// `3602879701896397/36028797018963968`), under either arithmetic.
+#[test]
+fn an_open_loop_quotes_its_numbers_as_written() {
+    let region = |args: &[&str], job: &Value| {
+        let args: Vec<std::ffi::OsString> = args.iter().map(Into::into).collect();
+        let out = blossom_cli::jobs::run(&args, &mut job.to_string().as_bytes());
+        assert_eq!(out.code, 2, "{}", out.stdout);
+        out.stderr.trim_end().to_string()
+    };
+    let r = json!({"loops": [[[[0, 0], [1, 0]], [[1, 0.1], [0, 0]]]]});
+    let job = json!({"kind": "simplify", "region": r});
+    assert_eq!(
+        region(&["region", "--arithmetic", "f64"], &job),
+        "error: region.loops[0][1]: starts at (1, 0.1), the previous curve ends at (1, 0)"
+    );
+    let r = json!({"loops": [[[["0.50", 0], [1, 0]], [[1, 0], [0, "1e-1"]]]]});
+    let job = json!({"kind": "winding", "region": r, "points": []});
+    let expected =
+        "error: region.loops[0][0]: starts at (0.50, 0), the previous curve ends at (0, 1e-1)";
+    assert_eq!(region(&["region"], &job), expected);
+    assert_eq!(region(&["region", "--arithmetic", "f64"], &job), expected);
+}
+
 #[test]
 fn a_triangle_with_too_few_nodes_names_its_nodes() {
     let good = json!({"degree": 1, "nodes": [[0, 0], [1, 0], [0, 1]]});

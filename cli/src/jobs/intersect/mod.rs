@@ -12,25 +12,24 @@
 //! of degrees n and m has degree n m) and with the bit length of the integers the exact
 //! methods compute with, so a job is refused when a curve's degree is over
 //! [`MAX_CURVE_DEGREE`] or a Bézier function's over [`MAX_FUNCTION_DEGREE`] (naming the
-//! field, before its numbers are read); then twice, as for `restrict`:
-//! 1. before computing, when its estimated work ([`blossom::budget::bezier_zeros_work`],
-//!    [`blossom::budget::curve_pair_work`]: the float filter runs first, and when it decides
-//!    only the two resultants and one Descartes test per crossing remain;
-//!    [`blossom::budget::self_intersection_work`]) is over [`UP_FRONT_FACTOR`] times
-//!    `--max-work` ([`within_budget`]), naming `control_points`, `curves` or `curve`;
-//! 2. while computing, under the work meter ([`super::cost::metered`]), which the exact
-//!    methods charge as they go.
+//! field, before its numbers are read); then by the work budget ([`certified`]), before
+//! computing from the library's estimate ([`blossom::budget::bezier_zeros_work`],
+//! [`blossom::budget::curve_pair_work`]: the float filter runs first, and when it decides only
+//! the two resultants and one Descartes test per crossing remain;
+//! [`blossom::budget::self_intersection_work`]), naming `control_points`, `curves` or `curve`,
+//! and while computing under the work meter, which the exact methods charge as they go.
 
 pub mod curve_curve;
 pub mod roots;
 pub mod self_intersections;
 
-use super::read::{counted, Count, Num, Reading};
+use super::cost::metered;
+use super::kind::Context;
+use super::read::{items, leaf, number, spelling, Reading};
 use super::write::{Double, Param};
 use blossom::{Error, Intersections, Rational};
-use serde::de::{self, SeqAccess, Visitor};
 use serde::{Deserialize, Deserializer, Serialize};
-use std::fmt;
+use serde_json::Value;
 use std::marker::PhantomData;
 
 /// The largest degree of a curve of a `curve-curve` or `self` job. Below it the work budget
@@ -64,92 +63,108 @@ pub fn within_budget(path: &str, work: u128, max_work: u64) -> Result<(), Error>
     ))
 }
 
+/// Computes a certified job (of `blossom intersect` or `blossom region`) within the budget:
+/// refused up front when its estimated `work` is over [`UP_FRONT_FACTOR`] times `--max-work`
+/// ([`within_budget`]), else computed under the work meter; both refusals name `path`.
+pub fn certified<R>(
+    context: &Context,
+    path: &str,
+    work: u128,
+    compute: impl FnOnce() -> Result<R, Error>,
+) -> Result<R, Error> {
+    within_budget(path, work, context.limits.max_work)?;
+    metered(&context.limits, path, compute)
+}
+
 /// `error` re-addressed to `path` (the library names its own arguments).
 pub fn at(path: &str, error: Error) -> Error {
     Error::of(error.kind, path, error.message)
 }
 
 /// Which subcommand's curves: the degree limit and the words of its messages.
-pub trait Curves {
+#[derive(Clone, Copy, Debug)]
+pub struct Curves {
     /// The largest degree.
-    const MAX: usize;
+    pub max: usize,
     /// The subcommand, in messages (`blossom intersect`).
-    const SUBCOMMAND: &'static str;
+    pub subcommand: &'static str,
     /// What its shapes are (`curves are 2-D`).
-    const PLANAR: &'static str;
+    pub planar: &'static str,
     /// Whether fewer than 2 control points are refused here (else by the library).
-    const AT_LEAST_TWO: bool;
+    pub at_least_two: bool,
 }
 
 /// The curves of `blossom intersect`.
-#[derive(Clone, Copy, Debug)]
-pub struct Intersect;
+pub const INTERSECT: Curves = Curves {
+    max: MAX_CURVE_DEGREE,
+    subcommand: "blossom intersect",
+    planar: "coordinates (curves are 2-D)",
+    at_least_two: true,
+};
 
-impl Curves for Intersect {
-    const MAX: usize = MAX_CURVE_DEGREE;
-    const SUBCOMMAND: &'static str = "blossom intersect";
-    const PLANAR: &'static str = "coordinates (curves are 2-D)";
-    const AT_LEAST_TWO: bool = true;
+/// The control points of a 2-D curve read exactly, and its first and last points as written
+/// (`(1, 0.1)`, for messages).
+#[derive(Clone, Debug)]
+pub struct Curve2 {
+    /// The control points.
+    pub points: Vec<[Rational; 2]>,
+    /// The first and the last point as written.
+    pub ends: [String; 2],
 }
 
-/// A point `[x, y]`, read exactly as the arithmetic `T` reads it (`C`: whose shapes).
-#[derive(Clone, Debug)]
-pub struct Point2<T, C>(pub [Rational; 2], PhantomData<(T, C)>);
-
-impl<'de, T: Reading, C: Curves> Deserialize<'de> for Point2<T, C> {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let xy: Vec<Num<T>> = counted(d, Count::Exactly(2, C::PLANAR), "a point [x, y]")?;
-        Ok(Point2([xy[0].0.exact(), xy[1].0.exact()], PhantomData))
+impl Curves {
+    /// A point `[x, y]`, read exactly as the arithmetic `T` reads it.
+    pub fn point<T: Reading>(self, value: &Value) -> Result<[Rational; 2], Error> {
+        let count = super::read::exactly(2, self.planar);
+        let xy: Vec<T> = items(value, "a point [x, y]", count, number)?;
+        Ok([xy[0].exact(), xy[1].exact()])
     }
-}
 
-/// The control points of a 2-D curve of degree at most `C::MAX`, its number of points checked
-/// before its numbers are read.
-#[derive(Clone, Debug)]
-pub struct Curve2<T, C>(pub Vec<[Rational; 2]>, PhantomData<(T, C)>);
-
-impl<'de, T: Reading, C: Curves> Deserialize<'de> for Curve2<T, C> {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        struct V<T, C>(PhantomData<(T, C)>);
-        impl<'de, T: Reading, C: Curves> Visitor<'de> for V<T, C> {
-            type Value = Curve2<T, C>;
-            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str("a curve (an array of 2-D control points)")
-            }
-            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
-                let found = seq.size_hint().unwrap_or(0);
-                if C::AT_LEAST_TWO && found < 2 {
-                    return Err(de::Error::custom(format!(
-                        "expected at least 2 control points (a curve of degree n >= 1 has n + 1), found {found}"
-                    )));
-                }
-                if found > C::MAX + 1 {
-                    return Err(de::Error::custom(over_degree::<C>(found - 1)));
-                }
-                let mut points = Vec::with_capacity(found);
-                while let Some(p) = seq.next_element::<Point2<T, C>>()? {
-                    points.push(p.0);
-                }
-                Ok(Curve2(points, PhantomData))
-            }
+    /// A curve: its number of points checked (at most `max` + 1) before they are read.
+    pub fn curve<T: Reading>(self, value: &Value) -> Result<Curve2, Error> {
+        let count = |found: usize| {
+            match found {
+            _ if self.at_least_two && found < 2 => Err(format!(
+                "expected at least 2 control points (a curve of degree n >= 1 has n + 1), found {found}"
+            )),
+            _ if found > self.max + 1 => Err(self.over_degree(found - 1)),
+            _ => Ok(()),
         }
-        d.deserialize_seq(V(PhantomData))
+        };
+        let expected = "a curve (an array of 2-D control points)";
+        let points = items(value, expected, count, |p| self.point::<T>(p))?;
+        let shown = |p: Option<&Value>| match p {
+            Some(Value::Array(xy)) => format!("({}, {})", spelling(&xy[0]), spelling(&xy[1])),
+            _ => String::new(),
+        };
+        let ends = match value {
+            Value::Array(items) => [shown(items.first()), shown(items.last())],
+            _ => Default::default(),
+        };
+        Ok(Curve2 { points, ends })
+    }
+
+    /// `degree N is over the limit of MAX of SUBCOMMAND`.
+    pub fn over_degree(self, degree: usize) -> String {
+        format!(
+            "degree {degree} is over the limit of {} of {}",
+            self.max, self.subcommand
+        )
     }
 }
 
-/// `degree N is over the limit of MAX of SUBCOMMAND`.
-pub fn over_degree<C: Curves>(degree: usize) -> String {
-    format!(
-        "degree {degree} is over the limit of {} of {}",
-        C::MAX,
-        C::SUBCOMMAND
-    )
-}
+/// A curve of `blossom intersect` ([`INTERSECT`]), read as the arithmetic `T` reads numbers.
+#[derive(Clone, Debug)]
+pub struct Curve<T>(pub Vec<[Rational; 2]>, PhantomData<T>);
 
+impl<'de, T: Reading> Deserialize<'de> for Curve<T> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        leaf(d, |v| INTERSECT.curve::<T>(v)).map(|c| Curve(c.points, PhantomData))
+    }
+}
 /// The answer of a `curve-curve` or `self` job.
 #[derive(Serialize)]
 pub struct IntersectionsAnswer {
-    kind: &'static str,
     points: Vec<PointAnswer>,
     overlaps: Vec<OverlapAnswer>,
 }
@@ -169,10 +184,9 @@ struct OverlapAnswer {
 }
 
 impl IntersectionsAnswer {
-    /// The answer of the job `kind` that found `found`.
-    pub fn of(kind: &'static str, found: &Intersections) -> Self {
+    /// The answer of a job that found `found`.
+    pub fn of(found: &Intersections) -> Self {
         IntersectionsAnswer {
-            kind,
             points: found
                 .points
                 .iter()

@@ -15,43 +15,34 @@
 //!
 //! * Curve and triangle degrees 1..=[`MAX_REGION_DEGREE`] (the contract asks for 10); a
 //!   longer curve is refused before its numbers are read.
-//! * The work of a `boolean`, `simplify` or `triangle-triangle` job is the library's
-//!   estimate ([`blossom::region::boolean_work`]) in nanoseconds of a 2-core machine; a job
-//!   whose estimate is over twice `--max-work` is refused up front
-//!   ([`within_budget`](super::intersect::within_budget)) naming `regions` (`region`,
-//!   `triangles`); what it lets through runs under the work meter
-//!   ([`super::cost::metered`]), which stops it at `--max-work` naming the same field. The
-//!   answer is written under the meter as well: the exact parameters of the crossings the
-//!   float path proved are computed there.
-//! * The work of a `winding` job is [`Region::winding_work`], refused over twice `--max-work`
-//!   naming `points`, and metered the same way.
+//! * The work budget as for `blossom intersect` ([`certified`](super::intersect::certified)),
+//!   from the library's estimate ([`blossom::region::boolean_work`], [`Region::winding_work`])
+//!   and under the meter, naming `regions` (`region`, `triangles`, `points`). The answer is
+//!   written under the meter as well: the exact parameters of the crossings the float path
+//!   proved are computed there.
 
 pub mod boolean;
 pub mod simplify;
 pub mod triangle_triangle;
 pub mod winding;
 
-use super::intersect::{over_degree, Curve2, Curves};
-use super::read::{below, counted, Count, Name, Named, Reading};
+use super::intersect::{Curve2, Curves};
+use super::read::{any, below, exactly, items, leaf, object, List, Name, Named, Reading};
 use super::write::{write, Double, Param};
 use blossom::region::MAX_REGION_DEGREE;
 use blossom::region::{parse_svg_path, BooleanOp, Edge, FillRule, Region, RegionResult};
-use blossom::Error;
-use serde::de::{self, Deserializer};
-use serde::{Deserialize, Serialize};
+use blossom::{Error, ErrorKind, Rational};
+use serde::{Deserialize, Deserializer, Serialize};
 use serde_json::Value;
 use std::marker::PhantomData;
 
 /// The curves of `blossom region`.
-#[derive(Clone, Copy, Debug)]
-pub struct RegionCurves;
-
-impl Curves for RegionCurves {
-    const MAX: usize = MAX_REGION_DEGREE;
-    const SUBCOMMAND: &'static str = "blossom region";
-    const PLANAR: &'static str = "coordinates (regions are 2-D)";
-    const AT_LEAST_TWO: bool = false;
-}
+pub const REGION: Curves = Curves {
+    max: MAX_REGION_DEGREE,
+    subcommand: "blossom region",
+    planar: "coordinates (regions are 2-D)",
+    at_least_two: false,
+};
 
 impl Named for FillRule {
     const WHAT: &'static str = "fill rule";
@@ -84,34 +75,35 @@ pub struct RegionShape<T>(pub Region, PhantomData<T>);
     expecting = "a region {\"loops\": [...], \"fill\": ...}"
 )]
 struct RegionFields<T> {
-    loops: Option<Vec<Loop<T>>>,
+    loops: Option<List<Loop<T>>>,
     path: Option<String>,
     fill: Option<Name<FillRule>>,
 }
 
 /// A LOOP: its curves.
-struct Loop<T>(Vec<Curve2<T, RegionCurves>>);
+struct Loop<T>(Vec<Curve2>, PhantomData<T>);
 
 impl<'de, T: Reading> Deserialize<'de> for Loop<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        counted(d, Count::Any, "a loop (an array of curves)").map(Loop)
+        let curve = |c: &Value| REGION.curve::<T>(c);
+        leaf(d, |v| items(v, "a loop (an array of curves)", any, curve))
+            .map(|l| Loop(l, PhantomData))
     }
 }
 
 impl<'de, T: Reading> Deserialize<'de> for RegionShape<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let fields = RegionFields::<T>::deserialize(d)?;
-        let loops = match (fields.loops, fields.path) {
-            (Some(loops), None) => loops
-                .into_iter()
-                .map(|l| l.0.into_iter().map(|c| blossom::Bezier::new(c.0)).collect())
-                .collect::<Result<Vec<Vec<_>>, Error>>(),
+        let fill = fields.fill.map_or(FillRule::NonZero, |f| f.0);
+        let region = match (fields.loops, fields.path) {
+            (Some(loops), None) => from_loops(loops.0.into_iter().map(|l| l.0).collect(), fill),
             (None, Some(path)) => parse_svg_path(&path, |text| {
                 T::read(&Value::String(text.to_string()))
                     .map(|x| x.exact())
                     .map_err(|message| Error::new("", message))
             })
-            .map_err(|e| Error::of(e.kind, "path", e.message)),
+            .map_err(|e| Error::of(e.kind, "path", e.message))
+            .and_then(|loops| Region::new(loops, fill)),
             (None, None) => Err(Error::new(
                 "loops",
                 "missing field (a region is {\"loops\": [...]} or {\"path\": SVG path data})",
@@ -120,12 +112,48 @@ impl<'de, T: Reading> Deserialize<'de> for RegionShape<T> {
                 "path",
                 "a region has \"loops\" or \"path\", not both",
             )),
-        }
-        .map_err(|e| below(&e))?;
-        let fill = fields.fill.map_or(FillRule::NonZero, |f| f.0);
-        Region::new(loops, fill)
+        };
+        region
             .map(|r| RegionShape(r, PhantomData))
             .map_err(|e| below(&e))
+    }
+}
+
+/// The region of `loops` under `fill` ([`Region::new`]); a curve that does not start where the
+/// previous one ends is named with both points as written (`starts at (1, 0.1)`, not the exact
+/// value of the double nearest to 0.1).
+fn from_loops(loops: Vec<Vec<Curve2>>, fill: FillRule) -> Result<Region, Error> {
+    type Ends = Vec<[String; 2]>;
+    let (points, ends): (Vec<Vec<_>>, Vec<Ends>) = loops
+        .into_iter()
+        .map(|curves| curves.into_iter().map(|c| (c.points, c.ends)).unzip())
+        .unzip();
+    let bezier = |curves: Vec<_>| curves.into_iter().map(blossom::Bezier::new).collect();
+    let exact = points
+        .into_iter()
+        .map(bezier)
+        .collect::<Result<_, Error>>()?;
+    Region::new(exact, fill).map_err(|e| {
+        let open = ends.iter().enumerate().find_map(|(l, curves)| {
+            let c = (0..curves.len()).find(|c| e.field == format!("loops[{l}][{c}]"))?;
+            let previous = &curves[(c + curves.len() - 1) % curves.len()];
+            let message = format!(
+                "starts at {}, the previous curve ends at {}",
+                curves[c][0], previous[1]
+            );
+            (e.kind == ErrorKind::Shape).then(|| Error::of(e.kind, e.field.clone(), message))
+        });
+        open.unwrap_or(e)
+    })
+}
+
+/// A point `[x, y]` of `blossom region` (of a triangle, or where a winding number is asked).
+#[derive(Clone, Debug)]
+pub struct Point2<T>(pub [Rational; 2], PhantomData<T>);
+
+impl<'de, T: Reading> Deserialize<'de> for Point2<T> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        leaf(d, |v| REGION.point::<T>(v)).map(|p| Point2(p, PhantomData))
     }
 }
 
@@ -142,7 +170,7 @@ pub struct TriangleShape<T>(pub Region, PhantomData<T>);
 )]
 struct TriangleFields<T> {
     degree: TriangleDegree,
-    nodes: Vec<super::intersect::Point2<T, RegionCurves>>,
+    nodes: List<Point2<T>>,
 }
 
 /// The degree of a triangle: a JSON integer, at most [`MAX_REGION_DEGREE`].
@@ -150,27 +178,29 @@ struct TriangleDegree(usize);
 
 impl<'de> Deserialize<'de> for TriangleDegree {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let value = Value::deserialize(d)?;
-        let found = match &value {
-            Value::Number(n) => n.to_string(),
-            other => crate::number::json_type(other).to_string(),
-        };
-        let degree = value.as_u64().ok_or_else(|| {
-            de::Error::custom(format!("expected an integer n >= 1, found {found}"))
-        })?;
-        match usize::try_from(degree) {
-            Ok(n) if n <= MAX_REGION_DEGREE => Ok(TriangleDegree(n)),
-            _ => Err(de::Error::custom(over_degree::<RegionCurves>(
-                usize::try_from(degree).unwrap_or(usize::MAX),
-            ))),
-        }
+        leaf(d, |value| {
+            let found = match value {
+                Value::Number(n) => n.to_string(),
+                other => crate::number::json_type(other).to_string(),
+            };
+            let degree = value.as_u64().ok_or_else(|| {
+                Error::new("", format!("expected an integer n >= 1, found {found}"))
+            })?;
+            match usize::try_from(degree) {
+                Ok(n) if n <= MAX_REGION_DEGREE => Ok(TriangleDegree(n)),
+                _ => Err(Error::new(
+                    "",
+                    REGION.over_degree(degree.try_into().unwrap_or(usize::MAX)),
+                )),
+            }
+        })
     }
 }
 
 impl<'de, T: Reading> Deserialize<'de> for TriangleShape<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let fields = TriangleFields::<T>::deserialize(d)?;
-        let nodes = fields.nodes.into_iter().map(|p| p.0).collect();
+        let nodes = fields.nodes.0.into_iter().map(|p| p.0).collect();
         Region::triangle(fields.degree.0, nodes)
             .map(|r| TriangleShape(r, PhantomData))
             .map_err(|e| below(&e))
@@ -181,14 +211,11 @@ impl<'de, T: Reading> Deserialize<'de> for TriangleShape<T> {
 #[derive(Clone, Debug)]
 pub struct Two<S>(pub [S; 2]);
 
-impl<'de, S: Deserialize<'de> + Plural> Deserialize<'de> for Two<S> {
+impl<'de, S: serde::de::DeserializeOwned + Plural> Deserialize<'de> for Two<S> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let items: Vec<S> = counted(
-            d,
-            Count::Exactly(2, S::PLURAL),
-            format!("an array of two {}", S::PLURAL),
-        )?;
-        Ok(Two(items.try_into().unwrap_or_else(|_| unreachable!())))
+        let expected = format!("an array of two {}", S::PLURAL);
+        let two = leaf(d, |v| items(v, &expected, exactly(2, S::PLURAL), object))?;
+        Ok(Two(two.try_into().unwrap_or_else(|_| unreachable!())))
     }
 }
 
@@ -210,7 +237,6 @@ impl<T> Plural for TriangleShape<T> {
 /// oriented simple loops of edges, an enclosure of its area and its SVG path data.
 #[derive(Serialize)]
 pub struct RegionAnswer {
-    kind: &'static str,
     loops: Vec<LoopAnswer>,
     area: [Double; 2],
     /// The result as SVG path data (`null` when an edge has degree over 3).
@@ -237,57 +263,33 @@ struct EdgeAnswer {
 }
 
 impl RegionAnswer {
-    /// The answer of the job `kind` (`triangle_edges`: edges numbered as a
-    /// `triangle-triangle` answer numbers them) as JSON.
-    pub fn write(
-        kind: &'static str,
-        result: &RegionResult,
-        triangle_edges: bool,
-    ) -> Result<Value, Error> {
+    /// The answer of `result` (`triangle_edges`: edges numbered as a `triangle-triangle`
+    /// answer numbers them) as JSON.
+    pub fn write(result: &RegionResult, triangle_edges: bool) -> Result<Value, Error> {
         let edge = |e: &Edge| -> Result<EdgeAnswer, Error> {
-            let (from, to) = (Param::of(e.from.algebraic()?), Param::of(e.to.algebraic()?));
-            Ok(if triangle_edges {
-                EdgeAnswer {
-                    region: None,
-                    loop_index: None,
-                    curve: e.triangle_edge(),
-                    from,
-                    to,
-                }
-            } else {
-                EdgeAnswer {
-                    region: Some(e.region),
-                    loop_index: Some(e.loop_index),
-                    curve: e.curve,
-                    from,
-                    to,
-                }
+            Ok(EdgeAnswer {
+                region: (!triangle_edges).then_some(e.region),
+                loop_index: (!triangle_edges).then_some(e.loop_index),
+                curve: if triangle_edges {
+                    e.triangle_edge()
+                } else {
+                    e.curve
+                },
+                from: Param::of(e.from.algebraic()?),
+                to: Param::of(e.to.algebraic()?),
             })
         };
-        let loops = result
-            .loops
-            .iter()
-            .map(|l| {
-                Ok(LoopAnswer {
-                    hole: l.hole,
-                    edges: l.edges.iter().map(edge).collect::<Result<_, Error>>()?,
-                })
+        let loops = result.loops.iter().map(|l| {
+            let edges = l.edges.iter().map(edge).collect::<Result<_, Error>>()?;
+            Ok(LoopAnswer {
+                hole: l.hole,
+                edges,
             })
-            .collect::<Result<_, Error>>()?;
+        });
         write(&RegionAnswer {
-            kind,
-            loops,
+            loops: loops.collect::<Result<_, Error>>()?,
             area: [Double(result.area[0]), Double(result.area[1])],
             svg: result.svg(),
         })
     }
 }
-
-/// `error` re-addressed under `path` (the library names its own arguments).
-pub fn at(path: &str, error: Error) -> Error {
-    let field = super::read::joined(path, &error.field);
-    Error::of(error.kind, field, error.message)
-}
-
-/// The points of a `winding` job.
-pub type Points<T> = Vec<super::intersect::Point2<T, RegionCurves>>;

@@ -2,16 +2,11 @@
 //! loops (overlap removal, [`blossom::region::simplify`]), answered in the form of a `boolean`
 //! answer whose edges all name `"region": 0`.
 
-use super::{at, RegionAnswer, RegionShape};
-use crate::jobs::cost::metered;
-use crate::jobs::intersect::within_budget;
-use crate::jobs::kind::{Context, Kind};
-use crate::jobs::read::Reading;
+use super::{RegionAnswer, RegionShape};
+use crate::jobs::intersect::certified;
+use crate::jobs::kind::prelude::*;
 use crate::jobs::restrict::Number;
 use blossom::region::{simplify, simplify_work};
-use blossom::Error;
-use serde::Deserialize;
-use serde_json::Value;
 
 /// The job.
 #[derive(Debug, Deserialize)]
@@ -24,10 +19,9 @@ pub struct Simplify<T> {
 impl<T: Number> Kind for Simplify<T> {
     fn solve(self, context: &Context) -> Result<Value, Error> {
         let a = self.region.0;
-        within_budget("region", simplify_work(&a), context.limits.max_work)?;
-        metered(&context.limits, "region", || {
-            let result = simplify(&a).map_err(|e| at("region", e))?;
-            RegionAnswer::write("simplify", &result, false)
+        certified(context, "region", simplify_work(&a), || {
+            let result = simplify(&a).map_err(|e| under("region", e))?;
+            RegionAnswer::write(&result, false)
         })
     }
 }

@@ -1,17 +1,11 @@
 //! `"kind": "winding"`: for each point its exact winding number around the region's loops and
 //! where the fill rule puts it; a point on a loop is `"boundary"` with `"winding": null`.
 
-use super::{Points, RegionShape};
-use crate::jobs::cost::metered;
-use crate::jobs::intersect::within_budget;
-use crate::jobs::kind::{Context, Kind};
-use crate::jobs::read::Reading;
+use super::{Point2, RegionShape};
+use crate::jobs::intersect::certified;
+use crate::jobs::kind::prelude::*;
 use crate::jobs::restrict::Number;
-use crate::jobs::write::write;
 use blossom::region::Winding as Found;
-use blossom::Error;
-use serde::{Deserialize, Serialize};
-use serde_json::Value;
 
 /// The job.
 #[derive(Debug, Deserialize)]
@@ -20,13 +14,12 @@ pub struct Winding<T> {
     /// A.
     region: RegionShape<T>,
     /// The points.
-    points: Points<T>,
+    points: List<Point2<T>>,
 }
 
 /// The answer.
 #[derive(Serialize)]
 struct Answer {
-    kind: &'static str,
     points: Vec<Position>,
 }
 
@@ -39,32 +32,21 @@ struct Position {
 impl<T: Number> Kind for Winding<T> {
     fn solve(self, context: &Context) -> Result<Value, Error> {
         let region = self.region.0;
-        let points: Vec<_> = self.points.into_iter().map(|p| p.0).collect();
-        within_budget(
-            "points",
-            region.winding_work(points.len()),
-            context.limits.max_work,
-        )?;
+        let points: Vec<_> = self.points.0.into_iter().map(|p| p.0).collect();
         let fill = region.fill();
-        metered(&context.limits, "points", || {
-            let points = region
-                .windings(&points)
-                .into_iter()
-                .map(|w| match w {
-                    Found::Boundary => Position {
-                        position: "boundary",
-                        winding: None,
-                    },
-                    Found::Number(k) => Position {
-                        position: if fill.inside(k) { "inside" } else { "outside" },
-                        winding: Some(k),
-                    },
-                })
-                .collect();
-            write(&Answer {
-                kind: "winding",
-                points,
-            })
+        let position = |w| match w {
+            Found::Boundary => Position {
+                position: "boundary",
+                winding: None,
+            },
+            Found::Number(k) => Position {
+                position: if fill.inside(k) { "inside" } else { "outside" },
+                winding: Some(k),
+            },
+        };
+        certified(context, "points", region.winding_work(points.len()), || {
+            let points = region.windings(&points).into_iter().map(position).collect();
+            write(&Answer { points })
         })
     }
 }

@@ -6,17 +6,12 @@
 //! other methods write the curve in the power basis (exactly) and restrict it like a `curve`.
 
 use super::{specialised, Number, Restricted};
-use crate::jobs::args::MethodChoice;
-use crate::jobs::cost::{Calibration, Env};
-use crate::jobs::kind::{Context, Kind};
-use crate::jobs::read::{Numbers, Points, Reading};
-use crate::jobs::write::{write, Out};
+use crate::jobs::cost::curve_operations;
+use crate::jobs::kind::prelude::*;
 use crate::repeated;
 use blossom::engine::bernstein_to_power;
+use blossom::PowerCurve;
 use blossom::{bezier_curve_blossom, curve_control_points_from_samples, restrict_power_curve};
-use blossom::{Error, Method, Point, PowerCurve};
-use serde::Deserialize;
-use serde_json::Value;
 
 /// The job.
 #[derive(Debug, Deserialize)]
@@ -32,11 +27,16 @@ pub struct BezierCurve<T> {
 #[rustfmt::skip]
 const CALIBRATION: Calibration = [[3.1, 26.0], [3.2, 1.4], [4.5, 0.66], [61.0, 10.0], [5.2, 0.075], [2.6, 0.06]];
 
-impl<T: Number> Kind for BezierCurve<T> {
-    fn estimate(env: &Env) -> Option<(f64, &'static str)> {
-        super::curve::estimate(env, "control_points", 2.0, &CALIBRATION)
+impl<T: Reading> BezierCurve<T> {
+    /// The up-front estimate ([`Kind`]): a `curve`'s, with the change of basis.
+    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+        let (n, d) = self.control_points.sizes();
+        let ops = curve_operations(env.method, n, d) + 2.0 * (n + 1.0) * (n + 1.0) * d;
+        env.restriction(("control_points", "interval"), n, ops, &CALIBRATION)
     }
+}
 
+impl<T: Number> Kind for BezierCurve<T> {
     fn solve(self, context: &Context) -> Result<Value, Error> {
         let curve = blossom::BezierCurve::new(self.control_points.0)?;
         let [a, b] = &self.interval.0;
@@ -63,7 +63,6 @@ impl<T: Number> Kind for BezierCurve<T> {
             }
         };
         write(&Restricted {
-            kind: "bezier-curve",
             degree: n,
             control_points: Out(restricted),
         })

@@ -4,17 +4,11 @@
 //! 004), `specialised` carried, the others through the exact power form.
 
 use super::{specialised, Number, Restricted};
-use crate::jobs::args::MethodChoice;
-use crate::jobs::cost::{Calibration, Env};
-use crate::jobs::kind::{Context, Kind};
-use crate::jobs::read::{rectangular, Numbers, Reading, Rows};
-use crate::jobs::write::{write, Out};
+use crate::jobs::kind::prelude::*;
 use crate::repeated;
 use blossom::engine::tensor_bernstein_to_power;
+use blossom::TensorPatch;
 use blossom::{bezier_tensor_blossom, restrict_power_surface, tensor_control_points_from_samples};
-use blossom::{Error, Method, Point, TensorPatch};
-use serde::Deserialize;
-use serde_json::Value;
 
 /// The job.
 #[derive(Debug, Deserialize)]
@@ -30,11 +24,14 @@ pub struct BezierTensor<T> {
 #[rustfmt::skip]
 const CALIBRATION: Calibration = [[9.8, 4.0], [8.9, 5.4], [2.6, 0.1], [11.0, 1.8], [8.0, 0.61], [5.2, 0.41]];
 
-impl<T: Number> Kind for BezierTensor<T> {
-    fn estimate(env: &Env) -> Option<(f64, &'static str)> {
-        super::tensor::estimate(env, "control_points", &CALIBRATION)
+impl<T: Reading> BezierTensor<T> {
+    /// The up-front estimate ([`Kind`]): a `tensor`'s.
+    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+        super::tensor::estimate(env, (&self.control_points, "control_points"), &CALIBRATION)
     }
+}
 
+impl<T: Number> Kind for BezierTensor<T> {
     fn solve(self, context: &Context) -> Result<Value, Error> {
         rectangular(&self.control_points.0, "control_points", "point")?;
         let patch = TensorPatch::new(self.control_points.0)?;
@@ -71,7 +68,6 @@ impl<T: Number> Kind for BezierTensor<T> {
             }
         };
         write(&Restricted {
-            kind: "bezier-tensor",
             degree: [n, m],
             control_points: Out(net),
         })

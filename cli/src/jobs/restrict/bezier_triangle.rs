@@ -4,25 +4,18 @@
 //! `f64`; every method then uses (r, s, 1 - r - s)): q = b[P^nu, Q^mu, R^lambda]. The methods
 //! as for `bezier-curve`.
 
-use super::triangle::TriangleAnswer;
-use super::{entries, specialised, Number};
-use crate::jobs::args::MethodChoice;
-use crate::jobs::cost::{len, Calibration, Env};
-use crate::jobs::kind::{Context, Kind};
-use crate::jobs::read::{coordinates, Corners, Degree, Point, Reading, MAX_DEGREE};
-use crate::jobs::write::write;
+use super::{entries, specialised, Number, Restricted};
+use crate::jobs::kind::prelude::*;
 use blossom::engine::{triangle_bernstein_to_power, triangle_index, triangle_len};
 use blossom::{bezier_triangle_blossom, restrict_power_triangle};
-use blossom::{triangle_control_points_from_samples, Error, Method, Rational, TriangularPatch};
-use serde::Deserialize;
-use serde_json::Value;
+use blossom::{triangle_control_points_from_samples, TriangularPatch};
 
 /// The job.
 #[derive(Debug, Deserialize)]
 #[serde(bound = "T: Reading")]
 pub struct BezierTriangle<T> {
     /// The control points with their indices, in any order.
-    control_points: Vec<Entry<T>>,
+    control_points: List<Entry<T>>,
     /// P, Q, R by their barycentric coordinates.
     triangle: Corners<T, 3>,
 }
@@ -37,7 +30,7 @@ struct Entry<T> {
     a: Degree,
     b: Degree,
     c: Degree,
-    point: Point<T>,
+    point: crate::jobs::read::Point<T>,
 }
 
 /// The measured factors of the estimate ([`Calibration`]).
@@ -128,10 +121,8 @@ fn barycentric<T: Number>(corners: [[T; 3]; 3]) -> Result<[[T; 3]; 3], Error> {
         let sum = r.add(&s).add(&t);
         let off = sum.sub(&T::one());
         let distance = if off < T::zero() { off.neg() } else { off };
-        if !matches!(
-            distance.partial_cmp(&tolerance),
-            Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)
-        ) {
+        #[allow(clippy::neg_cmp_op_on_partial_ord)] // a NaN distance is refused too
+        if !(distance <= tolerance) {
             return Err(Error::new(
                 format!("triangle[{k}]"),
                 format!(
@@ -149,16 +140,21 @@ fn barycentric<T: Number>(corners: [[T; 3]; 3]) -> Result<[[T; 3]; 3], Error> {
     Ok(out)
 }
 
-impl<T: Number> Kind for BezierTriangle<T> {
-    fn estimate(env: &Env) -> Option<(f64, &'static str)> {
-        let entries = len(env.get("control_points"));
+impl<T: Reading> BezierTriangle<T> {
+    /// The up-front estimate ([`Kind`]): a `triangle`'s.
+    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+        let entries = self.control_points.0.len() as f64;
         // N from the number of entries (N + 1)(N + 2) / 2.
         let big_n = ((8.0 * entries + 1.0).sqrt() - 3.0).max(0.0) / 2.0 + 1.0;
-        super::triangle::estimate(env, "control_points", (big_n, entries), &CALIBRATION)
+        let d = self.control_points.0.first().map_or(1, |e| e.point.0.len());
+        let sizes = (big_n, entries, d.max(1) as f64);
+        super::triangle::estimate(env, "control_points", sizes, &CALIBRATION)
     }
+}
 
+impl<T: Number> Kind for BezierTriangle<T> {
     fn solve(self, context: &Context) -> Result<Value, Error> {
-        let patch = net(self.control_points)?;
+        let patch = net(self.control_points.0)?;
         let bary = barycentric(self.triangle.0)?;
         let big_n = patch.degree();
         // The corners in the (u, v) = (r, s) plane, where the patch's own corners are (1, 0),
@@ -190,8 +186,7 @@ impl<T: Number> Kind for BezierTriangle<T> {
                 restrict_power_triangle(&triangle_bernstein_to_power(&patch), &plane, method)
             }
         };
-        write(&TriangleAnswer {
-            kind: "bezier-triangle",
+        write(&Restricted {
             degree: big_n,
             control_points: entries(&net, None),
         })

@@ -4,13 +4,8 @@
 //! rounded once under `f64`).
 
 use super::{exact, exact_points, rounded, Number};
-use crate::jobs::cost::{degree_of, dimension, grown_bits, len, Arith, Env};
-use crate::jobs::kind::{Context, Kind};
-use crate::jobs::read::{coordinates, Count, Degree, Numbers, Points, Reading, Written};
-use crate::jobs::write::{write, Out};
-use blossom::{bspline_from_pieces, Error, Piece, Point, PowerCurve};
-use serde::{Deserialize, Deserializer, Serialize};
-use serde_json::Value;
+use crate::jobs::kind::prelude::*;
+use blossom::{bspline_from_pieces, Piece, PowerCurve};
 
 /// The job.
 #[derive(Debug, Deserialize)]
@@ -28,7 +23,10 @@ struct Pieces<T>(Vec<PieceJob<T>>);
 
 impl<'de, T: Reading> Deserialize<'de> for Pieces<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        crate::jobs::read::counted(d, Count::NotEmpty("piece"), "an array of pieces").map(Pieces)
+        leaf(d, |v| {
+            items(v, "an array of pieces", not_empty("piece"), object)
+        })
+        .map(Pieces)
     }
 }
 
@@ -42,34 +40,29 @@ struct PieceJob<T> {
 
 /// The answer.
 #[derive(Serialize)]
-#[serde(bound = "T: crate::jobs::write::Write")]
-struct Answer<T: crate::jobs::write::Write> {
-    kind: &'static str,
+#[serde(bound = "T: Write")]
+struct Answer<T: Write> {
     degree: usize,
     knots: Out<Vec<T>>,
     control_points: Out<Vec<Point<T>>>,
 }
 
-impl<T: Number> Kind for Bspline<Written<T>> {
-    fn estimate(env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Bspline<T> {
+    /// The up-front estimate ([`Kind`]), exact under both arithmetics.
+    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let env = env.deciding_exactly();
-        let pieces = env.get("pieces");
-        let p = degree_of(env.get("degree"));
         let c = env.numbers("pieces");
-        let d = match pieces {
-            Some(Value::Array(items)) => match items.first() {
-                Some(Value::Object(piece)) => dimension(piece.get("coefficients")),
-                _ => 1.0,
-            },
-            _ => 1.0,
-        };
+        let (_, d) = self.pieces.0[0].coefficients.sizes();
+        let p = self.degree.0 as f64;
         let q = p + 1.0;
-        let ops = 4.0 * len(pieces) * q * q * (q + d);
+        let ops = 4.0 * self.pieces.0.len() as f64 * q * q * (q + d);
         let bits = grown_bits(c.max_bits, c.max_bits, p);
-        let work = ops * Arith { exact: true }.operation(bits) * env.factor([0.58, 0.81]);
+        let work = ops * operation(true, bits) * env.factor([0.58, 0.81]);
         Some((work + c.reading, "pieces"))
     }
+}
 
+impl<T: Number> Kind for Bspline<Written<T>> {
     fn solve(self, _: &Context) -> Result<Value, Error> {
         let mut pieces = Vec::with_capacity(self.pieces.0.len());
         let mut dim = None;
@@ -95,7 +88,6 @@ impl<T: Number> Kind for Bspline<Written<T>> {
         }
         let f = bspline_from_pieces(self.degree.0, &pieces)?;
         write(&Answer {
-            kind: "bspline",
             degree: f.degree(),
             knots: Out(rounded::<T>(f.knots())),
             control_points: Out(f.control_points().iter().map(|p| rounded(p)).collect()),

@@ -2,13 +2,8 @@
 //! the knot range is an error, at the last knot the last span is used.
 
 use super::Number;
-use crate::jobs::cost::{degree_of, dimension, grown_bits, len, Env};
-use crate::jobs::kind::{Context, Kind};
-use crate::jobs::read::{Degree, NumberList, Points, Reading};
-use crate::jobs::write::{write, Out};
-use blossom::{BSpline, Error, Point};
-use serde::{Deserialize, Serialize};
-use serde_json::Value;
+use crate::jobs::kind::prelude::*;
+use blossom::BSpline;
 
 /// The job.
 #[derive(Debug, Deserialize)]
@@ -26,33 +21,28 @@ pub struct BsplineEval<T> {
 
 /// The answer.
 #[derive(Serialize)]
-#[serde(bound = "T: crate::jobs::write::Write")]
-struct Answer<T: crate::jobs::write::Write> {
-    kind: &'static str,
+#[serde(bound = "T: Write")]
+struct Answer<T: Write> {
     points: Out<Vec<Point<T>>>,
 }
 
-impl<T: Number> Kind for BsplineEval<T> {
-    fn estimate(env: &Env) -> Option<(f64, &'static str)> {
-        let (k, c, t) = (
-            env.numbers("knots"),
-            env.numbers("control_points"),
-            env.numbers("at"),
-        );
-        let p = degree_of(env.get("degree"));
-        let d = dimension(env.get("control_points"));
-        let (at, knots) = (len(env.get("at")), len(env.get("knots")));
+impl<T: Reading> BsplineEval<T> {
+    /// The up-front estimate ([`Kind`]).
+    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+        let [k, c, t] = ["knots", "control_points", "at"].map(|field| env.numbers(field));
+        let (n, d) = self.control_points.sizes();
+        let (at, knots) = (self.at.0.len() as f64, self.knots.0.len() as f64);
+        let p = self.degree.0 as f64;
         let q = p + 1.0;
         let bits = grown_bits(c.max_bits, 2.0 * (k.max_bits + t.max_bits), p);
-        let ops = at * (2.0 * q * q * (d + 1.0) + knots.log2().max(1.0))
-            + 4.0 * (knots + len(env.get("control_points")) * d);
+        let ops =
+            at * (2.0 * q * q * (d + 1.0) + knots.log2().max(1.0)) + 4.0 * (knots + (n + 1.0) * d);
         let field = if at > q { "at" } else { "degree" };
-        Some((
-            ops * env.arith().operation(bits) + k.and(c).and(t).reading,
-            field,
-        ))
+        Some((ops * env.operation(bits) + k.and(c).and(t).reading, field))
     }
+}
 
+impl<T: Number> Kind for BsplineEval<T> {
     fn solve(self, _: &Context) -> Result<Value, Error> {
         let f = BSpline::new(self.degree.0, self.knots.0, self.control_points.0)?;
         let points = self
@@ -66,7 +56,6 @@ impl<T: Number> Kind for BsplineEval<T> {
             })
             .collect::<Result<Vec<Point<T>>, Error>>()?;
         write(&Answer {
-            kind: "bspline-eval",
             points: Out(points),
         })
     }

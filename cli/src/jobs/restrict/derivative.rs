@@ -2,13 +2,8 @@
 //! [0, 1], n!/(n-k)! times the k-th forward differences of its control points.
 
 use super::{Number, Restricted};
-use crate::jobs::cost::{dimension, grown_bits, len, Env};
-use crate::jobs::kind::{Context, Kind};
-use crate::jobs::read::{Degree, Points, Reading};
-use crate::jobs::write::{write, Out};
-use blossom::{BezierCurve, Error};
-use serde::Deserialize;
-use serde_json::Value;
+use crate::jobs::kind::prelude::*;
+use blossom::BezierCurve;
 
 /// The job.
 #[derive(Debug, Deserialize)]
@@ -20,17 +15,18 @@ pub struct Derivative<T> {
     order: Degree,
 }
 
-impl<T: Number> Kind for Derivative<T> {
-    fn estimate(env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Derivative<T> {
+    /// The up-front estimate ([`Kind`]).
+    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let c = env.numbers("control_points");
-        let n = (len(env.get("control_points")) - 1.0).max(0.0);
-        let d = dimension(env.get("control_points"));
-        let bits = grown_bits(c.max_bits, 0.0, n);
+        let (n, d) = self.control_points.sizes();
         let ops = 4.0 * (n + 1.0) * (n + 1.0) * d;
-        let work = ops * env.arith().operation(bits) * env.factor([0.27, 1.0]);
+        let work = ops * env.operation(grown_bits(c.max_bits, 0.0, n)) * env.factor([0.27, 1.0]);
         Some((work + c.reading, "control_points"))
     }
+}
 
+impl<T: Number> Kind for Derivative<T> {
     fn solve(self, _: &Context) -> Result<Value, Error> {
         let curve = BezierCurve::new(self.control_points.0)?;
         let (n, Degree(k)) = (curve.degree(), self.order);
@@ -42,7 +38,6 @@ impl<T: Number> Kind for Derivative<T> {
         }
         let hodograph = blossom::bezier_derivative(&curve, k)?;
         write(&Restricted {
-            kind: "derivative",
             degree: n - k,
             control_points: Out(hodograph.control_points().to_vec()),
         })

@@ -1,6 +1,6 @@
 //! The jobs of `blossom restrict`, one file per kind, each a struct deriving `Deserialize`
-//! (its fields in the order they are checked) that implements [`Kind`](super::kinds::Kind):
-//! its up-front estimate (the cost model of [`super::cost`]) and its answer, a struct deriving
+//! (its fields in the order they are checked) with its up-front estimate (the cost model of
+//! [`super::cost`]) that implements [`Kind`](super::kinds::Kind): its answer, a struct deriving
 //! `Serialize`. This module holds what they share: the number types they compute in
 //! ([`Number`]), the answers' common forms and the carried evaluators of `--method
 //! specialised` ([`specialised`]).
@@ -41,17 +41,15 @@ pub trait Number: JsonNumber + Field + Reading + Write {}
 
 impl<T: JsonNumber + Field + Reading + Write> Number for T {}
 
-/// The answer of a restriction (`curve`, `tensor`, `bezier-curve`, `elevate`, ...): the
-/// degree and the control points.
+/// The answer of a restriction (`curve`, `tensor`, `triangle`, `elevate`, ...): the degree
+/// (`n`, `[n, m]`) and the control points (the numbers of a curve or a net, [`Out`]; the
+/// entries of a triangular net, [`entries`]).
 #[derive(Serialize)]
-#[serde(bound = "D: Serialize, P: Write")]
 pub struct Restricted<D, P> {
-    /// The kind of the job.
-    pub kind: &'static str,
-    /// The degree (`n`, `[n, m]`).
+    /// The degree.
     pub degree: D,
     /// The control points.
-    pub control_points: Out<P>,
+    pub control_points: P,
 }
 
 /// One control point of a triangular patch: its indices, the point and, for a rational

@@ -3,14 +3,8 @@
 //! seed 004), computed exactly (a weight that is exactly zero is refused) and rounded once.
 
 use super::{check_rounded_weights, exact, exact_points, rounded, Number, Restricted};
-use crate::jobs::args::MethodChoice;
-use crate::jobs::cost::{curve_operations, degree_of, dimension, grown_bits, len, Arith, Env};
-use crate::jobs::kind::{Context, Kind};
-use crate::jobs::read::{Degree, NumberList, Numbers, Points, Reading, Written, MAX_DEGREE};
-use crate::jobs::write::{write, Out};
-use blossom::{Error, Method, Point};
-use serde::{Deserialize, Serialize};
-use serde_json::Value;
+use crate::jobs::cost::curve_operations;
+use crate::jobs::kind::prelude::*;
 
 /// The job.
 #[derive(Debug, Deserialize)]
@@ -28,30 +22,29 @@ pub struct RationalCurve<T> {
 
 /// The answer.
 #[derive(Serialize)]
-#[serde(bound = "T: crate::jobs::write::Write")]
-struct Answer<T: crate::jobs::write::Write> {
+#[serde(bound = "T: Write")]
+struct Answer<T: Write> {
     #[serde(flatten)]
-    curve: Restricted<usize, Vec<Point<T>>>,
+    curve: Restricted<usize, Out<Vec<Point<T>>>>,
     weights: Out<Vec<T>>,
 }
 
-impl<T: Number> Kind for RationalCurve<Written<T>> {
-    fn estimate(env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> RationalCurve<T> {
+    /// The up-front estimate ([`Kind`]), exact under both arithmetics.
+    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let env = env.deciding_exactly();
-        let (nu, de, i) = (
-            env.numbers("numerator"),
-            env.numbers("denominator"),
-            env.numbers("interval"),
-        );
-        let longest = len(env.get("numerator")).max(len(env.get("denominator")));
-        let n = degree_of(env.get("degree")).max((longest - 1.0).max(0.0));
-        let d = dimension(env.get("numerator")) + 1.0;
+        let [nu, de, i] = ["numerator", "denominator", "interval"].map(|f| env.numbers(f));
+        let longest = self.numerator.0.len().max(self.denominator.0.len()) as f64;
+        let n = self.degree.map_or(0.0, |d| d.0 as f64).max(longest - 1.0);
+        let d = self.numerator.sizes().1 + 1.0;
         let bits = grown_bits(nu.max_bits.max(de.max_bits), i.max_bits, n);
         let ops = curve_operations(MethodChoice::Library(Method::Polarisation), n, d);
-        let work = ops * Arith { exact: true }.operation(bits) * env.factor([7.0, 7.4]);
+        let work = ops * operation(true, bits) * env.factor([7.0, 7.4]);
         Some((work + nu.and(de).and(i).reading, "numerator"))
     }
+}
 
+impl<T: Number> Kind for RationalCurve<Written<T>> {
     fn solve(self, _: &Context) -> Result<Value, Error> {
         if self.numerator.0.len().max(self.denominator.0.len()) > MAX_DEGREE + 1 {
             return Err(Error::new(
@@ -79,7 +72,6 @@ impl<T: Number> Kind for RationalCurve<Written<T>> {
         )?;
         write(&Answer {
             curve: Restricted {
-                kind: "rational-curve",
                 degree: bezier.degree(),
                 control_points: Out(bezier.points().iter().map(|p| rounded(p)).collect()),
             },

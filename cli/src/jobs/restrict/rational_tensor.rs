@@ -4,15 +4,10 @@
 //! an error.
 
 use super::{check_rounded_weights, exact, exact_points, rounded, Number};
-use crate::jobs::args::MethodChoice;
-use crate::jobs::cost::{degree_of, dimension, first_len, grown_bits, len, tensor_operations};
-use crate::jobs::cost::{Arith, Env};
-use crate::jobs::kind::{Context, Kind};
-use crate::jobs::read::{Count, Degree, NumberRows, Numbers, Reading, Rows, Written, MAX_DEGREE};
-use crate::jobs::write::{write, Out};
-use blossom::{Error, Method, Point, Rational, RationalSurface};
-use serde::{Deserialize, Deserializer, Serialize};
-use serde_json::Value;
+use crate::jobs::cost::tensor_operations;
+use crate::jobs::kind::prelude::*;
+use crate::jobs::read::degree;
+use blossom::RationalSurface;
 
 /// The job.
 #[derive(Debug, Deserialize)]
@@ -34,17 +29,17 @@ struct DegreePair(usize, usize);
 
 impl<'de> Deserialize<'de> for DegreePair {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let pair: Vec<Degree> =
-            crate::jobs::read::counted(d, Count::Exactly(2, "degrees"), "an array of 2 degrees")?;
-        Ok(DegreePair(pair[0].0, pair[1].0))
+        let pair = leaf(d, |v| {
+            items(v, "an array of 2 degrees", exactly(2, "degrees"), degree)
+        })?;
+        Ok(DegreePair(pair[0], pair[1]))
     }
 }
 
 /// The answer.
 #[derive(Serialize)]
-#[serde(bound = "T: crate::jobs::write::Write")]
-struct Answer<T: crate::jobs::write::Write> {
-    kind: &'static str,
+#[serde(bound = "T: Write")]
+struct Answer<T: Write> {
     degree: [usize; 2],
     control_points: Out<Vec<Vec<Point<T>>>>,
     weights: Out<Vec<Vec<T>>>,
@@ -59,8 +54,8 @@ pub fn grids<T: Reading>(
     numerator: &[Vec<Point<T>>],
     denominator: &[Vec<T>],
 ) -> Result<Grids, Error> {
-    crate::jobs::read::rectangular(numerator, "numerator", "point")?;
-    crate::jobs::read::rectangular(denominator, "denominator", "number")?;
+    rectangular(numerator, "numerator", "point")?;
+    rectangular(denominator, "denominator", "number")?;
     let rows = numerator.len().max(denominator.len());
     let cols = numerator[0].len().max(denominator[0].len());
     if rows > MAX_DEGREE + 1 || cols > MAX_DEGREE + 1 {
@@ -93,50 +88,45 @@ pub fn grids<T: Reading>(
     Ok((p, w))
 }
 
-/// The estimate of a rational surface of degree `degree` in `ops` operations.
+/// The estimate of a rational surface of degree `degree` in `ops` operations, exact under both
+/// arithmetics, on the domain in the field `domain`.
 pub fn estimate(
     env: &Env,
     domain: &str,
     degree: f64,
     ops: f64,
     factor: [f64; 2],
-) -> (f64, &'static str) {
-    let (nu, de, dom) = (
-        env.numbers("numerator"),
-        env.numbers("denominator"),
-        env.numbers(domain),
-    );
+) -> Option<(f64, &'static str)> {
+    let env = env.deciding_exactly();
+    let [nu, de, dom] = ["numerator", "denominator", domain].map(|f| env.numbers(f));
     let bits = grown_bits(nu.max_bits.max(de.max_bits), dom.max_bits, degree);
-    let work = ops * Arith { exact: true }.operation(bits) * env.factor(factor);
-    (work + nu.and(de).and(dom).reading, "numerator")
+    let work = ops * operation(true, bits) * env.factor(factor);
+    Some((work + nu.and(de).and(dom).reading, "numerator"))
 }
 
 /// The grids' sizes: the rows, the columns, and the dimension of the homogeneous points.
-pub fn sizes(env: &Env) -> (f64, f64, f64) {
-    let (p, w) = (env.get("numerator"), env.get("denominator"));
-    (
-        len(p).max(len(w)),
-        first_len(p).max(first_len(w)),
-        dimension(p) + 1.0,
-    )
+pub fn sizes<T>(numerator: &Rows<T>, denominator: &NumberRows<T>) -> (f64, f64, f64) {
+    let (rows, columns, d) = numerator.sizes();
+    let w = &denominator.0;
+    let w_columns = w.first().map_or(0, Vec::len) as f64;
+    (rows.max(w.len() as f64), columns.max(w_columns), d + 1.0)
+}
+
+impl<T: Reading> RationalTensor<T> {
+    /// The up-front estimate ([`Kind`]).
+    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+        let (rows, columns, d) = sizes(&self.numerator, &self.denominator);
+        let (n, m) = self
+            .degree
+            .as_ref()
+            .map_or((0.0, 0.0), |p| (p.0 as f64, p.1 as f64));
+        let (n, m) = (n.max(rows - 1.0).max(0.0), m.max(columns - 1.0).max(0.0));
+        let ops = tensor_operations(MethodChoice::Library(Method::Polarisation), n, m, d);
+        estimate(env, "rectangle", n + m, ops, [5.8, 5.6])
+    }
 }
 
 impl<T: Number> Kind for RationalTensor<Written<T>> {
-    fn estimate(env: &Env) -> Option<(f64, &'static str)> {
-        let env = env.deciding_exactly();
-        let (rows, columns, d) = sizes(&env);
-        let (n, m) = match env.get("degree") {
-            Some(Value::Array(items)) => (
-                degree_of(items.first()).max(rows - 1.0),
-                degree_of(items.get(1)).max(columns - 1.0),
-            ),
-            _ => (rows - 1.0, columns - 1.0),
-        };
-        let (n, m) = (n.max(0.0), m.max(0.0));
-        let ops = tensor_operations(MethodChoice::Library(Method::Polarisation), n, m, d);
-        Some(estimate(&env, "rectangle", n + m, ops, [5.8, 5.6]))
-    }
-
     fn solve(self, _: &Context) -> Result<Value, Error> {
         let (p, w) = grids(&self.numerator.0, &self.denominator.0)?;
         let rect = exact(&self.rectangle.0)
@@ -152,7 +142,6 @@ impl<T: Number> Kind for RationalTensor<Written<T>> {
                 .map(move |(j, w)| (format!("weights[{i}][{j}]"), w))
         }))?;
         write(&Answer {
-            kind: "rational-tensor",
             degree: [degree.0, degree.1],
             control_points: Out(patch
                 .rows()

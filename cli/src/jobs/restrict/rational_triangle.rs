@@ -4,14 +4,9 @@
 
 use super::rational_tensor::{estimate, grids, sizes};
 use super::{check_rounded_weights, entries, exact, exact_points, rounded, Number};
-use crate::jobs::args::MethodChoice;
-use crate::jobs::cost::{degree_of, triangle_operations, Env};
-use crate::jobs::kind::{Context, Kind};
-use crate::jobs::read::{triangular, Corners, Degree, NumberRows, Reading, Rows, Written};
-use crate::jobs::write::write;
-use blossom::{Error, Method, Point, RationalPowerTriangle, RationalSurface, TriangularPatch};
-use serde::Deserialize;
-use serde_json::Value;
+use crate::jobs::cost::triangle_operations;
+use crate::jobs::kind::prelude::*;
+use blossom::{RationalPowerTriangle, RationalSurface, TriangularPatch};
 
 /// The job.
 #[derive(Debug, Deserialize)]
@@ -29,22 +24,24 @@ pub struct RationalTriangle<T> {
     degree: Option<Degree>,
 }
 
-impl<T: Number> Kind for RationalTriangle<Written<T>> {
-    fn estimate(env: &Env) -> Option<(f64, &'static str)> {
-        let env = env.deciding_exactly();
-        let (rows, columns, d) = sizes(&env);
+impl<T: Reading> RationalTriangle<T> {
+    /// The up-front estimate ([`Kind`]).
+    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+        let (rows, columns, d) = sizes(&self.numerator, &self.denominator);
         let (n, m) = ((rows - 1.0).max(0.0), (columns - 1.0).max(0.0));
-        let total = if env.get("total_degree").is_some_and(|v| !v.is_null()) {
+        let total = if self.total_degree.is_some() {
             n
         } else {
             n + m
         };
-        let big_n = degree_of(env.get("degree")).max(total);
+        let big_n = self.degree.map_or(0.0, |d| d.0 as f64).max(total);
         let polarisation = MethodChoice::Library(Method::Polarisation);
         let ops = triangle_operations(polarisation, big_n, rows * columns.max(1.0), d);
-        Some(estimate(&env, "triangle", big_n, ops, [1.7, 1.7]))
+        estimate(env, "triangle", big_n, ops, [1.7, 1.7])
     }
+}
 
+impl<T: Number> Kind for RationalTriangle<Written<T>> {
     fn solve(self, _: &Context) -> Result<Value, Error> {
         let surface = match self.total_degree {
             Some(Degree(big_n)) => {
@@ -71,8 +68,7 @@ impl<T: Number> Kind for RationalTriangle<Written<T>> {
                 .map(|(k, w)| (format!("control_points[{k}].weight"), w)),
         )?;
         let net = TriangularPatch::new(patch.degree(), points)?;
-        write(&super::triangle::TriangleAnswer {
-            kind: "rational-triangle",
+        write(&super::Restricted {
             degree: patch.degree(),
             control_points: entries(&net, Some(&weights)),
         })

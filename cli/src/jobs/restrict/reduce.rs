@@ -2,13 +2,8 @@
 //! [`Reduction`]s, with the squared L2 distance of the two curves over [0, 1].
 
 use super::{Number, Restricted};
-use crate::jobs::cost::{degree_of, dimension, grown_bits, len, Arith, Env};
-use crate::jobs::kind::{Context, Kind};
-use crate::jobs::read::{Degree, Points, Reading, MAX_DEGREE};
-use crate::jobs::write::{write, Out};
-use blossom::{reduce, squared_l2_distance, BezierCurve, Error, Reduction};
-use serde::{Deserialize, Serialize};
-use serde_json::Value;
+use crate::jobs::kind::prelude::*;
+use blossom::{reduce, squared_l2_distance, BezierCurve, Reduction};
 
 /// The job.
 #[derive(Debug, Deserialize)]
@@ -24,31 +19,32 @@ pub struct Reduce<T> {
 
 /// The answer: a restriction's, and the squared L2 error.
 #[derive(Serialize)]
-#[serde(bound = "T: crate::jobs::write::Write")]
-struct Reduced<T: crate::jobs::write::Write> {
+#[serde(bound = "T: Write")]
+struct Reduced<T: Write> {
     #[serde(flatten)]
-    curve: Restricted<usize, Vec<Vec<T>>>,
+    curve: Restricted<usize, Out<Vec<Vec<T>>>>,
     l2_error: Out<T>,
 }
 
-impl<T: Number> Kind for Reduce<T> {
-    fn estimate(env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Reduce<T> {
+    /// The up-front estimate ([`Kind`]).
+    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let c = env.numbers("control_points");
-        let n = (len(env.get("control_points")) - 1.0).max(0.0);
-        let m = degree_of(env.get("to_degree")).min(n);
-        let d = dimension(env.get("control_points"));
+        let (n, d) = self.control_points.sizes();
+        let m = (self.to_degree.0 as f64).min(n);
         // The Gram matrices and the solve, exact; their entries grow like a Hilbert matrix's,
         // about 4 n log2 n bits.
-        let exact = Arith { exact: true };
         let (k, l) = (n + 1.0, m + 1.0);
         let matrices =
-            4.0 * (k * k * k + l * l * l) * exact.operation(grown_bits(0.0, 0.0, 4.0 * n));
+            4.0 * (k * k * k + l * l * l) * operation(true, grown_bits(0.0, 0.0, 4.0 * n));
         let bits = grown_bits(c.max_bits, 0.0, 4.0 * n);
-        let application = 8.0 * k * l * d * env.arith().operation(bits);
+        let application = 8.0 * k * l * d * env.operation(bits);
         let work = (matrices + application) * env.factor([1.7, 0.35]);
         Some((work + c.reading, "control_points"))
     }
+}
 
+impl<T: Number> Kind for Reduce<T> {
     fn solve(self, _: &Context) -> Result<Value, Error> {
         let curve = BezierCurve::new(self.control_points.0)?;
         if curve.degree() > MAX_DEGREE {
@@ -77,7 +73,6 @@ impl<T: Number> Kind for Reduce<T> {
         let error = squared_l2_distance(&reduced, &curve)?;
         write(&Reduced {
             curve: Restricted {
-                kind: "reduce",
                 degree: m,
                 control_points: Out(reduced.control_points().to_vec()),
             },

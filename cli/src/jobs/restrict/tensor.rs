@@ -2,15 +2,9 @@
 //! `--method`.
 
 use super::{specialised, Number, Restricted};
-use crate::jobs::args::MethodChoice;
-use crate::jobs::cost::{dimension, first_len, grown_bits, len, polar_bits, tensor_operations};
-use crate::jobs::cost::{Calibration, Env};
-use crate::jobs::kind::{Context, Kind};
-use crate::jobs::read::{rectangular, Numbers, Reading, Rows};
-use crate::jobs::write::{write, Out};
-use blossom::{restrict_power_surface, Error, PowerSurface};
-use serde::Deserialize;
-use serde_json::Value;
+use crate::jobs::cost::tensor_operations;
+use crate::jobs::kind::prelude::*;
+use blossom::{restrict_power_surface, PowerSurface};
 
 /// The job.
 #[derive(Debug, Deserialize)]
@@ -26,25 +20,28 @@ pub struct Tensor<T> {
 #[rustfmt::skip]
 const CALIBRATION: Calibration = [[6.3, 4.8], [8.9, 14.0], [9.7, 0.15], [10.0, 0.49], [5.4, 0.44], [3.0, 0.51]];
 
-/// The estimate of a tensor restriction whose grid is the field `grid`, calibrated by `row`.
-pub fn estimate(env: &Env, grid: &'static str, row: &Calibration) -> Option<(f64, &'static str)> {
-    let (c, r) = (env.numbers(grid), env.numbers("rectangle"));
-    let n = (len(env.get(grid)) - 1.0).max(0.0);
-    let m = (first_len(env.get(grid)) - 1.0).max(0.0);
-    let d = dimension(env.get(grid));
-    let polar = polar_bits(env.method);
-    let bits = grown_bits(polar * c.max_bits, polar * r.max_bits, n + m);
+/// The estimate of a tensor restriction whose grid is `grid`, the field `field`, calibrated
+/// by `row` (with the change of basis from the power form).
+pub fn estimate<T>(
+    env: &Env,
+    (grid, field): (&Rows<T>, &'static str),
+    row: &Calibration,
+) -> Option<(f64, &'static str)> {
+    let (rows, columns, d) = grid.sizes();
+    let (n, m) = ((rows - 1.0).max(0.0), (columns - 1.0).max(0.0));
     let conversion = 2.0 * (n + 1.0) * (m + 1.0) * (n + m + 2.0) * d;
     let ops = tensor_operations(env.method, n, m, d) + conversion;
-    let work = ops * env.arith().operation(bits) * env.calibrated(row);
-    Some((work + c.and(r).reading, grid))
+    env.restriction((field, "rectangle"), n + m, ops, row)
+}
+
+impl<T: Reading> Tensor<T> {
+    /// The up-front estimate ([`Kind`]).
+    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+        estimate(env, (&self.coefficients, "coefficients"), &CALIBRATION)
+    }
 }
 
 impl<T: Number> Kind for Tensor<T> {
-    fn estimate(env: &Env) -> Option<(f64, &'static str)> {
-        estimate(env, "coefficients", &CALIBRATION)
-    }
-
     fn solve(self, context: &Context) -> Result<Value, Error> {
         rectangular(&self.coefficients.0, "coefficients", "point")?;
         let surface = PowerSurface::new(self.coefficients.0)?;
@@ -55,7 +52,6 @@ impl<T: Number> Kind for Tensor<T> {
         };
         let (n, m) = patch.degree();
         write(&Restricted {
-            kind: "tensor",
             degree: [n, m],
             control_points: Out(patch.to_nested()),
         })
