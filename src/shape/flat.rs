@@ -95,14 +95,23 @@ pub(crate) fn curve_subsegment_small<T: Ring>(
 
 /// The coordinates of the curve `points` over [a, b] in a new buffer: one allocation for the
 /// answer where it does not fit inline, and this thread's scratch ([`Ring::with_scratch`])
-/// where the engine needs one.
+/// where the engine needs one. Inlined into the returning forms' out-of-line paths, so that
+/// the answer is made where they return it.
+#[inline(always)]
 pub(crate) fn curve_subsegment_new<T: Ring>(points: &[T], dim: usize, a: &T, b: &T) -> T::Coords {
     let mut out = T::Coords::filled(points.len(), T::zero());
     let slice = out.as_mut_slice();
     if !(T::UNROLLED && T::restrict_unrolled(points, dim, a, b, slice)) {
-        T::with_scratch(|scratch| curve_subsegment_engine(points, dim, a, b, slice, scratch));
+        curve_subsegment_own_scratch(points, dim, a, b, slice);
     }
     out
+}
+
+/// [`curve_subsegment_engine`] with the ring's scratch buffer ([`Ring::with_scratch`]: this
+/// thread's, reused, for the floats).
+#[inline(never)]
+fn curve_subsegment_own_scratch<T: Ring>(points: &[T], dim: usize, a: &T, b: &T, out: &mut [T]) {
+    T::with_scratch(|scratch| curve_subsegment_engine(points, dim, a, b, out, scratch));
 }
 
 /// `out` = the restriction of a small float curve by [`unrolled::small`], inlined; `false`

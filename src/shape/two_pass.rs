@@ -111,14 +111,26 @@ macro_rules! two_pass {
                     x.reverse();
                 }
             }
-            out.copy_from_slice(points);
-            let (x, _) = out.as_chunks_mut::<D>();
-            match x.len() {
-                10 => subdivide(<&mut [_; 10]>::try_from(x).expect("10 points"), a, b),
-                11 => subdivide(<&mut [_; 11]>::try_from(x).expect("11 points"), a, b),
-                12 => subdivide(<&mut [_; 12]>::try_from(x).expect("12 points"), a, b),
-                13 => subdivide(<&mut [_; 13]>::try_from(x).expect("13 points"), a, b),
-                _ => subdivide(x, a, b),
+            /// The points, as `N` points of `D` numbers, subdivided in a local array: with the
+            /// number of points fixed the compiler keeps them in registers, as in a textbook
+            /// split of a fixed-size array. (Subdivided in `out` instead, the straight-line
+            /// code read pairs of numbers across two points' stores and waited on them.)
+            #[inline(always)]
+            fn fixed<const D: usize, const N: usize>(points: &[$t], a: $t, b: $t, out: &mut [$t]) {
+                let mut x: [[$t; D]; N] =
+                    *<&[[$t; D]; N]>::try_from(points.as_chunks::<D>().0).expect("N points");
+                subdivide(&mut x, a, b);
+                out.copy_from_slice(x.as_flattened());
+            }
+            match points.len() / D {
+                10 => fixed::<D, 10>(points, a, b, out),
+                11 => fixed::<D, 11>(points, a, b, out),
+                12 => fixed::<D, 12>(points, a, b, out),
+                13 => fixed::<D, 13>(points, a, b, out),
+                _ => {
+                    out.copy_from_slice(points);
+                    subdivide(out.as_chunks_mut::<D>().0, a, b);
+                }
             }
         }
     };

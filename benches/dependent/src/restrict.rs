@@ -13,7 +13,8 @@
 //! * lyon's `split_range` and kurbo's `ParamCurve::subsegment` (planar quadratics and cubics).
 //!
 //! The planar lines hold 10^5 curves; the 3-D lines 10^5 at degree 3 and fewer as the degree
-//! grows (2 * 10^6 / (n + 1)^2, at least 2,000), every degree 3..=16 and 20, 24, ..., 64.
+//! grows (10^6 / (n + 1)^2, at least 250: a pass of a millisecond or two, short enough that
+//! some passes of every form run undisturbed), every degree 3..=16 and 20, 24, ..., 64.
 
 #[path = "../../common/lyon.rs"]
 mod lyon;
@@ -257,7 +258,7 @@ fn planar_line<const N: usize>(rng: &mut Rng) -> [f64; 3] {
 /// One 3-D line at degree N - 1; returns the ratios of the three library forms to the
 /// textbook split.
 fn spatial_line<const N: usize>(rng: &mut Rng) -> [f64; 3] {
-    let count = (2_000_000 / (N * N)).clamp(2_000, 100_000);
+    let count = (1_000_000 / (N * N)).clamp(250, 100_000);
     let t = Cases::<N, 3>::new(rng, count).time_library(&mut []);
     let r = [t[1] / t[0], t[2] / t[0], t[3] / t[0]];
     println!(
