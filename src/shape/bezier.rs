@@ -308,8 +308,11 @@ impl<T: Ring> BezierCurve<T> {
         }
     }
 
-    /// [`BezierCurve::subsegment`] of every curve but the small float ones, out of line so
-    /// that the inlined part stays small.
+    /// [`BezierCurve::subsegment`] of every curve but the small float ones, out of line so that
+    /// the inlined part stays small, and `#[cold]` so that a caller's loop over small curves
+    /// keeps its running values in registers rather than saving them around this call (a call
+    /// this long costs the same either way).
+    #[cold]
     #[inline(never)]
     fn subsegment_new(&self, a: &T, b: &T) -> Self {
         BezierCurve {

@@ -100,6 +100,23 @@ impl<T: Copy, const N: usize> SmallCoords<T, N> {
     }
 }
 
+/// The heap part is freed out of line, behind a test of its length: a loop that restricts
+/// small curves and drops the answers then holds no call on its common path, so the compiler
+/// keeps its running values in registers instead of saving them around a call in every pass.
+impl<T: Copy, const N: usize> Drop for SmallCoords<T, N> {
+    #[inline]
+    fn drop(&mut self) {
+        #[cold]
+        #[inline(never)]
+        fn free<T>(heap: Box<[T]>) {
+            drop(heap);
+        }
+        if !self.heap.is_empty() {
+            free(std::mem::take(&mut self.heap));
+        }
+    }
+}
+
 impl<T: Copy + Default + Debug + PartialEq, const N: usize> CoordinateBuffer<T>
     for SmallCoords<T, N>
 {
@@ -195,11 +212,11 @@ impl<T: Copy + Default + Debug + PartialEq, const N: usize> CoordinateBuffer<T>
         self.len = new_len;
     }
 
-    fn into_vec(self) -> Vec<T> {
+    fn into_vec(mut self) -> Vec<T> {
         if self.is_inline() {
             self.inline[..self.len].to_vec()
         } else {
-            self.heap.into_vec()
+            std::mem::take(&mut self.heap).into_vec()
         }
     }
 }
