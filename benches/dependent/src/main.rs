@@ -6,6 +6,8 @@
 #[path = "../../common/mod.rs"]
 mod common;
 mod intersect;
+#[path = "../../common/lyon.rs"]
+mod lyon;
 mod region;
 mod restrict;
 

@@ -16,15 +16,16 @@
 //! grows (10^6 / (n + 1)^2, at least 250: a pass of a millisecond or two, short enough that
 //! some passes of every form run undisturbed), every degree 3..=16 and 20, 24, ..., 64.
 
-#[path = "../../common/lyon.rs"]
-mod lyon;
-
+use crate::lyon;
 use blossom::{Bezier, BezierCurve};
 use blossom_dependent_bench::{textbook, Rng};
 use std::hint::black_box;
 use std::time::Instant;
 
 const PASSES: usize = 21;
+
+/// One timed pass of a form: its answers consumed into one number.
+type Pass<'a> = Box<dyn FnMut() -> f64 + 'a>;
 
 /// The fastest pass of each form, in nanoseconds per item, the forms taking turns pass after
 /// pass (the first form of pass p is form p mod the number of forms).
@@ -154,7 +155,7 @@ fn planar_line<const N: usize>(rng: &mut Rng) -> [f64; 3] {
     let cs = Cases::<N, 2>::new(rng, 100_000);
     let p = |c: &[[f64; 2]; N], i: usize| (c[i][0], c[i][1]);
     let ranges = &cs.ranges;
-    let (lyon_pass, kurbo_pass): (Box<dyn FnMut() -> f64>, Box<dyn FnMut() -> f64>) = match N {
+    let (lyon_pass, kurbo_pass): (Pass, Pass) = match N {
         3 => {
             let lyons: Vec<_> = cs
                 .arrays
@@ -220,14 +221,8 @@ fn planar_line<const N: usize>(rng: &mut Rng) -> [f64; 3] {
                     let mut acc = 0.0;
                     for (c, &(a, b)) in kurbos.iter().zip(ranges) {
                         let s = c.subsegment(a..b);
-                        acc += s.p0.x
-                            + s.p0.y
-                            + s.p1.x
-                            + s.p1.y
-                            + s.p2.x
-                            + s.p2.y
-                            + s.p3.x
-                            + s.p3.y;
+                        acc +=
+                            s.p0.x + s.p0.y + s.p1.x + s.p1.y + s.p2.x + s.p2.y + s.p3.x + s.p3.y;
                     }
                     acc
                 }),

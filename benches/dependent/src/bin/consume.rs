@@ -27,6 +27,9 @@ use std::time::Instant;
 const CURVES: usize = 100_000;
 const PASSES: usize = 21;
 
+/// One timed pass of a form: its answers consumed into one number.
+type Pass<'a> = Box<dyn FnMut() -> f64 + 'a>;
+
 fn lyon_sum(s: &CubicBezierSegment<f64>) -> f64 {
     s.from.x + s.from.y + s.ctrl1.x + s.ctrl1.y + s.ctrl2.x + s.ctrl2.y + s.to.x + s.to.y
 }
@@ -59,7 +62,7 @@ fn main() {
     let lyon_pairs = || lyons.iter().zip(ranges.iter().cloned());
     let mut lyon_parts = Vec::with_capacity(CURVES);
     let mut parts = Vec::with_capacity(CURVES);
-    let mut forms: [(&str, Box<dyn FnMut() -> f64>); 6] = [
+    let mut forms: [(&str, Pass); 6] = [
         (
             "lyon summed",
             Box::new(|| lyon_pairs().map(|(c, r)| lyon_sum(&c.split_range(r))).sum()),
@@ -108,7 +111,10 @@ fn main() {
             }),
         ),
     ];
-    let args: Vec<usize> = std::env::args().skip(1).map(|a| a.parse().expect("a number")).collect();
+    let args: Vec<usize> = std::env::args()
+        .skip(1)
+        .map(|a| a.parse().expect("a number"))
+        .collect();
     if let [form, passes] = args[..] {
         let acc: f64 = (0..passes).map(|_| (forms[form].1)()).sum();
         println!("{acc}");
@@ -117,7 +123,10 @@ fn main() {
     // The two libraries' sums agree.
     let want = (forms[0].1)();
     let got = (forms[1].1)();
-    assert!((want - got).abs() <= 1e-9 * want.abs(), "{want} against {got}");
+    assert!(
+        (want - got).abs() <= 1e-9 * want.abs(),
+        "{want} against {got}"
+    );
     let mut times = vec![Vec::new(); forms.len()];
     for pass in 0..PASSES {
         for k in 0..forms.len() {
