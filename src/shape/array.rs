@@ -226,7 +226,9 @@ impl<T: Ring, const D: usize> Bezier<T, D> {
     #[cold]
     #[inline(never)]
     fn subsegment_new(&self, a: &T, b: &T) -> Self {
-        Bezier::from_coords(flat::curve_subsegment_new(self.flat(), D, a, b))
+        let mut out: Self = Bezier::from_coords(T::Coords::filled(self.flat().len(), T::zero()));
+        flat::curve_subsegment_returned(self.flat(), D, a, b, out.coords.as_mut_slice());
+        out
     }
 
     /// [`Bezier::subsegment`] into `out` (n + 1 points), with `scratch` grown to

@@ -315,10 +315,10 @@ impl<T: Ring> BezierCurve<T> {
     #[cold]
     #[inline(never)]
     fn subsegment_new(&self, a: &T, b: &T) -> Self {
-        BezierCurve {
-            coords: flat::curve_subsegment_new(self.coords.as_slice(), self.dim, a, b),
-            dim: self.dim,
-        }
+        let points = self.coords.as_slice();
+        let mut out = Self::zero_filled(self.dim, points.len());
+        flat::curve_subsegment_returned(points, self.dim, a, b, out.coords.as_mut_slice());
+        out
     }
 
     /// [`BezierCurve::subsegment`] over [a, b] into `out`, whose buffer is reused (resized

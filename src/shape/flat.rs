@@ -79,7 +79,7 @@ pub(crate) fn curve_subsegment<T: Ring>(
 
 /// The coordinates of a small float curve over [a, b] in a new buffer, for the forms that
 /// return a new curve: made by [`unrolled::small`] where they are computed, inline, with nothing
-/// allocated; `None` for every other curve (then [`curve_subsegment_new`]).
+/// allocated; `None` for every other curve (then [`curve_subsegment_returned`]).
 #[inline(always)]
 pub(crate) fn curve_subsegment_small<T: Ring>(
     points: &[T],
@@ -93,18 +93,22 @@ pub(crate) fn curve_subsegment_small<T: Ring>(
     unrolled::small(points, dim, a, b, T::Coords::from_slice)
 }
 
-/// The coordinates of the curve `points` over [a, b] in a new buffer: one allocation for the
-/// answer where it does not fit inline, and this thread's scratch ([`Ring::with_scratch`])
-/// where the engine needs one. Inlined into the returning forms' out-of-line paths, so that
-/// the answer is made where they return it.
+/// `out` = the control points of the curve `points` over [a, b], for the returning forms
+/// once they have made the answer's buffer (one allocation where it does not fit inline;
+/// made in the answer, so that nothing is copied after): the unrolled evaluators and the two
+/// subdivisions of the floats, else the engine with this thread's scratch
+/// ([`Ring::with_scratch`]).
 #[inline(always)]
-pub(crate) fn curve_subsegment_new<T: Ring>(points: &[T], dim: usize, a: &T, b: &T) -> T::Coords {
-    let mut out = T::Coords::filled(points.len(), T::zero());
-    let slice = out.as_mut_slice();
-    if !(T::UNROLLED && T::restrict_unrolled(points, dim, a, b, slice)) {
-        curve_subsegment_own_scratch(points, dim, a, b, slice);
+pub(crate) fn curve_subsegment_returned<T: Ring>(
+    points: &[T],
+    dim: usize,
+    a: &T,
+    b: &T,
+    out: &mut [T],
+) {
+    if !(T::UNROLLED && T::restrict_unrolled(points, dim, a, b, out)) {
+        curve_subsegment_own_scratch(points, dim, a, b, out);
     }
-    out
 }
 
 /// [`curve_subsegment_engine`] with the ring's scratch buffer ([`Ring::with_scratch`]: this
