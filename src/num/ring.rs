@@ -62,8 +62,8 @@ pub trait Ring: Clone + PartialEq + Debug {
     /// The default has none; `f64` and `f32` have them for degrees 1..=8 in dimensions
     /// 1..=4 (1..=24 with the feature `unrolled-high`), in functions that are compiled once,
     /// in this crate, rather than in every crate that restricts a float curve, and beyond
-    /// those up to degree 40 the two de Casteljau subdivisions of `shape/two_pass.rs` (the
-    /// same curve, rounded differently: not the engine's bits).
+    /// those, on intervals inside [0, 1], the two de Casteljau subdivisions of
+    /// `shape/two_pass.rs` (the same curve, rounded differently: not the engine's bits).
     fn restrict_unrolled(
         points: &[Self],
         dim: usize,
@@ -163,9 +163,7 @@ macro_rules! float_ring {
             }
             #[inline]
             fn restrict_unrolled(points: &[Self], dim: usize, a: &Self, b: &Self, out: &mut [Self]) -> bool {
-                (dim == 2 && crate::shape::unrolled::planar_cubic(points, a, b, out))
-                    || (dim == 3 && crate::shape::unrolled::spatial_cubic(points, a, b, out))
-                    || $evaluators.restrict(points, dim, a, b, out)
+                $evaluators.restrict(points, dim, a, b, out)
                     || $two_pass(points, dim, *a, *b, out)
             }
             #[inline]

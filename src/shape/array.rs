@@ -40,13 +40,22 @@ fn too_large(field: &str) -> Error {
     )
 }
 
+/// `Ok` when `found` is `want`, else the error about `field`: inlined into the restrictions'
+/// hot paths (a call of a function of this crate that is neither generic nor `#[inline]`
+/// cannot be inlined into another crate), with the error made out of line.
+#[inline]
 fn check_out(field: &str, want: usize, found: usize) -> Result<()> {
-    if want != found {
-        return Err(Error::of(
+    #[cold]
+    #[inline(never)]
+    fn wrong(field: &str, want: usize, found: usize) -> Error {
+        Error::of(
             ErrorKind::Shape,
             field,
             format!("expected {want} points, found {found}"),
-        ));
+        )
+    }
+    if want != found {
+        return Err(wrong(field, want, found));
     }
     Ok(())
 }
@@ -201,27 +210,38 @@ impl<T: Ring, const D: usize> Bezier<T, D> {
 
     /// The same curve over `range` = a..b, reparametrised over [0, 1]: control points
     /// f(a^(n-j), b^j). Any a, b, also outside [0, 1] or with a > b.
+    #[inline(always)]
     pub fn subsegment(&self, range: Range<T>) -> Self {
-        let mut out = self.coords.clone();
-        flat::curve_subsegment_returned(
-            self.flat(),
-            D,
-            &range.start,
-            &range.end,
-            out.as_mut_slice(),
-        );
-        Bezier::from_coords(out)
+        let (a, b) = (&range.start, &range.end);
+        match flat::curve_subsegment_small(self.flat(), D, a, b) {
+            Some(coords) => Bezier { coords },
+            None => self.subsegment_new(a, b),
+        }
+    }
+
+    /// [`Bezier::subsegment`] of every curve but the small float ones, out of line so that
+    /// the inlined part stays small, and `#[cold]` so that a caller's loop over small curves
+    /// keeps its running values in registers rather than saving them around this call (a call
+    /// this long costs the same either way).
+    #[cold]
+    #[inline(never)]
+    fn subsegment_new(&self, a: &T, b: &T) -> Self {
+        let mut out: Self = Bezier::from_coords(T::Coords::filled(self.flat().len(), T::zero()));
+        flat::curve_subsegment_returned(self.flat(), D, a, b, out.coords.as_mut_slice());
+        out
     }
 
     /// [`Bezier::subsegment`] into `out` (n + 1 points), with `scratch` grown to
     /// [`crate::engine::curve_scratch_len`]`(n, D)` on first use and reused afterwards: no allocation
     /// once it is large enough. In `f64` and `f32` (dimensions 1..=4), degrees 1..=8 run the
     /// engine's steps unrolled by `blossom::restriction!` (no scratch; the engine's answer bit
-    /// for bit), degrees 9..=40 two de Casteljau subdivisions (no scratch), higher degrees and
-    /// every other ring [`crate::engine::curve_net`].
+    /// for bit; the planar quadratic and cubic and the 3-D cubic inlined into the caller),
+    /// higher degrees on intervals inside [0, 1] two de Casteljau subdivisions (no scratch),
+    /// the rest and every other ring [`crate::engine::curve_net`].
     ///
     /// # Errors
     /// `out` when it does not hold n + 1 points.
+    #[inline(always)]
     pub fn subsegment_into(
         &self,
         a: &T,
@@ -247,6 +267,7 @@ impl<T: Ring, const D: usize> Bezier<T, D> {
 ///
 /// # Errors
 /// `points` when it is empty, `out` when it does not hold as many points.
+#[inline(always)]
 pub fn subsegment_into<T: Ring, const D: usize>(
     points: &[[T; D]],
     a: &T,

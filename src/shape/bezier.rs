@@ -14,9 +14,9 @@
 use crate::engine::CoordinateBuffer;
 use crate::error::{check_arity, Error, ErrorKind, Result};
 use crate::num::limits::check_entries;
+use crate::shape::flat;
 use crate::shape::point::{check_dims, check_flat, flatten_points, Point, Points};
 use crate::shape::simplex::{checked_triangle_len, triangle_index};
-use crate::shape::{flat, unrolled};
 use crate::Ring;
 use std::ops::Range;
 
@@ -138,13 +138,12 @@ impl<T: Ring> PartialEq for BezierCurve<T> {
     }
 }
 
-/// As a derived `Debug` of `{ dim, coords }` with the coordinates as a slice, whichever
-/// buffer holds them.
+/// The control points, each as a list of its coordinates, whichever buffer holds them:
+/// `BezierCurve { points: [[0.0, 0.0], [1.0, 2.0]] }`.
 impl<T: Ring> std::fmt::Debug for BezierCurve<T> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("BezierCurve")
-            .field("dim", &self.dim)
-            .field("coords", &self.coords.as_slice())
+            .field("points", &self.control_points())
             .finish()
     }
 }
@@ -297,42 +296,38 @@ impl<T: Ring> BezierCurve<T> {
     /// b[a^(n-j), b^j], j = 0..=n. Any a, b, also outside [0, 1] or with a > b. For `f64`
     /// and `f32` the answer is the one allocation (none for a curve held inline): the engine's
     /// scratch is this thread's ([`Ring::with_scratch`]).
-    #[inline]
+    #[inline(always)]
     pub fn subsegment(&self, range: Range<T>) -> Self {
-        if T::UNROLLED && self.dim == 2 {
-            // The planar float cubic, the commonest curve, computed into a local that never
-            // leaves this (inlined) function, so the answer is built in registers and stored
-            // once, where it is returned. (Through `out` below, whose address reaches an
-            // out-of-line call, the answer was built in one place and copied, and the copy
-            // waited on the stores that had just filled it: slower than the restriction
-            // itself, `benches/peers.rs`, group `cubic2d`.)
-            let mut cubic: [T; 8] = std::array::from_fn(|_| T::zero());
-            if unrolled::planar_cubic(self.coords.as_slice(), &range.start, &range.end, &mut cubic)
-            {
-                return BezierCurve {
-                    dim: 2,
-                    coords: T::Coords::from_slice(&cubic),
-                };
-            }
+        let (a, b) = (&range.start, &range.end);
+        match flat::curve_subsegment_small(self.coords.as_slice(), self.dim, a, b) {
+            Some(coords) => BezierCurve {
+                coords,
+                dim: self.dim,
+            },
+            None => self.subsegment_new(a, b),
         }
-        let mut out = Self::zero_filled(self.dim, self.coords.as_slice().len());
-        flat::curve_subsegment_returned(
-            self.coords.as_slice(),
-            self.dim,
-            &range.start,
-            &range.end,
-            out.coords.as_mut_slice(),
-        );
+    }
+
+    /// [`BezierCurve::subsegment`] of every curve but the small float ones, out of line so that
+    /// the inlined part stays small, and `#[cold]` so that a caller's loop over small curves
+    /// keeps its running values in registers rather than saving them around this call (a call
+    /// this long costs the same either way).
+    #[cold]
+    #[inline(never)]
+    fn subsegment_new(&self, a: &T, b: &T) -> Self {
+        let points = self.coords.as_slice();
+        let mut out = Self::zero_filled(self.dim, points.len());
+        flat::curve_subsegment_returned(points, self.dim, a, b, out.coords.as_mut_slice());
         out
     }
 
     /// [`BezierCurve::subsegment`] over [a, b] into `out`, whose buffer is reused (resized
     /// when its degree or dimension differ), with `scratch` grown to
     /// [`crate::engine::curve_scratch_len`] on first use. Nothing is allocated once both have
-    /// their size; `f64` and `f32` curves of degree up to 40 in dimension up to 4 need no
-    /// scratch at all (the unrolled evaluators of `blossom::restriction!` to degree 8, two
-    /// de Casteljau subdivisions above).
-    #[inline]
+    /// their size; `f64` and `f32` curves in dimension up to 4 need no scratch at all up to
+    /// degree 8 (the unrolled evaluators of `blossom::restriction!`) and at every degree on
+    /// intervals inside [0, 1] (two de Casteljau subdivisions above degree 8).
+    #[inline(always)]
     pub fn subsegment_into(&self, a: &T, b: &T, out: &mut Self, scratch: &mut Vec<T>) {
         out.dim = self.dim;
         out.coords.resize(self.coords.as_slice().len(), T::zero());
@@ -871,5 +866,57 @@ mod tests {
         assert_eq!(t.eval(&[1.0, 0.0]), vec![3.0]);
         assert_eq!(t.eval(&[0.0, 0.0]), vec![1.0]);
         assert!(TriangularPatch::new(2, vec![vec![1.0]; 5]).is_err());
+    }
+
+    /// `{:?}` of a curve and of its views shows points, whatever holds them: an inline
+    /// float buffer, a heap one, exact numbers; the fixed-dimension curve prints the same
+    /// points, and the other curve types theirs.
+    #[test]
+    fn debug_shows_points() {
+        let c = BezierCurve::new(vec![vec![1.0, 2.0], vec![3.0, 4.0]]).unwrap();
+        assert_eq!(
+            format!("{c:?}"),
+            "BezierCurve { points: [[1.0, 2.0], [3.0, 4.0]] }"
+        );
+        assert_eq!(
+            format!("{:?}", c.control_points()),
+            "[[1.0, 2.0], [3.0, 4.0]]"
+        );
+        let fixed = crate::Bezier::<f64, 2>::try_from(&c).unwrap();
+        assert_eq!(
+            format!("{fixed:?}"),
+            "Bezier { points: [[1.0, 2.0], [3.0, 4.0]] }"
+        );
+        // Past the inline limit, on the heap: the same form.
+        let long = BezierCurve::from_coordinates(1, (0..20).map(f64::from).collect()).unwrap();
+        assert!(format!("{long:?}").starts_with("BezierCurve { points: [[0.0], [1.0], [2.0]"));
+        let q = |n: i64| crate::Rational::from_integer(n.into());
+        let exact = BezierCurve::new(vec![vec![q(1)], vec![q(-2)]]).unwrap();
+        assert_eq!(
+            format!("{exact:?}"),
+            "BezierCurve { points: [[Ratio { numer: 1, denom: 1 }], [Ratio { numer: -2, denom: 1 }]] }"
+        );
+        let power = crate::PowerCurve::new(vec![vec![1.0, 0.0], vec![0.0, 2.0]]).unwrap();
+        assert_eq!(
+            format!("{power:?}"),
+            "PowerCurve { coefficients: [[1.0, 0.0], [0.0, 2.0]] }"
+        );
+        let arc = crate::RationalBezierCurve::from_coordinates(
+            2,
+            vec![1.0, 0.0, 1.0, 1.0],
+            vec![1.0, 2.0],
+        )
+        .unwrap();
+        assert_eq!(
+            format!("{arc:?}"),
+            "RationalBezierCurve { points: [[1.0, 0.0], [1.0, 1.0]], weights: [1.0, 2.0] }"
+        );
+        let spline = crate::BSpline::new(
+            1,
+            vec![0.0, 0.0, 1.0, 1.0],
+            vec![vec![0.0, 1.0], vec![2.0, 3.0]],
+        )
+        .unwrap();
+        assert!(format!("{spline:?}").ends_with("points: [[0.0, 1.0], [2.0, 3.0]] }"));
     }
 }

@@ -64,11 +64,21 @@ impl<T: Clone + Debug + PartialEq> CoordinateBuffer<T> for Vec<T> {
 
 /// Up to `N` numbers inline, more on the heap: the coordinate buffer of the float curves.
 ///
-/// The layout is chosen for the way a returned curve is used. The inline numbers come first
-/// and there is no enum tag in front of them, so that when a freshly written curve is moved
-/// (returned, stored in a vector) the move's wide loads line up with the writes of the
-/// answer's points: with a tag first, each move of a just-restricted cubic stalled on store
-/// forwarding for longer than the restriction took (`benches/peers.rs`, group `cubic2d`).
+/// The layout is chosen for the way a returned curve is used: it is written once, where it is
+/// computed, and often moved (returned, stored in a vector, handed to `black_box`) right
+/// after, and a move that reads back bytes still on their way to memory waits unless each of
+/// its loads lies inside one of the stores that wrote them (store forwarding). So:
+///
+/// * the inline numbers come first, with no enum tag in front of them, so that the moves'
+///   16-byte loads line up with the 16-byte writes of the answer's points (with a tag first,
+///   each move of a just-restricted cubic stalled for longer than the restriction took);
+/// * the whole curve stays within 128 bytes (the heap part is a boxed slice, two words, not a
+///   vector's three), which the compiler moves with inline 16-byte loads and stores; at 136
+///   bytes a [`crate::BezierCurve`] was moved by a call of the C library's `memcpy`, whose
+///   wider loads (32 or 64 bytes, chosen at run time for the processor) spanned several of
+///   the stores just made and waited on all of them: 2x lyon's time per cubic when the
+///   answers were collected or passed through `black_box` (issue 47; how long such a wait lasts
+///   is the processor's, which is why the figures moved from machine to machine).
 ///
 /// Equality and `Debug` are those of the slice, so a curve compares and prints the same
 /// whichever way its numbers are held.
@@ -79,7 +89,7 @@ pub struct SmallCoords<T: Copy, const N: usize> {
     inline: [T; N],
     len: usize,
     /// The numbers when `len > N` (then `heap.len() == len`); empty otherwise.
-    heap: Vec<T>,
+    heap: Box<[T]>,
 }
 
 impl<T: Copy, const N: usize> SmallCoords<T, N> {
@@ -87,6 +97,23 @@ impl<T: Copy, const N: usize> SmallCoords<T, N> {
     #[inline]
     pub(crate) fn is_inline(&self) -> bool {
         self.len <= N
+    }
+}
+
+/// The heap part is freed out of line, behind a test of its length: a loop that restricts
+/// small curves and drops the answers then holds no call on its common path, so the compiler
+/// keeps its running values in registers instead of saving them around a call in every pass.
+impl<T: Copy, const N: usize> Drop for SmallCoords<T, N> {
+    #[inline]
+    fn drop(&mut self) {
+        #[cold]
+        #[inline(never)]
+        fn free<T>(heap: Box<[T]>) {
+            drop(heap);
+        }
+        if !self.heap.is_empty() {
+            free(std::mem::take(&mut self.heap));
+        }
     }
 }
 
@@ -101,7 +128,7 @@ impl<T: Copy + Default + Debug + PartialEq, const N: usize> CoordinateBuffer<T>
             SmallCoords {
                 inline: [T::default(); N],
                 len: values.len(),
-                heap: values,
+                heap: values.into_boxed_slice(),
             }
         }
     }
@@ -116,19 +143,24 @@ impl<T: Copy + Default + Debug + PartialEq, const N: usize> CoordinateBuffer<T>
         SmallCoords {
             inline,
             len: values.len(),
-            heap: Vec::new(),
+            heap: Box::default(),
         }
     }
 
+    /// Past `N`, the numbers are allocated and then written, not allocated zeroed: a zeroed
+    /// allocation is `calloc`, which glibc serves past its per-thread cache (and `free` then
+    /// finds that cache full), about 300 instructions a curve instead of 50 (issue 47).
     #[inline]
     fn filled(len: usize, value: T) -> Self {
         SmallCoords {
             inline: [value; N],
             len,
             heap: if len <= N {
-                Vec::new()
+                Box::default()
             } else {
-                vec![value; len]
+                let mut values = Vec::with_capacity(len);
+                values.resize(len, value);
+                values.into_boxed_slice()
             },
         }
     }
@@ -163,23 +195,28 @@ impl<T: Copy + Default + Debug + PartialEq, const N: usize> CoordinateBuffer<T>
                 let mut values = Vec::with_capacity(new_len);
                 values.extend_from_slice(&self.inline[..self.len]);
                 values.resize(new_len, value);
-                self.heap = values;
+                self.heap = values.into_boxed_slice();
             }
             (false, true) => {
                 // Shrinking below the limit: `new_len < self.len`.
                 self.inline[..new_len].copy_from_slice(&self.heap[..new_len]);
-                self.heap = Vec::new();
+                self.heap = Box::default();
             }
-            (false, false) => self.heap.resize(new_len, value),
+            (false, false) => {
+                let mut values = std::mem::take(&mut self.heap).into_vec();
+                values.reserve_exact(new_len.saturating_sub(values.len()));
+                values.resize(new_len, value);
+                self.heap = values.into_boxed_slice();
+            }
         }
         self.len = new_len;
     }
 
-    fn into_vec(self) -> Vec<T> {
+    fn into_vec(mut self) -> Vec<T> {
         if self.is_inline() {
             self.inline[..self.len].to_vec()
         } else {
-            self.heap
+            std::mem::take(&mut self.heap).into_vec()
         }
     }
 }
@@ -223,7 +260,7 @@ mod tests {
         assert_eq!(small.clone().into_vec(), vec);
         assert_eq!(format!("{small:?}"), format!("{vec:?}"));
         // Shrunk below the limit, the numbers are back inline and the heap is freed.
-        assert!(small.is_inline() && small.heap.capacity() == 0);
+        assert!(small.is_inline() && small.heap.is_empty());
         // Equal contents are equal, inline or not; a grown-then-shrunk heap buffer keeps
         // only its first numbers.
         let mut heap = SmallCoords::<f64, 4>::from_vec(vec![42.0, 8.0, 8.0, 1.0, 2.0]);
@@ -253,5 +290,15 @@ mod tests {
             assert_eq!(copied.is_inline(), len <= 4);
             assert_eq!(copied.heap.len(), if len <= 4 { 0 } else { len });
         }
+    }
+
+    /// The float curves stay within the 128 bytes the compiler moves with inline 16-byte
+    /// loads and stores (above, a call of `memcpy`: see [`SmallCoords`]).
+    #[test]
+    fn float_curves_move_inline() {
+        use crate::{Bezier, BezierCurve};
+        assert!(std::mem::size_of::<BezierCurve<f64>>() <= 128);
+        assert!(std::mem::size_of::<Bezier<f64, 3>>() <= 128);
+        assert!(std::mem::size_of::<BezierCurve<f32>>() <= 128);
     }
 }

@@ -7,23 +7,42 @@
 //! * restriction: the halving engine ([`crate::engine::curve_net`] and its siblings) with
 //!   de Casteljau's steps; for `f64`/`f32` curves of degree 1..=8 in dimension 1..=4 the same
 //!   steps unrolled by `blossom::restriction!` (no scratch, the same answer bit for bit;
-//!   degrees 1..=24 with the feature `unrolled-high`), then up to degree 40 two de Casteljau
-//!   subdivisions (`shape/two_pass.rs`, no scratch, fewer steps);
+//!   degrees 1..=24 with the feature `unrolled-high`; the planar quadratic and cubic and the
+//!   3-D cubic inlined into the caller), above them, on intervals inside [0, 1], two
+//!   de Casteljau subdivisions (`shape/two_pass.rs`, no scratch, fewer steps);
 //! * evaluation and blossoms: de Casteljau's pyramid, eq. (2) of seed 004 for curves, its
 //!   triangular form b^r_(ijk) = u_r b_(i+1,j,k) + v_r b_(i,j+1,k) + w_r b_(i,j,k+1), and the
 //!   tensor product as curves of curves (eq. (9) of seed 004).
 
 use crate::num::meter::charge_points;
+use crate::shape::coords::CoordinateBuffer;
 use crate::shape::halving::{
     curve_blossom_in_place, curve_net, step_left, tensor_net, triangle_blossom_in_place,
     triangle_net, BernsteinPairStep, BernsteinStep, CurveStep, Fixed, TriangleStep,
 };
+use crate::shape::unrolled;
 use crate::Ring;
 
 /// `out` = the control points f(a^(n-j), b^j) of the curve `points` (`D` numbers per point)
 /// over [a, b]. `scratch` grows to [`crate::engine::curve_scratch_len`] on first use.
-#[inline]
+#[inline(always)]
 pub(crate) fn curve_subsegment_fixed<T: Ring, const D: usize>(
+    points: &[T],
+    a: &T,
+    b: &T,
+    out: &mut [T],
+    scratch: &mut Vec<T>,
+) {
+    if !small_into(points, D, a, b, out) {
+        curve_subsegment_fixed_general::<T, D>(points, a, b, out, scratch);
+    }
+}
+
+/// [`curve_subsegment_fixed`] past the small curves, out of line so that the inlined part
+/// stays small: the unrolled evaluators and the two subdivisions of the floats, else the
+/// engine with the width fixed at compile time.
+#[inline(never)]
+fn curve_subsegment_fixed_general<T: Ring, const D: usize>(
     points: &[T],
     a: &T,
     b: &T,
@@ -43,11 +62,76 @@ pub(crate) fn curve_subsegment_fixed<T: Ring, const D: usize>(
     );
 }
 
-/// [`curve_subsegment_fixed`] for a dimension known at run time: the unrolled evaluators of
-/// `f64`/`f32` first (one table load and one call, inlined into the caller), else
-/// [`curve_subsegment_engine`].
-#[inline]
+/// [`curve_subsegment_fixed`] for a dimension known at run time.
+#[inline(always)]
 pub(crate) fn curve_subsegment<T: Ring>(
+    points: &[T],
+    dim: usize,
+    a: &T,
+    b: &T,
+    out: &mut [T],
+    scratch: &mut Vec<T>,
+) {
+    if !small_into(points, dim, a, b, out) {
+        curve_subsegment_general(points, dim, a, b, out, scratch);
+    }
+}
+
+/// The coordinates of a small float curve over [a, b] in a new buffer, for the forms that
+/// return a new curve: made by [`unrolled::small`] where they are computed, inline, with nothing
+/// allocated; `None` for every other curve (then [`curve_subsegment_returned`]).
+#[inline(always)]
+pub(crate) fn curve_subsegment_small<T: Ring>(
+    points: &[T],
+    dim: usize,
+    a: &T,
+    b: &T,
+) -> Option<T::Coords> {
+    if !T::UNROLLED {
+        return None;
+    }
+    unrolled::small(points, dim, a, b, T::Coords::from_slice)
+}
+
+/// `out` = the control points of the curve `points` over [a, b], for the returning forms
+/// once they have made the answer's buffer (one allocation where it does not fit inline;
+/// made in the answer, so that nothing is copied after): the unrolled evaluators and the two
+/// subdivisions of the floats, else the engine with this thread's scratch
+/// ([`Ring::with_scratch`]).
+#[inline(always)]
+pub(crate) fn curve_subsegment_returned<T: Ring>(
+    points: &[T],
+    dim: usize,
+    a: &T,
+    b: &T,
+    out: &mut [T],
+) {
+    if !(T::UNROLLED && T::restrict_unrolled(points, dim, a, b, out)) {
+        curve_subsegment_own_scratch(points, dim, a, b, out);
+    }
+}
+
+/// [`curve_subsegment_engine`] with the ring's scratch buffer ([`Ring::with_scratch`]: this
+/// thread's, reused, for the floats).
+#[inline(never)]
+fn curve_subsegment_own_scratch<T: Ring>(points: &[T], dim: usize, a: &T, b: &T, out: &mut [T]) {
+    T::with_scratch(|scratch| curve_subsegment_engine(points, dim, a, b, out, scratch));
+}
+
+/// `out` = the restriction of a small float curve by [`unrolled::small`], inlined; `false`
+/// (and `out` untouched) for every other curve, or when `out` has another length.
+#[inline(always)]
+fn small_into<T: Ring>(points: &[T], dim: usize, a: &T, b: &T, out: &mut [T]) -> bool {
+    T::UNROLLED
+        && out.len() == points.len()
+        && unrolled::small(points, dim, a, b, |answer| out.clone_from_slice(answer)).is_some()
+}
+
+/// [`curve_subsegment`] past the small curves: the unrolled evaluators and the two
+/// subdivisions of the floats, else [`curve_subsegment_engine`]. Out of line, so that the
+/// inlined part stays small.
+#[inline(never)]
+fn curve_subsegment_general<T: Ring>(
     points: &[T],
     dim: usize,
     a: &T,
@@ -61,35 +145,8 @@ pub(crate) fn curve_subsegment<T: Ring>(
     curve_subsegment_engine(points, dim, a, b, out, scratch);
 }
 
-/// [`curve_subsegment`] with a scratch buffer of its own, for the forms that return a new
-/// shape: no scratch is live in the caller's frame, so the caller can build its answer where
-/// it returns it (with a scratch `Vec` beside it, the answer was built elsewhere and copied,
-/// and the copy waited on the stores that had just filled it: `benches/peers.rs`, `cubic2d`).
-#[inline]
-pub(crate) fn curve_subsegment_returned<T: Ring>(
-    points: &[T],
-    dim: usize,
-    a: &T,
-    b: &T,
-    out: &mut [T],
-) {
-    if T::UNROLLED && T::restrict_unrolled(points, dim, a, b, out) {
-        return;
-    }
-    curve_subsegment_own_scratch(points, dim, a, b, out);
-}
-
-/// [`curve_subsegment_engine`] with the ring's scratch buffer ([`Ring::with_scratch`]: this
-/// thread's, reused, for the floats), out of line.
-#[inline(never)]
-fn curve_subsegment_own_scratch<T: Ring>(points: &[T], dim: usize, a: &T, b: &T, out: &mut [T]) {
-    T::with_scratch(|scratch| curve_subsegment_engine(points, dim, a, b, out, scratch));
-}
-
 /// The halving engine for [`curve_subsegment`]: with the width fixed at compile time in
 /// dimensions 1..=4 of the unrolled rings (degrees above 24), a runtime width otherwise.
-/// Kept out of line so that the caller's fast path stays small.
-#[inline(never)]
 fn curve_subsegment_engine<T: Ring>(
     points: &[T],
     dim: usize,

@@ -79,7 +79,10 @@ pub(crate) fn check_dims<T>(points: &[Point<T>], dim: usize, field: &str) -> Res
 /// assert_eq!(points, vec![vec![0.0, 0.0], vec![1.0, 2.0], vec![4.0, 0.0]]);
 /// # Ok::<(), blossom::Error>(())
 /// ```
-#[derive(Clone, Copy, Debug)]
+///
+/// `{:?}` shows the points, each as a list of its coordinates (`[[0.0, 0.0], [1.0, 2.0]]`),
+/// not the flat storage behind them.
+#[derive(Clone, Copy)]
 pub struct Points<'a, T> {
     coords: &'a [T],
     dim: usize,
@@ -175,6 +178,12 @@ impl<'a, T> Points<'a, T> {
         T: Clone,
     {
         self.iter().map(<[T]>::to_vec).collect()
+    }
+}
+
+impl<T: std::fmt::Debug> std::fmt::Debug for Points<'_, T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_list().entries(self.iter()).finish()
     }
 }
 

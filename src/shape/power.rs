@@ -12,10 +12,20 @@ pub(crate) use crate::shape::point::check_dims;
 ///
 /// The degree is the number of coefficients minus one, even when the leading ones are zero:
 /// the paper's convention, under which the Bézier form of degree `n` is asked for.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, PartialEq)]
 pub struct PowerCurve<T> {
     dim: usize,
     coords: Vec<T>,
+}
+
+/// The coefficients, each as a list of its coordinates:
+/// `PowerCurve { coefficients: [[1.0, 0.0], [0.0, 2.0]] }`.
+impl<T: std::fmt::Debug> std::fmt::Debug for PowerCurve<T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("PowerCurve")
+            .field("coefficients", &Points::new(&self.coords, self.dim))
+            .finish()
+    }
 }
 
 impl<T: Ring> PowerCurve<T> {

@@ -22,54 +22,115 @@
 //! the steps (measured against the exact answer in `tests/suite/bezier_input/arrays.rs`).
 //! Exact rings never come here: their restriction is the engine's, division-free.
 
+use std::cell::Cell;
+
+/// The de Casteljau levels of one subdivision, in place, two levels to a sweep: `sweep(m)`
+/// yields the first m points in sweep order y_0, y_1, ..., and level r = 1..=n (n + 1 points)
+/// replaces y_k, k = 0..=n - r, by `step(y_k, y_(k+1))` of level r - 1, leaving the rest.
+///
+/// A sweep of levels r and r + 1 computes level r at y_k from y_k and y_(k+1), then level r + 1
+/// at y_(k-1) from level r at y_(k-1) and y_k, both kept in registers: one load and one store
+/// of a point per two steps instead of two loads and a store per step, the same steps on the
+/// same operands (so the same numbers) as one level after another. Every point is read and
+/// written whole, at its own address, so each load of a level meets the store of the level
+/// before at the same place and width (nothing straddles two stores, which the processor
+/// could not forward).
+#[inline(always)]
+fn levels<'a, P: Copy + 'a, I: Iterator<Item = &'a Cell<P>>>(
+    n: usize,
+    sweep: impl Fn(usize) -> I,
+    step: impl Fn(P, P) -> P,
+) {
+    let mut r = 1;
+    while r < n {
+        let mut cells = sweep(n - r + 2);
+        let (Some(mut store), Some(mut here)) = (cells.next(), cells.next()) else {
+            return;
+        };
+        let mut own = here.get();
+        let mut lower = step(store.get(), own);
+        for next in cells {
+            let value = next.get();
+            let this = step(own, value);
+            store.set(step(lower, this));
+            (lower, own, store, here) = (this, value, here, next);
+        }
+        store.set(lower);
+        r += 2;
+    }
+    if r == n {
+        let mut cells = sweep(2);
+        if let (Some(first), Some(second)) = (cells.next(), cells.next()) {
+            first.set(step(first.get(), second.get()));
+        }
+    }
+}
+
 /// `out` = the control points over [a, b] of the curve with flat control points `points`
 /// (`D` numbers per point), by two subdivisions; `out` has the length of `points`.
+///
+/// Degrees 9..=12 run the same steps with the number of points fixed at compile time, which
+/// the compiler unrolls into straight-line code as it does a textbook split on a fixed-size
+/// array (below degree 9 the unrolled evaluators of [`crate::shape::unrolled`] come first;
+/// above 12 the loops cost little more than the steps).
 macro_rules! two_pass {
     ($name:ident, $t:ty) => {
         #[inline(never)]
         fn $name<const D: usize>(points: &[$t], a: $t, b: $t, out: &mut [$t]) {
-            out.copy_from_slice(points);
-            let (out, _) = out.as_chunks_mut::<D>();
-            let (first, second, reversed) = if b.abs() >= a.abs() {
-                (b, a, false)
-            } else {
-                (a, b, true)
-            };
-            if first == 0.0 {
-                // a = b = 0: every control point is the curve's value at 0.
-                let start = out[0];
-                out.fill(start);
-                return;
-            }
-            let n = out.len() - 1;
-            // The part over [0, first]: at level r, points r..=n become
-            // x_i = x_(i-1) + first (x_i - x_(i-1)) of the previous level, read from a carry.
-            for r in 1..=n {
-                let level = &mut out[r - 1..];
-                let mut previous = level[0];
-                for point in &mut level[1..] {
-                    let current = *point;
-                    for x in 0..D {
-                        point[x] = previous[x] + first * (current[x] - previous[x]);
-                    }
-                    previous = current;
+            /// The two subdivisions of the points `x` in place.
+            #[inline(always)]
+            fn subdivide<const D: usize>(x: &mut [[$t; D]], a: $t, b: $t) {
+                let (first, second, reversed) = if b.abs() >= a.abs() {
+                    (b, a, false)
+                } else {
+                    (a, b, true)
+                };
+                if first == 0.0 {
+                    // a = b = 0: every control point is the curve's value at 0.
+                    let start = x[0];
+                    x.fill(start);
+                    return;
+                }
+                let n = x.len() - 1;
+                let lerp = |p: [$t; D], q: [$t; D], s: $t| -> [$t; D] {
+                    std::array::from_fn(|i| p[i] + s * (q[i] - p[i]))
+                };
+                let cells = Cell::from_mut(&mut *x).as_slice_of_cells();
+                // The part over [0, first]: level r replaces x_i, i = r..=n, by
+                // x_(i-1) + first (x_i - x_(i-1)) (sweeping down, y_k = x_(n-k)).
+                levels(
+                    n,
+                    |m| cells[n + 1 - m..].iter().rev(),
+                    |own, next| lerp(next, own, first),
+                );
+                // Its part over [second / first, 1]: level r replaces x_i, i = 0..=n - r, by
+                // x_i + t (x_(i+1) - x_i) (sweeping up, y_k = x_k).
+                let t = second / first;
+                levels(n, |m| cells[..m].iter(), |own, next| lerp(own, next, t));
+                if reversed {
+                    x.reverse();
                 }
             }
-            // Its part over [second / first, 1]: at level r, points 0..=n - r.
-            let t = second / first;
-            for r in 1..=n {
-                let level = &mut out[..=n - r + 1];
-                let mut next = level[level.len() - 1];
-                for point in level[..n - r + 1].iter_mut().rev() {
-                    let current = *point;
-                    for x in 0..D {
-                        point[x] = current[x] + t * (next[x] - current[x]);
-                    }
-                    next = current;
-                }
+            /// The points, as `N` points of `D` numbers, subdivided in a local array: with the
+            /// number of points fixed the compiler keeps them in registers, as in a textbook
+            /// split of a fixed-size array. (Subdivided in `out` instead, the straight-line
+            /// code read pairs of numbers across two points' stores and waited on them.)
+            #[inline(always)]
+            fn fixed<const D: usize, const N: usize>(points: &[$t], a: $t, b: $t, out: &mut [$t]) {
+                let mut x: [[$t; D]; N] =
+                    *<&[[$t; D]; N]>::try_from(points.as_chunks::<D>().0).expect("N points");
+                subdivide(&mut x, a, b);
+                out.copy_from_slice(x.as_flattened());
             }
-            if reversed {
-                out.reverse();
+            match points.len() / D {
+                10 => fixed::<D, 10>(points, a, b, out),
+                11 => fixed::<D, 11>(points, a, b, out),
+                12 => fixed::<D, 12>(points, a, b, out),
+                13 => fixed::<D, 13>(points, a, b, out),
+                _ => {
+                    out.copy_from_slice(points);
+                    subdivide(out.as_chunks_mut::<D>().0, a, b);
+                }
             }
         }
     };
@@ -78,21 +139,18 @@ macro_rules! two_pass {
 two_pass!(two_pass_f64, f64);
 two_pass!(two_pass_f32, f32);
 
-/// The highest degree restricted here: above it the engine's halving, with its long
-/// vectorised levels, takes fewer instructions (callgrind, 3-D curves, `benches/dependent`:
-/// 21.6 against 22.5 thousand instructions per curve at degree 32, 79 against 69 thousand at
-/// degree 64).
-pub(crate) const MAX_DEGREE: usize = 40;
-
 /// Whether a curve of `len` numbers, `dim` per point, over [a, b] is restricted here: degree
-/// 1..=[`MAX_DEGREE`], `out` as long, a and b in [0, 1] (not NaN).
+/// at least 1, `out` as long, a and b in [0, 1] (not NaN). Every degree: with two levels to a
+/// sweep the two subdivisions take fewer instructions than the engine's halving at every
+/// degree (callgrind, 3-D curves, `benches/dependent/count.sh`: 45,000 against 69,000 per
+/// curve at degree 64, where the textbook split takes 74,000).
 #[inline]
 fn takes(len: usize, dim: usize, out: usize, inside: bool) -> bool {
-    inside && out == len && len > dim && len <= (MAX_DEGREE + 1) * dim
+    inside && out == len && len > dim
 }
 
-/// Restricts by [`two_pass_f64`] in dimensions 1..=4 of curves of degree 1..=[`MAX_DEGREE`]
-/// over intervals inside [0, 1]; `false` (and `out` untouched) otherwise.
+/// Restricts by [`two_pass_f64`] in dimensions 1..=4 of curves of degree 1 and up over
+/// intervals inside [0, 1]; `false` (and `out` untouched) otherwise.
 #[inline]
 pub(crate) fn restrict_f64(points: &[f64], dim: usize, a: f64, b: f64, out: &mut [f64]) -> bool {
     let inside = (0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b);
@@ -128,7 +186,7 @@ pub(crate) fn restrict_f32(points: &[f32], dim: usize, a: f32, b: f32, out: &mut
 
 #[cfg(test)]
 mod tests {
-    use super::{restrict_f32, restrict_f64, MAX_DEGREE};
+    use super::{restrict_f32, restrict_f64};
     use crate::test_rng::XorShift;
     use crate::{BezierCurve, Rational};
 
@@ -149,40 +207,42 @@ mod tests {
         (scale, error)
     }
 
-    /// Degrees 1..=10 and five more up to MAX_DEGREE in dimensions 1..=4, on intervals inside
-    /// [0, 1] either way round, short ones and ones with an end at 0 or 1: the two
-    /// subdivisions agree with the exact restriction (the engine in rationals) within
+    /// Degrees 1..=13 and four more up to 40 in dimensions 1..=4, then 64 in dimension 1, on
+    /// intervals inside [0, 1] either way round, short ones and ones with an end at 0 or 1:
+    /// the two subdivisions agree with the exact restriction (the engine in rationals) within
     /// de Casteljau's error, 4 n u times the size of the control points (`u` = 2^-53).
     #[test]
     fn two_subdivisions_agree_with_the_exact_restriction() {
         let mut rng = XorShift(0x2_9a55);
         let mut unit = || (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
-        // Every degree up to 10, then a few up to the limit (the exact engine grows with n^2).
-        let degrees = (1..=10).chain([13, 17, 24, 31, MAX_DEGREE]);
-        for n in degrees {
-            for dim in 1..=4 {
-                let points: Vec<f64> = (0..(n + 1) * dim).map(|_| 4.0 * unit() - 2.0).collect();
-                let (x, y) = (unit(), unit());
-                // x + 1e-9 may pass 1: the short interval starts a little below x.
-                let short = (0.999 * x, 0.999 * x + 1e-9);
-                for (a, b) in [
-                    (x, y),
-                    (y, x),
-                    short,
-                    (0.0, y),
-                    (x, 0.0),
-                    (1.0, x),
-                    (0.0, 1.0),
-                ] {
-                    let mut got = vec![0.0; points.len()];
-                    assert!(restrict_f64(&points, dim, a, b, &mut got));
-                    let (scale, error) = error_against_exact(&points, dim, a, b, &got);
-                    let bound = 4.0 * n as f64 * f64::EPSILON * scale.max(1.0);
-                    assert!(
-                        error <= bound,
-                        "dim {dim}, degree {n}, [{a}, {b}]: {error:e} > {bound:e}"
-                    );
-                }
+        // Every degree up to 13 (the straight-line code ends at 12), then a few higher (the
+        // exact engine's work grows as n^2 times the numbers' length, about n: degree 64 in
+        // one dimension only).
+        let shapes = (1..=13)
+            .chain([17, 24, 31, 40])
+            .flat_map(|n| (1..=4).map(move |d| (n, d)));
+        for (n, dim) in shapes.chain([(64, 1)]) {
+            let points: Vec<f64> = (0..(n + 1) * dim).map(|_| 4.0 * unit() - 2.0).collect();
+            let (x, y) = (unit(), unit());
+            // x + 1e-9 may pass 1: the short interval starts a little below x.
+            let short = (0.999 * x, 0.999 * x + 1e-9);
+            for (a, b) in [
+                (x, y),
+                (y, x),
+                short,
+                (0.0, y),
+                (x, 0.0),
+                (1.0, x),
+                (0.0, 1.0),
+            ] {
+                let mut got = vec![0.0; points.len()];
+                assert!(restrict_f64(&points, dim, a, b, &mut got));
+                let (scale, error) = error_against_exact(&points, dim, a, b, &got);
+                let bound = 4.0 * n as f64 * f64::EPSILON * scale.max(1.0);
+                assert!(
+                    error <= bound,
+                    "dim {dim}, degree {n}, [{a}, {b}]: {error:e} > {bound:e}"
+                );
             }
         }
     }
@@ -208,8 +268,8 @@ mod tests {
         }
     }
 
-    /// What is not taken: dimension 5, degree 0, degree over the limit, a wrong `out`, an
-    /// interval reaching outside [0, 1] or with a NaN end.
+    /// What is not taken: dimension 5, degree 0, a wrong `out`, an interval reaching outside
+    /// [0, 1] or with a NaN end.
     #[test]
     fn other_shapes_are_left_to_the_engine() {
         let mut out = vec![0.0; 10];
@@ -218,10 +278,49 @@ mod tests {
         }
         assert!(!restrict_f64(&[0.0; 10], 5, 0.0, 1.0, &mut out));
         assert!(!restrict_f64(&[0.0; 2], 2, 0.0, 1.0, &mut out[..2]));
-        let long = vec![0.0; (MAX_DEGREE + 2) * 2];
-        let mut long_out = long.clone();
-        assert!(!restrict_f64(&long, 2, 0.0, 1.0, &mut long_out));
         assert!(!restrict_f64(&[0.0; 8], 2, 0.0, 1.0, &mut out[..6]));
         assert_eq!(out, vec![0.0; 10]);
+    }
+
+    /// Two levels to a sweep, and the straight-line code of degrees 9..=12, give the bits of
+    /// the two subdivisions run one level after another (the same steps on the same operands).
+    #[test]
+    fn sweeps_are_the_levels_bit_for_bit() {
+        let mut rng = XorShift(0x1e7e15);
+        let mut unit = || (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
+        for n in 1..=24 {
+            for dim in 1..=4 {
+                let points: Vec<f64> = (0..(n + 1) * dim).map(|_| 4.0 * unit() - 2.0).collect();
+                let (x, y) = (unit(), unit());
+                let mut got = vec![0.0; points.len()];
+                assert!(restrict_f64(&points, dim, x, y, &mut got));
+                // One level after another, as the textbook.
+                let mut want = points.clone();
+                let (first, second) = if y.abs() >= x.abs() { (y, x) } else { (x, y) };
+                for r in 1..=n {
+                    for i in (r..=n).rev() {
+                        for k in 0..dim {
+                            let (p, q) = (want[(i - 1) * dim + k], want[i * dim + k]);
+                            want[i * dim + k] = p + first * (q - p);
+                        }
+                    }
+                }
+                let t = second / first;
+                for r in 1..=n {
+                    for i in 0..=n - r {
+                        for k in 0..dim {
+                            let (p, q) = (want[i * dim + k], want[(i + 1) * dim + k]);
+                            want[i * dim + k] = p + t * (q - p);
+                        }
+                    }
+                }
+                if y.abs() < x.abs() {
+                    let mut reversed: Vec<f64> =
+                        want.chunks(dim).rev().flatten().copied().collect();
+                    std::mem::swap(&mut want, &mut reversed);
+                }
+                assert_eq!(got, want, "degree {n}, dim {dim}");
+            }
+        }
     }
 }

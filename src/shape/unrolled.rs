@@ -93,7 +93,7 @@ macro_rules! unrolled {
         }
     };
     (@one $n:literal => $name:ident, $into:ident) => {
-        crate::restriction!(name = $name, shape = bezier_curve, degree = $n);
+        crate::restriction!(#[inline(always)] name = $name, shape = bezier_curve, degree = $n);
 
         /// The evaluator of this degree on flat slices, read as `[T; D]` points in place
         /// (`as_chunks`), so nothing is copied on the way in. Filed in the table under its
@@ -127,28 +127,35 @@ unrolled! {
     22 => degree_22, into_22; 23 => degree_23, into_23; 24 => degree_24, into_24;
 }
 
-/// The planar cubic, the commonest curve, by its unrolled evaluator in a function that is
-/// inlined into its caller (the tables' calls are indirect, so the caller must pass its answer
-/// through memory it then copies; inlined, the answer is built where it is returned). A few
-/// dozen instructions, instantiated for `f64` and `f32` only.
+/// The curves restricted where they are asked for, with no call and no table: the planar
+/// quadratic and cubic and the 3-D cubic, the curves of vector graphics and of most CAD. Their
+/// unrolled evaluators are inlined into the caller together with `finish`, which receives the
+/// answer's coordinates and copies them into the caller's buffer or makes the returned
+/// curve's inline buffer of them, so the answer goes from registers to where it is used, once.
+/// (Through a table's indirect call, or through a buffer that an out-of-line call fills and
+/// the caller then copies, the answer waits on stores that have just been made, and how long
+/// depends on the processor's store forwarding, not on the arithmetic.) `None` for every
+/// other shape.
 #[inline(always)]
-pub(crate) fn planar_cubic<T: Ring>(points: &[T], a: &T, b: &T, out: &mut [T]) -> bool {
-    if points.len() != 8 || out.len() != 8 {
-        return false;
+pub(crate) fn small<T: Ring, R>(
+    points: &[T],
+    dim: usize,
+    a: &T,
+    b: &T,
+    finish: impl FnOnce(&[T]) -> R,
+) -> Option<R> {
+    match (dim, points.len()) {
+        (2, 6) => Some(finish(
+            degree_2::<T, 2>(points.as_chunks().0.try_into().ok()?, a, b).as_flattened(),
+        )),
+        (2, 8) => Some(finish(
+            degree_3::<T, 2>(points.as_chunks().0.try_into().ok()?, a, b).as_flattened(),
+        )),
+        (3, 12) => Some(finish(
+            degree_3::<T, 3>(points.as_chunks().0.try_into().ok()?, a, b).as_flattened(),
+        )),
+        _ => None,
     }
-    into_3::<T, 2>(points, a, b, out);
-    true
-}
-
-/// [`planar_cubic`] for the 3-D cubic, as common in CAD and graphics: inlined too, so that
-/// the answer skips the table's indirect call.
-#[inline(always)]
-pub(crate) fn spatial_cubic<T: Ring>(points: &[T], a: &T, b: &T, out: &mut [T]) -> bool {
-    if points.len() != 12 || out.len() != 12 {
-        return false;
-    }
-    into_3::<T, 3>(points, a, b, out);
-    true
 }
 
 /// The unrolled evaluators in `f64`.
@@ -168,7 +175,7 @@ mod tests {
     /// control points of the halving engine run with a runtime width (no unrolled code), and
     /// the same as `subsegment_into`; in every dimension 1..=6 and degree 0..=8, so across
     /// the inline limit, the degree 0 (no unrolled evaluator) and dimensions above 4 (degrees
-    /// 9..=40 are `shape::two_pass`'s, tested there).
+    /// 9 and up inside [0, 1] are `shape::two_pass`'s, tested there).
     #[test]
     fn returned_subsegments_are_the_engines_bit_for_bit() {
         let mut rng = XorShift(0x5eed_cafe);

@@ -16,8 +16,7 @@
 use std::hint::black_box;
 use std::time::Instant;
 
-#[path = "../../common/lyon.rs"]
-mod lyon;
+use crate::lyon;
 
 type Cubic = [[f64; 2]; 4];
 

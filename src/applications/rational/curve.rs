@@ -31,11 +31,22 @@ use std::ops::Range;
 /// assert_eq!(half.points()[2], x[..]);
 /// # Ok::<(), blossom::Error>(())
 /// ```
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, PartialEq)]
 pub struct RationalBezierCurve<T> {
     dim: usize,
     coords: Vec<T>,
     weights: Vec<T>,
+}
+
+/// The control points, each as a list of its coordinates, and the weights:
+/// `RationalBezierCurve { points: [[1.0, 0.0], [1.0, 1.0]], weights: [1.0, 1.0] }`.
+impl<T: std::fmt::Debug> std::fmt::Debug for RationalBezierCurve<T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("RationalBezierCurve")
+            .field("points", &Points::new(&self.coords, self.dim))
+            .field("weights", &self.weights)
+            .finish()
+    }
 }
 
 impl<T: Field> RationalBezierCurve<T> {

@@ -37,11 +37,22 @@ use crate::shape::point::{check_flat, flatten_points, Point, Points};
 /// assert!((x[0] - 2.6).abs() < 1e-12 && (x[1] - 2.92).abs() < 1e-12);
 /// # Ok::<(), blossom::Error>(())
 /// ```
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, PartialEq)]
 pub struct BSpline<T> {
     knots: KnotVector<T>,
     dim: usize,
     coords: Vec<T>,
+}
+
+/// The knot vector and the de Boor points, each point as a list of its coordinates:
+/// `BSpline { knots: KnotVector { .. }, points: [[0.0, 0.0], [1.0, 2.0]] }`.
+impl<T: std::fmt::Debug> std::fmt::Debug for BSpline<T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("BSpline")
+            .field("knots", &self.knots)
+            .field("points", &Points::new(&self.coords, self.dim))
+            .finish()
+    }
 }
 
 /// One polynomial piece of a spline, in Bézier form over [0, 1] for the parameter
