@@ -81,7 +81,8 @@ impl<T: Clone + Debug + PartialEq> CoordinateBuffer<T> for Vec<T> {
 /// * a curve held inline writes as few words beside its numbers as it can: the heap part is
 ///   an `Option`, whose `None` is one null word (an empty boxed slice is two, a vector's
 ///   three). Through `black_box`, a planar cubic took 1.4x lyon's time with the empty
-///   boxed slice and 1.1x with `None` (`benches/dependent`, `consume`).///
+///   boxed slice and 1.1x with `None` (`benches/dependent`, `consume`).
+///
 /// Equality and `Debug` are those of the slice, so a curve compares and prints the same
 /// whichever way its numbers are held.
 #[derive(Clone)]
