@@ -76,9 +76,12 @@ impl<T: Clone + Debug + PartialEq> CoordinateBuffer<T> for Vec<T> {
 ///   vector's three), which the compiler moves with inline 16-byte loads and stores; at 136
 ///   bytes a [`crate::BezierCurve`] was moved by a call of the C library's `memcpy`, whose
 ///   wider loads (32 or 64 bytes, chosen at run time for the processor) spanned several of
-///   the stores just made and waited on all of them: 2x lyon's time per cubic when the
-///   answers were collected or passed through `black_box` (issue 47; how long such a wait lasts
-///   is the processor's, which is why the figures moved from machine to machine).
+///   the stores just made and waited on all of them (issue 47; how long such a wait lasts is
+///   the processor's, which is why the figures moved from machine to machine);
+/// * a curve held inline writes as few words beside its numbers as it can: the heap part is
+///   an `Option`, whose `None` is one null word (an empty boxed slice is two, a vector's
+///   three). Through `black_box`, a planar cubic took 1.4x lyon's time with the empty
+///   boxed slice and 1.1x with `None` (`benches/dependent`, `consume`).
 ///
 /// Equality and `Debug` are those of the slice, so a curve compares and prints the same
 /// whichever way its numbers are held.
@@ -88,19 +91,20 @@ pub struct SmallCoords<T: Copy, const N: usize> {
     /// `inline[..len]` are the numbers when `len <= N`; the rest is filler.
     inline: [T; N],
     len: usize,
-    /// The numbers when `len > N` (then `heap.len() == len`); empty otherwise.
-    heap: Box<[T]>,
+    /// The numbers when `len > N` (then of length `len`); `None` otherwise, which writes one
+    /// word (a null pointer) and leaves the slice's length unwritten.
+    heap: Option<Box<[T]>>,
 }
 
 impl<T: Copy, const N: usize> SmallCoords<T, N> {
     /// Whether the numbers are in `inline`.
     #[inline]
     pub(crate) fn is_inline(&self) -> bool {
-        self.len <= N
+        self.heap.is_none()
     }
 }
 
-/// The heap part is freed out of line, behind a test of its length: a loop that restricts
+/// The heap part is freed out of line, behind a test: a loop that restricts
 /// small curves and drops the answers then holds no call on its common path, so the compiler
 /// keeps its running values in registers instead of saving them around a call in every pass.
 impl<T: Copy, const N: usize> Drop for SmallCoords<T, N> {
@@ -111,8 +115,8 @@ impl<T: Copy, const N: usize> Drop for SmallCoords<T, N> {
         fn free<T>(heap: Box<[T]>) {
             drop(heap);
         }
-        if !self.heap.is_empty() {
-            free(std::mem::take(&mut self.heap));
+        if let Some(heap) = self.heap.take() {
+            free(heap);
         }
     }
 }
@@ -128,7 +132,7 @@ impl<T: Copy + Default + Debug + PartialEq, const N: usize> CoordinateBuffer<T>
             SmallCoords {
                 inline: [T::default(); N],
                 len: values.len(),
-                heap: values.into_boxed_slice(),
+                heap: Some(values.into_boxed_slice()),
             }
         }
     }
@@ -143,7 +147,7 @@ impl<T: Copy + Default + Debug + PartialEq, const N: usize> CoordinateBuffer<T>
         SmallCoords {
             inline,
             len: values.len(),
-            heap: Box::default(),
+            heap: None,
         }
     }
 
@@ -155,31 +159,27 @@ impl<T: Copy + Default + Debug + PartialEq, const N: usize> CoordinateBuffer<T>
         SmallCoords {
             inline: [value; N],
             len,
-            heap: if len <= N {
-                Box::default()
-            } else {
+            heap: (len > N).then(|| {
                 let mut values = Vec::with_capacity(len);
                 values.resize(len, value);
                 values.into_boxed_slice()
-            },
+            }),
         }
     }
 
     #[inline]
     fn as_slice(&self) -> &[T] {
-        if self.is_inline() {
-            &self.inline[..self.len]
-        } else {
-            &self.heap
+        match &self.heap {
+            None => &self.inline[..self.len],
+            Some(heap) => heap,
         }
     }
 
     #[inline]
     fn as_mut_slice(&mut self) -> &mut [T] {
-        if self.is_inline() {
-            &mut self.inline[..self.len]
-        } else {
-            &mut self.heap
+        match &mut self.heap {
+            None => &mut self.inline[..self.len],
+            Some(heap) => heap,
         }
     }
 
@@ -195,28 +195,27 @@ impl<T: Copy + Default + Debug + PartialEq, const N: usize> CoordinateBuffer<T>
                 let mut values = Vec::with_capacity(new_len);
                 values.extend_from_slice(&self.inline[..self.len]);
                 values.resize(new_len, value);
-                self.heap = values.into_boxed_slice();
+                self.heap = Some(values.into_boxed_slice());
             }
             (false, true) => {
                 // Shrinking below the limit: `new_len < self.len`.
-                self.inline[..new_len].copy_from_slice(&self.heap[..new_len]);
-                self.heap = Box::default();
+                let heap = self.heap.take().expect("the numbers");
+                self.inline[..new_len].copy_from_slice(&heap[..new_len]);
             }
             (false, false) => {
-                let mut values = std::mem::take(&mut self.heap).into_vec();
+                let mut values = self.heap.take().expect("the numbers").into_vec();
                 values.reserve_exact(new_len.saturating_sub(values.len()));
                 values.resize(new_len, value);
-                self.heap = values.into_boxed_slice();
+                self.heap = Some(values.into_boxed_slice());
             }
         }
         self.len = new_len;
     }
 
     fn into_vec(mut self) -> Vec<T> {
-        if self.is_inline() {
-            self.inline[..self.len].to_vec()
-        } else {
-            std::mem::take(&mut self.heap).into_vec()
+        match self.heap.take() {
+            None => self.inline[..self.len].to_vec(),
+            Some(heap) => heap.into_vec(),
         }
     }
 }
@@ -260,7 +259,7 @@ mod tests {
         assert_eq!(small.clone().into_vec(), vec);
         assert_eq!(format!("{small:?}"), format!("{vec:?}"));
         // Shrunk below the limit, the numbers are back inline and the heap is freed.
-        assert!(small.is_inline() && small.heap.is_empty());
+        assert!(small.is_inline() && small.heap.is_none());
         // Equal contents are equal, inline or not; a grown-then-shrunk heap buffer keeps
         // only its first numbers.
         let mut heap = SmallCoords::<f64, 4>::from_vec(vec![42.0, 8.0, 8.0, 1.0, 2.0]);
@@ -275,7 +274,7 @@ mod tests {
         assert_eq!(grown, small);
         // Past the limit the numbers go to the heap, whole.
         let big = SmallCoords::<f64, 4>::filled(5, 1.5);
-        assert!(!big.is_inline() && big.heap.len() == 5);
+        assert!(!big.is_inline() && big.heap.as_ref().map(|h| h.len()) == Some(5));
         assert_eq!(big.as_slice(), &[1.5; 5]);
         assert_eq!(
             SmallCoords::<f64, 4>::from_vec(Vec::new()).as_slice(),
@@ -288,7 +287,8 @@ mod tests {
             let copied = SmallCoords::<f64, 4>::from_slice(&values);
             assert_eq!(copied.as_slice(), &values[..], "from_slice, {len} numbers");
             assert_eq!(copied.is_inline(), len <= 4);
-            assert_eq!(copied.heap.len(), if len <= 4 { 0 } else { len });
+            let heap_len = copied.heap.as_ref().map_or(0, |h| h.len());
+            assert_eq!(heap_len, if len <= 4 { 0 } else { len });
         }
     }
 
