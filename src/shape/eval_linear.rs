@@ -4,8 +4,9 @@
 //! geometric algorithm for evaluating Bézier curves", Computer-Aided Design 118, 2020), run
 //! on blocks of parameters at once so that every step vectorises.
 
-use crate::error::{Error, ErrorKind, Result};
+use crate::error::Result;
 use crate::shape::bezier::BezierCurve;
+use crate::shape::eval_many::check_out;
 
 /// Parameters evaluated together (one lane each) by [`BezierCurve::eval_many_linear`].
 const LANES: usize = 8;
@@ -103,18 +104,7 @@ impl BezierCurve<f64> {
     /// is written then).
     pub fn eval_many_linear(&self, ts: &[f64], out: &mut [f64]) -> Result<()> {
         let dim = self.dim();
-        if ts.len().checked_mul(dim) != Some(out.len()) {
-            return Err(Error::of(
-                ErrorKind::Shape,
-                "out",
-                format!(
-                    "expected {} numbers ({} parameters of dimension {dim}), found {}",
-                    ts.len().saturating_mul(dim),
-                    ts.len(),
-                    out.len()
-                ),
-            ));
-        }
+        check_out(ts.len(), dim, out.len())?;
         let w = self.coordinates();
         let n = self.degree();
         if n == 0 {

@@ -6,6 +6,22 @@ use crate::error::{Error, ErrorKind, Result};
 use crate::shape::bezier::BezierCurve;
 use crate::Ring;
 
+/// That `out` holds one point of dimension `dim` per parameter (`count` of them): the shape
+/// check of every evaluation at many parameters.
+pub(crate) fn check_out(count: usize, dim: usize, out: usize) -> Result<()> {
+    if count.checked_mul(dim) == Some(out) {
+        return Ok(());
+    }
+    Err(Error::of(
+        ErrorKind::Shape,
+        "out",
+        format!(
+            "expected {} numbers ({count} parameters of dimension {dim}), found {out}",
+            count.saturating_mul(dim),
+        ),
+    ))
+}
+
 /// Parameters evaluated together by [`BezierCurve::eval_many`].
 pub(crate) const EVAL_LANES: usize = 8;
 
@@ -40,19 +56,7 @@ impl<T: Ring> BezierCurve<T> {
     /// is written then).
     pub fn eval_many(&self, ts: &[T], out: &mut [T]) -> Result<()> {
         let dim = self.dim();
-        let wanted = ts.len().checked_mul(dim);
-        if wanted != Some(out.len()) {
-            return Err(Error::of(
-                ErrorKind::Shape,
-                "out",
-                format!(
-                    "expected {} numbers ({} parameters of dimension {dim}), found {}",
-                    ts.len().saturating_mul(dim),
-                    ts.len(),
-                    out.len()
-                ),
-            ));
-        }
+        check_out(ts.len(), dim, out.len())?;
         let points = self.coordinates();
         let count = points.len() / dim;
         let mut level: Vec<[T; EVAL_LANES]> = points
