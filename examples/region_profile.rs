@@ -9,8 +9,13 @@
 //! `target/release/examples/region_profile circle 200`: issue 45's degenerate placement, a
 //! square and a 4-cubic circle whose joins lie on the square's edges, against the same circle
 //! moved off them, the union's time and report for each.
+//! `target/release/examples/region_profile board 1`: boards of k x k squares (half of them,
+//! touching at corners) united with the board moved by one square, and simplified, for
+//! k = 10, 20, 40, 60: the work estimate (`boolean_work`) against the run.
 
-use blossom::region::{boolean, triangle_intersection, BooleanOp, FillRule, Region};
+use blossom::region::{
+    boolean, boolean_work, simplify, triangle_intersection, BooleanOp, FillRule, Region,
+};
 use blossom::Bezier;
 use std::time::Instant;
 
@@ -42,10 +47,50 @@ fn square_and_circle(centre: [f64; 2]) -> (Region, Region) {
     (square, circle)
 }
 
+/// Half of a k x k board of unit squares (those with i + j even), moved by `dx`.
+fn board(k: usize, dx: f64) -> Region {
+    let mut loops = Vec::new();
+    for i in 0..k {
+        for j in (0..k).filter(|j| (i + j) % 2 == 0) {
+            let (x, y) = (i as f64 + dx, j as f64);
+            let c = [[x, y], [x + 1.0, y], [x + 1.0, y + 1.0], [x, y + 1.0]];
+            let sides = (0..4).map(|m| Bezier::new(vec![c[m], c[(m + 1) % 4]]).expect("side"));
+            loops.push(sides.collect());
+        }
+    }
+    Region::from_f64(loops, FillRule::NonZero).expect("squares")
+}
+
+/// The work estimate against the run on boards (module doc).
+fn boards() {
+    for k in [10, 20, 40, 60] {
+        let (a, b) = (board(k, 0.0), board(k, 1.0));
+        let empty = Region::empty(FillRule::NonZero);
+        let (union_work, simplify_work) = (boolean_work(&a, &b), boolean_work(&a, &empty));
+        let start = Instant::now();
+        std::hint::black_box(boolean(&a, &b, BooleanOp::Union).expect("answered"));
+        let union = start.elapsed().as_secs_f64();
+        let start = Instant::now();
+        std::hint::black_box(simplify(&a).expect("answered"));
+        let simplified = start.elapsed().as_secs_f64();
+        println!(
+            "board {k} x {k}: union estimate {:.3} s, run {union:.4} s ({:.1}x); simplify estimate {:.3} s, run {simplified:.4} s ({:.1}x)",
+            union_work as f64 * 1e-9,
+            union_work as f64 * 1e-9 / union,
+            simplify_work as f64 * 1e-9,
+            simplify_work as f64 * 1e-9 / simplified,
+        );
+    }
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let what = args.get(1).map_or("triangles", String::as_str);
     let passes: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(100);
+    if what == "board" {
+        boards();
+        return;
+    }
     if what == "circle" {
         for (name, centre) in [
             ("joins on the edges", [0.0, 0.0]),
