@@ -134,16 +134,17 @@ fn from_loops(loops: Vec<Vec<Curve2>>, fill: FillRule) -> Result<Region, Error> 
         .map(bezier)
         .collect::<Result<_, Error>>()?;
     Region::new(exact, fill).map_err(|e| {
-        let open = ends.iter().enumerate().find_map(|(l, curves)| {
+        let open = |(l, curves): (usize, &Ends)| {
             let c = (0..curves.len()).find(|c| e.field == format!("loops[{l}][{c}]"))?;
             let previous = &curves[(c + curves.len() - 1) % curves.len()];
-            let message = format!(
-                "starts at {}, the previous curve ends at {}",
-                curves[c][0], previous[1]
-            );
-            (e.kind == ErrorKind::Shape).then(|| Error::of(e.kind, e.field.clone(), message))
-        });
-        open.unwrap_or(e)
+            let (start, end) = (&curves[c][0], &previous[1]);
+            let message = format!("starts at {start}, the previous curve ends at {end}");
+            Some(Error::of(e.kind, e.field.clone(), message))
+        };
+        match e.kind {
+            ErrorKind::Shape => ends.iter().enumerate().find_map(open).unwrap_or(e),
+            _ => e,
+        }
     })
 }
 

@@ -68,23 +68,25 @@ pub fn grids<T: Reading>(
             ),
         ));
     }
+    /// `grid` with `zero`s appended to `rows` rows of `cols` entries.
+    fn padded<X: Clone>(grid: Vec<Vec<X>>, (rows, cols): (usize, usize), zero: X) -> Vec<Vec<X>> {
+        let mut grid: Vec<Vec<X>> = grid;
+        grid.iter_mut()
+            .for_each(|row| row.resize(cols, zero.clone()));
+        grid.resize(rows, vec![zero; cols]);
+        grid
+    }
     let zero = vec![Rational::default(); numerator[0][0].len()];
-    let pad = |row: Vec<Point<Rational>>| {
-        let mut row = row;
-        row.resize(cols, zero.clone());
-        row
-    };
-    let mut p: Vec<Vec<Point<Rational>>> = numerator.iter().map(|r| pad(exact_points(r))).collect();
-    p.resize(rows, vec![zero.clone(); cols]);
-    let mut w: Vec<Vec<Rational>> = denominator
-        .iter()
-        .map(|r| {
-            let mut r = exact(r);
-            r.resize(cols, Rational::default());
-            r
-        })
-        .collect();
-    w.resize(rows, vec![Rational::default(); cols]);
+    let p = padded(
+        numerator.iter().map(|r| exact_points(r)).collect(),
+        (rows, cols),
+        zero,
+    );
+    let w = padded(
+        denominator.iter().map(|r| exact(r)).collect(),
+        (rows, cols),
+        Rational::default(),
+    );
     Ok((p, w))
 }
 
