@@ -100,7 +100,7 @@ impl BezierCurve<f64> {
     /// ```
     ///
     /// # Errors
-    /// [`ErrorKind::Shape`] on `out` when it does not hold `ts.len() * dim` numbers (nothing
+    /// [`ErrorKind::Shape`](crate::ErrorKind::Shape) on `out` when it does not hold `ts.len() * dim` numbers (nothing
     /// is written then).
     pub fn eval_many_linear(&self, ts: &[f64], out: &mut [f64]) -> Result<()> {
         let dim = self.dim();
