@@ -1077,9 +1077,16 @@ struct Root {
 
 /// The root proved by Krawczyk's operator `k` on a box centred at `z`, with P(z_s) in `pz`
 /// and P'(S) over the box's s side in `dp` (module documentation, 3): `None` when undecided,
-/// else the root with its crossing when inside (0, 1)^2.
+/// else the root with its crossing when inside (0, 1)^2 (its common point NaN unless
+/// `want_point`).
 #[inline(always)]
-fn root_of(z: [f64; 2], pz: [Dd; 2], k: &Krawczyk, dp: [BoundedF64; 2]) -> Option<Root> {
+fn root_of(
+    z: [f64; 2],
+    pz: [Dd; 2],
+    k: &Krawczyk,
+    dp: [BoundedF64; 2],
+    want_point: bool,
+) -> Option<Root> {
     let enclose = |m: f64, d: &BoundedF64| {
         let x = BoundedF64::exact(m).add(d);
         [lower(&x), upper(&x)]
@@ -1103,7 +1110,11 @@ fn root_of(z: [f64; 2], pz: [Dd; 2], k: &Krawczyk, dp: [BoundedF64; 2]) -> Optio
         let offset = pz[c].rest().add(&k.offset[0].mul(&dp[c]));
         round_nearest(pz[c].hi(), &offset)
     };
-    let point = [coordinate(0)?, coordinate(1)?];
+    let point = if want_point {
+        [coordinate(0)?, coordinate(1)?]
+    } else {
+        [f64::NAN; 2]
+    };
     Some(Root {
         tight,
         crossing: Some(CertifiedCrossing {
@@ -1130,6 +1141,8 @@ struct Search {
     exclusions: Vec<([[f64; 2]; 2], usize)>,
     /// Cells S x T still to examine.
     stack: Vec<([f64; 2], [f64; 2])>,
+    /// Whether the common points are rounded (else NaN: [`crossing_parameters_f64`]).
+    want_point: bool,
     /// Tests only: run the plain builds even where AVX2 is present.
     #[cfg(test)]
     plain: bool,
@@ -1144,6 +1157,7 @@ impl Search {
             roots: Vec::new(),
             exclusions: Vec::new(),
             stack: Vec::new(),
+            want_point: true,
             #[cfg(test)]
             plain: false,
         }
@@ -1223,7 +1237,7 @@ impl Search {
         // The outer box's enclosure decides the common case of a tiny cell (its enclosure is
         // some |Y| |J(X) - J(z)| r wide, far below an ulp); else a tighter box around z, 8
         // times the Newton correction, with the Jacobian enclosed over it.
-        let root = match tiny.then(|| root_of(z, pz, &k, dp)).flatten() {
+        let root = match tiny.then(|| root_of(z, pz, &k, dp, self.want_point)).flatten() {
             Some(root) => root,
             None => {
                 let wanted = |i: usize| (8.0 * k.offset[i].value().abs()).max(TIGHT_RADIUS);
@@ -1237,7 +1251,7 @@ impl Search {
                 let (dp_inner, dq_inner) = (p.tangent(z[0], radius[0]), q.tangent(z[1], radius[1]));
                 let found = krawczyk(&inner, f, dp_inner, dq_inner)
                     .filter(|k| k.proved)
-                    .and_then(|k| root_of(z, pz, &k, dp_inner));
+                    .and_then(|k| root_of(z, pz, &k, dp_inner, self.want_point));
                 match found {
                     Some(root) => root,
                     None => return fail,
@@ -1318,7 +1332,18 @@ impl Search {
 /// assert_eq!(x[0].point[1], 0.5);
 /// ```
 pub fn certified_crossings_f64(p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<Vec<CertifiedCrossing>> {
-    with_search(|search| search.run(p, q))
+    with_search(|search| search.run(p, q, true))
+}
+
+/// [`certified_crossings_f64`] for callers that need the parameters alone: the same proof and
+/// the same `s`, `t` and enclosures, but the common point is not rounded (`point` is NaN), so
+/// that a crossing whose point the enclosure cannot round (a coordinate exactly zero, as
+/// where a curve crosses a segment on an axis) is decided too.
+pub(crate) fn crossing_parameters_f64(
+    p: &[[f64; 2]],
+    q: &[[f64; 2]],
+) -> Option<Vec<CertifiedCrossing>> {
+    with_search(|search| search.run(p, q, false))
 }
 
 thread_local! {
@@ -1336,7 +1361,13 @@ fn with_search<R>(f: impl FnOnce(&mut Search) -> R) -> R {
 
 impl Search {
     /// [`certified_crossings_f64`] on this search state, which it resets first.
-    fn run(&mut self, p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<Vec<CertifiedCrossing>> {
+    fn run(
+        &mut self,
+        p: &[[f64; 2]],
+        q: &[[f64; 2]],
+        want_point: bool,
+    ) -> Option<Vec<CertifiedCrossing>> {
+        self.want_point = want_point;
         self.p.reset(p)?;
         self.q.reset(q)?;
         self.roots.clear();
@@ -1461,7 +1492,7 @@ pub(super) fn certified_crossings_plain(
 ) -> Option<Vec<CertifiedCrossing>> {
     let mut search = Search::empty();
     search.plain = true;
-    search.run(p, q)
+    search.run(p, q, true)
 }
 
 /// The clipping of P's piece over `s` against the fat line of Q's piece over `t`, as one

@@ -9,8 +9,8 @@
 use super::algebraic::{round_polynomial_at, upoly_eval_q};
 use super::curves::{intersect_curves, intersect_curves_f64, Intersections};
 use super::filter::{
-    certified_crossings_f64, certified_crossings_plain, clip_cell, krawczyk_offsets,
-    tangent_enclosure, CertifiedCrossing,
+    certified_crossings_f64, certified_crossings_plain, clip_cell, crossing_parameters_f64,
+    krawczyk_offsets, tangent_enclosure, CertifiedCrossing,
 };
 use super::interval::round_nearest;
 use super::rounded::{intersect_curves_f64_rounded, RoundedIntersections, RoundedPoint};
@@ -326,6 +326,51 @@ fn undecided_cases_go_to_the_exact_path() {
     assert_eq!(e.field, "p[0][1]");
     assert!(certified_crossings_f64(&[[1.0, 1.0]], &d).is_none());
     assert!(certified_crossings_f64(&[[1.0, 1.0], [1.0, 1.0]], &d).is_none());
+}
+
+/// Crossings on an axis (a common point with a zero coordinate, which the filter cannot round
+/// from an enclosure) are decided by the parameters-only entry the regions use, with the
+/// exact solver's parameters to the bit; elsewhere it agrees with the full filter.
+#[test]
+fn parameters_alone_are_decided_where_the_point_cannot_be_rounded() {
+    let mut r = Random(crate::test_rng::XorShift(0x5eed_0a15));
+    let mut decided = 0;
+    for k in 0..60 {
+        // A segment on the x axis (k even) or on the y axis, and a quadratic across it.
+        let a = [[-40.0 - k as f64, 0.0], [45.0 + r.unit() * 10.0, 0.0]];
+        let mut q = [
+            [r.unit() * 20.0 - 10.0, -30.0 - r.unit() * 10.0],
+            [r.unit() * 20.0 - 10.0, r.unit() * 20.0 - 10.0],
+            [r.unit() * 20.0 - 10.0, 25.0 + r.unit() * 10.0],
+        ];
+        let mut p = a;
+        if k % 2 == 1 {
+            p = a.map(|[x, y]| [y, x]);
+            q = q.map(|[x, y]| [y, x]);
+        }
+        let exact = exact_solver_alone(&p, &q).unwrap();
+        assert!(certified_crossings_f64(&p, &q).is_none(), "{p:?} {q:?}");
+        let Some(found) = crossing_parameters_f64(&p, &q) else {
+            continue;
+        };
+        decided += 1;
+        assert!(exact.overlaps.is_empty());
+        let params: Vec<[f64; 2]> = found.iter().map(|c| [c.s, c.t]).collect();
+        let wanted: Vec<[f64; 2]> = exact.points.iter().map(|x| [x.s, x.t]).collect();
+        assert_eq!(params, wanted, "{p:?} {q:?}");
+        for c in &found {
+            assert!(c.point[0].is_nan() && c.point[1].is_nan());
+            assert!(c.s_enclosure[0] <= c.s && c.s <= c.s_enclosure[1]);
+            assert!(c.t_enclosure[0] <= c.t && c.t <= c.t_enclosure[1]);
+        }
+    }
+    assert!(decided >= 50, "only {decided} of 60 decided");
+    // Off the axes the two entries give the same crossings.
+    let (p, q) = ([[-1.0, -1.5], [1.0, 1.25]], [[-1.0, 1.0], [0.5, 0.0], [1.0, -1.0]]);
+    let full = certified_crossings_f64(&p, &q).unwrap();
+    let alone = crossing_parameters_f64(&p, &q).unwrap();
+    assert_eq!(full.len(), 1);
+    assert_eq!((full[0].s, full[0].t), (alone[0].s, alone[0].t));
 }
 
 #[test]

@@ -11,7 +11,7 @@ use super::input::{is_single_point, Region};
 use super::parameter::Parameter;
 use crate::error::Result;
 use crate::intersect::budget::{curve_pair_work, self_intersection_work};
-use crate::intersect::filter::certified_crossings_f64;
+use crate::intersect::filter::crossing_parameters_f64;
 use crate::num::ring::{rational_to_f64, Rational};
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
@@ -131,7 +131,7 @@ pub(crate) fn run_exact(regions: &[&Region; 2], op: BooleanOp) -> Result<Outline
 }
 
 /// The intersection points a pair of curves is expected to add: the float filter's count of
-/// proved crossings when it decides ([`certified_crossings_f64`], on curves of doubles),
+/// proved crossings when it decides ([`crossing_parameters_f64`], on curves of doubles),
 /// else 2.
 fn expected_points(p: &Curve, q: &Curve) -> u128 {
     let doubles = |c: &Curve| -> Option<Vec<[f64; 2]>> {
@@ -145,7 +145,7 @@ fn expected_points(p: &Curve, q: &Curve) -> u128 {
     };
     doubles(p)
         .zip(doubles(q))
-        .and_then(|(pf, qf)| certified_crossings_f64(&pf, &qf))
+        .and_then(|(pf, qf)| crossing_parameters_f64(&pf, &qf))
         .map_or(2, |c| c.len() as u128)
 }
 

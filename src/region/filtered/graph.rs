@@ -15,7 +15,7 @@
 //!    one sign on [0, 1] ([`segment_curve_small`]: an end on the segment, a tangent end, no
 //!    contact). The parameters are [`Parameter::small`] rationals compared without big
 //!    integers;
-//! 3. the certified float filter ([`certified_crossings_f64`]) proves every common point of the
+//! 3. the certified float filter ([`crossing_parameters_f64`]) proves every common point of the
 //!    pair a transversal crossing strictly inside both curves and gives each parameter's
 //!    correctly rounded double with an enclosure of doubles (a [`Parameter::crossing`], made
 //!    exact only on demand);
@@ -37,7 +37,7 @@
 use crate::error::Result;
 use crate::intersect::algebraic::{exact_f64, value_at, AlgebraicReal};
 use crate::intersect::curves::{intersect_curves_f64, self_intersections_f64, Intersections};
-use crate::intersect::filter::certified_crossings_f64;
+use crate::intersect::filter::crossing_parameters_f64;
 use crate::intersect::line::{segment_contact_small, segment_curve_small, SegmentContact};
 use crate::num::ring::Rational;
 use crate::num::small::SmallRational;
@@ -310,7 +310,7 @@ impl<'a> Graph<'a> {
                 exact.push(found);
                 continue;
             }
-            match certified_crossings_f64(p, q) {
+            match crossing_parameters_f64(p, q) {
                 Some(found) => {
                     counts.filtered += 1;
                     if !found.is_empty() {

@@ -9,7 +9,7 @@
 //! * every loop is simple and the loops of one region are pairwise disjoint: each curve is
 //!   one-to-one, consecutive curves of a loop meet only at their join, and every other pair of
 //!   curves of one region either has disjoint boxes or no common point (the float filter
-//!   [`certified_crossings_f64`] proves the empty answer) (module `split`);
+//!   [`crossing_parameters_f64`](crate::intersect::filter::crossing_parameters_f64) proves the empty answer) (module `split`);
 //! * every common point of a curve of A and a curve of B is a transversal crossing strictly
 //!   inside both curves (the filter's proof, which excludes ends, tangencies and overlaps);
 //!   no point of the plane is then on more than two curves, and the crossings along a curve

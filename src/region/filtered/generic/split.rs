@@ -2,7 +2,7 @@
 //! proved generic (see the module docs of [`super`]).
 
 use super::measure::crossing_sign;
-use crate::intersect::filter::certified_crossings_f64;
+use crate::intersect::filter::crossing_parameters_f64;
 use crate::region::arrangement::{meeting_boxes, CurveId};
 pub(super) use crate::region::filtered::graph::bbox;
 use crate::region::prune::{consecutive_meet_only_at_join, one_to_one};
@@ -84,7 +84,7 @@ pub(super) fn simple(doubles: &[Vec<Vec<[f64; 2]>>]) -> bool {
         } else if li == lj && (cj + 1) % len == ci {
             consecutive_meet_only_at_join(q, p)
         } else {
-            certified_crossings_f64(p, q).is_some_and(|x| x.is_empty())
+            crossing_parameters_f64(p, q).is_some_and(|x| x.is_empty())
         }
     })
 }
@@ -149,7 +149,7 @@ impl<'a> Split<'a> {
     /// not proved generic.
     fn pair(&mut self, i: usize, j: usize) -> Option<()> {
         let (p, q) = (self.curves[i].points, self.curves[j].points);
-        let crossings = certified_crossings_f64(p, q)?;
+        let crossings = crossing_parameters_f64(p, q)?;
         if crossings.is_empty() {
             return Some(());
         }
