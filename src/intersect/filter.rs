@@ -1237,7 +1237,10 @@ impl Search {
         // The outer box's enclosure decides the common case of a tiny cell (its enclosure is
         // some |Y| |J(X) - J(z)| r wide, far below an ulp); else a tighter box around z, 8
         // times the Newton correction, with the Jacobian enclosed over it.
-        let root = match tiny.then(|| root_of(z, pz, &k, dp, self.want_point)).flatten() {
+        let root = match tiny
+            .then(|| root_of(z, pz, &k, dp, self.want_point))
+            .flatten()
+        {
             Some(root) => root,
             None => {
                 let wanted = |i: usize| (8.0 * k.offset[i].value().abs()).max(TIGHT_RADIUS);

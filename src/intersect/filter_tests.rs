@@ -366,7 +366,10 @@ fn parameters_alone_are_decided_where_the_point_cannot_be_rounded() {
     }
     assert!(decided >= 50, "only {decided} of 60 decided");
     // Off the axes the two entries give the same crossings.
-    let (p, q) = ([[-1.0, -1.5], [1.0, 1.25]], [[-1.0, 1.0], [0.5, 0.0], [1.0, -1.0]]);
+    let (p, q) = (
+        [[-1.0, -1.5], [1.0, 1.25]],
+        [[-1.0, 1.0], [0.5, 0.0], [1.0, -1.0]],
+    );
     let full = certified_crossings_f64(&p, &q).unwrap();
     let alone = crossing_parameters_f64(&p, &q).unwrap();
     assert_eq!(full.len(), 1);

@@ -37,7 +37,7 @@ use super::curves::{IntersectionPoint, Overlap};
 use super::upoly;
 use super::zeros::roots_with_multiplicity;
 use crate::num::ring::{rational_to_f64, Rational};
-use crate::num::small::{integer_coordinates, SmallRational};
+use crate::num::small::SmallRational;
 use num_traits::{One, Zero};
 use std::cmp::Ordering;
 
@@ -229,13 +229,23 @@ pub(crate) enum SegmentContact {
 /// that differences stay below 2^61 and a segment's cross and dot products below 2^123 (a
 /// curve's larger sums are checked). Doubles of one binade scale to 53-bit integers, so
 /// most double input whose exponents are close qualifies, not only integers.
-const SMALL_COORDINATE: i64 = 1 << 60;
+pub(crate) const SMALL_COORDINATE: i64 = 1 << 60;
 
 /// The common points of the segments `p` and `q` (two distinct ends each) in fixed-width
 /// arithmetic, exactly; `None` when the coordinates are not small integers on one dyadic
 /// scale or a parameter does not fit (the caller then intersects exactly in big rationals).
+#[cfg(test)]
 pub(crate) fn segment_contact_small(p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<SegmentContact> {
-    let [p0, p1, q0, q1] = integer_coordinates([&p[0], &p[1], &q[0], &q[1]], SMALL_COORDINATE)?;
+    let (a, b) = crate::num::small::on_common_scale(p, q, SMALL_COORDINATE)?;
+    segment_contact_integers([a[0], a[1]], [b[0], b[1]])
+}
+
+/// [`segment_contact_small`] on integer ends on one scale, each coordinate below
+/// [`SMALL_COORDINATE`] in magnitude.
+pub(crate) fn segment_contact_integers(
+    [p0, p1]: [[i64; 2]; 2],
+    [q0, q1]: [[i64; 2]; 2],
+) -> Option<SegmentContact> {
     let w = |a: [i64; 2], b: [i64; 2]| [i128::from(b[0] - a[0]), i128::from(b[1] - a[1])];
     let cross = |a: [i128; 2], b: [i128; 2]| a[0] * b[1] - a[1] * b[0];
     let dot = |a: [i128; 2], b: [i128; 2]| a[0] * b[0] + a[1] * b[1];
@@ -280,22 +290,27 @@ pub(crate) fn segment_contact_small(p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<Se
 /// coordinates are not small integers on one dyadic scale, a number does not fit, the curve
 /// lies on the segment's line, or a root of f inside (0, 1) is irrational or not isolated by
 /// the sign test (the caller then intersects exactly in big rationals).
+#[cfg(test)]
 pub(crate) fn segment_curve_small(
     p: &[[f64; 2]],
     q: &[[f64; 2]],
 ) -> Option<Vec<[SmallRational; 2]>> {
-    let n = q.len() - 1;
+    let (a, b) = crate::num::small::on_common_scale(p, q, SMALL_COORDINATE)?;
+    segment_curve_integers([a[0], a[1]], &b[..q.len()])
+}
+
+/// [`segment_curve_small`] on integer control points on one scale, each coordinate below
+/// [`SMALL_COORDINATE`] in magnitude.
+pub(crate) fn segment_curve_integers(
+    p: [[i64; 2]; 2],
+    q: &[[i64; 2]],
+) -> Option<Vec<[SmallRational; 2]>> {
+    let n = q.len().wrapping_sub(1);
     if !(2..=3).contains(&n) {
         return None;
     }
-    let mut all = [&p[0]; 6];
-    all[1] = &p[1];
-    for (a, c) in all[2..].iter_mut().zip(q) {
-        *a = c;
-    }
-    let scaled = integer_coordinates(all, SMALL_COORDINATE)?;
-    let [p0, p1] = [scaled[0], scaled[1]].map(|c| c.map(i128::from));
-    let c: Vec<[i128; 2]> = scaled[2..2 + q.len()]
+    let [p0, p1] = p.map(|c| c.map(i128::from));
+    let c: Vec<[i128; 2]> = q
         .iter()
         .map(|c| {
             [

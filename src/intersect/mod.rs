@@ -15,6 +15,8 @@
 //! * `interval`: rigorous intervals, double-doubles and correct rounding for the filter;
 //! * `pyramid`: the filter's point evaluations, unrolled for degrees 1 to 3;
 //! * `filter`: the float filter of curve-curve intersection ([`certified_crossings_f64`]);
+//! * `implicit`: exact proofs in fixed-width integers that a curve misses a quadratic (its
+//!   parabola's implicit equation of one sign along the curve);
 //! * `budget`: work estimates for callers that bound their work ([`budget`], public as
 //!   `blossom::budget`);
 //! * `rounded`: the `f64` answer for every input, filter first, exact path otherwise
@@ -29,6 +31,7 @@ mod display;
 pub(crate) mod extension;
 pub(crate) mod extrema;
 pub(crate) mod filter;
+pub(crate) mod implicit;
 pub(crate) mod interval;
 pub(crate) mod isolate;
 pub(crate) mod line;

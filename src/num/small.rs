@@ -179,37 +179,102 @@ impl PartialOrd for SmallRational {
     }
 }
 
-/// The coordinates of a few points as integers on one common scale: each double is
-/// `m 2^e` with `m` odd, and every coordinate is divided by 2^(least e). Answers `None` when a
-/// scaled coordinate reaches `limit` in magnitude (or a coordinate is not finite). Ratios of
-/// differences (the parameters of contacts) do not change under the common scale.
-pub(crate) fn integer_coordinates<const N: usize>(
-    points: [&[f64; 2]; N],
-    limit: i64,
-) -> Option<[[i64; 2]; N]> {
-    let mut least = i32::MAX;
-    for p in points {
-        for &x in p {
-            if !x.is_finite() {
-                return None;
-            }
-            if x != 0.0 {
-                least = least.min(lowest_bit_exponent(x));
+/// The control points of a curve of degree at most 3 as integers on their own dyadic scale:
+/// each coordinate is `m 2^exponent` exactly, with `exponent` the least exponent of the
+/// lowest set bits of the non-zero coordinates (each double is an odd integer times a power
+/// of two), or 0 when that is larger (integers stay as they are, so that the curves of an
+/// outline in integer units share one scale). Two curves go to one common scale, the lesser
+/// exponent ([`common_scale`]); ratios of differences (the parameters of contacts) do not
+/// change under a common scale. Made once per curve, so that a pair costs only a comparison
+/// (and shifts when the scales differ).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Dyadic {
+    m: [[i64; 2]; 4],
+    len: usize,
+    /// At most 0.
+    exponent: i32,
+    /// The largest |m|.
+    largest: u64,
+}
+
+/// The integers of a [`Dyadic`] stay below 2^62 in magnitude.
+const DYADIC_LIMIT: f64 = (1u64 << 62) as f64;
+
+impl Dyadic {
+    /// The points (at most four, finite) on their own scale; `None` for more points, a
+    /// coordinate not finite, or an integer of 2^62 or more (coordinates of far-apart
+    /// binades).
+    pub(crate) fn of(points: &[[f64; 2]]) -> Option<Dyadic> {
+        if points.len() > 4 {
+            return None;
+        }
+        let mut least = 0i32;
+        for p in points {
+            for &x in p {
+                if !x.is_finite() {
+                    return None;
+                }
+                if x != 0.0 {
+                    least = least.min(lowest_bit_exponent(x));
+                }
             }
         }
+        let (mut m, mut largest) = ([[0i64; 2]; 4], 0u64);
+        for (o, p) in m.iter_mut().zip(points) {
+            for k in 0..2 {
+                let y = scale_by_power_of_two(p[k], -least);
+                if y.abs() >= DYADIC_LIMIT {
+                    return None;
+                }
+                o[k] = y as i64;
+                largest = largest.max(o[k].unsigned_abs());
+            }
+        }
+        Some(Dyadic {
+            m,
+            len: points.len(),
+            exponent: least,
+            largest,
+        })
     }
-    if least == i32::MAX {
-        return Some([[0; 2]; N]);
+
+    /// The points on the scale 2^`exponent` (at most this one's): each integer times
+    /// 2^(own exponent - `exponent`), exactly; `None` when one reaches `limit` (a power of
+    /// two) in magnitude. Unused entries are zero.
+    #[inline]
+    fn at(&self, exponent: i32, limit: i64) -> Option<[[i64; 2]; 4]> {
+        let shift = i64::from(self.exponent) - i64::from(exponent);
+        // |m| 2^shift < limit, that is |m| < limit / 2^shift (exact: limit is a power of two).
+        let bound = if shift >= 63 { 0 } else { limit >> shift };
+        if self.largest >= bound.unsigned_abs() && self.largest != 0 {
+            return None;
+        }
+        if shift == 0 {
+            return Some(self.m);
+        }
+        Some(self.m.map(|p| p.map(|x| x << shift)))
     }
-    let scale = |x: f64| -> Option<i64> {
-        let y = scale_by_power_of_two(x, -least);
-        (y.abs() < limit as f64).then_some(y as i64)
-    };
-    let mut out = [[0; 2]; N];
-    for (o, p) in out.iter_mut().zip(points) {
-        *o = [scale(p[0])?, scale(p[1])?];
-    }
-    Some(out)
+}
+
+/// The points of `a` and `b` on their common scale (the lesser exponent), each coordinate
+/// below `limit` (a power of two) in magnitude, else `None`.
+pub(crate) fn common_scale(
+    a: &Dyadic,
+    b: &Dyadic,
+    limit: i64,
+) -> Option<([[i64; 2]; 4], [[i64; 2]; 4])> {
+    let exponent = a.exponent.min(b.exponent);
+    Some((a.at(exponent, limit)?, b.at(exponent, limit)?))
+}
+
+/// [`common_scale`] of two curves given by their control points (at most four each).
+#[cfg(test)]
+pub(crate) fn on_common_scale(
+    p: &[[f64; 2]],
+    q: &[[f64; 2]],
+    limit: i64,
+) -> Option<([[i64; 2]; 4], [[i64; 2]; 4])> {
+    common_scale(&Dyadic::of(p)?, &Dyadic::of(q)?, limit)
 }
 
 /// The exponent e of the lowest set bit of the finite non-zero double x = m 2^e (m odd).
@@ -293,20 +358,38 @@ mod tests {
 
     #[test]
     fn coordinates_on_a_common_scale() {
-        let (a, b) = ([0.5, 3.0], [-1.25, 1024.0]);
+        let (a, b) = ([[0.5, 3.0]], [[-1.25, 1024.0]]);
         assert_eq!(
-            integer_coordinates([&a, &b], 1 << 20),
-            Some([[2, 12], [-5, 4096]])
+            on_common_scale(&a, &b, 1 << 20),
+            Some((
+                [[2, 12], [0; 2], [0; 2], [0; 2]],
+                [[-5, 4096], [0; 2], [0; 2], [0; 2]]
+            ))
         );
-        assert_eq!(integer_coordinates([&a, &b], 4096), None);
+        assert_eq!(on_common_scale(&a, &b, 4096), None);
+        assert_eq!(on_common_scale(&b, &a, 4096), None);
         // 0.1 is an odd multiple of 2^-55 (about 2^51.7 of them).
-        assert_eq!(integer_coordinates([&[0.1, 0.0]], 1 << 40), None);
-        assert!(integer_coordinates([&[0.1, 0.0]], 1 << 62).is_some());
+        let tenth = [[0.1, 0.0]];
+        assert_eq!(on_common_scale(&tenth, &[[0.0, 0.0]], 1 << 40), None);
+        assert!(on_common_scale(&tenth, &[[0.0, 0.0]], 1 << 62).is_some());
+        // 0.1 with 1: 1 goes to 2^55 on the common scale.
+        let one = [[1.0, 0.0]];
+        assert_eq!(
+            on_common_scale(&tenth, &one, 1 << 62).unwrap().1[0],
+            [1 << 55, 0]
+        );
+        assert_eq!(on_common_scale(&tenth, &one, 1 << 55), None);
         let tiny = f64::MIN_POSITIVE;
         assert_eq!(
-            integer_coordinates([&[tiny, 3.0 * tiny]], 1 << 62),
-            Some([[1, 3]])
+            on_common_scale(&[[tiny, 3.0 * tiny]], &[[0.0, -tiny]], 1 << 62),
+            Some((
+                [[1, 3], [0; 2], [0; 2], [0; 2]],
+                [[0, -1], [0; 2], [0; 2], [0; 2]]
+            ))
         );
-        assert_eq!(integer_coordinates([&[f64::NAN, 0.0]], 1 << 62), None);
+        assert_eq!(Dyadic::of(&[[f64::NAN, 0.0]]), None);
+        assert_eq!(Dyadic::of(&[[0.0, 0.0]; 5]), None);
+        // Far-apart binades on one curve do not fit.
+        assert_eq!(Dyadic::of(&[[1e-30, 1e30]]), None);
     }
 }

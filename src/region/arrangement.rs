@@ -55,8 +55,9 @@ pub(crate) struct Piece {
 pub(crate) struct Group {
     /// The representative piece.
     pub rep: usize,
-    /// Every piece of the group (the representative included).
-    pub members: Vec<usize>,
+    /// Its pieces (the representative included): this range of the arrangement's
+    /// `members`.
+    pub members: std::ops::Range<usize>,
 }
 
 /// The split curves, vertices and groups.
@@ -73,6 +74,8 @@ pub(crate) struct Arrangement {
     pub pieces: Vec<Piece>,
     /// The groups of coincident pieces.
     pub groups: Vec<Group>,
+    /// The pieces of every group, group after group ([`Group::members`]).
+    pub members: Vec<usize>,
 }
 
 /// Union-find with the parity of each element relative to its root.
@@ -281,6 +284,7 @@ impl Arrangement {
             vertex,
             pieces,
             groups,
+            members,
             ..
         } = assemble(&lens, &joins, &stretches);
         Ok(Arrangement {
@@ -290,6 +294,7 @@ impl Arrangement {
             vertex,
             pieces,
             groups,
+            members,
         })
     }
 
@@ -326,6 +331,8 @@ pub(crate) struct Assembled {
     pub pieces: Vec<Piece>,
     /// The groups of coincident pieces.
     pub groups: Vec<Group>,
+    /// The pieces of every group, group after group ([`Group::members`]).
+    pub members: Vec<usize>,
 }
 
 /// The vertices, pieces and groups of curves split at `lens[c]` sorted distinct parameters
@@ -353,7 +360,7 @@ pub(crate) fn assemble(
     }
     // Pieces, and the pairs of pieces that overlaps make coincident.
     let mut first = Vec::with_capacity(n);
-    let mut pieces = Vec::new();
+    let mut pieces = Vec::with_capacity(total - n);
     for (c, &len) in lens.iter().enumerate() {
         first.push(pieces.len());
         for k in 0..len - 1 {
@@ -402,26 +409,41 @@ pub(crate) fn assemble(
     let mut group_of_root = vec![usize::MAX; pieces.len()];
     let mut out: Vec<Group> = Vec::new();
     let mut rep_parity = Vec::new();
+    // Each piece's group, and each group's size; then the members group after group.
+    let mut sizes: Vec<usize> = Vec::new();
     for (i, piece) in pieces.iter_mut().enumerate() {
         let (root, parity) = groups.find(i);
         if group_of_root[root] == usize::MAX {
             group_of_root[root] = out.len();
             out.push(Group {
                 rep: i,
-                members: Vec::new(),
+                members: 0..0,
             });
             rep_parity.push(parity);
+            sizes.push(0);
         }
         let g = group_of_root[root];
-        out[g].members.push(i);
+        sizes[g] += 1;
         piece.group = g;
         piece.along = parity == rep_parity[g];
+    }
+    let mut start = 0;
+    for (group, size) in out.iter_mut().zip(&sizes) {
+        group.members = start..start;
+        start += size;
+    }
+    let mut members = vec![0; pieces.len()];
+    for (i, piece) in pieces.iter().enumerate() {
+        let range = &mut out[piece.group].members;
+        members[range.end] = i;
+        range.end += 1;
     }
     Assembled {
         vertex,
         vertices,
         pieces,
         groups: out,
+        members,
     }
 }
 

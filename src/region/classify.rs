@@ -83,7 +83,7 @@ pub(crate) fn boundary_groups(
             let curve = &arr.curves[rep.curve];
             let (a, b) = arr.ends(g.rep);
             let mut mult = [0, 0];
-            for &i in &g.members {
+            for &i in &arr.members[g.members.clone()] {
                 let piece = &arr.pieces[i];
                 mult[arr.ids[piece.curve].region] += if piece.along { 1 } else { -1 };
             }

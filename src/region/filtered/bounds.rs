@@ -66,9 +66,10 @@ pub(super) fn hodograph(points: &[[f64; 2]], out: &mut [BoundedF64; LEVEL]) -> u
     2 * (points.len() - 1)
 }
 
-/// C(n, k) (exact for the degrees taken, n <= 2 * 20).
-fn binomial(n: usize, k: usize) -> i128 {
-    (0..k).fold(1i128, |acc, i| acc * (n - i) as i128 / (i + 1) as i128)
+/// C(n, k) (exact for the degrees taken, n <= 2 * 20: every partial product C(n, i) (n - i)
+/// stays below 2^42, in word-size arithmetic).
+fn binomial(n: usize, k: usize) -> u64 {
+    (0..k).fold(1u64, |acc, i| acc * (n - i) as u64 / (i + 1) as u64)
 }
 
 /// The weights C(n, i) C(n - 1, j) / (2 C(2n - 1, i + j)) of the area coefficients, row i,

@@ -8,18 +8,22 @@
 //! 1. consecutive curves of a loop that a line through their join separates meet only there
 //!    (the exact test of `prune`, on doubles);
 //! 2. a segment and a curve whose control points are integers on one dyadic scale within 60
-//!    bits (every font; most doubles of nearby magnitudes) are intersected exactly in
-//!    fixed-width integers: two segments always ([`segment_contact_small`]: crossings, ends on
-//!    the other segment, shared vertices and collinear overlaps alike), a segment and a
-//!    quadratic or cubic when the roots at the curve's ends leave a factor of degree 1 or of
-//!    one sign on [0, 1] ([`segment_curve_small`]: an end on the segment, a tangent end, no
-//!    contact). The parameters are [`Parameter::small`] rationals compared without big
-//!    integers;
-//! 3. the certified float filter ([`crossing_parameters_f64`]) proves every common point of the
+//!    bits (every font; most doubles of nearby magnitudes; each curve's integers made once,
+//!    [`Dyadic`]) are intersected exactly in fixed-width integers: two segments always
+//!    ([`segment_contact_integers`]: crossings, ends on the other segment, shared vertices
+//!    and collinear overlaps alike), a segment and a quadratic or cubic when the roots at
+//!    the curve's ends leave a factor of degree 1 or of one sign on [0, 1]
+//!    ([`segment_curve_integers`]: an end on the segment, a tangent end, no contact). The
+//!    parameters are [`Parameter::small`] rationals compared without big integers;
+//! 3. two curves, one a quadratic, with coordinates within 25 bits on one scale, are proved
+//!    apart when the quadratic's implicit equation has one sign along the other curve
+//!    ([`misses_quadratic_integers`], exact in `i128`): neighbouring curves of an outline
+//!    and of its moved copies, which the filter below separates only by many subdivisions;
+//! 4. the certified float filter ([`crossing_parameters_f64`]) proves every common point of the
 //!    pair a transversal crossing strictly inside both curves and gives each parameter's
 //!    correctly rounded double with an enclosure of doubles (a [`Parameter::crossing`], made
 //!    exact only on demand);
-//! 4. otherwise (an end on the other curve, a shared vertex, a tangency, an overlap) that pair
+//! 5. otherwise (an end on the other curve, a shared vertex, a tangency, an overlap) that pair
 //!    alone is intersected exactly ([`intersect_curves_f64`]): its points and overlaps are
 //!    exact [`AlgebraicReal`]s. The rest of the boolean stays in floating point.
 //!
@@ -38,9 +42,12 @@ use crate::error::Result;
 use crate::intersect::algebraic::{exact_f64, value_at, AlgebraicReal};
 use crate::intersect::curves::{intersect_curves_f64, self_intersections_f64, Intersections};
 use crate::intersect::filter::crossing_parameters_f64;
-use crate::intersect::line::{segment_contact_small, segment_curve_small, SegmentContact};
+use crate::intersect::implicit::{misses_quadratic_integers, IMPLICIT_COORDINATE};
+use crate::intersect::line::{
+    segment_contact_integers, segment_curve_integers, SegmentContact, SMALL_COORDINATE,
+};
 use crate::num::ring::Rational;
-use crate::num::small::SmallRational;
+use crate::num::small::{common_scale, Dyadic, SmallRational};
 use crate::region::arrangement::{
     assemble, meeting_boxes, Assembled, CurveId, Group, Piece, Stretch,
 };
@@ -65,14 +72,16 @@ pub(super) struct Curve<'a> {
     exact: OnceCell<ExactCurve>,
     /// A straight quadratic's kind (module `straight`).
     pub straight: Option<Straight>,
+    /// The control points as integers on their own dyadic scale, when they are (degree at
+    /// most 3, coordinates of near binades): the fixed-width stages' input.
+    dyadic: Option<Dyadic>,
 }
 
 impl Curve<'_> {
-    /// The control points of the curve's chord, when its points are a linear function of a
-    /// chord parameter: a segment, or a straight quadratic (module `straight`).
-    fn chord(&self) -> Option<[[f64; 2]; 2]> {
-        let n = self.points.len();
-        (n == 2 || self.straight.is_some()).then(|| [self.points[0], self.points[n - 1]])
+    /// Whether its points are a linear function of a chord parameter: a segment, or a
+    /// straight quadratic (module `straight`).
+    fn has_chord(&self) -> bool {
+        self.points.len() == 2 || self.straight.is_some()
     }
 }
 
@@ -132,6 +141,8 @@ pub(super) struct Graph<'a> {
     pub vertices: usize,
     pub pieces: Vec<Piece>,
     pub groups: Vec<Group>,
+    /// The pieces of every group, group after group ([`Group::members`]).
+    pub members: Vec<usize>,
     pub counts: ContactCounts,
 }
 
@@ -182,27 +193,31 @@ impl Contacts {
     /// cubic (module `line`); `None` otherwise. A straight quadratic's chord parameters u
     /// become its parameters φ⁻¹(u) (module `straight`).
     fn fixed_width(i: usize, j: usize, a: &Curve<'_>, b: &Curve<'_>) -> Option<Contacts> {
+        if !(a.has_chord() || b.has_chord()) {
+            return None;
+        }
+        let (pa, pb) = common_scale(a.dyadic.as_ref()?, b.dyadic.as_ref()?, SMALL_COORDINATE)?;
+        let chord = |c: &Curve<'_>, p: &[[i64; 2]; 4]| [p[0], p[c.points.len() - 1]];
         let on = |c: &Curve<'_>, u: SmallRational| Parameter::on_chord(u, c.straight);
         let (mut points, mut overlaps) = (Vec::new(), Vec::new());
-        match (a.chord(), b.chord()) {
-            (Some(p), Some(q)) => match segment_contact_small(&p, &q)? {
+        match (a.has_chord(), b.has_chord()) {
+            (true, true) => match segment_contact_integers(chord(a, &pa), chord(b, &pb))? {
                 SegmentContact::Apart => {}
                 SegmentContact::Point([s, t]) => points.push([on(a, s), on(b, t)]),
                 SegmentContact::Overlap { s, t } => {
                     overlaps.push([s.map(|x| on(a, x)), t.map(|x| on(b, x))]);
                 }
             },
-            (Some(p), None) => points.extend(
-                segment_curve_small(&p, b.points)?
+            (true, false) => points.extend(
+                segment_curve_integers(chord(a, &pa), &pb[..b.points.len()])?
                     .into_iter()
                     .map(|[s, t]| [on(a, s), Parameter::small(t)]),
             ),
-            (None, Some(q)) => points.extend(
-                segment_curve_small(&q, a.points)?
+            (false, _) => points.extend(
+                segment_curve_integers(chord(b, &pb), &pa[..a.points.len()])?
                     .into_iter()
                     .map(|[t, s]| [Parameter::small(s), on(b, t)]),
             ),
-            (None, None) => return None,
         }
         Some(Contacts {
             i,
@@ -213,10 +228,25 @@ impl Contacts {
     }
 }
 
+/// Whether two curves, one a quadratic, are proved apart in fixed width by the quadratic's
+/// implicit equation (module `implicit`).
+fn implicitly_apart(a: &Curve<'_>, b: &Curve<'_>) -> bool {
+    let (Some(da), Some(db)) = (a.dyadic.as_ref(), b.dyadic.as_ref()) else {
+        return false;
+    };
+    let Some((pa, pb)) = common_scale(da, db, IMPLICIT_COORDINATE) else {
+        return false;
+    };
+    let quadratic = |p: &[[i64; 2]; 4]| [p[0], p[1], p[2]];
+    (b.points.len() == 3 && misses_quadratic_integers(&pa[..a.points.len()], quadratic(&pb)))
+        || (a.points.len() == 3 && misses_quadratic_integers(&pb[..b.points.len()], quadratic(&pa)))
+}
+
 /// The curves that trace more than a point, in (region, loop, curve) order, and each one's
 /// successor in its loop.
 fn collect<'a>(doubles: [&'a Doubles; 2]) -> (Vec<Curve<'a>>, Vec<usize>) {
-    let (mut curves, mut next) = (Vec::new(), Vec::new());
+    let total: usize = doubles.iter().flat_map(|d| d.iter()).map(Vec::len).sum();
+    let (mut curves, mut next) = (Vec::with_capacity(total), Vec::with_capacity(total));
     for (region, loops) in doubles.iter().enumerate() {
         for (loop_index, lp) in loops.iter().enumerate() {
             let first = curves.len();
@@ -234,6 +264,7 @@ fn collect<'a>(doubles: [&'a Doubles; 2]) -> (Vec<Curve<'a>>, Vec<usize>) {
                     bbox: bbox(points),
                     exact: OnceCell::new(),
                     straight: Straight::of(points),
+                    dyadic: Dyadic::of(points),
                 });
                 next.push(curves.len());
             }
@@ -293,9 +324,9 @@ impl<'a> Graph<'a> {
         let mut counts = ContactCounts::default();
         let boxes: Vec<[f64; 4]> = curves.iter().map(|c| c.bbox).collect();
         // Phase 1: every pair decided, the filter's crossings kept as doubles.
-        let mut pairs: Vec<[CurveId; 2]> = Vec::new();
-        let mut crossed = Vec::new();
-        let mut exact = Vec::new();
+        let mut pairs: Vec<[CurveId; 2]> = Vec::with_capacity(curves.len());
+        let mut crossed = Vec::with_capacity(curves.len());
+        let mut exact = Vec::with_capacity(curves.len());
         for (i, j) in meeting_boxes(&boxes) {
             counts.pairs += 1;
             if proved_join(&curves, &next, i, j) {
@@ -307,7 +338,16 @@ impl<'a> Graph<'a> {
             // a curve whose end lies on it, which the filter cannot).
             if let Some(found) = Contacts::fixed_width(i, j, &curves[i], &curves[j]) {
                 counts.fixed_width += 1;
-                exact.push(found);
+                if !(found.points.is_empty() && found.overlaps.is_empty()) {
+                    exact.push(found);
+                }
+                continue;
+            }
+            // Two curves, one a quadratic: its parabola's implicit equation of one sign along
+            // the other proves them apart in fixed width (most neighbouring pairs of an
+            // outline end here, which the filter separates only by many subdivisions).
+            if implicitly_apart(&curves[i], &curves[j]) {
+                counts.fixed_width += 1;
                 continue;
             }
             match crossing_parameters_f64(p, q) {
@@ -332,11 +372,28 @@ impl<'a> Graph<'a> {
         }
         // Phase 2: the parameters.
         let all = Crossings::new([doubles_arc[0].clone(), doubles_arc[1].clone()], pairs);
-        let mut params: Vec<Vec<Parameter>> = curves
+        // Room for each curve's parameters: its ends and its contacts.
+        let mut room = vec![2usize; curves.len()];
+        let mut contacts = next.len();
+        for (_, i, j, found) in &crossed {
+            room[*i] += found.len();
+            room[*j] += found.len();
+            contacts += found.len();
+        }
+        for c in &exact {
+            room[c.i] += c.points.len() + 2 * c.overlaps.len();
+            room[c.j] += c.points.len() + 2 * c.overlaps.len();
+            contacts += c.points.len();
+        }
+        let mut params: Vec<Vec<Parameter>> = room
             .iter()
-            .map(|_| vec![Parameter::end(false), Parameter::end(true)])
+            .map(|&r| {
+                let mut p = Vec::with_capacity(r);
+                p.extend([Parameter::end(false), Parameter::end(true)]);
+                p
+            })
             .collect();
-        let mut same: Vec<Same> = Vec::new();
+        let mut same: Vec<Same> = Vec::with_capacity(contacts);
         let mut shared = Vec::new();
         let record = |params: &mut Vec<Vec<Parameter>>,
                       same: &mut Vec<Same>,
@@ -410,6 +467,7 @@ impl<'a> Graph<'a> {
             vertices,
             pieces,
             groups,
+            members,
         } = assemble(&lens, &joins, &stretches);
         Ok(Graph {
             curves,
@@ -418,6 +476,7 @@ impl<'a> Graph<'a> {
             vertices,
             pieces,
             groups,
+            members,
             counts,
         })
     }
@@ -442,7 +501,7 @@ fn carry_across_overlaps(
         .iter()
         .map(|sh| {
             let (p, q) = (&curves[sh.p], &curves[sh.q]);
-            let chords = p.chord().is_some() && q.chord().is_some();
+            let chords = p.has_chord() && q.has_chord();
             [
                 chords.then(|| Affine::new(&sh.s, &sh.t, [p, q])),
                 chords.then(|| Affine::new(&sh.t, &sh.s, [q, p])),
@@ -620,7 +679,7 @@ impl Graph<'_> {
     /// of the representative to its left.
     pub fn multiplicity(&self, g: usize) -> [i64; 2] {
         let mut m = [0, 0];
-        for &i in &self.groups[g].members {
+        for &i in &self.members[self.groups[g].members.clone()] {
             let piece = &self.pieces[i];
             m[self.curves[piece.curve].id.region] += if piece.along { 1 } else { -1 };
         }
