@@ -47,7 +47,7 @@ pub(crate) fn misses_quadratic(p: &[[f64; 2]], q: &[[f64; 2]]) -> bool {
         return false;
     }
     crate::num::small::on_common_scale(p, q, IMPLICIT_COORDINATE)
-        .is_some_and(|(a, b)| misses_quadratic_integers(&a[..p.len()], [b[0], b[1], b[2]]))
+        .is_some_and(|[a, b]| misses_quadratic_integers(&a[..p.len()], [b[0], b[1], b[2]]))
 }
 
 /// [`misses_quadratic`] on integer control points on one scale, each coordinate below

@@ -236,7 +236,7 @@ pub(crate) const SMALL_COORDINATE: i64 = 1 << 60;
 /// scale or a parameter does not fit (the caller then intersects exactly in big rationals).
 #[cfg(test)]
 pub(crate) fn segment_contact_small(p: &[[f64; 2]], q: &[[f64; 2]]) -> Option<SegmentContact> {
-    let (a, b) = crate::num::small::on_common_scale(p, q, SMALL_COORDINATE)?;
+    let [a, b] = crate::num::small::on_common_scale(p, q, SMALL_COORDINATE)?;
     segment_contact_integers([a[0], a[1]], [b[0], b[1]])
 }
 
@@ -295,7 +295,7 @@ pub(crate) fn segment_curve_small(
     p: &[[f64; 2]],
     q: &[[f64; 2]],
 ) -> Option<Vec<[SmallRational; 2]>> {
-    let (a, b) = crate::num::small::on_common_scale(p, q, SMALL_COORDINATE)?;
+    let [a, b] = crate::num::small::on_common_scale(p, q, SMALL_COORDINATE)?;
     segment_curve_integers([a[0], a[1]], &b[..q.len()])
 }
 

@@ -197,6 +197,9 @@ pub(crate) struct Dyadic {
     largest: u64,
 }
 
+/// Up to four points with integer coordinates (unused entries zero).
+pub(crate) type IntegerPoints = [[i64; 2]; 4];
+
 /// The integers of a [`Dyadic`] stay below 2^62 in magnitude.
 const DYADIC_LIMIT: f64 = (1u64 << 62) as f64;
 
@@ -242,7 +245,7 @@ impl Dyadic {
     /// 2^(own exponent - `exponent`), exactly; `None` when one reaches `limit` (a power of
     /// two) in magnitude. Unused entries are zero.
     #[inline]
-    fn at(&self, exponent: i32, limit: i64) -> Option<[[i64; 2]; 4]> {
+    fn at(&self, exponent: i32, limit: i64) -> Option<IntegerPoints> {
         let shift = i64::from(self.exponent) - i64::from(exponent);
         // |m| 2^shift < limit, that is |m| < limit / 2^shift (exact: limit is a power of two).
         let bound = if shift >= 63 { 0 } else { limit >> shift };
@@ -258,13 +261,9 @@ impl Dyadic {
 
 /// The points of `a` and `b` on their common scale (the lesser exponent), each coordinate
 /// below `limit` (a power of two) in magnitude, else `None`.
-pub(crate) fn common_scale(
-    a: &Dyadic,
-    b: &Dyadic,
-    limit: i64,
-) -> Option<([[i64; 2]; 4], [[i64; 2]; 4])> {
+pub(crate) fn common_scale(a: &Dyadic, b: &Dyadic, limit: i64) -> Option<[IntegerPoints; 2]> {
     let exponent = a.exponent.min(b.exponent);
-    Some((a.at(exponent, limit)?, b.at(exponent, limit)?))
+    Some([a.at(exponent, limit)?, b.at(exponent, limit)?])
 }
 
 /// [`common_scale`] of two curves given by their control points (at most four each).
@@ -273,7 +272,7 @@ pub(crate) fn on_common_scale(
     p: &[[f64; 2]],
     q: &[[f64; 2]],
     limit: i64,
-) -> Option<([[i64; 2]; 4], [[i64; 2]; 4])> {
+) -> Option<[IntegerPoints; 2]> {
     common_scale(&Dyadic::of(p)?, &Dyadic::of(q)?, limit)
 }
 
@@ -361,10 +360,10 @@ mod tests {
         let (a, b) = ([[0.5, 3.0]], [[-1.25, 1024.0]]);
         assert_eq!(
             on_common_scale(&a, &b, 1 << 20),
-            Some((
+            Some([
                 [[2, 12], [0; 2], [0; 2], [0; 2]],
                 [[-5, 4096], [0; 2], [0; 2], [0; 2]]
-            ))
+            ])
         );
         assert_eq!(on_common_scale(&a, &b, 4096), None);
         assert_eq!(on_common_scale(&b, &a, 4096), None);
@@ -375,17 +374,17 @@ mod tests {
         // 0.1 with 1: 1 goes to 2^55 on the common scale.
         let one = [[1.0, 0.0]];
         assert_eq!(
-            on_common_scale(&tenth, &one, 1 << 62).unwrap().1[0],
+            on_common_scale(&tenth, &one, 1 << 62).unwrap()[1][0],
             [1 << 55, 0]
         );
         assert_eq!(on_common_scale(&tenth, &one, 1 << 55), None);
         let tiny = f64::MIN_POSITIVE;
         assert_eq!(
             on_common_scale(&[[tiny, 3.0 * tiny]], &[[0.0, -tiny]], 1 << 62),
-            Some((
+            Some([
                 [[1, 3], [0; 2], [0; 2], [0; 2]],
                 [[0, -1], [0; 2], [0; 2], [0; 2]]
-            ))
+            ])
         );
         assert_eq!(Dyadic::of(&[[f64::NAN, 0.0]]), None);
         assert_eq!(Dyadic::of(&[[0.0, 0.0]; 5]), None);

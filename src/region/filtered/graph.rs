@@ -196,7 +196,7 @@ impl Contacts {
         if !(a.has_chord() || b.has_chord()) {
             return None;
         }
-        let (pa, pb) = common_scale(a.dyadic.as_ref()?, b.dyadic.as_ref()?, SMALL_COORDINATE)?;
+        let [pa, pb] = common_scale(a.dyadic.as_ref()?, b.dyadic.as_ref()?, SMALL_COORDINATE)?;
         let chord = |c: &Curve<'_>, p: &[[i64; 2]; 4]| [p[0], p[c.points.len() - 1]];
         let on = |c: &Curve<'_>, u: SmallRational| Parameter::on_chord(u, c.straight);
         let (mut points, mut overlaps) = (Vec::new(), Vec::new());
@@ -234,7 +234,7 @@ fn implicitly_apart(a: &Curve<'_>, b: &Curve<'_>) -> bool {
     let (Some(da), Some(db)) = (a.dyadic.as_ref(), b.dyadic.as_ref()) else {
         return false;
     };
-    let Some((pa, pb)) = common_scale(da, db, IMPLICIT_COORDINATE) else {
+    let Some([pa, pb]) = common_scale(da, db, IMPLICIT_COORDINATE) else {
         return false;
     };
     let quadratic = |p: &[[i64; 2]; 4]| [p[0], p[1], p[2]];
