@@ -23,6 +23,8 @@
 //! The test decides no common point only; a zero of g, even outside Q's piece of the parabola,
 //! leaves the pair to the other stages.
 
+use crate::num::small::{common_scale, Dyadic};
+
 /// The coordinates' bound of the test (module documentation).
 pub(crate) const IMPLICIT_COORDINATE: i64 = 1 << 25;
 
@@ -39,6 +41,17 @@ fn cross_from(x: [i64; 2], u: [i64; 2], v: [i64; 2]) -> i64 {
 #[inline(always)]
 fn wide(a: i64, b: i64) -> i128 {
     i128::from(a) * i128::from(b)
+}
+
+/// Whether two curves given by their integers (each made once, [`Dyadic`]), one of them a
+/// quadratic, are proved apart by [`misses_quadratic_integers`] on their common scale.
+pub(crate) fn implicitly_apart(a: &Dyadic, b: &Dyadic) -> bool {
+    let Some([pa, pb]) = common_scale(a, b, IMPLICIT_COORDINATE) else {
+        return false;
+    };
+    let quadratic = |p: &[[i64; 2]; 4]| [p[0], p[1], p[2]];
+    (b.len() == 3 && misses_quadratic_integers(&pa[..a.len()], quadratic(&pb)))
+        || (a.len() == 3 && misses_quadratic_integers(&pb[..b.len()], quadratic(&pa)))
 }
 
 #[cfg(test)]

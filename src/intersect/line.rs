@@ -250,16 +250,25 @@ pub(crate) fn segment_contact_integers(
     let cross = |a: [i128; 2], b: [i128; 2]| a[0] * b[1] - a[1] * b[0];
     let dot = |a: [i128; 2], b: [i128; 2]| a[0] * b[0] + a[1] * b[1];
     let (d, e, r) = (w(p0, p1), w(q0, q1), w(p0, q0));
-    let unit = |x: SmallRational| SmallRational::ZERO <= x && x <= SmallRational::ONE;
     let c = cross(d, e);
     if c != 0 {
-        let s = SmallRational::new(cross(r, e), c)?;
-        let t = SmallRational::new(cross(r, d), c)?;
-        return Some(if unit(s) && unit(t) {
-            SegmentContact::Point([s, t])
-        } else {
-            SegmentContact::Apart
-        });
+        // s = cross(r, e) / c and t = cross(r, d) / c in [0, 1], decided on the numerators
+        // before any reduction.
+        let (a, b) = (cross(r, e), cross(r, d));
+        let within = |x: i128| {
+            if c > 0 {
+                0 <= x && x <= c
+            } else {
+                c <= x && x <= 0
+            }
+        };
+        if !(within(a) && within(b)) {
+            return Some(SegmentContact::Apart);
+        }
+        return Some(SegmentContact::Point([
+            SmallRational::new(a, c)?,
+            SmallRational::new(b, c)?,
+        ]));
     }
     if cross(d, r) != 0 {
         return Some(SegmentContact::Apart);

@@ -241,6 +241,11 @@ impl Dyadic {
         })
     }
 
+    /// The number of points.
+    pub(crate) fn len(&self) -> usize {
+        self.len
+    }
+
     /// The points on the scale 2^`exponent` (at most this one's): each integer times
     /// 2^(own exponent - `exponent`), exactly; `None` when one reaches `limit` (a power of
     /// two) in magnitude. Unused entries are zero.

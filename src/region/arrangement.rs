@@ -28,6 +28,7 @@ use crate::error::Result;
 use crate::intersect::algebraic::AlgebraicReal;
 use crate::intersect::curves::{intersect_curves, self_intersections, Overlap};
 use std::cmp::Ordering;
+use std::ops::ControlFlow;
 
 /// Which input curve: region, loop, curve (the order of these is the priority of the spec).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
@@ -161,26 +162,44 @@ pub(crate) fn candidate_pairs(curves: &[Curve]) -> Vec<(usize, usize)> {
 }
 
 /// The pairs (i, j), i < j, of boxes `[x_lo, y_lo, x_hi, y_hi]` that meet (closed boxes),
-/// sorted: a sweep over the boxes ordered by their left side, each paired with the later
-/// ones whose left side is not beyond its right side.
+/// sorted ([`for_each_meeting_pair`], collected).
 pub(crate) fn meeting_boxes(boxes: &[[f64; 4]]) -> Vec<(usize, usize)> {
+    let mut pairs = Vec::with_capacity(4 * boxes.len());
+    let _ = for_each_meeting_pair(boxes, |i, j| {
+        pairs.push((i, j));
+        ControlFlow::<()>::Continue(())
+    });
+    if boxes.len() > SMALL_SWEEP {
+        pairs.sort_unstable();
+    }
+    pairs
+}
+
+/// Up to this many boxes, every pair is tried in index order (cheaper than the sort).
+const SMALL_SWEEP: usize = 16;
+
+/// Calls `f(i, j)`, i < j, for each pair of boxes `[x_lo, y_lo, x_hi, y_hi]` that meet (closed
+/// boxes), until it breaks: a sweep over the boxes ordered by their left side, each paired
+/// with the later ones whose left side is not beyond its right side (a few boxes: every pair,
+/// in index order). The order of the pairs is fixed by the boxes alone.
+pub(crate) fn for_each_meeting_pair<B>(
+    boxes: &[[f64; 4]],
+    mut f: impl FnMut(usize, usize) -> ControlFlow<B>,
+) -> ControlFlow<B> {
     let meet =
         |a: &[f64; 4], b: &[f64; 4]| a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3];
-    // A few boxes: every pair, already in order (cheaper than the sort).
-    if boxes.len() <= 16 {
-        let mut pairs = Vec::with_capacity(2 * boxes.len());
+    if boxes.len() <= SMALL_SWEEP {
         for (i, a) in boxes.iter().enumerate() {
             for (j, b) in boxes.iter().enumerate().skip(i + 1) {
                 if meet(a, b) {
-                    pairs.push((i, j));
+                    f(i, j)?;
                 }
             }
         }
-        return pairs;
+        return ControlFlow::Continue(());
     }
     let mut order: Vec<usize> = (0..boxes.len()).collect();
     order.sort_unstable_by(|&i, &j| boxes[i][0].total_cmp(&boxes[j][0]));
-    let mut pairs = Vec::with_capacity(4 * boxes.len());
     for (n, &i) in order.iter().enumerate() {
         let (a, rest) = (&boxes[i], &order[n + 1..]);
         for &j in rest {
@@ -189,12 +208,11 @@ pub(crate) fn meeting_boxes(boxes: &[[f64; 4]]) -> Vec<(usize, usize)> {
                 break;
             }
             if a[1] <= b[3] && b[1] <= a[3] {
-                pairs.push((i.min(j), i.max(j)));
+                f(i.min(j), i.max(j))?;
             }
         }
     }
-    pairs.sort_unstable();
-    pairs
+    ControlFlow::Continue(())
 }
 
 impl Arrangement {

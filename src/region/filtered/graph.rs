@@ -2,7 +2,7 @@
 //! curve (itself and the curves of its own region included), the split points joined into
 //! vertices and coincident pieces into groups.
 //!
-//! **Contacts, pair by pair.** The pairs of curves whose boxes meet ([`meeting_boxes`]) are
+//! **Contacts, pair by pair.** The pairs of curves whose boxes meet ([`for_each_meeting_pair`]) are
 //! examined one by one, cheapest proof first:
 //!
 //! 1. consecutive curves of a loop that a line through their join separates meet only there
@@ -42,14 +42,14 @@ use crate::error::Result;
 use crate::intersect::algebraic::{exact_f64, value_at, AlgebraicReal};
 use crate::intersect::curves::{intersect_curves_f64, self_intersections_f64, Intersections};
 use crate::intersect::filter::crossing_parameters_f64;
-use crate::intersect::implicit::{misses_quadratic_integers, IMPLICIT_COORDINATE};
+use crate::intersect::implicit::implicitly_apart;
 use crate::intersect::line::{
     segment_contact_integers, segment_curve_integers, SegmentContact, SMALL_COORDINATE,
 };
 use crate::num::ring::Rational;
 use crate::num::small::{common_scale, Dyadic, SmallRational};
 use crate::region::arrangement::{
-    assemble, meeting_boxes, Assembled, CurveId, Group, Piece, Stretch,
+    assemble, for_each_meeting_pair, Assembled, CurveId, Group, Piece, Stretch,
 };
 use crate::region::curve::Curve as ExactCurve;
 use crate::region::input::Doubles;
@@ -60,6 +60,7 @@ use crate::region::transfer::transfer;
 use crate::shape::array::Bezier;
 use std::cell::OnceCell;
 use std::cmp::Ordering;
+use std::ops::ControlFlow;
 use std::sync::Arc;
 
 /// One input curve that traces more than a point.
@@ -228,20 +229,6 @@ impl Contacts {
     }
 }
 
-/// Whether two curves, one a quadratic, are proved apart in fixed width by the quadratic's
-/// implicit equation (module `implicit`).
-fn implicitly_apart(a: &Curve<'_>, b: &Curve<'_>) -> bool {
-    let (Some(da), Some(db)) = (a.dyadic.as_ref(), b.dyadic.as_ref()) else {
-        return false;
-    };
-    let Some([pa, pb]) = common_scale(da, db, IMPLICIT_COORDINATE) else {
-        return false;
-    };
-    let quadratic = |p: &[[i64; 2]; 4]| [p[0], p[1], p[2]];
-    (b.points.len() == 3 && misses_quadratic_integers(&pa[..a.points.len()], quadratic(&pb)))
-        || (a.points.len() == 3 && misses_quadratic_integers(&pb[..b.points.len()], quadratic(&pa)))
-}
-
 /// The curves that trace more than a point, in (region, loop, curve) order, and each one's
 /// successor in its loop.
 fn collect<'a>(doubles: [&'a Doubles; 2]) -> (Vec<Curve<'a>>, Vec<usize>) {
@@ -327,7 +314,13 @@ impl<'a> Graph<'a> {
         let mut pairs: Vec<[CurveId; 2]> = Vec::with_capacity(curves.len());
         let mut crossed = Vec::with_capacity(curves.len());
         let mut exact = Vec::with_capacity(curves.len());
-        for (i, j) in meeting_boxes(&boxes) {
+        // The pairs in the sweep's order (fixed by the boxes; no sort needed).
+        let mut meeting = Vec::with_capacity(4 * boxes.len());
+        let _ = for_each_meeting_pair(&boxes, |i, j| {
+            meeting.push((i, j));
+            ControlFlow::<()>::Continue(())
+        });
+        for (i, j) in meeting {
             counts.pairs += 1;
             if proved_join(&curves, &next, i, j) {
                 counts.joins += 1;
@@ -346,9 +339,11 @@ impl<'a> Graph<'a> {
             // Two curves, one a quadratic: its parabola's implicit equation of one sign along
             // the other proves them apart in fixed width (most neighbouring pairs of an
             // outline end here, which the filter separates only by many subdivisions).
-            if implicitly_apart(&curves[i], &curves[j]) {
-                counts.fixed_width += 1;
-                continue;
+            if let (Some(a), Some(b)) = (&curves[i].dyadic, &curves[j].dyadic) {
+                if implicitly_apart(a, b) {
+                    counts.fixed_width += 1;
+                    continue;
+                }
             }
             match crossing_parameters_f64(p, q) {
                 Some(found) => {

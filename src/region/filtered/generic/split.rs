@@ -3,9 +3,12 @@
 
 use super::measure::crossing_sign;
 use crate::intersect::filter::crossing_parameters_f64;
-use crate::region::arrangement::{meeting_boxes, CurveId};
+use crate::intersect::implicit::implicitly_apart;
+use crate::num::small::Dyadic;
+use crate::region::arrangement::{for_each_meeting_pair, meeting_boxes, CurveId};
 pub(super) use crate::region::filtered::graph::bbox;
 use crate::region::prune::{consecutive_meet_only_at_join, one_to_one};
+use std::ops::ControlFlow;
 
 /// One input curve.
 pub(super) struct Curve<'a> {
@@ -60,7 +63,7 @@ pub(super) struct Split<'a> {
 /// meeting only at their join, other curves whose boxes meet without a common point (module
 /// docs of [`super`]).
 pub(super) fn simple(doubles: &[Vec<Vec<[f64; 2]>>]) -> bool {
-    let (mut boxes, mut owner) = (Vec::new(), Vec::new());
+    let (mut boxes, mut owner, mut dyadic) = (Vec::new(), Vec::new(), Vec::new());
     for (l, curves) in doubles.iter().enumerate() {
         if curves.len() < 3 {
             return false;
@@ -73,9 +76,12 @@ pub(super) fn simple(doubles: &[Vec<Vec<[f64; 2]>>]) -> bool {
             }
             boxes.push(bbox(points));
             owner.push((l, c));
+            dyadic.push(Dyadic::of(points));
         }
     }
-    meeting_boxes(&boxes).into_iter().all(|(i, j)| {
+    // Pairs in the sweep's order, stopping at the first that is not proved apart (on
+    // overlapping loops, early).
+    let proved = |i: usize, j: usize| {
         let ((li, ci), (lj, cj)) = (owner[i], owner[j]);
         let (p, q) = (&doubles[li][ci], &doubles[lj][cj]);
         let len = doubles[li].len();
@@ -84,9 +90,19 @@ pub(super) fn simple(doubles: &[Vec<Vec<[f64; 2]>>]) -> bool {
         } else if li == lj && (cj + 1) % len == ci {
             consecutive_meet_only_at_join(q, p)
         } else {
-            crossing_parameters_f64(p, q).is_some_and(|x| x.is_empty())
+            let apart =
+                matches!((&dyadic[i], &dyadic[j]), (Some(a), Some(b)) if implicitly_apart(a, b));
+            apart || crossing_parameters_f64(p, q).is_some_and(|x| x.is_empty())
+        }
+    };
+    for_each_meeting_pair(&boxes, |i, j| {
+        if proved(i, j) {
+            ControlFlow::Continue(())
+        } else {
+            ControlFlow::Break(())
         }
     })
+    .is_continue()
 }
 
 impl<'a> Split<'a> {
