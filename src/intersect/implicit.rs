@@ -65,15 +65,27 @@ pub(crate) fn misses_quadratic(p: &[[f64; 2]], q: &[[f64; 2]]) -> bool {
 
 /// [`misses_quadratic`] on integer control points on one scale, each coordinate below
 /// [`IMPLICIT_COORDINATE`] in magnitude.
-pub(crate) fn misses_quadratic_integers(p: &[[i64; 2]], [q0, q1, q2]: [[i64; 2]; 3]) -> bool {
-    let n = p.len().wrapping_sub(1);
-    if !(1..=3).contains(&n) || cross_from(q0, q1, q2) == 0 {
+pub(crate) fn misses_quadratic_integers(p: &[[i64; 2]], q: [[i64; 2]; 3]) -> bool {
+    // The degree fixed at compile time: the loops unrolled, no bounds checks.
+    match p.len() {
+        2 => misses::<2>(p.try_into().expect("two points"), q),
+        3 => misses::<3>(p.try_into().expect("three points"), q),
+        4 => misses::<4>(p.try_into().expect("four points"), q),
+        _ => false,
+    }
+}
+
+/// [`misses_quadratic_integers`] for a curve of `N` points (degree `N - 1`).
+#[inline(always)]
+fn misses<const N: usize>(p: &[[i64; 2]; N], [q0, q1, q2]: [[i64; 2]; 3]) -> bool {
+    let n = N - 1;
+    if cross_from(q0, q1, q2) == 0 {
         return false;
     }
     // a[i][k] = A_i(p_k); first at the ends, whose values f(p_0) = h_0 and f(p_n) = h_2n
     // must have one sign (else P meets the parabola: undecided at once).
-    let mut a = [[0i64; 4]; 3];
-    let fill = |a: &mut [[i64; 4]; 3], k: usize| {
+    let mut a = [[0i64; N]; 3];
+    let fill = |a: &mut [[i64; N]; 3], k: usize| {
         let x = p[k];
         a[0][k] = cross_from(x, q1, q2);
         a[1][k] = cross_from(x, q2, q0);
@@ -86,18 +98,17 @@ pub(crate) fn misses_quadratic_integers(p: &[[i64; 2]], [q0, q1, q2]: [[i64; 2];
     for k in 1..n {
         fill(&mut a, k);
     }
-    let mut sign = 0i128;
-    for m in 0..=2 * n {
+    let sign = (wide(a[1][0], a[1][0]) - 4 * wide(a[0][0], a[2][0])).signum();
+    for m in 1..2 * n {
         let mut h = 0i128;
         for j in m.saturating_sub(n)..=m.min(n) {
             let k = m - j;
             let weight = i128::from(BINOMIAL[n][j] * BINOMIAL[n][k]);
             h += weight * (wide(a[1][j], a[1][k]) - 4 * wide(a[0][j], a[2][k]));
         }
-        if h == 0 || (sign != 0 && h.signum() != sign) {
+        if h.signum() != sign {
             return false;
         }
-        sign = h.signum();
     }
     true
 }

@@ -147,8 +147,9 @@ pub(super) struct Graph<'a> {
     pub counts: ContactCounts,
 }
 
-/// Two (curve, parameter) nodes that are one point of the plane.
-type Same = [(usize, Parameter); 2];
+/// Two (curve, parameter) nodes that are one point of the plane: each curve with the place
+/// where the parameter was recorded among its parameters ([`Ranks`]).
+type Same = [(usize, usize); 2];
 
 /// An overlap of curves p and q: its exact ends on p (increasing) and the matching ends on
 /// q.
@@ -157,6 +158,8 @@ struct Shared {
     q: usize,
     s: [Parameter; 2],
     t: [Parameter; 2],
+    /// Where s and t were recorded among the parameters of p and q ([`Ranks`]).
+    at: [[usize; 2]; 2],
 }
 
 /// The exact contacts of one pair of curves (i, j): common points as (s on i, t on j), and
@@ -282,23 +285,92 @@ fn compare(a: &Parameter, b: &Parameter, failed: &mut Option<crate::Error>) -> O
     })
 }
 
-/// Sorts the parameters exactly and removes duplicates (keeping, of equal ones, the first:
-/// a curve end or an exact number before a crossing, whose exact number is then not needed).
-fn sort_distinct(p: &mut Vec<Parameter>) -> Result<()> {
-    let mut failed = None;
-    p.sort_by(|a, b| compare(a, b, &mut failed));
-    p.dedup_by(|a, b| compare(a, b, &mut failed) == Ordering::Equal);
-    failed.map_or(Ok(()), Err)
+/// Where each recorded parameter of each curve ended up after the parameters were sorted and
+/// made distinct: the place of recorded parameter k of curve c is `index[offset[c] + k]`.
+struct Ranks {
+    offset: Vec<usize>,
+    index: Vec<usize>,
 }
 
-/// The index of `x` among the sorted distinct `params` (present by construction).
-fn index_of(params: &[Parameter], x: &Parameter) -> Result<usize> {
-    let mut failed = None;
-    let found = params.binary_search_by(|p| compare(p, x, &mut failed));
-    if let Some(e) = failed {
-        return Err(e);
+impl Ranks {
+    /// The place of recorded parameter `k` of curve `c`.
+    fn of(&self, c: usize, k: usize) -> usize {
+        self.index[self.offset[c] + k]
     }
-    Ok(found.expect("every split parameter was recorded"))
+
+    /// A parameter was inserted at place `at` of curve `c`: the later ones move up.
+    fn inserted(&mut self, c: usize, at: usize) {
+        let range = self.offset[c]..self.offset[c + 1];
+        for i in &mut self.index[range] {
+            if *i >= at {
+                *i += 1;
+            }
+        }
+    }
+}
+
+/// Sorts each curve's parameters exactly and removes duplicates (keeping, of equal ones, the
+/// first recorded: a curve end or an exact number before a crossing, whose exact number is
+/// then not needed), and says where each recorded one went. The sort moves indices, and the
+/// parameters move once, in place.
+fn sort_distinct(params: &mut [Vec<Parameter>]) -> Result<Ranks> {
+    let mut offset = Vec::with_capacity(params.len() + 1);
+    let mut total = 0;
+    for p in params.iter() {
+        offset.push(total);
+        total += p.len();
+    }
+    offset.push(total);
+    let mut index = vec![0; total];
+    let (mut order, mut kept, mut done) = (Vec::new(), Vec::new(), Vec::new());
+    let mut failed = None;
+    for (c, p) in params.iter_mut().enumerate() {
+        let n = p.len();
+        order.clear();
+        order.extend(0..n);
+        // Stable: of equal parameters the first recorded comes first.
+        order.sort_by(|&a, &b| compare(&p[a], &p[b], &mut failed));
+        kept.clear();
+        let rank = &mut index[offset[c]..offset[c + 1]];
+        for &k in &order {
+            let same = kept
+                .last()
+                .is_some_and(|&last| compare(&p[last], &p[k], &mut failed) == Ordering::Equal);
+            if !same {
+                kept.push(k);
+            }
+            rank[k] = kept.len() - 1;
+        }
+        let distinct = kept.len();
+        // The permutation that puts the kept ones first, in order (the others after them),
+        // applied in place by following its cycles: afterwards p[i] is the old p[kept[i]].
+        let mut is_kept = std::mem::take(&mut done);
+        is_kept.clear();
+        is_kept.resize(n, false);
+        for &k in &kept {
+            is_kept[k] = true;
+        }
+        kept.extend((0..n).filter(|&k| !is_kept[k]));
+        is_kept.iter_mut().for_each(|x| *x = false);
+        for i in 0..n {
+            if is_kept[i] {
+                continue;
+            }
+            let mut j = i;
+            loop {
+                is_kept[j] = true;
+                let k = kept[j];
+                if k == i {
+                    break;
+                }
+                p.swap(j, k);
+                j = k;
+            }
+        }
+        done = is_kept;
+        p.truncate(distinct);
+    }
+    failed.map_or(Ok(Ranks { offset, index }), Err)
 }
 
 impl<'a> Graph<'a> {
@@ -396,9 +468,11 @@ impl<'a> Graph<'a> {
                       s: Parameter,
                       q: usize,
                       t: Parameter| {
-            params[p].push(s.clone());
-            params[q].push(t.clone());
-            same.push([(p, s), (q, t)]);
+            // (p and q are one curve for a self-intersection.)
+            let at_s = params[p].len();
+            params[p].push(s);
+            same.push([(p, at_s), (q, params[q].len())]);
+            params[q].push(t);
         };
         for (pair, i, j, found) in crossed {
             for x in found {
@@ -426,36 +500,40 @@ impl<'a> Graph<'a> {
                 record(&mut params, &mut same, i, s, j, t);
             }
             for [s, t] in overlaps {
+                let at_s = params[i].len();
                 params[i].extend(s.iter().cloned());
+                let at_t = params[j].len();
                 params[j].extend(t.iter().cloned());
-                shared.push(Shared { p: i, q: j, s, t });
+                let at = [[at_s, at_s + 1], [at_t, at_t + 1]];
+                shared.push(Shared {
+                    p: i,
+                    q: j,
+                    s,
+                    t,
+                    at,
+                });
             }
         }
+        // Each curve's end 1 (recorded second) is the next curve's end 0 (recorded first).
         for (c, &d) in next.iter().enumerate() {
-            same.push([(c, Parameter::end(true)), (d, Parameter::end(false))]);
+            same.push([(c, 1), (d, 0)]);
         }
-        for p in params.iter_mut() {
-            sort_distinct(p)?;
-        }
-        carry_across_overlaps(&curves, &shared, &mut params)?;
+        let mut ranks = sort_distinct(&mut params)?;
+        carry_across_overlaps(&curves, &shared, &mut params, &mut ranks)?;
         // Phase 3: vertices, pieces, groups.
-        let mut joins = Vec::with_capacity(same.len());
-        for [(a, x), (b, y)] in &same {
-            joins.push([
-                (*a, index_of(&params[*a], x)?),
-                (*b, index_of(&params[*b], y)?),
-            ]);
-        }
-        let mut stretches = Vec::with_capacity(shared.len());
-        for sh in &shared {
-            let at = |c: usize, x: &Parameter| index_of(&params[c], x);
-            stretches.push(Stretch {
+        let joins: Vec<[(usize, usize); 2]> = same
+            .iter()
+            .map(|&[(a, x), (b, y)]| [(a, ranks.of(a, x)), (b, ranks.of(b, y))])
+            .collect();
+        let stretches: Vec<Stretch> = shared
+            .iter()
+            .map(|sh| Stretch {
                 p: sh.p,
                 q: sh.q,
-                s: [at(sh.p, &sh.s[0])?, at(sh.p, &sh.s[1])?],
-                t: [at(sh.q, &sh.t[0])?, at(sh.q, &sh.t[1])?],
-            });
-        }
+                s: sh.at[0].map(|k| ranks.of(sh.p, k)),
+                t: sh.at[1].map(|k| ranks.of(sh.q, k)),
+            })
+            .collect();
         let lens: Vec<usize> = params.iter().map(Vec::len).collect();
         let Assembled {
             vertex,
@@ -487,6 +565,7 @@ fn carry_across_overlaps(
     curves: &[Curve<'_>],
     shared: &[Shared],
     params: &mut [Vec<Parameter>],
+    ranks: &mut Ranks,
 ) -> Result<()> {
     if shared.is_empty() {
         return Ok(());
@@ -545,6 +624,7 @@ fn carry_across_overlaps(
             }
             if let Err(at) = at {
                 params[to].insert(at, t.clone());
+                ranks.inserted(to, at);
                 work.push((to, t));
             }
         }
