@@ -55,6 +55,23 @@ pub(super) struct Faces {
     pub exact_seeds: usize,
 }
 
+/// The cycles of the half-edge successor, one after another.
+struct Cycles {
+    edges: Vec<usize>,
+    /// Cycle f is `edges[start[f]..start[f + 1]]`.
+    start: Vec<usize>,
+}
+
+impl Cycles {
+    fn len(&self) -> usize {
+        self.start.len() - 1
+    }
+
+    fn get(&self, f: usize) -> &[usize] {
+        &self.edges[self.start[f]..self.start[f + 1]]
+    }
+}
+
 /// How many joins of a component are tried for a ray count on boxes.
 const JOINS_TRIED: usize = 8;
 
@@ -62,7 +79,7 @@ const JOINS_TRIED: usize = 8;
 /// numbers, or `None` when no cycle's sign or no ray decides (module docs).
 fn seed_by_area(
     graph: &Graph<'_>,
-    cycles: &[Vec<usize>],
+    cycles: &Cycles,
     comp_of_curve: &[usize],
     comp: usize,
     areas: &mut Areas<'_, '_>,
@@ -75,7 +92,8 @@ fn seed_by_area(
                 comp_of_curve[d] == comp
             })
         })?;
-    for (f, cycle) in cycles.iter().enumerate() {
+    for f in 0..cycles.len() {
+        let cycle = cycles.get(f);
         let (c, _, _) = graph.branch(cycle[0]);
         if comp_of_curve[c] != comp {
             continue;
@@ -219,23 +237,26 @@ pub(super) fn faces(
 ) -> Result<Option<Faces>> {
     let n = graph.half_edges();
     let mut face = vec![usize::MAX; n];
-    let mut cycles: Vec<Vec<usize>> = Vec::new();
+    // The cycles one after another: cycle f is edges[start[f]..start[f + 1]].
+    let mut cycles = Cycles {
+        edges: Vec::with_capacity(n),
+        start: vec![0],
+    };
     for h in 0..n {
         if face[h] != usize::MAX {
             continue;
         }
-        let id = cycles.len();
-        let mut cycle = Vec::new();
+        let id = cycles.start.len() - 1;
         let mut e = h;
         while face[e] == usize::MAX {
             face[e] = id;
-            cycle.push(e);
+            cycles.edges.push(e);
             e = successor(graph, around, e);
         }
         if e != h {
             return Ok(None);
         }
-        cycles.push(cycle);
+        cycles.start.push(cycles.edges.len());
     }
     // Components: vertices joined by the groups.
     let mut joins = Joins::new(graph.vertices);
@@ -270,7 +291,7 @@ pub(super) fn faces(
         queue.push(f);
         while let Some(f) = queue.pop() {
             let wf = winding[f].expect("queued faces have winding numbers");
-            for &h in &cycles[f] {
+            for &h in cycles.get(f) {
                 let d = across(graph, h);
                 let wt = [wf[0] - d[0], wf[1] - d[1]];
                 let t = face[h ^ 1];
