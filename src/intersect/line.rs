@@ -318,44 +318,36 @@ pub(crate) fn segment_curve_integers(
     if !(2..=3).contains(&n) {
         return None;
     }
+    // Fixed-size storage (n <= 3): no allocation but the answer's.
     let [p0, p1] = p.map(|c| c.map(i128::from));
-    let c: Vec<[i128; 2]> = q
-        .iter()
-        .map(|c| {
-            [
-                i128::from(c[0] - p0[0] as i64),
-                i128::from(c[1] - p0[1] as i64),
-            ]
-        })
-        .collect();
+    let mut c = [[0i128; 2]; 4];
+    for (ci, qi) in c.iter_mut().zip(q) {
+        *ci = [i128::from(qi[0]) - p0[0], i128::from(qi[1]) - p0[1]];
+    }
     let d = [p1[0] - p0[0], p1[1] - p0[1]];
     // Power coefficients of Q - p0 (ascending): sum_k (-1)^(k-i) C(n,k) C(k,i) c_i t^k, below
     // 8 * 2^61 in magnitude.
-    let binomial = |n: usize, k: usize| -> i128 {
-        [[1, 0, 0, 0], [1, 1, 0, 0], [1, 2, 1, 0], [1, 3, 3, 1]][n][k]
-    };
-    let power: Vec<[i128; 2]> = (0..=n)
-        .map(|k| {
-            let mut a = [0i128; 2];
-            for (i, ci) in c.iter().enumerate().take(k + 1) {
-                let w = binomial(n, k) * binomial(k, i) * if (k - i) % 2 == 0 { 1 } else { -1 };
-                a = [a[0] + w * ci[0], a[1] + w * ci[1]];
-            }
-            a
-        })
-        .collect();
-    // f(t) = cross(d, Q(t) - p0), and every sum below, checked.
-    let mut f = Vec::with_capacity(n + 1);
-    for a in &power {
-        f.push(
-            d[0].checked_mul(a[1])?
-                .checked_sub(d[1].checked_mul(a[0])?)?,
-        );
+    const BINOMIAL: [[i128; 4]; 4] = [[1, 0, 0, 0], [1, 1, 0, 0], [1, 2, 1, 0], [1, 3, 3, 1]];
+    let mut power = [[0i128; 2]; 4];
+    for (k, a) in power.iter_mut().enumerate().take(n + 1) {
+        for (i, ci) in c.iter().enumerate().take(k + 1) {
+            let sign = if (k - i) % 2 == 0 { 1 } else { -1 };
+            let w = BINOMIAL[n][k] * BINOMIAL[k][i] * sign;
+            *a = [a[0] + w * ci[0], a[1] + w * ci[1]];
+        }
     }
-    if f.iter().all(|&x| x == 0) {
+    // f(t) = cross(d, Q(t) - p0) (its first `len` coefficients), and every sum below, checked.
+    let mut f = [0i128; 4];
+    for (fk, a) in f.iter_mut().zip(&power).take(n + 1) {
+        *fk = d[0]
+            .checked_mul(a[1])?
+            .checked_sub(d[1].checked_mul(a[0])?)?;
+    }
+    let mut len = n + 1;
+    if f[..len].iter().all(|&x| x == 0) {
         return None;
     }
-    let mut roots: Vec<SmallRational> = Vec::new();
+    let (mut roots, mut found_roots) = ([SmallRational::ZERO; 4], 0);
     for end in [0i128, 1] {
         let at_end = |f: &[i128]| {
             if end == 0 {
@@ -364,40 +356,44 @@ pub(crate) fn segment_curve_integers(
                 f.iter().try_fold(0i128, |acc, &x| acc.checked_add(x))
             }
         };
-        while f.len() > 1 && at_end(&f)? == 0 {
+        while len > 1 && at_end(&f[..len])? == 0 {
             // f = (t - end) r: r_(k-1) = f_k + end r_k, from the top.
-            let m = f.len() - 1;
-            let mut r = vec![0i128; m];
+            let m = len - 1;
+            let mut r = [0i128; 4];
             r[m - 1] = f[m];
             for k in (1..m).rev() {
                 r[k - 1] = f[k].checked_add(end * r[k])?;
             }
             f = r;
-            if roots.last() != Some(&SmallRational::integer(end as i64)) {
-                roots.push(SmallRational::integer(end as i64));
+            len = m;
+            let root = SmallRational::integer(end as i64);
+            if found_roots == 0 || roots[found_roots - 1] != root {
+                roots[found_roots] = root;
+                found_roots += 1;
             }
         }
     }
-    while f.len() > 1 && f.last() == Some(&0) {
-        f.pop();
+    while len > 1 && f[len - 1] == 0 {
+        len -= 1;
     }
-    match f.len() {
+    match len {
         1 => {}
         2 => {
             let t = SmallRational::new(-f[0], f[1])?;
             if SmallRational::ZERO < t && t < SmallRational::ONE {
-                roots.push(t);
+                roots[found_roots] = t;
+                found_roots += 1;
             }
         }
         _ => {
             // Bernstein coefficients of the remaining factor r (degree m) on [0, 1], times
             // C(m, j): b_j = sum_(i <= j) C(m - i, j - i) r_i; one strict sign: no root.
-            let m = f.len() - 1;
+            let m = len - 1;
             let mut signs = [0i128; 4];
             for (j, sign) in signs.iter_mut().enumerate().take(m + 1) {
                 let mut b = 0i128;
                 for (i, fi) in f.iter().enumerate().take(j + 1) {
-                    b = b.checked_add(binomial(m - i, j - i).checked_mul(*fi)?)?;
+                    b = b.checked_add(BINOMIAL[m - i][j - i].checked_mul(*fi)?)?;
                 }
                 *sign = b.signum();
             }
@@ -411,12 +407,12 @@ pub(crate) fn segment_curve_integers(
     let norm = d[0]
         .checked_mul(d[0])?
         .checked_add(d[1].checked_mul(d[1])?)?;
-    let mut found = Vec::with_capacity(roots.len());
-    for t in roots {
+    let mut found = Vec::with_capacity(found_roots);
+    for &t in &roots[..found_roots] {
         let (a, b) = (i128::from(t.numer()), i128::from(t.denom()));
         let mut num = 0i128;
         let mut scale = 1i128;
-        for (k, a_k) in power.iter().enumerate() {
+        for (k, a_k) in power.iter().enumerate().take(n + 1) {
             let mut w = a_k[0]
                 .checked_mul(d[0])?
                 .checked_add(a_k[1].checked_mul(d[1])?)?;

@@ -211,6 +211,21 @@ impl Dyadic {
         if points.len() > 4 {
             return None;
         }
+        // Integers (the common case of font units) are their own integers.
+        let integer = |x: f64| x.abs() < DYADIC_LIMIT && x == (x as i64) as f64;
+        if points.iter().all(|p| integer(p[0]) && integer(p[1])) {
+            let (mut m, mut largest) = ([[0i64; 2]; 4], 0u64);
+            for (o, p) in m.iter_mut().zip(points) {
+                *o = p.map(|x| x as i64);
+                largest = largest.max(o[0].unsigned_abs()).max(o[1].unsigned_abs());
+            }
+            return Some(Dyadic {
+                m,
+                len: points.len(),
+                exponent: 0,
+                largest,
+            });
+        }
         let mut least = 0i32;
         for p in points {
             for &x in p {

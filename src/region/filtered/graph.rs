@@ -608,7 +608,8 @@ fn carry_across_overlaps(
             if !strictly_inside(&x, from_range)? {
                 continue;
             }
-            let t = match map.as_ref().map(|m| m.image(&x)).transpose()?.flatten() {
+            let image = map.as_ref().map(|m| m.image(&x, [from_range, to_range]));
+            let t = match image.transpose()?.flatten() {
                 Some(t) => t,
                 None => Parameter::known(transfer(
                     curves[from].exact(),
@@ -651,7 +652,6 @@ fn strictly_inside(x: &Parameter, range: &[Parameter; 2]) -> Result<bool> {
 struct Affine {
     small: Option<[SmallRational; 2]>,
     big: OnceCell<[Rational; 2]>,
-    ends: [[Parameter; 2]; 2],
     /// The kind of the target when it is a straight quadratic.
     target: Option<Straight>,
     /// Whether both curves are segments (chord parameter = curve parameter).
@@ -670,14 +670,14 @@ impl Affine {
         Affine {
             small: small(),
             big: OnceCell::new(),
-            ends: [from.clone(), to.clone()],
             target: curves[1].straight,
             segments: curves.iter().all(|c| c.points.len() == 2),
         }
     }
 
-    /// `[shift, slope]` in big rationals, made once.
-    fn big(&self) -> Result<&[Rational; 2]> {
+    /// `[shift, slope]` in big rationals, made once from the overlap's `ends` (its ends on the
+    /// source, then on the target).
+    fn big(&self, ends: [&[Parameter; 2]; 2]) -> Result<&[Rational; 2]> {
         if let Some(b) = self.big.get() {
             return Ok(b);
         }
@@ -685,7 +685,7 @@ impl Affine {
             [Rational::default(), Rational::default()],
             [Rational::default(), Rational::default()],
         ];
-        for (e, side) in end.iter_mut().zip(&self.ends) {
+        for (e, side) in end.iter_mut().zip(ends) {
             for (v, x) in e.iter_mut().zip(side) {
                 *v = x
                     .algebraic()?
@@ -700,8 +700,8 @@ impl Affine {
     }
 
     /// The image of x, exactly; `None` when neither fixed width nor (between segments) big
-    /// rationals apply, for the caller's exact transfer.
-    fn image(&self, x: &Parameter) -> Result<Option<Parameter>> {
+    /// rationals apply, for the caller's exact transfer. `ends` as for [`Affine::big`].
+    fn image(&self, x: &Parameter, ends: [&[Parameter; 2]; 2]) -> Result<Option<Parameter>> {
         if let (Some([shift, slope]), Some(s)) = (self.small, x.chord_coordinate()) {
             if let Some(t) = s.mul(slope).and_then(|v| v.add(shift)) {
                 return Ok(Some(Parameter::on_chord(t, self.target)));
@@ -710,7 +710,7 @@ impl Affine {
         if !self.segments {
             return Ok(None);
         }
-        let [shift, slope] = self.big()?;
+        let [shift, slope] = self.big(ends)?;
         let x = x.algebraic()?;
         Ok(Some(Parameter::known(match x.exact() {
             Some(s) => AlgebraicReal::from_rational(shift + s * slope),
