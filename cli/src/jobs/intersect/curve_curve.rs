@@ -24,6 +24,8 @@ impl<'de, T: Reading> Deserialize<'de> for Pair<T> {
     }
 }
 
+impl<T> Estimate for CurveCurve<T> {}
+
 impl<T: Number> Kind for CurveCurve<T> {
     fn solve(self, context: &Context) -> Result<Value, Error> {
         let [p, q]: [Curve<T>; 2] = self.curves.0.try_into().unwrap_or_else(|_| unreachable!());

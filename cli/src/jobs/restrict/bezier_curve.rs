@@ -27,9 +27,9 @@ pub struct BezierCurve<T> {
 #[rustfmt::skip]
 const CALIBRATION: Calibration = [[3.1, 26.0], [3.2, 1.4], [4.5, 0.66], [61.0, 10.0], [5.2, 0.075], [2.6, 0.06]];
 
-impl<T: Reading> BezierCurve<T> {
-    /// The up-front estimate ([`Kind`]): a `curve`'s, with the change of basis.
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+/// The up-front estimate: a `curve`'s, with the change of basis.
+impl<T: Reading> Estimate for BezierCurve<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let (n, d) = self.control_points.sizes();
         let ops = curve_operations(env.method, n, d) + 2.0 * (n + 1.0) * (n + 1.0) * d;
         env.restriction(("control_points", "interval"), n, ops, &CALIBRATION)

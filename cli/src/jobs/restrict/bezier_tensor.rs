@@ -24,9 +24,9 @@ pub struct BezierTensor<T> {
 #[rustfmt::skip]
 const CALIBRATION: Calibration = [[9.8, 4.0], [8.9, 5.4], [2.6, 0.1], [11.0, 1.8], [8.0, 0.61], [5.2, 0.41]];
 
-impl<T: Reading> BezierTensor<T> {
-    /// The up-front estimate ([`Kind`]): a `tensor`'s.
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+/// The up-front estimate: a `tensor`'s.
+impl<T: Reading> Estimate for BezierTensor<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         super::tensor::estimate(env, (&self.control_points, "control_points"), &CALIBRATION)
     }
 }

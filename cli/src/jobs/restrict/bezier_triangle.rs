@@ -140,9 +140,9 @@ fn barycentric<T: Number>(corners: [[T; 3]; 3]) -> Result<[[T; 3]; 3], Error> {
     Ok(out)
 }
 
-impl<T: Reading> BezierTriangle<T> {
-    /// The up-front estimate ([`Kind`]): a `triangle`'s.
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+/// The up-front estimate: a `triangle`'s.
+impl<T: Reading> Estimate for BezierTriangle<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let entries = self.control_points.0.len() as f64;
         // N from the number of entries (N + 1)(N + 2) / 2.
         let big_n = ((8.0 * entries + 1.0).sqrt() - 3.0).max(0.0) / 2.0 + 1.0;

@@ -47,9 +47,9 @@ struct Answer<T: Write> {
     control_points: Out<Vec<Point<T>>>,
 }
 
-impl<T: Reading> Bspline<T> {
-    /// The up-front estimate ([`Kind`]), exact under both arithmetics.
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+/// The up-front estimate, exact under both arithmetics.
+impl<T: Reading> Estimate for Bspline<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let env = env.deciding_exactly();
         let c = env.numbers("pieces");
         let (_, d) = self.pieces.0[0].coefficients.sizes();

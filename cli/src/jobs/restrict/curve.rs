@@ -19,9 +19,8 @@ pub struct Curve<T> {
 #[rustfmt::skip]
 const CALIBRATION: Calibration = [[2.4, 36.0], [3.9, 1.5], [22.0, 0.66], [7.5, 1.7], [3.9, 0.89], [1.6, 0.09]];
 
-impl<T: Reading> Curve<T> {
-    /// The up-front estimate ([`Kind`]).
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Estimate for Curve<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let (n, d) = self.coefficients.sizes();
         let ops = curve_operations(env.method, n, d);
         env.restriction(("coefficients", "interval"), n, ops, &CALIBRATION)

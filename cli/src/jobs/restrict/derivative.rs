@@ -15,9 +15,8 @@ pub struct Derivative<T> {
     order: Degree,
 }
 
-impl<T: Reading> Derivative<T> {
-    /// The up-front estimate ([`Kind`]).
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Estimate for Derivative<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let c = env.numbers("control_points");
         let (n, d) = self.control_points.sizes();
         let ops = 4.0 * (n + 1.0) * (n + 1.0) * d;

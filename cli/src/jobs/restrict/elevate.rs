@@ -14,9 +14,8 @@ pub struct Elevate<T> {
     to_degree: Degree,
 }
 
-impl<T: Reading> Elevate<T> {
-    /// The up-front estimate ([`Kind`]).
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Estimate for Elevate<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let c = env.numbers("control_points");
         let (n, d) = self.control_points.sizes();
         let m = (self.to_degree.0 as f64).max(n);

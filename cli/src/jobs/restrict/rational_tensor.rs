@@ -114,9 +114,8 @@ pub fn sizes<T>(numerator: &Rows<T>, denominator: &NumberRows<T>) -> (f64, f64, 
     (rows.max(w.len() as f64), columns.max(w_columns), d + 1.0)
 }
 
-impl<T: Reading> RationalTensor<T> {
-    /// The up-front estimate ([`Kind`]).
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Estimate for RationalTensor<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let (rows, columns, d) = sizes(&self.numerator, &self.denominator);
         let (n, m) = self
             .degree

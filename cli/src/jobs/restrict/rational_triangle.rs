@@ -24,9 +24,8 @@ pub struct RationalTriangle<T> {
     degree: Option<Degree>,
 }
 
-impl<T: Reading> RationalTriangle<T> {
-    /// The up-front estimate ([`Kind`]).
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Estimate for RationalTriangle<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let (rows, columns, d) = sizes(&self.numerator, &self.denominator);
         let (n, m) = ((rows - 1.0).max(0.0), (columns - 1.0).max(0.0));
         let total = if self.total_degree.is_some() {

@@ -34,9 +34,8 @@ pub fn estimate<T>(
     env.restriction((field, "rectangle"), n + m, ops, row)
 }
 
-impl<T: Reading> Tensor<T> {
-    /// The up-front estimate ([`Kind`]).
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Estimate for Tensor<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         estimate(env, (&self.coefficients, "coefficients"), &CALIBRATION)
     }
 }

@@ -37,9 +37,8 @@ pub fn estimate(
     env.restriction((field, "triangle"), big_n, ops, row)
 }
 
-impl<T: Reading> Triangle<T> {
-    /// The up-front estimate ([`Kind`]).
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Estimate for Triangle<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let (rows, columns, d) = self.coefficients.sizes();
         let (big_n, terms) = match self.total_degree {
             Some(_) => ((rows - 1.0).max(0.0), rows * (rows + 1.0) / 2.0),
