@@ -15,7 +15,7 @@
 //! exactly, JSON numbers with a fraction part only under `f64`), and the containers check
 //! counts and dimensions as they go ([`Numbers`], [`Points`], [`Rows`]).
 
-use crate::names::{did_you_mean, listed, quoted, unknown_field};
+use crate::names::{listed, lookup, unknown_field};
 use crate::number::{f64_from_json, json_type, rational_from_json, JsonNumber};
 use blossom::{BoundedF64, Error, Rational};
 use serde::de::{self, DeserializeOwned, DeserializeSeed, IntoDeserializer, Visitor};
@@ -296,6 +296,24 @@ impl<'de, E: DeserializeOwned> Deserialize<'de> for List<E> {
     }
 }
 
+/// Exactly two objects of a job (`curves`, `regions`, `triangles`).
+#[derive(Clone, Debug)]
+pub struct Two<S>(pub [S; 2]);
+
+impl<'de, S: DeserializeOwned + Plural> Deserialize<'de> for Two<S> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let expected = format!("an array of two {}", S::PLURAL);
+        let two = leaf(d, |v| items(v, &expected, exactly(2, S::PLURAL), object))?;
+        Ok(Two(two.try_into().unwrap_or_else(|_| unreachable!())))
+    }
+}
+
+/// The name of several objects, for messages.
+pub trait Plural {
+    /// `curves`, `regions`, `triangles`.
+    const PLURAL: &'static str;
+}
+
 /// The count of exactly `n` elements (`expected 3 corners, found 2`).
 pub fn exactly(n: usize, what: &'static str) -> impl Fn(usize) -> Result<(), String> {
     move |found| match found == n {
@@ -425,7 +443,7 @@ pub fn number<T: Reading>(value: &Value) -> Result<T, Error> {
 }
 
 /// `N` numbers, called `what` in a refusal of their count.
-fn numbers<T: Reading, const N: usize>(
+pub fn numbers<T: Reading, const N: usize>(
     value: &Value,
     expected: &str,
     what: &'static str,
@@ -472,11 +490,7 @@ impl<'de, T: Reading, const D: usize> Deserialize<'de> for Corners<T, D> {
 
 /// "1 coordinate", "3 coordinates".
 pub fn coordinates(d: usize) -> String {
-    if d == 1 {
-        String::from("1 coordinate")
-    } else {
-        format!("{d} coordinates")
-    }
+    format!("{d} coordinate{}", if d == 1 { "" } else { "s" })
 }
 
 /// A point of any dimension D >= 1.
@@ -701,27 +715,16 @@ pub struct Name<E>(pub E);
 
 impl<'de, E: Named> Deserialize<'de> for Name<E> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let names: Vec<&str> = E::NAMES.iter().map(|(n, _)| *n).collect();
-        let refusal = |message: String| Error::new("", message);
-        leaf(d, |value| match value {
-            Value::String(name) => E::NAMES
-                .iter()
-                .find(|(n, _)| n == name)
-                .map(|(_, e)| Name(*e))
-                .ok_or_else(|| {
-                    refusal(format!(
-                        "unknown {} {}{} (expected {})",
-                        E::WHAT,
-                        quoted(name),
-                        did_you_mean(name, &names),
-                        listed(&names)
-                    ))
-                }),
-            other => Err(refusal(format!(
-                "expected a string ({}), found {}",
-                listed(&names),
-                json_type(other)
-            ))),
+        let read = |value: &Value| match value {
+            Value::String(name) => lookup(E::WHAT, name, E::NAMES).map(Name),
+            other => {
+                let names: Vec<&str> = E::NAMES.iter().map(|(n, _)| *n).collect();
+                let (names, found) = (listed(&names), json_type(other));
+                Err(format!("expected a string ({names}), found {found}"))
+            }
+        };
+        leaf(d, |value| {
+            read(value).map_err(|message| Error::new("", message))
         })
     }
 }

@@ -5,7 +5,7 @@
 //! inverse formula (22) of seed 004, `specialised` the carried Bézier-input evaluator; the
 //! other methods write the curve in the power basis (exactly) and restrict it like a `curve`.
 
-use super::{specialised, Number, Restricted};
+use super::{restricted, specialised, Number};
 use crate::jobs::cost::curve_operations;
 use crate::jobs::kind::prelude::*;
 use crate::repeated;
@@ -41,7 +41,7 @@ impl<T: Number> Kind for BezierCurve<T> {
         let curve = blossom::BezierCurve::new(self.control_points.0)?;
         let [a, b] = &self.interval.0;
         let n = curve.degree();
-        let restricted: Vec<Point<T>> = match context.method {
+        let points: Vec<Point<T>> = match context.method {
             MethodChoice::Library(Method::Bulk) => {
                 curve.subsegment(a.clone()..b.clone()).into_control_points()
             }
@@ -62,9 +62,6 @@ impl<T: Number> Kind for BezierCurve<T> {
                 restrict_power_curve(&power, a, b, method).into_control_points()
             }
         };
-        write(&Restricted {
-            degree: n,
-            control_points: Out(restricted),
-        })
+        restricted(n, Out(points))
     }
 }

@@ -3,7 +3,7 @@
 //! the net, `pyramid` on its blossom, `polarisation` from samples (two passes of (22) of seed
 //! 004), `specialised` carried, the others through the exact power form.
 
-use super::{specialised, Number, Restricted};
+use super::{restricted, specialised, Number};
 use crate::jobs::kind::prelude::*;
 use crate::repeated;
 use blossom::engine::tensor_bernstein_to_power;
@@ -67,9 +67,6 @@ impl<T: Number> Kind for BezierTensor<T> {
                     .into_control_points()
             }
         };
-        write(&Restricted {
-            degree: [n, m],
-            control_points: Out(net),
-        })
+        restricted([n, m], Out(net))
     }
 }

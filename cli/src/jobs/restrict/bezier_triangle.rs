@@ -4,7 +4,7 @@
 //! `f64`; every method then uses (r, s, 1 - r - s)): q = b[P^nu, Q^mu, R^lambda]. The methods
 //! as for `bezier-curve`.
 
-use super::{entries, specialised, Number, Restricted};
+use super::{entries, restricted, specialised, Number};
 use crate::jobs::kind::prelude::*;
 use blossom::engine::{triangle_bernstein_to_power, triangle_index, triangle_len};
 use blossom::{bezier_triangle_blossom, restrict_power_triangle};
@@ -186,9 +186,6 @@ impl<T: Number> Kind for BezierTriangle<T> {
                 restrict_power_triangle(&triangle_bernstein_to_power(&patch), &plane, method)
             }
         };
-        write(&Restricted {
-            degree: big_n,
-            control_points: entries(&net, None),
-        })
+        restricted(big_n, entries(&net, None))
     }
 }

@@ -1,6 +1,6 @@
 //! `"kind": "curve"`: C(u) = sum_i c_i u^i restricted to [a, b], by every `--method`.
 
-use super::{specialised, Number, Restricted};
+use super::{restricted, specialised, Number};
 use crate::jobs::cost::curve_operations;
 use crate::jobs::kind::prelude::*;
 use blossom::{restrict_power_curve, PowerCurve};
@@ -31,13 +31,10 @@ impl<T: Number> Kind for Curve<T> {
     fn solve(self, context: &Context) -> Result<Value, Error> {
         let curve = PowerCurve::new(self.coefficients.0)?;
         let [a, b] = &self.interval.0;
-        let restricted = match context.method {
+        let bezier = match context.method {
             MethodChoice::Library(method) => restrict_power_curve(&curve, a, b, method),
             MethodChoice::Specialised => specialised::curve(&curve, a, b)?,
         };
-        write(&Restricted {
-            degree: restricted.degree(),
-            control_points: Out(restricted.into_control_points()),
-        })
+        restricted(bezier.degree(), Out(bezier.into_control_points()))
     }
 }

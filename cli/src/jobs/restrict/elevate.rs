@@ -1,6 +1,6 @@
 //! `"kind": "elevate"`: the Bézier curve's control points at the higher degree m.
 
-use super::{Number, Restricted};
+use super::{restricted, Number};
 use crate::jobs::kind::prelude::*;
 use blossom::{elevate, BezierCurve};
 
@@ -30,9 +30,6 @@ impl<T: Number> Kind for Elevate<T> {
         let curve = BezierCurve::new(self.control_points.0)?;
         let m = self.to_degree.0;
         let elevated = elevate(&curve, m)?;
-        write(&Restricted {
-            degree: m,
-            control_points: Out(elevated.control_points().to_vec()),
-        })
+        restricted(m, Out(elevated.control_points().to_vec()))
     }
 }

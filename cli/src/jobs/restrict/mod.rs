@@ -30,10 +30,11 @@ pub mod tensor;
 pub mod triangle;
 
 use super::read::Reading;
-use super::write::{Out, Write};
+use super::write::{write, Out, Write};
 use crate::number::JsonNumber;
 use blossom::{Error, Field, Point, Rational, Ring, TriangularPatch};
 use serde::Serialize;
+use serde_json::Value;
 
 /// A number type `blossom restrict` computes in: [`Rational`] (`exact`) or
 /// [`blossom::BoundedF64`] (`f64`, with its error bound).
@@ -50,6 +51,17 @@ pub struct Restricted<D, P> {
     pub degree: D,
     /// The control points.
     pub control_points: P,
+}
+
+/// The answer of a restriction of degree `degree` whose control points are `control_points`.
+pub fn restricted<D: Serialize, P: Serialize>(
+    degree: D,
+    control_points: P,
+) -> Result<Value, Error> {
+    write(&Restricted {
+        degree,
+        control_points,
+    })
 }
 
 /// One control point of a triangular patch: its indices, the point and, for a rational

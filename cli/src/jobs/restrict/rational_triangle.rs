@@ -3,7 +3,7 @@
 //! computed exactly and rounded once; a zero weight is an error.
 
 use super::rational_tensor::{estimate, grids, sizes};
-use super::{check_rounded_weights, entries, exact, exact_points, rounded, Number};
+use super::{check_rounded_weights, entries, exact, exact_points, restricted, rounded, Number};
 use crate::jobs::cost::triangle_operations;
 use crate::jobs::kind::prelude::*;
 use blossom::{RationalPowerTriangle, RationalSurface, TriangularPatch};
@@ -67,9 +67,6 @@ impl<T: Number> Kind for RationalTriangle<Written<T>> {
                 .map(|(k, w)| (format!("control_points[{k}].weight"), w)),
         )?;
         let net = TriangularPatch::new(patch.degree(), points)?;
-        write(&super::Restricted {
-            degree: patch.degree(),
-            control_points: entries(&net, Some(&weights)),
-        })
+        restricted(patch.degree(), entries(&net, Some(&weights)))
     }
 }
