@@ -131,7 +131,7 @@ pub fn under(path: &str, error: Error) -> Error {
 /// The `Deserializer` of one value of a job: `value` `None` is a field that is absent (read as
 /// `None` where optional, missing elsewhere), `job` the job object itself, whose `"kind"` is
 /// read already. Objects are read by the types that derive `Deserialize`, their fields checked
-/// first and then read in their declared order ([`Fields`]); every other value is handed whole
+/// first and then read in their declared order (`Fields`); every other value is handed whole
 /// to the leaf that reads it (by serde_json's own deserializer: numbers keep their spelling,
 /// `arbitrary_precision`).
 pub struct Reader<'a> {

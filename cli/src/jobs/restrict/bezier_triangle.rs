@@ -111,10 +111,12 @@ fn net<T: Number>(items: Vec<Entry<T>>) -> Result<TriangularPatch<T>, Error> {
 
 /// The corners, each (r, s, 1 - r - s) after checking that its coordinates add up to 1.
 fn barycentric<T: Number>(corners: [[T; 3]; 3]) -> Result<[[T; 3]; 3], Error> {
-    let tolerance = if <T as Reading>::EXACT {
-        T::zero()
-    } else {
-        T::from_rational(&Rational::new(1.into(), 1_000_000_000.into()))
+    let (tolerance, within) = match <T as Reading>::EXACT {
+        true => (T::zero(), "exactly"),
+        false => (
+            T::from_rational(&Rational::new(1.into(), 1_000_000_000.into())),
+            "within 1e-9",
+        ),
     };
     let mut out = corners.clone();
     for (k, [r, s, t]) in corners.into_iter().enumerate() {
@@ -123,17 +125,10 @@ fn barycentric<T: Number>(corners: [[T; 3]; 3]) -> Result<[[T; 3]; 3], Error> {
         let distance = if off < T::zero() { off.neg() } else { off };
         #[allow(clippy::neg_cmp_op_on_partial_ord)] // a NaN distance is refused too
         if !(distance <= tolerance) {
-            return Err(Error::new(
-                format!("triangle[{k}]"),
-                format!(
-                    "barycentric coordinates must add up to 1 ({}), they add up to {sum}",
-                    if <T as Reading>::EXACT {
-                        "exactly"
-                    } else {
-                        "within 1e-9"
-                    },
-                ),
-            ));
+            let message = format!(
+                "barycentric coordinates must add up to 1 ({within}), they add up to {sum}"
+            );
+            return Err(Error::new(format!("triangle[{k}]"), message));
         }
         out[k][2] = T::one().sub(&r).sub(&s);
     }

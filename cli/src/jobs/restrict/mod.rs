@@ -1,7 +1,7 @@
 //! The jobs of `blossom restrict`, one file per kind, each a struct deriving `Deserialize`
-//! (its fields in the order they are checked) with its up-front estimate (the cost model of
-//! [`super::cost`]) that implements [`Kind`](super::kinds::Kind): its answer, a struct deriving
-//! `Serialize`. This module holds what they share: the number types they compute in
+//! (its fields in the order they are checked) that implements
+//! [`Estimate`](super::kinds::Estimate) (the cost model of [`super::cost`]) and
+//! [`Kind`](super::kinds::Kind): its answer, a struct deriving `Serialize` ([`restricted`]). This module holds what they share: the number types they compute in
 //! ([`Number`]), the answers' common forms and the carried evaluators of `--method
 //! specialised` ([`specialised`]).
 //!

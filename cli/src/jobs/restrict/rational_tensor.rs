@@ -130,9 +130,7 @@ impl<T: Reading> Estimate for RationalTensor<T> {
 impl<T: Number> Kind for RationalTensor<Written<T>> {
     fn solve(self, _: &Context) -> Result<Value, Error> {
         let (p, w) = grids(&self.numerator.0, &self.denominator.0)?;
-        let rect = exact(&self.rectangle.0)
-            .try_into()
-            .unwrap_or_else(|_| unreachable!());
+        let rect = self.rectangle.0.map(|x| x.0);
         let surface = RationalSurface::new(&p, &w)?;
         let degree = self.degree.map_or(surface.degree(), |d| (d.0, d.1));
         let patch = surface.tensor(&rect, Some(degree))?;
