@@ -35,6 +35,21 @@ pub fn unknown_field(name: &str, accepted: &[&str]) -> String {
     format!("unknown field {}{hint}", quoted(name))
 }
 
+/// The value named `name` among `names` (each name with its value), or the refusal `unknown
+/// WHAT "NAME" (did you mean "..."?) (expected a, b or c)`.
+pub fn lookup<E: Copy>(what: &str, name: &str, names: &[(&str, E)]) -> Result<E, String> {
+    let list: Vec<&str> = names.iter().map(|(n, _)| *n).collect();
+    let found = names.iter().find(|(n, _)| *n == name).map(|(_, e)| *e);
+    found.ok_or_else(|| {
+        let near = did_you_mean(name, &list);
+        format!(
+            "unknown {what} {}{near} (expected {})",
+            quoted(name),
+            listed(&list)
+        )
+    })
+}
+
 /// `names` as `a, b or c`.
 pub fn listed(names: &[&str]) -> String {
     match names {

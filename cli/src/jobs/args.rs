@@ -12,7 +12,7 @@
 //! names are `PathBuf`s, so names that are not UTF-8 are kept intact. The help texts are this
 //! module's own (every limit they state is tested equal to the code's).
 
-use crate::names::{did_you_mean, listed, quoted};
+use crate::names::{did_you_mean, listed, lookup, quoted};
 use blossom::{Error, Method};
 use clap::error::{ContextKind, ContextValue, ErrorKind};
 use clap::{Args, CommandFactory, Parser, Subcommand};
@@ -257,32 +257,13 @@ fn input(input: Option<PathBuf>) -> Result<Option<PathBuf>, Error> {
 
 /// The value of `--arithmetic`: `exact` or `f64`.
 fn arithmetic(value: &str) -> Result<Arithmetic, String> {
-    match value {
-        "exact" => Ok(Arithmetic::Exact),
-        "f64" => Ok(Arithmetic::F64),
-        other => Err(format!(
-            "unknown arithmetic {}{} (expected exact or f64)",
-            quoted(other),
-            did_you_mean(other, &["exact", "f64"])
-        )),
-    }
+    let names = [("exact", Arithmetic::Exact), ("f64", Arithmetic::F64)];
+    lookup("arithmetic", value, &names)
 }
 
 /// The value of `--method`: one of [`METHOD_NAMES`].
 fn method(value: &str) -> Result<MethodChoice, String> {
-    let names: Vec<&str> = METHOD_NAMES.iter().map(|(n, _)| *n).collect();
-    METHOD_NAMES
-        .iter()
-        .find(|(n, _)| *n == value)
-        .map(|(_, choice)| *choice)
-        .ok_or_else(|| {
-            format!(
-                "unknown method {}{} (expected {})",
-                quoted(value),
-                did_you_mean(value, &names),
-                listed(&names)
-            )
-        })
+    lookup("method", value, &METHOD_NAMES)
 }
 
 /// The value of `--max-work` or `--max-input`: a non-negative integer, written in digits or in

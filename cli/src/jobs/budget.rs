@@ -35,7 +35,7 @@ pub fn up_front(estimate: Estimate, limits: &Limits) -> Result<Estimate, Error> 
 /// refuses it).
 pub fn estimate(document: &Value, method: MethodChoice, arithmetic: Arithmetic) -> Estimate {
     job_and_kind(document, Subcommand::Restrict)
-        .and_then(|(job, kind)| Ok((job, Job::shape(kind.name, job)?)))
+        .and_then(|(job, kind)| Ok((job, Job::<Text>::read(kind.name, job)?)))
         .map_or_else(
             |_| Estimate::zero(),
             |(job, shape)| estimate_of(&shape, job, method, arithmetic),

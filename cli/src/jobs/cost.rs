@@ -156,8 +156,8 @@ impl Numbers {
     }
 }
 
-/// How a job reads its numbers, for the estimate.
-#[derive(Clone, Copy, Debug)]
+/// How a job reads its numbers, for the estimate (the default: exactly, at full length).
+#[derive(Clone, Copy, Debug, Default)]
 pub struct Spelling {
     /// As if every number had at most 64 bits (the estimate of the same job with short
     /// numbers, which decides which field a refusal names).
@@ -411,13 +411,8 @@ pub fn triangle_operations(method: MethodChoice, big_n: f64, terms: f64, d: f64)
 /// The top-level field of `job` that holds the number with the most bits (read exactly, at
 /// its full length).
 pub fn longest_number_field(job: &Map<String, Value>) -> String {
-    let exactly = Spelling {
-        short: false,
-        f64: false,
-        doubles: false,
-    };
     let fields = job.iter().filter(|(name, _)| name.as_str() != "kind");
-    let fields = fields.map(|(name, value)| (name, numbers(value, exactly).max_bits));
+    let fields = fields.map(|(name, value)| (name, numbers(value, Spelling::default()).max_bits));
     let longest = fields.fold(("input", 0.0), |best, (name, bits)| match bits > best.1 {
         true => (name.as_str(), bits),
         false => best,

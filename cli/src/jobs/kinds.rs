@@ -1,13 +1,13 @@
 //! The one list of job kinds: each line names a kind, its subcommand, the type that holds it
 //! (one file per kind under `restrict/`, `intersect/`, `region/`) and its line of help. From
 //! it come the [`Job`] enum (a variant per kind, tagged by `"kind"`), the reading of a job of a
-//! kind ([`Job::read`]), its budget estimate ([`Job::estimate`]) and its answer
-//! ([`Job::solve`]), the kinds each subcommand accepts with their messages ([`kinds_of`]) and
+//! kind ([`Job::read`]; as [`Job<Text>`] without its numbers, for the budget's estimate,
+//! [`Job::estimate`]) and its answer ([`Job::solve`]), the kinds each subcommand accepts with their messages ([`kinds_of`]) and
 //! the lists of kinds in the help texts and the docs ([`help_list`]). A new kind is one file
-//! that implements [`Kind`] plus one line here.
+//! that implements [`Kind`] and [`Estimate`] plus one line here.
 
 use super::cost::Env;
-pub use super::kind::{Context, Kind, Subcommand};
+pub use super::kind::{Context, Estimate, Kind, Subcommand};
 use super::read::{fields_of, read_job, Reading, Text, Written};
 use super::{intersect, region, restrict};
 use crate::names::{did_you_mean, quoted};
@@ -56,20 +56,10 @@ macro_rules! kinds {
         }
 
         impl Job<Text> {
-            /// Reads the `restrict` job object `job` of kind `kind` without its numbers (its
-            /// shape, for the estimate); the kinds of the other subcommands are not read so.
-            pub fn shape(kind: &str, job: &Map<String, Value>) -> Result<Self, Error> {
-                match kind {
-                    $($name => shape!($sub, $variant, job),)*
-                    other => Err(Error::new("kind", format!("unknown kind {}", quoted(other)))),
-                }
-            }
-
-            /// The up-front estimate of a `restrict` job read without its numbers (each kind's
-            /// `estimate`, see [`Kind`]); `None` for the kinds of the other subcommands.
+            /// The up-front estimate of a job read without its numbers ([`Estimate`]).
             pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
                 match self {
-                    $(Job::$variant(job) => estimate!($sub, job, env),)*
+                    $(Job::$variant(job) => job.estimate(env),)*
                 }
             }
         }
@@ -83,27 +73,6 @@ macro_rules! kinds {
             }
         }
     };
-}
-
-/// The shape of a job of a kind of `$sub` (only `restrict` jobs are read so).
-macro_rules! shape {
-    (Restrict, $variant:ident, $job:ident) => {
-        read_job($job).map(Job::$variant)
-    };
-    ($sub:ident, $variant:ident, $job:ident) => {
-        Err(Error::new("kind", "not a kind of blossom restrict"))
-    };
-}
-
-/// The estimate of a job of a kind of `$sub`: its own for `restrict`, none for the others.
-macro_rules! estimate {
-    (Restrict, $job:ident, $env:ident) => {
-        $job.estimate($env)
-    };
-    ($sub:ident, $job:ident, $env:ident) => {{
-        let _ = ($job, $env);
-        None
-    }};
 }
 
 kinds! {

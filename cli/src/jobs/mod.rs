@@ -197,7 +197,7 @@ fn answer(kind: &KindInfo, job: &Map<String, Value>, context: &Context) -> Resul
 /// doubles (`null` when some number has no finite bound).
 pub fn solve(document: &Value, context: &Context) -> Result<Value, Error> {
     let (job, kind) = job_and_kind(document, Subcommand::Restrict)?;
-    let shape = Job::shape(kind.name, job)?;
+    let shape = Job::<Text>::read(kind.name, job)?;
     let estimate = budget::estimate_of(&shape, job, context.method, context.arithmetic);
     let estimate = budget::up_front(estimate, &context.limits)?;
     budget::metered(&context.limits, &estimate.field, || {
@@ -217,7 +217,7 @@ pub fn solve(document: &Value, context: &Context) -> Result<Value, Error> {
 /// first), its numbers not yet read: the job so read.
 pub fn shape(document: &Value) -> Result<Job<Text>, Error> {
     let (job, kind) = job_and_kind(document, Subcommand::Restrict)?;
-    Job::shape(kind.name, job)
+    Job::<Text>::read(kind.name, job)
 }
 
 /// The bytes of the job: the `--input` file, or standard input when `input` is `None`, at most

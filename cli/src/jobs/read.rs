@@ -15,7 +15,7 @@
 //! exactly, JSON numbers with a fraction part only under `f64`), and the containers check
 //! counts and dimensions as they go ([`Numbers`], [`Points`], [`Rows`]).
 
-use crate::names::{did_you_mean, listed, quoted, unknown_field};
+use crate::names::{listed, lookup, unknown_field};
 use crate::number::{f64_from_json, json_type, rational_from_json, JsonNumber};
 use blossom::{BoundedF64, Error, Rational};
 use serde::de::{self, DeserializeOwned, DeserializeSeed, IntoDeserializer, Visitor};
@@ -28,16 +28,24 @@ use std::marker::PhantomData;
 /// Reads the job object `job` (its `"kind"` read already, and accepted among its fields) as a
 /// `D`; errors at its top level name `input`.
 pub fn read_job<D: DeserializeOwned>(job: &Map<String, Value>) -> Result<D, Error> {
-    D::deserialize(Reader::new(None, Some(job))).map_err(|e| match e.error {
-        error if error.field.is_empty() => Error::of(error.kind, "input", error.message),
-        error => error,
+    let reader = Reader {
+        value: None,
+        job: Some(job),
+    };
+    D::deserialize(reader).map_err(|ReadError(e)| match e.field.is_empty() {
+        true => Error::of(e.kind, "input", e.message),
+        false => e,
     })
 }
 
 /// Reads an object of a job (a region, an entry) from `value` on its own: its errors name
 /// fields relative to it.
 pub fn object<D: DeserializeOwned>(value: &Value) -> Result<D, Error> {
-    D::deserialize(Reader::new(Some(value), None)).map_err(|e| e.error)
+    let reader = Reader {
+        value: Some(value),
+        job: None,
+    };
+    D::deserialize(reader).map_err(|ReadError(e)| e)
 }
 
 /// The fields of the struct `D` reads (its serde field names, in order).
@@ -69,46 +77,29 @@ pub fn fields_of<D: DeserializeOwned>() -> &'static [&'static str] {
     fields.get()
 }
 
-/// An error of reading: a library [`Error`] whose field is completed by the reader that
-/// returns it (under its own path) on the way out.
+/// An error of reading: a library [`Error`] whose field is relative to the value being read;
+/// the reader of each object above puts it under the field's name on the way out.
 #[derive(Debug)]
-pub struct ReadError {
-    error: Error,
-    placed: bool,
-}
-
-impl ReadError {
-    /// An error at `relative` (`""`, `[2]` or `name`) below `path`, placed.
-    fn at(path: &str, relative: &str, message: impl Into<String>) -> Self {
-        let error = Error::new(joined(path, relative), message);
-        ReadError {
-            error,
-            placed: true,
-        }
-    }
-}
+pub struct ReadError(Error);
 
 impl fmt::Display for ReadError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        self.error.fmt(f)
+        self.0.fmt(f)
     }
 }
 
 impl std::error::Error for ReadError {}
 
 impl de::Error for ReadError {
-    /// An error raised below the value being read: its field (relative, marked by [`below`])
-    /// is put under the value's path by the reader.
+    /// An error at the value being read, or below it with its relative field (marked by
+    /// [`below`]).
     fn custom<M: fmt::Display>(message: M) -> Self {
         let text = message.to_string();
         let (field, message) = text
             .strip_prefix(RELATIVE)
             .and_then(|t| t.split_once(RELATIVE))
             .unwrap_or(("", &text));
-        ReadError {
-            error: Error::new(field, message),
-            placed: false,
-        }
+        ReadError(Error::new(field, message))
     }
 }
 
@@ -117,88 +108,62 @@ impl de::Error for ReadError {
 const RELATIVE: &str = "\u{0}";
 
 /// The library error `error`, whose field is relative to the value being read (a region's
-/// `loops[0][2]`, a point's `[1]`), as the error of any deserializer: the reader puts it under
-/// the value's path.
+/// `loops[0][2]`, a point's `[1]`), as the error of any deserializer.
 pub fn below<E: de::Error>(error: &Error) -> E {
-    E::custom(relative(error))
+    E::custom(format!(
+        "{RELATIVE}{}{RELATIVE}{}",
+        error.field, error.message
+    ))
 }
 
-/// `error` as the message of [`below`].
-fn relative(error: &Error) -> String {
-    format!("{RELATIVE}{}{RELATIVE}{}", error.field, error.message)
-}
-
-/// `path` and `name` joined: `name` at the top, `path.name` for a field, `path[2]` for an index.
-pub fn joined(path: &str, name: &str) -> String {
-    match (path, name) {
+/// `error` re-addressed under `path` (`[2]`, `regions`): a field named relative to a value
+/// put under the value's own path (`regions` and `[1].loops[0]` make `regions[1].loops[0]`).
+pub fn under(path: &str, error: Error) -> Error {
+    let field = match (path, error.field.as_str()) {
         ("", name) => name.to_string(),
         (path, "") => path.to_string(),
         (path, name) if name.starts_with('[') => format!("{path}{name}"),
         (path, name) => format!("{path}.{name}"),
-    }
+    };
+    Error::of(error.kind, field, error.message)
 }
 
-/// `error` re-addressed under `path` (`[2]`, `regions`): a field named relative to a value
-/// (by the library, or by a leaf) put under the value's own path.
-pub fn under(path: &str, error: Error) -> Error {
-    Error::of(error.kind, joined(path, &error.field), error.message)
-}
-
-/// The `Deserializer` of one value of a job at `path`: `value` `None` is a field that is absent
-/// (read as `None` where optional, missing elsewhere), `job` the job object itself, whose
-/// `"kind"` is read already. Objects are read by the types that derive `Deserialize`, their
-/// fields checked first and then read in their declared order (`Fields`); every other value
-/// is handed whole to the leaf that reads it (by serde_json's own deserializer: numbers keep
-/// their spelling, `arbitrary_precision`).
+/// The `Deserializer` of one value of a job: `value` `None` is a field that is absent (read as
+/// `None` where optional, missing elsewhere), `job` the job object itself, whose `"kind"` is
+/// read already. Objects are read by the types that derive `Deserialize`, their fields checked
+/// first and then read in their declared order (`Fields`); every other value is handed whole
+/// to the leaf that reads it (by serde_json's own deserializer: numbers keep their spelling,
+/// `arbitrary_precision`).
 pub struct Reader<'a> {
     value: Option<&'a Value>,
     job: Option<&'a Map<String, Value>>,
-    path: String,
 }
 
 impl<'a> Reader<'a> {
-    fn new(value: Option<&'a Value>, job: Option<&'a Map<String, Value>>) -> Self {
-        let path = String::new();
-        Reader { value, job, path }
-    }
-}
-
-impl<'a> Reader<'a> {
-    /// The fields of the object at this path in the order `fields` declares them (the work of
-    /// `deserialize_struct`, apart from the visitor, so that it is compiled once).
+    /// The object of this reader, its fields checked for unknown names, and its `fields` in
+    /// their declared order (the work of `deserialize_struct` apart from the visitor, so that it
+    /// is compiled once).
     fn fields(
         &self,
         fields: &'static [&'static str],
         expecting: &dyn fmt::Display,
-    ) -> Result<Fields<'a, '_>, ReadError> {
+    ) -> Result<Fields<'a>, ReadError> {
+        let refusal = |field: &str, message: String| ReadError(Error::new(field, message));
         let map = match (self.job, self.value) {
             (Some(map), _) | (None, Some(Value::Object(map))) => map,
-            (None, None) => return Err(ReadError::at(&self.path, "", "missing field")),
+            (None, None) => return Err(refusal("", "missing field".into())),
             (None, Some(other)) => {
-                let message = format!("expected {expecting}, found {}", json_type(other));
-                return Err(ReadError::at(&self.path, "", message));
+                let found = json_type(other);
+                return Err(refusal("", format!("expected {expecting}, found {found}")));
             }
         };
         let top = self.job.map(|_| "kind");
         let accepted: Vec<&str> = top.into_iter().chain(fields.iter().copied()).collect();
         if let Some(name) = map.keys().find(|k| !accepted.contains(&k.as_str())) {
-            let message = unknown_field(name, &accepted);
-            return Err(ReadError::at(&self.path, name, message));
+            return Err(refusal(name, unknown_field(name, &accepted)));
         }
         let entries: Vec<_> = fields.iter().map(|f| (*f, map.get(*f))).collect();
-        Ok(Fields {
-            entries: entries.into_iter(),
-            current: None,
-            path: &self.path,
-        })
-    }
-}
-
-/// `error` under `path`, unless a reader below placed it already.
-fn place(path: &str, error: ReadError) -> ReadError {
-    match error.placed {
-        true => error,
-        false => ReadError::at(path, &error.error.field, error.error.message),
+        Ok(Fields(entries.into_iter(), ("", None)))
     }
 }
 
@@ -207,10 +172,9 @@ impl<'de> Deserializer<'de> for Reader<'de> {
 
     fn deserialize_any<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, ReadError> {
         let Some(value) = self.value else {
-            return Err(ReadError::at(&self.path, "", "missing field"));
+            return Err(ReadError(Error::new("", "missing field")));
         };
-        let read = value.deserialize_any(visitor);
-        read.map_err(|e| place(&self.path, de::Error::custom(e)))
+        value.deserialize_any(visitor).map_err(de::Error::custom)
     }
 
     fn deserialize_option<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, ReadError> {
@@ -229,7 +193,7 @@ impl<'de> Deserializer<'de> for Reader<'de> {
         visitor: V,
     ) -> Result<V::Value, ReadError> {
         let fields = self.fields(fields, &Expecting(&visitor))?;
-        visitor.visit_map(fields).map_err(|e| place(&self.path, e))
+        visitor.visit_map(fields)
     }
 
     serde::forward_to_deserialize_any! {
@@ -247,47 +211,32 @@ impl<'de, V: Visitor<'de>> fmt::Display for Expecting<'_, V> {
     }
 }
 
-/// The fields of an object in their declared order, each read at `path.name` (`None`: absent).
-struct Fields<'a, 'p> {
-    entries: std::vec::IntoIter<(&'a str, Option<&'a Value>)>,
-    current: Option<(&'a str, Option<&'a Value>)>,
-    path: &'p str,
-}
+/// The fields of an object in their declared order (`None`: absent) and the current one, each
+/// read's error put under the field's name.
+struct Fields<'a>(
+    std::vec::IntoIter<(&'static str, Option<&'a Value>)>,
+    (&'static str, Option<&'a Value>),
+);
 
-impl<'de> de::MapAccess<'de> for Fields<'de, '_> {
+impl<'de> de::MapAccess<'de> for Fields<'de> {
     type Error = ReadError;
 
     fn next_key_seed<K: DeserializeSeed<'de>>(
         &mut self,
         seed: K,
     ) -> Result<Option<K::Value>, ReadError> {
-        self.current = self.entries.next();
-        let Some((name, _)) = self.current else {
+        let Some(entry) = self.0.next() else {
             return Ok(None);
         };
-        let key: Result<_, de::value::Error> = seed.deserialize(name.into_deserializer());
-        let path = joined(self.path, name);
-        key.map(Some)
-            .map_err(|e| ReadError::at(&path, "", e.to_string()))
+        self.1 = entry;
+        seed.deserialize(entry.0.into_deserializer()).map(Some)
     }
 
     fn next_value_seed<S: DeserializeSeed<'de>>(&mut self, seed: S) -> Result<S::Value, ReadError> {
-        let reader = self.value();
-        let path = reader.path.clone();
-        seed.deserialize(reader).map_err(|e| place(&path, e))
-    }
-}
-
-impl<'a> Fields<'a, '_> {
-    /// The reader of the current field's value.
-    fn value(&mut self) -> Reader<'a> {
-        let (name, value) = self.current.take().expect("a key before its value");
-        let path = joined(self.path, name);
-        Reader {
-            value,
-            job: None,
-            path,
-        }
+        let (name, value) = self.1;
+        let reader = Reader { value, job: None };
+        seed.deserialize(reader)
+            .map_err(|ReadError(e)| ReadError(under(name, e)))
     }
 }
 
@@ -345,6 +294,24 @@ impl<'de, E: DeserializeOwned> Deserialize<'de> for List<E> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         leaf(d, |v| items(v, "a sequence", any, object)).map(List)
     }
+}
+
+/// Exactly two objects of a job (`curves`, `regions`, `triangles`).
+#[derive(Clone, Debug)]
+pub struct Two<S>(pub [S; 2]);
+
+impl<'de, S: DeserializeOwned + Plural> Deserialize<'de> for Two<S> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let expected = format!("an array of two {}", S::PLURAL);
+        let two = leaf(d, |v| items(v, &expected, exactly(2, S::PLURAL), object))?;
+        Ok(Two(two.try_into().unwrap_or_else(|_| unreachable!())))
+    }
+}
+
+/// The name of several objects, for messages.
+pub trait Plural {
+    /// `curves`, `regions`, `triangles`.
+    const PLURAL: &'static str;
 }
 
 /// The count of exactly `n` elements (`expected 3 corners, found 2`).
@@ -476,7 +443,7 @@ pub fn number<T: Reading>(value: &Value) -> Result<T, Error> {
 }
 
 /// `N` numbers, called `what` in a refusal of their count.
-fn numbers<T: Reading, const N: usize>(
+pub fn numbers<T: Reading, const N: usize>(
     value: &Value,
     expected: &str,
     what: &'static str,
@@ -523,11 +490,7 @@ impl<'de, T: Reading, const D: usize> Deserialize<'de> for Corners<T, D> {
 
 /// "1 coordinate", "3 coordinates".
 pub fn coordinates(d: usize) -> String {
-    if d == 1 {
-        String::from("1 coordinate")
-    } else {
-        format!("{d} coordinates")
-    }
+    format!("{d} coordinate{}", if d == 1 { "" } else { "s" })
 }
 
 /// A point of any dimension D >= 1.
@@ -752,27 +715,16 @@ pub struct Name<E>(pub E);
 
 impl<'de, E: Named> Deserialize<'de> for Name<E> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let names: Vec<&str> = E::NAMES.iter().map(|(n, _)| *n).collect();
-        let refusal = |message: String| Error::new("", message);
-        leaf(d, |value| match value {
-            Value::String(name) => E::NAMES
-                .iter()
-                .find(|(n, _)| n == name)
-                .map(|(_, e)| Name(*e))
-                .ok_or_else(|| {
-                    refusal(format!(
-                        "unknown {} {}{} (expected {})",
-                        E::WHAT,
-                        quoted(name),
-                        did_you_mean(name, &names),
-                        listed(&names)
-                    ))
-                }),
-            other => Err(refusal(format!(
-                "expected a string ({}), found {}",
-                listed(&names),
-                json_type(other)
-            ))),
+        let read = |value: &Value| match value {
+            Value::String(name) => lookup(E::WHAT, name, E::NAMES).map(Name),
+            other => {
+                let names: Vec<&str> = E::NAMES.iter().map(|(n, _)| *n).collect();
+                let (names, found) = (listed(&names), json_type(other));
+                Err(format!("expected a string ({names}), found {found}"))
+            }
+        };
+        leaf(d, |value| {
+            read(value).map_err(|message| Error::new("", message))
         })
     }
 }

@@ -31,46 +31,30 @@ pub trait Write {
     fn write<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error>;
 }
 
-/// Writes one number through [`JsonNumber::to_json`].
-fn number<T: JsonNumber, S: Serializer>(x: &T, s: S) -> Result<S::Ok, S::Error> {
-    x.to_json().map_err(S::Error::custom)?.serialize(s)
+/// `Write` for the numbers: each through [`JsonNumber::to_json`].
+macro_rules! write_numbers {
+    ($($ty:ty),*) => {$(
+        impl Write for $ty {
+            fn write<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+                self.to_json().map_err(S::Error::custom)?.serialize(s)
+            }
+        }
+    )*};
 }
 
-impl Write for Rational {
-    fn write<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        number(self, s)
-    }
+/// `Write` for sequences: an array of what each element writes.
+macro_rules! write_sequences {
+    ($([$($g:tt)*] $ty:ty),*) => {$(
+        impl<$($g)*> Write for $ty {
+            fn write<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+                s.collect_seq(self.iter().map(Out))
+            }
+        }
+    )*};
 }
 
-impl Write for BoundedF64 {
-    fn write<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        number(self, s)
-    }
-}
-
-impl Write for f64 {
-    fn write<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        number(self, s)
-    }
-}
-
-impl<X: Write> Write for Vec<X> {
-    fn write<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.collect_seq(self.iter().map(Out))
-    }
-}
-
-impl<X: Write> Write for [X] {
-    fn write<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.collect_seq(self.iter().map(Out))
-    }
-}
-
-impl<X: Write, const N: usize> Write for [X; N] {
-    fn write<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.collect_seq(self.iter().map(Out))
-    }
-}
+write_numbers!(Rational, BoundedF64, f64);
+write_sequences!([X: Write] Vec<X>, [X: Write] [X], [X: Write, const N: usize] [X; N]);
 
 impl<X: Write + ?Sized> Write for &X {
     fn write<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {

@@ -3,6 +3,7 @@
 
 use super::{at, certified, Curve, IntersectionsAnswer};
 use crate::jobs::kind::prelude::*;
+use crate::jobs::read::Two;
 use crate::jobs::restrict::Number;
 
 /// The job.
@@ -10,24 +11,14 @@ use crate::jobs::restrict::Number;
 #[serde(bound = "T: Reading")]
 pub struct CurveCurve<T> {
     /// P and Q.
-    curves: Pair<T>,
+    curves: Two<Curve<T>>,
 }
 
-/// Two curves.
-#[derive(Debug)]
-struct Pair<T>(Vec<Curve<T>>);
-
-impl<'de, T: Reading> Deserialize<'de> for Pair<T> {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let curves = |v: &Value| items(v, "an array of two curves", exactly(2, "curves"), object);
-        leaf(d, curves).map(Pair)
-    }
-}
+impl<T> Estimate for CurveCurve<T> {}
 
 impl<T: Number> Kind for CurveCurve<T> {
     fn solve(self, context: &Context) -> Result<Value, Error> {
-        let [p, q]: [Curve<T>; 2] = self.curves.0.try_into().unwrap_or_else(|_| unreachable!());
-        let (p, q) = (p.0, q.0);
+        let [p, q] = self.curves.0.map(|c| c.0);
         certified(
             context,
             "curves",

@@ -23,9 +23,9 @@ pub mod curve_curve;
 pub mod roots;
 pub mod self_intersections;
 
-use super::cost::metered;
+use super::cost::{metered, RAISE_IT};
 use super::kind::Context;
-use super::read::{items, leaf, number, spelling, Reading};
+use super::read::{items, leaf, numbers, spelling, Reading};
 use super::write::{Double, Param};
 use blossom::{Error, Intersections, Rational};
 use serde::{Deserialize, Deserializer, Serialize};
@@ -47,32 +47,27 @@ pub const MAX_FUNCTION_DEGREE: usize = 200;
 /// default limit; the meter stops the ones it lets through that run longer.
 pub const UP_FRONT_FACTOR: u128 = 2;
 
-/// Refuses a job whose estimated work (units of about a nanosecond of a 2-core machine, see
-/// [`blossom::budget`]) is over [`UP_FRONT_FACTOR`] times the limit, naming `path`.
-pub fn within_budget(path: &str, work: u128, max_work: u64) -> Result<(), Error> {
-    if work <= UP_FRONT_FACTOR * u128::from(max_work) {
-        return Ok(());
-    }
-    Err(Error::new(
-        path,
-        format!(
-            "the job's work is estimated at {:.1e} units, over the limit of {:.1e} units \
-             (about a nanosecond each; raise it with --max-work if you mean it)",
-            work as f64, max_work as f64
-        ),
-    ))
-}
-
 /// Computes a certified job (of `blossom intersect` or `blossom region`) within the budget:
-/// refused up front when its estimated `work` is over [`UP_FRONT_FACTOR`] times `--max-work`
-/// ([`within_budget`]), else computed under the work meter; both refusals name `path`.
+/// refused up front when its estimated `work` (units of about a nanosecond of a 2-core machine,
+/// see [`blossom::budget`]) is over [`UP_FRONT_FACTOR`] times `--max-work`, else computed under
+/// the work meter; both refusals name `path`.
 pub fn certified<R>(
     context: &Context,
     path: &str,
     work: u128,
     compute: impl FnOnce() -> Result<R, Error>,
 ) -> Result<R, Error> {
-    within_budget(path, work, context.limits.max_work)?;
+    let max_work = context.limits.max_work;
+    if work > UP_FRONT_FACTOR * u128::from(max_work) {
+        return Err(Error::new(
+            path,
+            format!(
+                "the job's work is estimated at {:.1e} units, over the limit of {:.1e} units \
+                 {RAISE_IT}",
+                work as f64, max_work as f64
+            ),
+        ));
+    }
     metered(&context.limits, path, compute)
 }
 
@@ -115,9 +110,8 @@ pub struct Curve2 {
 impl Curves {
     /// A point `[x, y]`, read exactly as the arithmetic `T` reads it.
     pub fn point<T: Reading>(self, value: &Value) -> Result<[Rational; 2], Error> {
-        let count = super::read::exactly(2, self.planar);
-        let xy: Vec<T> = items(value, "a point [x, y]", count, number)?;
-        Ok([xy[0].exact(), xy[1].exact()])
+        let xy: [T; 2] = numbers(value, "a point [x, y]", self.planar)?;
+        Ok(xy.map(|x| x.exact()))
     }
 
     /// A curve: its number of points checked (at most `max` + 1) before they are read.
@@ -162,6 +156,10 @@ impl<'de, T: Reading> Deserialize<'de> for Curve<T> {
         leaf(d, |v| INTERSECT.curve::<T>(v)).map(|c| Curve(c.points, PhantomData))
     }
 }
+impl<T> super::read::Plural for Curve<T> {
+    const PLURAL: &'static str = "curves";
+}
+
 /// The answer of a `curve-curve` or `self` job.
 #[derive(Serialize)]
 pub struct IntersectionsAnswer {

@@ -50,6 +50,8 @@ struct Root {
     multiplicity: usize,
 }
 
+impl<T> Estimate for Roots<T> {}
+
 impl<T: Number> Kind for Roots<T> {
     fn solve(self, context: &Context) -> Result<Value, Error> {
         let coefficients = self.control_points.0;

@@ -13,6 +13,8 @@ pub struct SelfIntersections<T> {
     curve: Curve<T>,
 }
 
+impl<T> Estimate for SelfIntersections<T> {}
+
 impl<T: Number> Kind for SelfIntersections<T> {
     fn solve(self, context: &Context) -> Result<Value, Error> {
         let p = self.curve.0;

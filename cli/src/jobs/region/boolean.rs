@@ -18,6 +18,8 @@ pub struct Boolean<T> {
     regions: Two<RegionShape<T>>,
 }
 
+impl<T> Estimate for Boolean<T> {}
+
 impl<T: Number> Kind for Boolean<T> {
     fn solve(self, context: &Context) -> Result<Value, Error> {
         let [a, b] = self.regions.0.map(|r| r.0);

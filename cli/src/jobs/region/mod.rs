@@ -27,7 +27,8 @@ pub mod triangle_triangle;
 pub mod winding;
 
 use super::intersect::{Curve2, Curves};
-use super::read::{any, below, exactly, items, leaf, object, List, Name, Named, Reading};
+pub use super::read::Two;
+use super::read::{any, below, items, leaf, List, Name, Named, Plural, Reading};
 use super::write::{write, Double, Param};
 use blossom::region::MAX_REGION_DEGREE;
 use blossom::region::{parse_svg_path, BooleanOp, Edge, FillRule, Region, RegionResult};
@@ -206,24 +207,6 @@ impl<'de, T: Reading> Deserialize<'de> for TriangleShape<T> {
             .map(|r| TriangleShape(r, PhantomData))
             .map_err(|e| below(&e))
     }
-}
-
-/// Exactly two shapes (`regions`, `triangles`).
-#[derive(Clone, Debug)]
-pub struct Two<S>(pub [S; 2]);
-
-impl<'de, S: serde::de::DeserializeOwned + Plural> Deserialize<'de> for Two<S> {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let expected = format!("an array of two {}", S::PLURAL);
-        let two = leaf(d, |v| items(v, &expected, exactly(2, S::PLURAL), object))?;
-        Ok(Two(two.try_into().unwrap_or_else(|_| unreachable!())))
-    }
-}
-
-/// The name of several shapes, for messages.
-pub trait Plural {
-    /// `regions`, `triangles`.
-    const PLURAL: &'static str;
 }
 
 impl<T> Plural for RegionShape<T> {

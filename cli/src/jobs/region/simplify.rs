@@ -16,6 +16,8 @@ pub struct Simplify<T> {
     region: RegionShape<T>,
 }
 
+impl<T> Estimate for Simplify<T> {}
+
 impl<T: Number> Kind for Simplify<T> {
     fn solve(self, context: &Context) -> Result<Value, Error> {
         let a = self.region.0;

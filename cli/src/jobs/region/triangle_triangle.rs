@@ -17,6 +17,8 @@ pub struct TriangleTriangle<T> {
     triangles: Two<TriangleShape<T>>,
 }
 
+impl<T> Estimate for TriangleTriangle<T> {}
+
 impl<T: Number> Kind for TriangleTriangle<T> {
     fn solve(self, context: &Context) -> Result<Value, Error> {
         let [t1, t2] = self.triangles.0.map(|t| t.0);

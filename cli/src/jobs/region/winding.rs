@@ -29,6 +29,8 @@ struct Position {
     winding: Option<i64>,
 }
 
+impl<T> Estimate for Winding<T> {}
+
 impl<T: Number> Kind for Winding<T> {
     fn solve(self, context: &Context) -> Result<Value, Error> {
         let region = self.region.0;

@@ -5,7 +5,7 @@
 //! inverse formula (22) of seed 004, `specialised` the carried Bézier-input evaluator; the
 //! other methods write the curve in the power basis (exactly) and restrict it like a `curve`.
 
-use super::{specialised, Number, Restricted};
+use super::{restricted, specialised, Number};
 use crate::jobs::cost::curve_operations;
 use crate::jobs::kind::prelude::*;
 use crate::repeated;
@@ -27,9 +27,9 @@ pub struct BezierCurve<T> {
 #[rustfmt::skip]
 const CALIBRATION: Calibration = [[3.1, 26.0], [3.2, 1.4], [4.5, 0.66], [61.0, 10.0], [5.2, 0.075], [2.6, 0.06]];
 
-impl<T: Reading> BezierCurve<T> {
-    /// The up-front estimate ([`Kind`]): a `curve`'s, with the change of basis.
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+/// The up-front estimate: a `curve`'s, with the change of basis.
+impl<T: Reading> Estimate for BezierCurve<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let (n, d) = self.control_points.sizes();
         let ops = curve_operations(env.method, n, d) + 2.0 * (n + 1.0) * (n + 1.0) * d;
         env.restriction(("control_points", "interval"), n, ops, &CALIBRATION)
@@ -41,7 +41,7 @@ impl<T: Number> Kind for BezierCurve<T> {
         let curve = blossom::BezierCurve::new(self.control_points.0)?;
         let [a, b] = &self.interval.0;
         let n = curve.degree();
-        let restricted: Vec<Point<T>> = match context.method {
+        let points: Vec<Point<T>> = match context.method {
             MethodChoice::Library(Method::Bulk) => {
                 curve.subsegment(a.clone()..b.clone()).into_control_points()
             }
@@ -62,9 +62,6 @@ impl<T: Number> Kind for BezierCurve<T> {
                 restrict_power_curve(&power, a, b, method).into_control_points()
             }
         };
-        write(&Restricted {
-            degree: n,
-            control_points: Out(restricted),
-        })
+        restricted(n, Out(points))
     }
 }

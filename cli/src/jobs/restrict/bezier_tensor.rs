@@ -3,7 +3,7 @@
 //! the net, `pyramid` on its blossom, `polarisation` from samples (two passes of (22) of seed
 //! 004), `specialised` carried, the others through the exact power form.
 
-use super::{specialised, Number, Restricted};
+use super::{restricted, specialised, Number};
 use crate::jobs::kind::prelude::*;
 use crate::repeated;
 use blossom::engine::tensor_bernstein_to_power;
@@ -24,9 +24,9 @@ pub struct BezierTensor<T> {
 #[rustfmt::skip]
 const CALIBRATION: Calibration = [[9.8, 4.0], [8.9, 5.4], [2.6, 0.1], [11.0, 1.8], [8.0, 0.61], [5.2, 0.41]];
 
-impl<T: Reading> BezierTensor<T> {
-    /// The up-front estimate ([`Kind`]): a `tensor`'s.
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+/// The up-front estimate: a `tensor`'s.
+impl<T: Reading> Estimate for BezierTensor<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         super::tensor::estimate(env, (&self.control_points, "control_points"), &CALIBRATION)
     }
 }
@@ -67,9 +67,6 @@ impl<T: Number> Kind for BezierTensor<T> {
                     .into_control_points()
             }
         };
-        write(&Restricted {
-            degree: [n, m],
-            control_points: Out(net),
-        })
+        restricted([n, m], Out(net))
     }
 }

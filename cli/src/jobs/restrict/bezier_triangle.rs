@@ -4,7 +4,7 @@
 //! `f64`; every method then uses (r, s, 1 - r - s)): q = b[P^nu, Q^mu, R^lambda]. The methods
 //! as for `bezier-curve`.
 
-use super::{entries, specialised, Number, Restricted};
+use super::{entries, restricted, specialised, Number};
 use crate::jobs::kind::prelude::*;
 use blossom::engine::{triangle_bernstein_to_power, triangle_index, triangle_len};
 use blossom::{bezier_triangle_blossom, restrict_power_triangle};
@@ -111,10 +111,12 @@ fn net<T: Number>(items: Vec<Entry<T>>) -> Result<TriangularPatch<T>, Error> {
 
 /// The corners, each (r, s, 1 - r - s) after checking that its coordinates add up to 1.
 fn barycentric<T: Number>(corners: [[T; 3]; 3]) -> Result<[[T; 3]; 3], Error> {
-    let tolerance = if <T as Reading>::EXACT {
-        T::zero()
-    } else {
-        T::from_rational(&Rational::new(1.into(), 1_000_000_000.into()))
+    let (tolerance, within) = match <T as Reading>::EXACT {
+        true => (T::zero(), "exactly"),
+        false => (
+            T::from_rational(&Rational::new(1.into(), 1_000_000_000.into())),
+            "within 1e-9",
+        ),
     };
     let mut out = corners.clone();
     for (k, [r, s, t]) in corners.into_iter().enumerate() {
@@ -123,26 +125,19 @@ fn barycentric<T: Number>(corners: [[T; 3]; 3]) -> Result<[[T; 3]; 3], Error> {
         let distance = if off < T::zero() { off.neg() } else { off };
         #[allow(clippy::neg_cmp_op_on_partial_ord)] // a NaN distance is refused too
         if !(distance <= tolerance) {
-            return Err(Error::new(
-                format!("triangle[{k}]"),
-                format!(
-                    "barycentric coordinates must add up to 1 ({}), they add up to {sum}",
-                    if <T as Reading>::EXACT {
-                        "exactly"
-                    } else {
-                        "within 1e-9"
-                    },
-                ),
-            ));
+            let message = format!(
+                "barycentric coordinates must add up to 1 ({within}), they add up to {sum}"
+            );
+            return Err(Error::new(format!("triangle[{k}]"), message));
         }
         out[k][2] = T::one().sub(&r).sub(&s);
     }
     Ok(out)
 }
 
-impl<T: Reading> BezierTriangle<T> {
-    /// The up-front estimate ([`Kind`]): a `triangle`'s.
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+/// The up-front estimate: a `triangle`'s.
+impl<T: Reading> Estimate for BezierTriangle<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let entries = self.control_points.0.len() as f64;
         // N from the number of entries (N + 1)(N + 2) / 2.
         let big_n = ((8.0 * entries + 1.0).sqrt() - 3.0).max(0.0) / 2.0 + 1.0;
@@ -186,9 +181,6 @@ impl<T: Number> Kind for BezierTriangle<T> {
                 restrict_power_triangle(&triangle_bernstein_to_power(&patch), &plane, method)
             }
         };
-        write(&Restricted {
-            degree: big_n,
-            control_points: entries(&net, None),
-        })
+        restricted(big_n, entries(&net, None))
     }
 }

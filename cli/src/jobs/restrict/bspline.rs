@@ -3,7 +3,7 @@
 //! multiplicity p - r from the continuity r that holds exactly there (so computed exactly, and
 //! rounded once under `f64`).
 
-use super::{exact, exact_points, rounded, Number};
+use super::{exact_points, rounded, Number};
 use crate::jobs::kind::prelude::*;
 use blossom::{bspline_from_pieces, Piece, PowerCurve};
 
@@ -47,9 +47,9 @@ struct Answer<T: Write> {
     control_points: Out<Vec<Point<T>>>,
 }
 
-impl<T: Reading> Bspline<T> {
-    /// The up-front estimate ([`Kind`]), exact under both arithmetics.
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+/// The up-front estimate, exact under both arithmetics.
+impl<T: Reading> Estimate for Bspline<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let env = env.deciding_exactly();
         let c = env.numbers("pieces");
         let (_, d) = self.pieces.0[0].coefficients.sizes();
@@ -68,21 +68,14 @@ impl<T: Number> Kind for Bspline<Written<T>> {
         let mut dim = None;
         for (i, piece) in self.pieces.0.into_iter().enumerate() {
             let coefficients = exact_points(&piece.coefficients.0);
-            if let Some(d) = dim.filter(|d| *d != coefficients[0].len()) {
-                return Err(Error::new(
-                    format!("pieces[{i}].coefficients[0]"),
-                    format!(
-                        "expected {}, found {}",
-                        coordinates(d),
-                        coefficients[0].len()
-                    ),
-                ));
+            let d = coefficients[0].len();
+            if let Some(first) = dim.filter(|first| *first != d) {
+                let message = format!("expected {}, found {d}", coordinates(first));
+                return Err(Error::new(format!("pieces[{i}].coefficients[0]"), message));
             }
-            dim = Some(coefficients[0].len());
+            dim = Some(d);
             pieces.push(Piece {
-                interval: exact(&piece.interval.0)
-                    .try_into()
-                    .unwrap_or_else(|_| unreachable!()),
+                interval: piece.interval.0.map(|x| x.0),
                 curve: PowerCurve::new(coefficients)?,
             });
         }

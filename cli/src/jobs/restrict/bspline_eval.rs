@@ -26,9 +26,8 @@ struct Answer<T: Write> {
     points: Out<Vec<Point<T>>>,
 }
 
-impl<T: Reading> BsplineEval<T> {
-    /// The up-front estimate ([`Kind`]).
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Estimate for BsplineEval<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let [k, c, t] = ["knots", "control_points", "at"].map(|field| env.numbers(field));
         let (n, d) = self.control_points.sizes();
         let (at, knots) = (self.at.0.len() as f64, self.knots.0.len() as f64);

@@ -1,7 +1,7 @@
 //! `"kind": "derivative"`: the control points of the k-th derivative of the Bézier curve over
 //! [0, 1], n!/(n-k)! times the k-th forward differences of its control points.
 
-use super::{Number, Restricted};
+use super::{restricted, Number};
 use crate::jobs::kind::prelude::*;
 use blossom::BezierCurve;
 
@@ -15,9 +15,8 @@ pub struct Derivative<T> {
     order: Degree,
 }
 
-impl<T: Reading> Derivative<T> {
-    /// The up-front estimate ([`Kind`]).
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Estimate for Derivative<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let c = env.numbers("control_points");
         let (n, d) = self.control_points.sizes();
         let ops = 4.0 * (n + 1.0) * (n + 1.0) * d;
@@ -37,9 +36,6 @@ impl<T: Number> Kind for Derivative<T> {
             ));
         }
         let hodograph = blossom::bezier_derivative(&curve, k)?;
-        write(&Restricted {
-            degree: n - k,
-            control_points: Out(hodograph.control_points().to_vec()),
-        })
+        restricted(n - k, Out(hodograph.control_points().to_vec()))
     }
 }

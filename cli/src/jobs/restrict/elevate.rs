@@ -1,6 +1,6 @@
 //! `"kind": "elevate"`: the Bézier curve's control points at the higher degree m.
 
-use super::{Number, Restricted};
+use super::{restricted, Number};
 use crate::jobs::kind::prelude::*;
 use blossom::{elevate, BezierCurve};
 
@@ -14,9 +14,8 @@ pub struct Elevate<T> {
     to_degree: Degree,
 }
 
-impl<T: Reading> Elevate<T> {
-    /// The up-front estimate ([`Kind`]).
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Estimate for Elevate<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let c = env.numbers("control_points");
         let (n, d) = self.control_points.sizes();
         let m = (self.to_degree.0 as f64).max(n);
@@ -31,9 +30,6 @@ impl<T: Number> Kind for Elevate<T> {
         let curve = BezierCurve::new(self.control_points.0)?;
         let m = self.to_degree.0;
         let elevated = elevate(&curve, m)?;
-        write(&Restricted {
-            degree: m,
-            control_points: Out(elevated.control_points().to_vec()),
-        })
+        restricted(m, Out(elevated.control_points().to_vec()))
     }
 }

@@ -1,7 +1,7 @@
 //! The jobs of `blossom restrict`, one file per kind, each a struct deriving `Deserialize`
-//! (its fields in the order they are checked) with its up-front estimate (the cost model of
-//! [`super::cost`]) that implements [`Kind`](super::kinds::Kind): its answer, a struct deriving
-//! `Serialize`. This module holds what they share: the number types they compute in
+//! (its fields in the order they are checked) that implements
+//! [`Estimate`](super::kinds::Estimate) (the cost model of [`super::cost`]) and
+//! [`Kind`](super::kinds::Kind): its answer, a struct deriving `Serialize` ([`restricted`]). This module holds what they share: the number types they compute in
 //! ([`Number`]), the answers' common forms and the carried evaluators of `--method
 //! specialised` ([`specialised`]).
 //!
@@ -30,10 +30,11 @@ pub mod tensor;
 pub mod triangle;
 
 use super::read::Reading;
-use super::write::{Out, Write};
+use super::write::{write, Out, Write};
 use crate::number::JsonNumber;
 use blossom::{Error, Field, Point, Rational, Ring, TriangularPatch};
 use serde::Serialize;
+use serde_json::Value;
 
 /// A number type `blossom restrict` computes in: [`Rational`] (`exact`) or
 /// [`blossom::BoundedF64`] (`f64`, with its error bound).
@@ -50,6 +51,17 @@ pub struct Restricted<D, P> {
     pub degree: D,
     /// The control points.
     pub control_points: P,
+}
+
+/// The answer of a restriction of degree `degree` whose control points are `control_points`.
+pub fn restricted<D: Serialize, P: Serialize>(
+    degree: D,
+    control_points: P,
+) -> Result<Value, Error> {
+    write(&Restricted {
+        degree,
+        control_points,
+    })
 }
 
 /// One control point of a triangular patch: its indices, the point and, for a rational

@@ -29,9 +29,9 @@ struct Answer<T: Write> {
     weights: Out<Vec<T>>,
 }
 
-impl<T: Reading> RationalCurve<T> {
-    /// The up-front estimate ([`Kind`]), exact under both arithmetics.
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+/// The up-front estimate, exact under both arithmetics.
+impl<T: Reading> Estimate for RationalCurve<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let env = env.deciding_exactly();
         let [nu, de, i] = ["numerator", "denominator", "interval"].map(|f| env.numbers(f));
         let longest = self.numerator.0.len().max(self.denominator.0.len()) as f64;

@@ -114,9 +114,8 @@ pub fn sizes<T>(numerator: &Rows<T>, denominator: &NumberRows<T>) -> (f64, f64, 
     (rows.max(w.len() as f64), columns.max(w_columns), d + 1.0)
 }
 
-impl<T: Reading> RationalTensor<T> {
-    /// The up-front estimate ([`Kind`]).
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Estimate for RationalTensor<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let (rows, columns, d) = sizes(&self.numerator, &self.denominator);
         let (n, m) = self
             .degree
@@ -131,9 +130,7 @@ impl<T: Reading> RationalTensor<T> {
 impl<T: Number> Kind for RationalTensor<Written<T>> {
     fn solve(self, _: &Context) -> Result<Value, Error> {
         let (p, w) = grids(&self.numerator.0, &self.denominator.0)?;
-        let rect = exact(&self.rectangle.0)
-            .try_into()
-            .unwrap_or_else(|_| unreachable!());
+        let rect = self.rectangle.0.map(|x| x.0);
         let surface = RationalSurface::new(&p, &w)?;
         let degree = self.degree.map_or(surface.degree(), |d| (d.0, d.1));
         let patch = surface.tensor(&rect, Some(degree))?;

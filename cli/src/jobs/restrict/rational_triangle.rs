@@ -3,7 +3,7 @@
 //! computed exactly and rounded once; a zero weight is an error.
 
 use super::rational_tensor::{estimate, grids, sizes};
-use super::{check_rounded_weights, entries, exact, exact_points, rounded, Number};
+use super::{check_rounded_weights, entries, exact, exact_points, restricted, rounded, Number};
 use crate::jobs::cost::triangle_operations;
 use crate::jobs::kind::prelude::*;
 use blossom::{RationalPowerTriangle, RationalSurface, TriangularPatch};
@@ -24,9 +24,8 @@ pub struct RationalTriangle<T> {
     degree: Option<Degree>,
 }
 
-impl<T: Reading> RationalTriangle<T> {
-    /// The up-front estimate ([`Kind`]).
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Estimate for RationalTriangle<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let (rows, columns, d) = sizes(&self.numerator, &self.denominator);
         let (n, m) = ((rows - 1.0).max(0.0), (columns - 1.0).max(0.0));
         let total = if self.total_degree.is_some() {
@@ -68,9 +67,6 @@ impl<T: Number> Kind for RationalTriangle<Written<T>> {
                 .map(|(k, w)| (format!("control_points[{k}].weight"), w)),
         )?;
         let net = TriangularPatch::new(patch.degree(), points)?;
-        write(&super::Restricted {
-            degree: patch.degree(),
-            control_points: entries(&net, Some(&weights)),
-        })
+        restricted(patch.degree(), entries(&net, Some(&weights)))
     }
 }

@@ -26,9 +26,8 @@ struct Reduced<T: Write> {
     l2_error: Out<T>,
 }
 
-impl<T: Reading> Reduce<T> {
-    /// The up-front estimate ([`Kind`]).
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Estimate for Reduce<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let c = env.numbers("control_points");
         let (n, d) = self.control_points.sizes();
         let m = (self.to_degree.0 as f64).min(n);

@@ -1,7 +1,7 @@
 //! `"kind": "tensor"`: S(u, v) = sum c_ij u^i v^j restricted to [a, b] x [c, d], by every
 //! `--method`.
 
-use super::{specialised, Number, Restricted};
+use super::{restricted, specialised, Number};
 use crate::jobs::cost::tensor_operations;
 use crate::jobs::kind::prelude::*;
 use blossom::{restrict_power_surface, PowerSurface};
@@ -34,9 +34,8 @@ pub fn estimate<T>(
     env.restriction((field, "rectangle"), n + m, ops, row)
 }
 
-impl<T: Reading> Tensor<T> {
-    /// The up-front estimate ([`Kind`]).
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Estimate for Tensor<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         estimate(env, (&self.coefficients, "coefficients"), &CALIBRATION)
     }
 }
@@ -51,9 +50,6 @@ impl<T: Number> Kind for Tensor<T> {
             MethodChoice::Specialised => specialised::tensor(&surface, rectangle)?,
         };
         let (n, m) = patch.degree();
-        write(&Restricted {
-            degree: [n, m],
-            control_points: Out(patch.to_nested()),
-        })
+        restricted([n, m], Out(patch.to_nested()))
     }
 }

@@ -2,7 +2,7 @@
 //! grid), or sum_(i+j<=N) c_ij u^i v^j with `"total_degree": N` (a triangular array, row i
 //! holding N + 1 - i points), on the triangle with the given corners, by every `--method`.
 
-use super::{entries, specialised, Number, Restricted};
+use super::{entries, restricted, specialised, Number};
 use crate::jobs::cost::triangle_operations;
 use crate::jobs::kind::prelude::*;
 use blossom::{restrict_power_surface_to_triangle, restrict_power_triangle};
@@ -37,9 +37,8 @@ pub fn estimate(
     env.restriction((field, "triangle"), big_n, ops, row)
 }
 
-impl<T: Reading> Triangle<T> {
-    /// The up-front estimate ([`Kind`]).
-    pub fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
+impl<T: Reading> Estimate for Triangle<T> {
+    fn estimate(&self, env: &Env) -> Option<(f64, &'static str)> {
         let (rows, columns, d) = self.coefficients.sizes();
         let (big_n, terms) = match self.total_degree {
             Some(_) => ((rows - 1.0).max(0.0), rows * (rows + 1.0) / 2.0),
@@ -72,9 +71,6 @@ impl<T: Number> Kind for Triangle<T> {
                 }
             }
         };
-        write(&Restricted {
-            degree: patch.degree(),
-            control_points: entries(&patch, None),
-        })
+        restricted(patch.degree(), entries(&patch, None))
     }
 }
