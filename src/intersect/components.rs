@@ -31,8 +31,8 @@
 
 use super::algebraic::{value_at, AlgebraicReal};
 use super::bivariate::{resultant_t, BiPoly};
-use super::curves::Overlap;
 use super::extension::{add_q, deg_q, divrem_q, mul_q, trim_q};
+use super::intersections::Overlap;
 use super::solve::{solve, Solution};
 use super::upoly::{self, derivative, from_rationals, ZPoly};
 use super::zeros::roots_with_multiplicity;

@@ -33,7 +33,7 @@
 //! not fit, is left to big rationals (`None`).
 
 use super::algebraic::{round_polynomial_at, upoly_eval_q, value_at, AlgebraicReal};
-use super::curves::{IntersectionPoint, Overlap};
+use super::intersections::{IntersectionPoint, Overlap};
 use super::upoly;
 use super::zeros::roots_with_multiplicity;
 use crate::num::ring::{rational_to_f64, Rational};

@@ -9,6 +9,8 @@
 //! * `extension`: arithmetic in a real algebraic extension Q(alpha) by dynamic evaluation, and
 //!   the fibre of a bivariate system over an algebraic abscissa;
 //! * `components`: curves sharing a component (decomposition P = R(phi), overlaps, retracing);
+//! * `intersections`: the answer of curve-curve intersection ([`Intersections`]: points and
+//!   overlaps, exact);
 //! * `curves`: curve-curve intersection ([`intersect_curves`]);
 //! * `extrema`: the tight bounding box and the nearest point of a curve
 //!   ([`tight_bounding_box`], [`nearest_point`]);
@@ -32,6 +34,7 @@ pub(crate) mod extension;
 pub(crate) mod extrema;
 pub(crate) mod filter;
 pub(crate) mod implicit;
+pub(crate) mod intersections;
 pub(crate) mod interval;
 pub(crate) mod isolate;
 pub(crate) mod line;

@@ -75,3 +75,39 @@ mod tests {
         assert_eq!(multinomial(3, &[-1, 2]), BigInt::zero());
     }
 }
+
+/// The meter's charge for binomials against their time (the companion of the meter's own
+/// calibration table, `num::meter`).
+#[cfg(all(test, feature = "meter"))]
+mod calibration {
+    use super::binomial;
+    use crate::num::meter::tests::time;
+    use crate::num::meter::{charged, metered};
+
+    /// Prints the time of a binomial's steps next to their charge (units are meant to be
+    /// about a nanosecond). Run on request: `cargo test --release -p blossom --lib --features
+    /// meter binomial_calibration -- --ignored --nocapture`.
+    #[test]
+    #[ignore = "a timing table; run on request in release"]
+    fn binomial_calibration() {
+        for n in [16i64, 64, 256, 1000] {
+            let reps = 20_000;
+            let mut sink = num_bigint::BigInt::from(0);
+            let t = time(reps, &mut || sink = binomial(n, n / 2));
+            std::hint::black_box(&sink);
+            let before = charged();
+            let units = metered(u64::MAX, || {
+                binomial(n, n / 2);
+                charged()
+            })
+            .unwrap()
+                - before;
+            println!(
+                "C({n}, {}): {:.1} ns a step, charged {:.1} units a step",
+                n / 2,
+                t / (n / 2) as f64,
+                units as f64 / (n / 2) as f64
+            );
+        }
+    }
+}

@@ -391,7 +391,7 @@ pub fn metered<R>(limit: u64, work: impl FnOnce() -> R) -> Result<R, OverBudget>
 }
 
 #[cfg(all(test, feature = "meter"))]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::{BoundedF64, Field, Ring};
     use num_bigint::BigInt;
@@ -451,24 +451,26 @@ mod tests {
         );
     }
 
+    /// The thread's CPU time per call of `f` over `reps` calls, in ns (Linux; not disturbed by
+    /// other processes' load): the timing of the calibration tables.
+    pub(crate) fn time(reps: u32, f: &mut dyn FnMut()) -> f64 {
+        let cpu = || -> f64 {
+            let text = std::fs::read_to_string("/proc/thread-self/schedstat").unwrap();
+            text.split_whitespace().next().unwrap().parse().unwrap()
+        };
+        let start = cpu();
+        for _ in 0..reps {
+            f();
+        }
+        (cpu() - start) / f64::from(reps)
+    }
+
     /// Prints, for each charged operation, the measured time per operation next to its charge
     /// (units are meant to be about a nanosecond). Run on request:
     /// `cargo test --release -p blossom --lib --features meter meter_calibration -- --ignored --nocapture`.
     #[test]
     #[ignore = "a timing table; run on request in release"]
     fn meter_calibration() {
-        // The thread's CPU time in ns (Linux), not disturbed by other processes' load.
-        let cpu = || -> f64 {
-            let text = std::fs::read_to_string("/proc/thread-self/schedstat").unwrap();
-            text.split_whitespace().next().unwrap().parse().unwrap()
-        };
-        let time = |reps: u32, f: &mut dyn FnMut()| {
-            let start = cpu();
-            for _ in 0..reps {
-                f();
-            }
-            (cpu() - start) / f64::from(reps)
-        };
         println!(
             "{:>8} {:>12} {:>12} {:>12} {:>10}",
             "bits", "add ns", "mul ns", "div ns", "charge"
@@ -509,28 +511,6 @@ mod tests {
              charge of {}",
             2 * BOUNDED_OPERATION
         );
-        // Binomials, step by step.
-        for n in [16i64, 64, 256, 1000] {
-            let reps = 20_000;
-            let mut sink = num_bigint::BigInt::from(0);
-            let t = time(reps, &mut || {
-                sink = crate::num::binomial::binomial(n, n / 2)
-            });
-            std::hint::black_box(&sink);
-            let before = charged();
-            let units = metered(u64::MAX, || {
-                crate::num::binomial::binomial(n, n / 2);
-                charged()
-            })
-            .unwrap()
-                - before;
-            println!(
-                "C({n}, {}): {:.1} ns a step, charged {:.1} units a step",
-                n / 2,
-                t / (n / 2) as f64,
-                units as f64 / (n / 2) as f64
-            );
-        }
         // A whole f64 restriction: degree 400 in 3-D by the engine and by the closed form.
         let coefficients: Vec<Vec<BoundedF64>> = (0..=400)
             .map(|i| {

@@ -1,5 +1,6 @@
 //! Rigorous enclosures in floating point shared by both float paths: signs, curve and
-//! hodograph values at a parameter enclosure, and the area polynomial of a curve.
+//! hodograph values at a parameter enclosure, the sign of a certified crossing, and the area
+//! polynomial of a curve.
 //!
 //! Everything is computed in [`BoundedF64`] (a double with a rigorous bound on its distance
 //! to the exact value of the same operations on the same inputs). A parameter t* known to lie
@@ -167,4 +168,23 @@ impl AreaPolynomials {
         }
         &self.coefficients[self.spans[c].0..self.spans[c].1]
     }
+}
+
+/// The exact sign of cross(P'(s*), Q'(t*)) at a certified crossing (s* in `s_box` around
+/// `s`, t* in `t_box` around `t`), or `None` when the enclosure of the cross product does
+/// not exclude zero.
+pub(super) fn crossing_sign(
+    p: &[[f64; 2]],
+    q: &[[f64; 2]],
+    s: f64,
+    s_box: [f64; 2],
+    t: f64,
+    t_box: [f64; 2],
+) -> Option<i64> {
+    let mut h = [BoundedF64::default(); LEVEL];
+    let len = hodograph(p, &mut h);
+    let a = evaluate(&h[..len], 2, parameter(s, s_box));
+    let len = hodograph(q, &mut h);
+    let b = evaluate(&h[..len], 2, parameter(t, t_box));
+    sign(&a[0].mul(&b[1]).sub(&a[1].mul(&b[0])))
 }

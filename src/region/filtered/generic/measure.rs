@@ -1,5 +1,6 @@
-//! The generic configuration's enclosures: the sign of a crossing, the signed area of a loop
-//! and of the result, and the assembled answer (the bounds themselves are `bounds`').
+//! The generic configuration's answer: each boundary loop's edges, its orientation and the
+//! enclosure of the result's area, from the area polynomials of `area` (the bounds
+//! themselves are `bounds`').
 //!
 //! Everything is computed in [`BoundedF64`] (a double with a rigorous bound on its distance
 //! to the exact value of the same operations on the same inputs). A parameter t* known to lie
@@ -17,81 +18,17 @@
 //! coefficients f_0 = 0, f_(k+1) = f_k + c_k / (2n), and F(1) = f_(2n). A piece from a to b
 //! contributes F(b) - F(a).
 
-use super::split::{Mark, Split};
+use super::area::Areas;
+use super::split::Split;
 use super::walk::BoundaryLoop;
 use crate::intersect::interval::{lower, upper};
 use crate::num::bounded::{BoundedF64, UNIT_ROUNDOFF};
 use crate::num::ring::Ring;
 use crate::region::answer::{Edge, Outline, ResultLoop};
-use crate::region::filtered::bounds::{
-    evaluate, hodograph, parameter, sign, AreaPolynomials, LEVEL,
-};
+use crate::region::filtered::bounds::sign;
 use crate::region::input::Doubles;
 use crate::region::parameter::{Crossings, Parameter};
 use std::sync::Arc;
-
-/// The exact sign of cross(P'(s*), Q'(t*)) at a certified crossing (s* in `s_box` around
-/// `s`, t* in `t_box` around `t`), or `None` when the enclosure of the cross product does
-/// not exclude zero.
-pub(super) fn crossing_sign(
-    p: &[[f64; 2]],
-    q: &[[f64; 2]],
-    s: f64,
-    s_box: [f64; 2],
-    t: f64,
-    t_box: [f64; 2],
-) -> Option<i64> {
-    let mut h = [BoundedF64::default(); LEVEL];
-    let len = hodograph(p, &mut h);
-    let a = evaluate(&h[..len], 2, parameter(s, s_box));
-    let len = hodograph(q, &mut h);
-    let b = evaluate(&h[..len], 2, parameter(t, t_box));
-    sign(&a[0].mul(&b[1]).sub(&a[1].mul(&b[0])))
-}
-
-/// The area polynomials of the curves, evaluated at their positions.
-pub(super) struct Areas<'s, 'a> {
-    split: &'s Split<'a>,
-    polynomials: AreaPolynomials,
-}
-
-impl<'s, 'a> Areas<'s, 'a> {
-    pub(super) fn new(split: &'s Split<'a>) -> Self {
-        let boxes = split.curves.iter().map(|c| &c.bbox);
-        Areas {
-            split,
-            polynomials: AreaPolynomials::new(split.curves.len(), boxes),
-        }
-    }
-
-    /// F_c at position `k` of curve c (0: its start, `marks.len() + 1`: its end, else the
-    /// crossing `marks[k - 1]`).
-    fn at(&mut self, c: usize, k: usize) -> BoundedF64 {
-        let f = self.polynomials.of(c, self.split.curves[c].points);
-        let marks = &self.split.marks[c];
-        if k == 0 {
-            return f[0];
-        }
-        if k == marks.len() + 1 {
-            return f[f.len() - 1];
-        }
-        let m: Mark = marks[k - 1];
-        let x = &self.split.crossings[m.crossing];
-        evaluate(f, 1, parameter(x.nearest[m.side], x.enclosures[m.side]))[0]
-    }
-}
-
-/// The sign of the signed area of loop `l` of the input, or `None` when its enclosure does
-/// not exclude zero.
-pub(super) fn loop_area_sign(areas: &mut Areas<'_, '_>, l: usize) -> Option<i64> {
-    let lp = &areas.split.loops[l];
-    let mut sum = BoundedF64::exact(0.0);
-    for c in lp.first..lp.first + lp.len {
-        let end = areas.split.marks[c].len() + 1;
-        sum = sum.add(&areas.at(c, end));
-    }
-    sign(&sum)
-}
 
 /// The parameter of position `k` of curve c, as the answer gives it (`all`: the crossings,
 /// made once the answer has any).

@@ -36,11 +36,14 @@
 //!
 //! Signed areas and crossing signs are enclosed by [`BoundedF64`](crate::BoundedF64)
 //! (rigorous running error bounds; a parameter known to lie in an enclosure of doubles
-//! enters as its correctly rounded double with that radius) (module `measure`); a sign is
-//! taken only when the enclosure excludes zero. The parameters of the answer are
+//! enters as its correctly rounded double with that radius) (the crossing signs in
+//! `filtered::bounds`, the loops' areas in module `area`, the result's in module `measure`);
+//! a sign is taken only when the enclosure excludes zero. The modules depend on each other
+//! in the order of the stages: `split`, `area`, `side`, `walk`, `measure`. The parameters of the answer are
 //! [`Parameter`](super::Parameter)s: the filter's correctly rounded doubles and enclosures,
 //! made exact on demand.
 
+mod area;
 mod measure;
 mod side;
 mod split;
@@ -60,7 +63,7 @@ pub(super) fn run(regions: &[&Region; 2], op: BooleanOp) -> Option<Outline> {
     }
     let arrangement = split::Split::build([doubles[0].as_slice(), doubles[1].as_slice()])?;
     let fills = [regions[0].fill(), regions[1].fill()];
-    let mut areas = measure::Areas::new(&arrangement);
+    let mut areas = area::Areas::new(&arrangement);
     let windings = side::loop_windings(&arrangement, &mut areas)?;
     let loops = walk::boundary(&arrangement, &windings, fills, op)?;
     measure::answer(&mut areas, loops, doubles)

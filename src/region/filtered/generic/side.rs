@@ -14,7 +14,7 @@
 //! next vertex of the loop is tried. (The tests on every control point are tests on the
 //! sides of the curve's box.)
 
-use super::measure::{loop_area_sign, Areas};
+use super::area::{loop_area_sign, Areas};
 use super::split::Split;
 use crate::intersect::algebraic::exact_f64;
 use crate::num::bounded::UNIT_ROUNDOFF;

@@ -1,11 +1,11 @@
 //! The curves of both regions split at their certified crossings, once the configuration is
 //! proved generic (see the module docs of [`super`]).
 
-use super::measure::crossing_sign;
 use crate::intersect::filter::crossing_parameters_f64;
 use crate::intersect::implicit::implicitly_apart;
 use crate::num::small::Dyadic;
 use crate::region::arrangement::{for_each_meeting_pair, meeting_boxes, CurveId};
+use crate::region::filtered::bounds::crossing_sign;
 pub(super) use crate::region::filtered::graph::bbox;
 use crate::region::prune::{consecutive_meet_only_at_join, one_to_one};
 use std::ops::ControlFlow;
