@@ -131,9 +131,10 @@ pub struct Report {
     pub pairs: usize,
     /// Of those, consecutive curves of a loop proved to meet only at their join.
     pub joins: usize,
-    /// Of those, pairs of segments intersected exactly in fixed-width integers (ends that are
-    /// small integers on one dyadic scale, as in every font): crossings, shared vertices, ends
-    /// on the other segment and collinear overlaps, without big integers.
+    /// Of those, pairs decided exactly in fixed-width integers (control points that are small
+    /// integers on one dyadic scale, as in every font): a segment or straight quadratic with
+    /// any curve (crossings, shared vertices, ends on the other curve, collinear overlaps), or
+    /// two curves proved apart by a quadratic's implicit equation; no big integers.
     pub fixed_width: usize,
     /// Of those, pairs decided by the certified float filter (transversal crossings or none).
     pub filtered: usize,
