@@ -261,6 +261,11 @@ impl Dyadic {
         self.len
     }
 
+    /// The points as integers on their own scale.
+    pub(crate) fn points(&self) -> &[[i64; 2]] {
+        &self.m[..self.len]
+    }
+
     /// The points on the scale 2^`exponent` (at most this one's): each integer times
     /// 2^(own exponent - `exponent`), exactly; `None` when one reaches `limit` (a power of
     /// two) in magnitude. Unused entries are zero.

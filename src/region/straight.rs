@@ -1,78 +1,154 @@
-//! Straight quadratics: a quadratic whose control point lies on one of its ends traces the
-//! segment between its ends, once, at a varying speed. TrueType outlines write them often
-//! (an off-curve point on an on-curve point: 31 of the 39 curves of DejaVu Sans' airplane).
+//! Straight quadratics: a quadratic whose control points lie on one line, the middle one on
+//! the segment between the ends, traces that segment once, at a varying speed. TrueType
+//! outlines write them often (an off-curve point on an on-curve point: 31 of the 39 curves
+//! of DejaVu Sans' airplane; or between two on-curve points of a straight stretch).
 //!
-//! With P1 = P0, P(t) = P0 + t² (P2 - P0); with P1 = P2, P(t) = P0 + (2t - t²)(P2 - P0). In
-//! both, P(t) = P0 + φ(t)(P2 - P0) with φ increasing from φ(0) = 0 to φ(1) = 1: the curve is
-//! its chord under the change of parameter u = φ(t). The contacts of such a curve are those
-//! of its chord (found in fixed width, `intersect::line`), each chord parameter u carried to
-//! t = φ⁻¹(u): √u, or 1 - √(1 - u) = u / (1 + √(1 - u)). Parameters on one straight curve
-//! compare as their u do (φ is increasing), and a stretch shared with a segment or another
-//! straight curve maps affinely between the chords' u.
+//! With P1 = P0 + m (P2 - P0), 0 <= m <= 1, P(t) = P0 + φ(t)(P2 - P0) with
+//! φ(t) = 2m t + (1 - 2m) t², increasing from φ(0) = 0 to φ(1) = 1 (φ'(t) = 2m (1 - t) +
+//! 2 (1 - m) t > 0 inside): the curve is its chord under the change of parameter u = φ(t).
+//! m is exact: 0 (P1 = P0, φ = t²), 1 (P1 = P2, φ = 2t - t²), or for control points that are
+//! integers on one dyadic scale the rational dot(P1 - P0, P2 - P0) / |P2 - P0|² once their
+//! cross product is exactly zero. The contacts of such a curve are those of its chord (found
+//! in fixed width, `intersect::line`), each chord parameter u carried to t = φ⁻¹(u), the root
+//! in [0, 1] of (1 - 2m) t² + 2m t - u, that is u / (m + √(m² + (1 - 2m) u)) (no
+//! cancellation: m² + (1 - 2m) u = (m - u)² + u (1 - u) >= 0). Parameters on one straight
+//! curve compare as their u do (φ is increasing), and a stretch shared with a segment or
+//! another straight curve maps affinely between the chords' u.
 //!
 //! Doubles around t come cheaply ([`Straight::enclosure`]): φ⁻¹ is increasing, so t lies
-//! between φ⁻¹ of the doubles around u; each is computed in at most four correctly rounded
-//! operations (relative error below 5 u, so below 5 ulps) and moved 8 ulps outward. The
-//! double nearest to t is certified exactly, on demand ([`Straight::nearest`]): t̂ is
-//! correctly rounded when φ of the midpoints between t̂ and its neighbours bracket u
-//! (compared in rationals), and stepped by one ulp otherwise; the exact t is the root of
-//! den(u) φ(t) - num(u) in [0, 1], an algebraic number of degree at most 2, made on demand.
+//! between φ⁻¹ of the doubles around u; a guess of each is moved 8 ulps outward and
+//! *checked*: φ(lo) < u < φ(hi), evaluated in [`BoundedF64`] (rigorous error bounds; m and u
+//! enter as their nearest doubles with the distance to the exact value as the bound), proves
+//! lo < t < hi. A bracket the check does not prove is widened (up to 2^20 ulps) and, failing
+//! that, comes from the exact root. The double nearest to t is certified exactly, on demand
+//! ([`Straight::nearest`]): t̂ is correctly rounded when φ of the midpoints between t̂ and its
+//! neighbours bracket u (compared in rationals), and stepped by one ulp otherwise; the exact
+//! t is the root of den(u) b φ(t) - num(u) b in [0, 1] (m = a / b), an algebraic number of
+//! degree at most 2, made on demand.
 
 use crate::intersect::algebraic::{exact_f64, AlgebraicReal};
 use crate::intersect::zeros::roots_with_multiplicity;
-use crate::num::ring::Rational;
-use crate::num::small::SmallRational;
+use crate::num::bounded::BoundedF64;
+use crate::num::ring::{Rational, Ring};
+use crate::num::small::{Dyadic, SmallRational};
 use num_bigint::BigInt;
 use std::cmp::Ordering;
 
-/// Which end a straight quadratic's control point lies on: the change of parameter
-/// u = φ(t) from the curve to its chord.
+/// A straight quadratic's change of parameter u = φ(t) = 2m t + (1 - 2m) t² from the curve to
+/// its chord, given by m, the place of the control point on the chord (module doc).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Straight {
-    /// P1 = P0: φ(t) = t².
-    Square,
-    /// P1 = P2: φ(t) = 2t - t².
-    Cap,
+pub(crate) struct Straight {
+    /// In [0, 1].
+    m: SmallRational,
 }
 
 impl Straight {
-    /// The kind of the curve with control points `points`, when it is a straight quadratic
-    /// with distinct ends.
+    /// P1 = P0: φ(t) = t².
+    #[cfg(test)]
+    pub(crate) const SQUARE: Straight = Straight {
+        m: SmallRational::ZERO,
+    };
+    /// P1 = P2: φ(t) = 2t - t².
+    #[cfg(test)]
+    pub(crate) const CAP: Straight = Straight {
+        m: SmallRational::ONE,
+    };
+
+    /// The change of parameter of the curve with control points `points`, when it is a
+    /// straight quadratic with distinct ends (module doc).
     pub(crate) fn of(points: &[[f64; 2]]) -> Option<Straight> {
         let [p0, p1, p2] = points else { return None };
         if p0 == p2 {
-            None
-        } else if p1 == p0 {
-            Some(Straight::Square)
-        } else if p1 == p2 {
-            Some(Straight::Cap)
-        } else {
-            None
+            return None;
         }
+        if p1 == p0 {
+            return Some(Straight {
+                m: SmallRational::ZERO,
+            });
+        }
+        if p1 == p2 {
+            return Some(Straight {
+                m: SmallRational::ONE,
+            });
+        }
+        // The control point strictly inside the chord, decided in integers.
+        let dyadic = Dyadic::of(points)?;
+        let q = dyadic.points();
+        let minus = |a: [i64; 2], b: [i64; 2]| {
+            [
+                i128::from(a[0]) - i128::from(b[0]),
+                i128::from(a[1]) - i128::from(b[1]),
+            ]
+        };
+        let (e, f) = (minus(q[2], q[0]), minus(q[1], q[0]));
+        if e[0].checked_mul(f[1])? != e[1].checked_mul(f[0])? {
+            return None;
+        }
+        let dot = e[0]
+            .checked_mul(f[0])?
+            .checked_add(e[1].checked_mul(f[1])?)?;
+        let norm = e[0]
+            .checked_mul(e[0])?
+            .checked_add(e[1].checked_mul(e[1])?)?;
+        (0 < dot && dot < norm)
+            .then(|| SmallRational::new(dot, norm))
+            .flatten()
+            .map(|m| Straight { m })
     }
 
-    /// φ's integer coefficients, ascending.
-    fn coefficients(self) -> [i64; 3] {
-        match self {
-            Straight::Square => [0, 0, 1],
-            Straight::Cap => [0, 2, -1],
-        }
+    /// m = a / b as (a, b), b > 0.
+    fn ratio(self) -> (i64, i64) {
+        (self.m.numer(), self.m.denom())
     }
 
     /// φ(t), exactly.
     fn phi(self, t: &Rational) -> Rational {
-        let [_, c1, c2] = self
-            .coefficients()
-            .map(|c| Rational::from_integer(c.into()));
-        (c1 + c2 * t) * t
+        let m = self.m.to_rational();
+        let two = Rational::from_integer(2.into());
+        let one = Rational::from_integer(1.into());
+        (&two * &m + (one - two * &m) * t) * t
     }
 
-    /// A double near φ⁻¹(u) (within a few ulps): √u, or u / (1 + √(1 - u)) without
-    /// cancellation.
+    /// A double near φ⁻¹(u) for u in [0, 1] (not certified): √u for m = 0, u / (1 + √(1 - u))
+    /// for m = 1, else u / (m + √((m - u)² + u (1 - u))), with m - u taken as
+    /// (1 - u) - (1 - m) above 1/2 (less cancellation near 1).
     fn guess(self, u: f64) -> f64 {
-        match self {
-            Straight::Square => u.sqrt(),
-            Straight::Cap => u / (1.0 + (1.0 - u).sqrt()),
+        if u <= 0.0 {
+            return 0.0;
+        }
+        if self.m == SmallRational::ZERO {
+            return u.sqrt();
+        }
+        if self.m == SmallRational::ONE {
+            return u / (1.0 + (1.0 - u).sqrt());
+        }
+        let (a, b) = self.ratio();
+        let m = self.m.to_f64_enclosure().0;
+        let gap = if u <= 0.5 {
+            m - u
+        } else {
+            (1.0 - u) - (b - a) as f64 / b as f64
+        };
+        (u / (m + (gap * gap + u * (1.0 - u)).sqrt())).clamp(0.0, 1.0)
+    }
+
+    /// Whether φ(x) - u is proved to have the sign `side` (-1 or 1), in [`BoundedF64`] with
+    /// m and u as their nearest doubles bounded by their distance to the exact values.
+    fn proved(self, x: f64, u: SmallRational, side: i64) -> bool {
+        let bounded = |q: SmallRational| {
+            let (near, [lo, hi]) = q.to_f64_enclosure();
+            BoundedF64::with_bound(near, (hi - lo).next_up())
+        };
+        let (m, u) = (bounded(self.m), bounded(u));
+        let x = BoundedF64::exact(x);
+        let one = BoundedF64::exact(1.0);
+        let two_m = m.add(&m);
+        let v = x.mul(&two_m.add(&one.sub(&two_m).mul(&x))).sub(&u);
+        let (value, bound) = (v.value(), v.error_bound());
+        if side < 0 {
+            value + bound < 0.0
+        } else {
+            value - bound > 0.0
         }
     }
 
@@ -84,14 +160,41 @@ impl Straight {
             return (t, [t, t]);
         }
         let (near, [u_lo, u_hi]) = u.to_f64_enclosure();
-        let step = |mut x: f64, up: bool| {
-            for _ in 0..8 {
+        let step = |mut x: f64, up: bool, n: u32| {
+            for _ in 0..n {
                 x = if up { x.next_up() } else { x.next_down() };
             }
             x
         };
-        let lo = step(self.guess(u_lo.max(0.0)), false).max(0.0);
-        let hi = step(self.guess(u_hi.min(1.0)), true).min(1.0);
+        let mut found = None;
+        for n in [8, 32, 128, 1 << 10, 1 << 20] {
+            let widen = |x: f64, up: bool| {
+                if n <= 128 {
+                    step(x, up, n)
+                } else {
+                    // n ulps of x at once (a power of two times the ulp).
+                    let ulp = (x.next_up() - x).max(f64::MIN_POSITIVE);
+                    if up {
+                        x + ulp * n as f64
+                    } else {
+                        x - ulp * n as f64
+                    }
+                }
+            };
+            let lo = widen(self.guess(u_lo.max(0.0)), false).max(0.0);
+            let hi = widen(self.guess(u_hi.min(1.0)), true).min(1.0);
+            let lo_ok = lo == 0.0 || self.proved(lo, u, -1);
+            let hi_ok = hi == 1.0 || self.proved(hi, u, 1);
+            if lo_ok && hi_ok {
+                found = Some([lo, hi]);
+                break;
+            }
+        }
+        let [lo, hi] = found.unwrap_or_else(|| {
+            // The exact root's neighbours.
+            let t = self.root(u).to_f64();
+            [t.next_down().max(0.0), t.next_up().min(1.0)]
+        });
         (self.guess(near).clamp(lo, hi), [lo, hi])
     }
 
@@ -127,21 +230,23 @@ impl Straight {
                 _ => break,
             }
         }
-        // Unreachable for u in [0, 1] (φ is increasing and the guess is close); the exact
-        // root answers all the same.
+        // Reached only when the guess is far (φ is increasing on [0, 1]); the exact root
+        // answers all the same.
         let x = self.root(u);
         let nearest = x.to_f64();
         (nearest, [nearest.next_down(), nearest.next_up()])
     }
 
-    /// t = φ⁻¹(u) exactly: the root in [0, 1] of den φ(t) - num.
+    /// t = φ⁻¹(u) exactly: the root in [0, 1] of den b φ(t) - num b (u = num / den,
+    /// m = a / b), that is of den (b - 2a) t² + 2 den a t - num b.
     pub(crate) fn root(self, u: SmallRational) -> AlgebraicReal {
-        let [c0, c1, c2] = self.coefficients();
+        let (a, b) = self.ratio();
+        let (a, b) = (BigInt::from(a), BigInt::from(b));
         let (num, den) = (BigInt::from(u.numer()), BigInt::from(u.denom()));
         let poly = vec![
-            BigInt::from(c0) * &den - num,
-            BigInt::from(c1) * &den,
-            BigInt::from(c2) * &den,
+            -(&num * &b),
+            BigInt::from(2) * &a * &den,
+            (&b - BigInt::from(2) * &a) * &den,
         ];
         let (zero, one) = (
             Rational::from_integer(0.into()),
@@ -170,20 +275,47 @@ mod tests {
     use crate::intersect::algebraic::exact_f64;
     use crate::num::small::SmallRational;
 
-    /// The certified nearest double and enclosure against the exact root, on every kind and
-    /// many fractions, perfect squares (exact roots) included.
+    /// The certified nearest double and enclosure against the exact root, on both end kinds
+    /// and on control points inside the chord (m = 1/2, where φ(t) = t, and others), for many
+    /// fractions, perfect squares (exact roots) included.
     #[test]
     fn nearest_root_is_correctly_rounded() {
-        let mut exact_roots = 0;
-        for kind in [Straight::Square, Straight::Cap] {
+        let (mut exact_roots, mut narrow, mut total) = (0, 0, 0);
+        let inner =
+            |a: f64, b: f64| Straight::of(&[[0.0, 0.0], [a, 2.0 * a], [b, 2.0 * b]]).unwrap();
+        let kinds = [
+            Straight::SQUARE,
+            Straight::CAP,
+            inner(1.0, 2.0),
+            inner(1.0, 3.0),
+            inner(79.0, 202.0),
+            inner(135.0, 271.0),
+            inner(52.0, 61.0),
+            inner(1.0, 1000.0),
+            inner(999.0, 1000.0),
+        ];
+        for kind in kinds {
             for den in 1..40i128 {
                 for num in 0..=den {
                     let u = SmallRational::new(num, den).unwrap();
                     let (nearest, [lo, hi]) = kind.nearest(u);
                     let x = kind.root(u);
                     let (near, [a, b]) = kind.enclosure(u);
-                    assert!(x.cmp_rational(&exact_f64(a)).is_ge() && a <= near);
-                    assert!(x.cmp_rational(&exact_f64(b)).is_le() && near <= b);
+                    assert!(
+                        x.cmp_rational(&exact_f64(a)).is_ge() && a <= near,
+                        "{kind:?} {u:?}"
+                    );
+                    assert!(
+                        x.cmp_rational(&exact_f64(b)).is_le() && near <= b,
+                        "{kind:?} {u:?}"
+                    );
+                    // A few ulps, at most 2^-40 (the check widens a bracket it cannot prove).
+                    assert!(
+                        b - a <= 1.0 / (1u64 << 40) as f64,
+                        "{kind:?} {u:?}: [{a}, {b}]"
+                    );
+                    narrow += usize::from(b - a <= 32.0 * f64::EPSILON);
+                    total += 1;
                     assert_eq!(nearest, x.to_f64(), "{kind:?} {u:?}");
                     assert!(x.cmp_rational(&exact_f64(lo)).is_ge());
                     assert!(x.cmp_rational(&exact_f64(hi)).is_le());
@@ -198,15 +330,34 @@ mod tests {
             exact_roots > 20,
             "0, 1, 1/4, 9/16, ... are exact: {exact_roots}"
         );
+        assert!(
+            narrow * 10 > total * 9,
+            "{narrow} of {total} within 32 ulps of 1"
+        );
     }
 
     #[test]
     fn kinds() {
         let (a, b) = ([0.0, 0.0], [3.0, 1.0]);
-        assert_eq!(Straight::of(&[a, a, b]), Some(Straight::Square));
-        assert_eq!(Straight::of(&[a, b, b]), Some(Straight::Cap));
+        assert_eq!(Straight::of(&[a, a, b]), Some(Straight::SQUARE));
+        assert_eq!(Straight::of(&[a, b, b]), Some(Straight::CAP));
         assert_eq!(Straight::of(&[a, [1.0, 1.0], b]), None);
         assert_eq!(Straight::of(&[a, a, a]), None);
         assert_eq!(Straight::of(&[a, b]), None);
+        // On the chord: m = 1/3 and m = 1/2; beyond the ends or off the line: not straight.
+        let third = Straight::of(&[a, [1.0, 1.0 / 3.0], b]);
+        assert!(third.is_none(), "the double nearest to 1/3 is off the line");
+        let (c, d) = ([0.0, 0.0], [6.0, 3.0]);
+        assert_eq!(
+            Straight::of(&[c, [2.0, 1.0], d]).map(|s| s.m),
+            SmallRational::new(1, 3)
+        );
+        assert_eq!(
+            Straight::of(&[c, [3.0, 1.5], d]).map(|s| s.m),
+            SmallRational::new(1, 2)
+        );
+        assert_eq!(Straight::of(&[c, [8.0, 4.0], d]), None);
+        assert_eq!(Straight::of(&[c, [-2.0, -1.0], d]), None);
+        assert_eq!(Straight::of(&[c, [2.0, 1.5], d]), None);
     }
 }
