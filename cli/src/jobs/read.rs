@@ -402,7 +402,14 @@ impl Reading for Text {
 /// that a number whose double is zero is zero and one that exact reading refuses (an exponent
 /// beyond its limit) is its double's exact value.
 #[derive(Clone, Debug)]
-pub struct Written<T>(pub Rational, PhantomData<T>);
+pub struct Written<T>(pub Rational, PhantomData<T>, String);
+
+impl<T> Written<T> {
+    /// The number as written in the job (`0.1`, `1/3`), for messages.
+    pub fn spelling(&self) -> &str {
+        &self.2
+    }
+}
 
 impl<T: Reading> Reading for Written<T> {
     const EXACT: bool = <T as Reading>::EXACT;
@@ -421,7 +428,7 @@ impl<T: Reading> Reading for Written<T> {
                 Err(_) => Rational::from_float(double).unwrap_or_default(),
             }
         };
-        Ok(Written(exact, PhantomData))
+        Ok(Written(exact, PhantomData, spelling(value)))
     }
 
     fn exact(&self) -> Rational {

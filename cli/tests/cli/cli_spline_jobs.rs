@@ -464,3 +464,48 @@ fn bezier_curve_specialised_at_every_carried_degree() {
         "{e}"
     );
 }
+
+/// Issue 47 (a friction): a bspline's pieces that do not meet are quoted with their ends as
+/// written in the job (`0.1`, not the exact `1/10` the job computes with), under either
+/// arithmetic; the numbers of the message that are not the job's stay exact.
+#[test]
+fn pieces_that_do_not_meet_quote_their_ends_as_written() {
+    let piece = |a: Value, b: Value| json!({"interval": [a, b], "coefficients": [[0, 0], [1, 1]]});
+    let job = |pieces: Vec<Value>| json!({"kind": "bspline", "degree": 1, "pieces": pieces});
+    let f64 = ["--arithmetic", "f64"];
+    let gap = job(vec![
+        piece(json!(0), json!(0.1)),
+        piece(json!(0.2), json!(0.3)),
+    ]);
+    assert_eq!(
+        error_with(&f64, &gap),
+        "error: pieces[1].interval: starts at 0.2, which leaves a gap after the previous piece ending at 0.1"
+    );
+    let overlap = job(vec![
+        piece(json!(0), json!(0.1)),
+        piece(json!(0.05), json!(0.3)),
+    ]);
+    assert_eq!(
+        error_with(&f64, &overlap),
+        "error: pieces[1].interval: starts at 0.05, which overlaps the previous piece ending at 0.1"
+    );
+    let reversed = job(vec![piece(json!(0.5), json!(0.1))]);
+    assert_eq!(
+        error_with(&f64, &reversed),
+        "error: pieces[0].interval: expected e_0 < e_1, found [0.5, 0.1]"
+    );
+    // Exact arithmetic: strings as written, fractions included.
+    let exact = job(vec![piece(json!("0.50"), json!("1/3"))]);
+    assert_eq!(
+        error(&exact),
+        "error: pieces[0].interval: expected e_0 < e_1, found [0.50, 1/3]"
+    );
+    let exact_gap = job(vec![
+        piece(json!("1/4"), json!("0.5")),
+        piece(json!("3/4"), json!(1)),
+    ]);
+    assert_eq!(
+        error(&exact_gap),
+        "error: pieces[1].interval: starts at 3/4, which leaves a gap after the previous piece ending at 0.5"
+    );
+}

@@ -66,6 +66,8 @@ impl<T: Number> Kind for Bspline<Written<T>> {
     fn solve(self, _: &Context) -> Result<Value, Error> {
         let mut pieces = Vec::with_capacity(self.pieces.0.len());
         let mut dim = None;
+        let intervals: Vec<[Written<T>; 2]> =
+            self.pieces.0.iter().map(|p| p.interval.0.clone()).collect();
         for (i, piece) in self.pieces.0.into_iter().enumerate() {
             let coefficients = exact_points(&piece.coefficients.0);
             let d = coefficients[0].len();
@@ -79,11 +81,43 @@ impl<T: Number> Kind for Bspline<Written<T>> {
                 curve: PowerCurve::new(coefficients)?,
             });
         }
-        let f = bspline_from_pieces(self.degree.0, &pieces)?;
+        let f =
+            bspline_from_pieces(self.degree.0, &pieces).map_err(|e| as_written(e, &intervals))?;
         write(&Answer {
             degree: f.degree(),
             knots: Out(rounded::<T>(f.knots())),
             control_points: Out(f.control_points().iter().map(|p| rounded(p)).collect()),
         })
     }
+}
+
+/// A refusal of piece i's interval (its ends out of order, or not meeting the previous
+/// piece) with the ends quoted as written in the job (`0.1`, not `1/10`): each word of the
+/// message that is the exact value of one of the interval's ends, or of the previous piece's
+/// end, becomes that number's spelling.
+fn as_written<T>(e: Error, intervals: &[[Written<T>; 2]]) -> Error {
+    let Some(i) = (0..intervals.len()).find(|i| e.field == format!("pieces[{i}].interval")) else {
+        return e;
+    };
+    let mut ends: Vec<&Written<T>> = intervals[i].iter().collect();
+    if i > 0 {
+        ends.push(&intervals[i - 1][1]);
+    }
+    let mut message = String::with_capacity(e.message.len());
+    let mut word = String::new();
+    let flush = |word: &mut String, message: &mut String| {
+        let spelled = ends.iter().find(|x| x.0.to_string() == *word);
+        message.push_str(spelled.map_or(word.as_str(), |x| x.spelling()));
+        word.clear();
+    };
+    for c in e.message.chars() {
+        if c.is_ascii_alphanumeric() || matches!(c, '/' | '-' | '_') {
+            word.push(c);
+        } else {
+            flush(&mut word, &mut message);
+            message.push(c);
+        }
+    }
+    flush(&mut word, &mut message);
+    Error::of(e.kind, e.field, message)
 }
