@@ -479,6 +479,13 @@ mod tests {
     use crate::num::ring::Rational;
     use crate::test_rng::XorShift;
 
+    /// Control points of doubles as their exact values (the general solver's input).
+    fn exact_points(x: &[[f64; 2]]) -> Vec<[Rational; 2]> {
+        x.iter()
+            .map(|c| c.map(|v| Rational::from_float(v).unwrap()))
+            .collect()
+    }
+
     /// Whether the two answers are the same: every parameter equal as an exact number.
     fn same(a: &Intersections, b: &Intersections) -> bool {
         a.points.len() == b.points.len()
@@ -555,12 +562,7 @@ mod tests {
                 assert_eq!(i % 5, 4, "small coordinates fit: {p:?} {q:?}");
                 continue;
             };
-            let exact = |x: &[[f64; 2]]| -> Vec<[Rational; 2]> {
-                x.iter()
-                    .map(|c| c.map(|v| Rational::from_float(v).unwrap()))
-                    .collect()
-            };
-            let general = intersect_general(&exact(&p), &exact(&q)).unwrap();
+            let general = intersect_general(&exact_points(&p), &exact_points(&q)).unwrap();
             let big = |x: &super::SmallRational| x.to_rational();
             match small {
                 SegmentContact::Apart => {
@@ -630,12 +632,8 @@ mod tests {
             let Some(small) = segment_curve_small(&segment, &curve) else {
                 continue;
             };
-            let exact = |x: &[[f64; 2]]| -> Vec<[Rational; 2]> {
-                x.iter()
-                    .map(|c| c.map(|v| Rational::from_float(v).unwrap()))
-                    .collect()
-            };
-            let general = intersect_general(&exact(&segment), &exact(&curve)).unwrap();
+            let general =
+                intersect_general(&exact_points(&segment), &exact_points(&curve)).unwrap();
             assert!(general.overlaps.is_empty());
             assert_eq!(small.len(), general.points.len(), "{segment:?} {curve:?}");
             for ([s, t], x) in small.iter().zip(&general.points) {
